@@ -1,0 +1,5 @@
+import sys
+
+from plcvec.cli import main
+
+sys.exit(main())

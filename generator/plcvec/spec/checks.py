@@ -1,0 +1,173 @@
+"""Consistency checks a JSON Schema cannot express: references, ranges, bit layouts, unique ids."""
+
+# The value range each word encoding can hold at all, by field width; a field range outside it is a typo.
+_ENCODING_LIMITS = {
+    "signed16": lambda width: (-(1 << (width - 1)), (1 << (width - 1)) - 1),
+    "unsigned16": lambda width: (0, (1 << width) - 1),
+    "bcd": lambda width: (0, 10 ** (width // 4) - 1),
+}
+
+
+def _walk(node, where=()):
+    if isinstance(node, dict):
+        yield where, node
+        for k, v in node.items():
+            yield from _walk(v, where + (k,))
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            yield from _walk(v, where + (i,))
+
+
+def _unique(fam, items, where, what):
+    seen = {}
+    for i, item in enumerate(items):
+        key = item["id"] if "id" in item else item.get("name")
+        if key in seen:
+            raise fam.error(where + (i,), f"duplicate {what} id {key!r} (also item {seen[key] + 1})")
+        seen[key] = i
+
+
+def check_family(fam):
+    doc = fam.doc
+    _unique(fam, doc["clauses"], ("clauses",), "clause")
+    _unique(fam, doc["interpretations"], ("interpretations",), "interpretation")
+    _unique(fam, doc["errata"], ("errata",), "erratum")
+    _unique(fam, doc.get("examples", []), ("examples",), "example")
+    _check_references(fam)
+    _check_interpretations(fam)
+    _check_fields(fam)
+    if fam.kind == "masked_compare":
+        _check_selector(fam)
+        _check_compare_examples(fam)
+    if fam.kind == "clock_add":
+        for i, check in enumerate(doc["errors"]["checks"]):
+            for j, op in enumerate(check["operands"]):
+                if op not in doc["operands"]:
+                    raise fam.error(("errors", "checks", i, "operands", j), f"unknown operand {op!r}")
+    placement = doc["generation"]["placement"]
+    for op in doc["operands"]:
+        if op not in placement:
+            raise fam.error(("generation", "placement"), f"no placement for operand {op!r}")
+
+
+def _check_references(fam):
+    for where, node in _walk(fam.doc):
+        for key, value in node.items():
+            if key in ("clause",) or key.endswith("_clause"):
+                if value not in fam.clauses:
+                    raise fam.error(where + (key,), f"unknown clause {value!r}")
+            if key == "field_clauses":
+                for f, c in value.items():
+                    if c not in fam.clauses:
+                        raise fam.error(where + (key, f), f"unknown clause {c!r}")
+            if key == "interpretation" and len(node) == 1:
+                if value not in fam.interpretations:
+                    raise fam.error(where + (key,), f"unknown interpretation {value!r}")
+                interp = fam.interpretations[value]
+                param = where[-1]
+                for alt in interp["alternatives"]:
+                    if param not in alt["sets"]:
+                        raise fam.error(("interpretations", list(fam.interpretations).index(value)),
+                                        f"interpretation {value!r} alternative {alt['id']!r} does not set {param!r}, "
+                                        f"which {'.'.join(map(str, where))} takes from it")
+
+
+def _check_interpretations(fam):
+    for i, interp in enumerate(fam.doc["interpretations"]):
+        ids = [a["id"] for a in interp["alternatives"]]
+        if len(set(ids)) != len(ids):
+            raise fam.error(("interpretations", i, "alternatives"), f"interpretation {interp['id']!r} repeats an alternative id")
+        if interp["default"] not in ids:
+            raise fam.error(("interpretations", i, "default"),
+                            f"default {interp['default']!r} is not one of the alternatives {ids}")
+        keys = {tuple(sorted(a["sets"])) for a in interp["alternatives"]}
+        if len(keys) != 1:
+            raise fam.error(("interpretations", i, "alternatives"), f"alternatives of {interp['id']!r} set different parameters")
+        used = any(n.get("interpretation") == interp["id"] for _, n in _walk(fam.doc) if len(n) == 1)
+        if not used:
+            raise fam.error(("interpretations", i), f"interpretation {interp['id']!r} is not referenced by any rule parameter")
+
+
+def _check_fields(fam):
+    doc = fam.doc
+    fields = doc["data"]["fields"]
+    _unique(fam, fields, ("data", "fields"), "field")
+    data_words = [o.get("words", 0) for o in doc["operands"].values() if o["role"] in ("data", "addend", "result", "preset", "measured")]
+    words = min(data_words) if data_words else 0
+    used_bits = {}
+    for i, f in enumerate(fields):
+        where = ("data", "fields", i)
+        if f["min"] > f["max"]:
+            raise fam.error(where, f"field {f['name']!r}: min {f['min']} is greater than max {f['max']}")
+        if f["lsb"] + f["width"] > 16:
+            raise fam.error(where, f"field {f['name']!r}: bits {f['lsb']}..{f['lsb'] + f['width'] - 1} do not fit a 16-bit word")
+        if f["encoding"] == "bcd" and f["width"] % 4:
+            raise fam.error(where, f"field {f['name']!r}: a BCD field must be a whole number of 4-bit digits")
+        if f["encoding"] in ("signed16", "unsigned16") and f["width"] != 16:
+            raise fam.error(where, f"field {f['name']!r}: encoding {f['encoding']} needs width 16")
+        lo, hi = _ENCODING_LIMITS[f["encoding"]](f["width"])
+        if f["min"] < lo or f["max"] > hi:
+            raise fam.error(where, f"field {f['name']!r}: range {f['min']}..{f['max']} does not fit {f['encoding']} ({lo}..{hi})")
+        if f["word"] >= words:
+            raise fam.error(where, f"field {f['name']!r}: word {f['word']} is past the operands' {words} words")
+        for b in range(f["lsb"], f["lsb"] + f["width"]):
+            if (f["word"], b) in used_bits:
+                raise fam.error(where, f"field {f['name']!r} overlaps field {used_bits[(f['word'], b)]!r} at word {f['word']} bit {b}")
+            used_bits[(f["word"], b)] = f["name"]
+
+
+def _check_selector(fam):
+    doc = fam.doc
+    sel = doc["selector"]
+    names = [f["name"] for f in doc["data"]["fields"]]
+    if sel["operand"] not in doc["operands"]:
+        raise fam.error(("selector", "operand"), f"unknown operand {sel['operand']!r}")
+    if set(sel["field_bits"]) != set(names):
+        raise fam.error(("selector", "field_bits"), f"field_bits must name exactly the fields {sorted(names)}")
+    if set(sel["field_clauses"]) != set(names):
+        raise fam.error(("selector", "field_clauses"), f"field_clauses must name exactly the fields {sorted(names)}")
+    owner = {}
+    bits = [(b, f"field {f}") for f, b in sel["field_bits"].items()] + [(b, "reserved") for b in sel["reserved_bits"]]
+    if "source_bit" in sel:
+        bits.append((sel["source_bit"]["bit"], "current-clock bit"))
+    for b, who in bits:
+        if b in owner:
+            raise fam.error(("selector",), f"bit {b} is assigned twice ({owner[b]} and {who})")
+        owner[b] = who
+    if "source_bit" in sel:
+        clock = doc.get("current_clock", {}).get("fields")
+        if clock is None:
+            raise fam.error(("selector", "source_bit"), "a current-clock bit needs a current_clock section")
+        if sorted(clock) != sorted(names):
+            raise fam.error(("current_clock", "fields"), f"current_clock must name the fields {sorted(names)}")
+    if "flags" in doc:
+        for key, row in doc["flags"]["table"].items():
+            if set(row) != set(doc["flags"]["devices"]):
+                raise fam.error(("flags", "table", key), f"flags.table.{key} must name the same flag symbols as flags.devices")
+
+
+def _check_compare_examples(fam):
+    names = {f["name"]: f for f in fam.doc["data"]["fields"]}
+    symbols = {c["symbol"] for c in fam.doc["instructions"]["conditions"]}
+    for i, ex in enumerate(fam.doc["examples"]):
+        where = ("examples", i)
+        for label, values in ex.get("values", {}).items():
+            for k, v in values.items():
+                if k not in names:
+                    raise fam.error(where + ("values", label, k), f"unknown field {k!r}")
+                if not names[k]["min"] <= v <= names[k]["max"]:
+                    raise fam.error(where + ("values", label, k), f"{label}.{k} = {v} is outside {names[k]['min']}..{names[k]['max']}")
+        if "table" in ex:
+            if ex.get("condition") not in symbols:
+                raise fam.error(where + ("condition",), f"unknown condition {ex.get('condition')!r}")
+            pairs = ex.get("pairs", {})
+            for name, pair in pairs.items():
+                for label in pair:
+                    if label not in ex.get("values", {}):
+                        raise fam.error(where + ("pairs", name), f"pair {name!r} names unknown value {label!r}")
+            for j, row in enumerate(ex["table"]):
+                if len(row["printed"]) != len(pairs):
+                    raise fam.error(where + ("table", j, "printed"), f"{len(row['printed'])} printed cells for {len(pairs)} pairs")
+        for j, name in enumerate(ex.get("compared", [])):
+            if name not in names:
+                raise fam.error(where + ("compared", j), f"unknown field {name!r}")

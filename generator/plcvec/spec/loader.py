@@ -1,0 +1,118 @@
+"""Load spec/*.yaml: safe YAML with lines, JSON Schema, then the checks a schema cannot express."""
+import hashlib
+import json
+from pathlib import Path
+
+import jsonschema
+
+from plcvec.errors import SpecError
+from plcvec.spec.checks import check_family
+from plcvec.spec.yaml_lines import load_with_lines
+
+REPO = Path(__file__).resolve().parents[3]
+DEFAULT_SPEC_DIR = REPO / "spec"
+SCHEMA_PATH = DEFAULT_SPEC_DIR / "schema" / "spec.schema.json"
+
+
+class Family:
+    """One instruction family as written in its spec file, plus where each value came from."""
+
+    def __init__(self, path, doc, lines, text):
+        self.path, self.doc, self.lines = Path(path), doc, lines
+        self.sha256 = hashlib.sha256(text.encode()).hexdigest()
+        self.name = doc["family"]
+        self.kind = doc["kind"]
+        self.clauses = {c["id"]: c for c in doc["clauses"]}
+        self.interpretations = {i["id"]: i for i in doc["interpretations"]}
+
+    def line_of(self, *where):
+        while where and where not in self.lines:
+            where = where[:-1]
+        return self.lines.get(where)
+
+    def error(self, where, message):
+        return SpecError(self.path, self.line_of(*where), message)
+
+    def default_choices(self):
+        return {iid: i["default"] for iid, i in self.interpretations.items()}
+
+    def clause_ref(self, clause_id):
+        """The id a vector uses for a clause: family-qualified so ids are unique suite-wide."""
+        return f"{self.name}#{clause_id}"
+
+
+_validator = None
+
+
+def _schema_validator():
+    global _validator
+    if _validator is None:
+        schema = json.loads(SCHEMA_PATH.read_text())
+        _validator = jsonschema.Draft202012Validator(schema)
+    return _validator
+
+
+def _describe(error):
+    """A plain sentence for a schema error, and the path of the value it is about."""
+    where = tuple(error.absolute_path)
+    if error.validator == "additionalProperties" and isinstance(error.instance, dict):
+        allowed = set(error.schema.get("properties", {}))
+        extra = sorted(k for k in error.instance if k not in allowed)
+        if extra:
+            return where + (extra[0],), f"unknown key {extra[0]!r}" + (
+                f" (allowed here: {', '.join(sorted(allowed))})" if allowed else "")
+    if error.validator is False or error.validator_value is False:
+        return where, f"key {where[-1]!r} is not allowed for this kind of instruction family"
+    if error.validator == "required":
+        return where, error.message.replace("is a required property", "is required but missing")
+    if error.validator == "type":
+        return where, f"{'.'.join(map(str, where)) or 'value'}: expected {error.validator_value}, got {json.dumps(error.instance, default=str)[:60]}"
+    return where, f"{'.'.join(map(str, where)) or 'document'}: {error.message[:300]}"
+
+
+def load_family(path):
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise SpecError(path, None, f"cannot read: {exc.strerror}") from None
+    except UnicodeDecodeError as exc:
+        raise SpecError(path, None, f"not UTF-8 text ({exc.reason})") from None
+    doc, lines = load_with_lines(path, text)
+    if not isinstance(doc, dict):
+        raise SpecError(path, 1, "a spec file must be a mapping at the top level")
+    errors = sorted(_schema_validator().iter_errors(doc), key=lambda e: (list(map(str, e.absolute_path)), e.validator))
+    if errors:
+        best = jsonschema.exceptions.best_match(errors)
+        # best_match may name an `allOf`/`if` wrapper: prefer the deepest concrete error below it.
+        while best.context:
+            best = jsonschema.exceptions.best_match(best.context)
+        where, message = _describe(best)
+        family = Family.__new__(Family)
+        family.path, family.lines = path, lines
+        raise SpecError(path, Family.line_of(family, *where), message)
+    family = Family(path, doc, lines, text)
+    check_family(family)
+    return family
+
+
+def load_spec(spec_dir=None):
+    """All families in a spec folder, sorted by family name, with unique names."""
+    spec_dir = Path(spec_dir or DEFAULT_SPEC_DIR)
+    files = sorted(spec_dir.glob("*.yaml"))
+    if not files:
+        raise SpecError(spec_dir, None, "no *.yaml spec files in this folder")
+    families = {}
+    for f in files:
+        fam = load_family(f)
+        if fam.name in families:
+            raise fam.error(("family",), f"family {fam.name!r} is also defined in {families[fam.name].path.name}")
+        families[fam.name] = fam
+    return [families[k] for k in sorted(families)]
+
+
+def spec_hash(families):
+    h = hashlib.sha256()
+    for fam in families:
+        h.update(fam.name.encode() + b"\0" + fam.sha256.encode() + b"\n")
+    return h.hexdigest()
