@@ -1,0 +1,136 @@
+"""Turn a case (instruction, initial state, steps) into a vector with its expectations.
+
+The engine runs the case under the default reading of every interpretation, then under each other
+alternative; an interpretation whose alternatives give different expectations "touches" the vector,
+and the vector then carries the expectation of every combination of the touched ones.
+"""
+import itertools
+
+from plcvec.engine import make_engine
+from plcvec.spec.knobs import resolve
+
+STEP_INPUTS = ("set", "rlo_in", "clock", "en", "input", "elapsed_ms")
+
+
+class GeneratorBug(Exception):
+    """A case the generator built wrongly (duplicate id, undeclared device): a bug, not a user error."""
+
+
+def instruction_list(fam):
+    """Every instruction of a family, with the names the manual gives it."""
+    doc = fam.doc
+    if fam.kind == "masked_compare":
+        ins, naming = doc["instructions"], doc["instructions"]["naming"]
+        out = []
+        for form in ins["forms"]:
+            for cond in ins["conditions"]:
+                names = {"form_mnemonic": form["mnemonic"], "symbol": cond["symbol"],
+                         "form_st": form["st"], "condition_st": cond["st"]}
+                item = {"name": naming["ladder"].format(**names), "st": naming["st"].format(**names),
+                        "form": form, "symbol": cond["symbol"]}
+                if "function_code" in cond:
+                    item["function_code"] = cond["function_code"]
+                out.append(item)
+        return out
+    return [dict(i, name=i["mnemonic"]) for i in doc["instructions"]]
+
+
+class VectorBuilder:
+    def __init__(self, fam):
+        self.fam = fam
+        self.sizes = {k: v for k, v in fam.doc["assumptions"]["device_sizes"].items() if k != "why"}
+        self.instructions = {i["name"]: i for i in instruction_list(fam)}
+        self._engines = {}
+        self.ids = set()
+        self.defaults = fam.default_choices()
+
+    def engine(self, choices):
+        key = tuple(sorted(choices.items()))
+        if key not in self._engines:
+            self._engines[key] = make_engine(resolve(self.fam.doc, dict(choices)))
+        return self._engines[key]
+
+    def run(self, instr, operands, devices, steps, scratch, choices):
+        engine = self.engine(choices)
+        state = dict(devices)
+        ctx = {"device_sizes": self.sizes}
+        trace, expects, errors = set(), [], []
+        for index, step in enumerate(steps):
+            state.update(step.get("set", {}))
+            before = dict(state)
+            result = engine.execute(instr, operands, state, step, ctx, trace)
+            if set(state) != set(before):
+                raise GeneratorBug(f"engine wrote {sorted(set(state) - set(before))} not in the initial state")
+            expect = {}
+            if result is not None:
+                expect["result"] = result
+            expect["devices"] = {k: state[k] for k in sorted(state) if state[k] != before[k] and k not in scratch}
+            expects.append(expect)
+            if "error" in ctx:
+                errors.append(dict(step=index, **ctx.pop("error")))
+        final = {k: state[k] for k in sorted(state) if k not in scratch}
+        outcome = {"category": "error", "errors": errors} if errors else {"category": "value"}
+        trace.discard(None)
+        return expects, final, outcome, trace
+
+    def vector(self, instruction, key, *, tags, description, operands, devices, steps,
+               scratch=(), clauses=(), printed=None):
+        instr = self.instructions[instruction]
+        vid = f"{self.fam.name}/{instruction}/{key}"
+        if vid in self.ids:
+            raise GeneratorBug(f"duplicate vector id {vid}")
+        self.ids.add(vid)
+        for error in _errors_in_code(operands):
+            raise GeneratorBug(f"{vid}: {error}")
+        expects, final, outcome, trace = self.run(instr, operands, devices, steps, scratch, self.defaults)
+        touched = []
+        for iid, interp in self.fam.interpretations.items():
+            for alt in interp["alternatives"]:
+                if alt["id"] == interp["default"]:
+                    continue
+                other = self.run(instr, operands, devices, steps, scratch, dict(self.defaults, **{iid: alt["id"]}))
+                if other[:3] != (expects, final, outcome):
+                    touched.append(iid)
+                    break
+        alternatives = []
+        if touched:
+            options = [[(iid, a["id"]) for a in self.fam.interpretations[iid]["alternatives"]] for iid in touched]
+            for combo in itertools.product(*options):
+                choice = dict(combo)
+                if all(choice[i] == self.defaults[i] for i in touched):
+                    continue
+                a_expects, a_final, a_outcome, a_trace = self.run(
+                    instr, operands, devices, steps, scratch, dict(self.defaults, **choice))
+                trace |= a_trace
+                alternatives.append({"choices": choice, "expect": a_expects, "final": {"devices": a_final},
+                                     "outcome": a_outcome})
+            outcome = {"category": "implementation-defined", "interpretations": touched,
+                       "default": outcome,
+                       "reason": " ".join(self.fam.interpretations[i]["question"] for i in touched)}
+        vector = {
+            "id": vid,
+            "family": self.fam.name,
+            "instruction": instruction,
+            "st": instr.get("st", instruction),
+            "description": description,
+            "tags": sorted(set(tags)),
+            "clauses": sorted(self.fam.clause_ref(c) for c in trace | set(clauses)),
+            "assumes": {"device_sizes": self.sizes},
+            "initial": {"operands": operands, "devices": dict(sorted(devices.items()))},
+            "steps": [dict({k: s[k] for k in STEP_INPUTS if k in s}, expect=e) for s, e in zip(steps, expects)],
+            "final": {"devices": final},
+            "outcome": outcome,
+        }
+        if scratch:
+            vector["initial"]["scratch"] = sorted(scratch)
+        if alternatives:
+            vector["alternatives"] = alternatives
+        if printed is not None:
+            vector["printed"] = printed
+        return vector
+
+
+def _errors_in_code(operands):
+    for name, op in operands.items():
+        if not ("device" in op) ^ ("constant" in op):
+            yield f"operand {name} must be either a device or a constant"

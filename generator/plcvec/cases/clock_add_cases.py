@@ -1,0 +1,143 @@
+"""Cases for `clock_add` families: the manual's examples, carries at every field, zero, the flags,
+each range error of each field of each operand, device range at the top, source = destination,
+and the pulse form over a sequence of scans."""
+from plcvec.cases.common import Operands, signed_boundaries, top_head
+from plcvec.cases.random_cases import draw_addition
+from plcvec.engine.words import operand_words, split_address
+
+
+class AddCases:
+    def __init__(self, fam, builder):
+        self.fam, self.b, self.doc = fam, builder, fam.doc
+        self.fields = self.doc["data"]["fields"]
+        self.names = [f["name"] for f in self.fields]
+        self.ops = Operands(self.fields)
+        self.place = self.doc["generation"]["placement"]
+        self.addends = [k for k, v in self.doc["operands"].items() if v["role"] == "addend"]
+        self.result = next(k for k, v in self.doc["operands"].items() if v["role"] == "result")
+        self.words = self.doc["operands"][self.result]["words"]
+        flags = self.doc["flags"]
+        self.flag_devices = flags["carry"]["devices"] + flags["zero"]["devices"]
+        self.registers = self.doc["errors"]["registers"]["devices"]
+        by_exec = {i["execution"]: i["name"] for i in builder.instructions.values()}
+        self.every_scan, self.pulse_form = by_exec.get("every_scan"), by_exec.get("rising_edge")
+
+    def case(self, instr, key, *, tags, description, values, heads=None, steps=None, flags_on=False,
+             clauses=(), printed=None, raw=None, result_initial=None):
+        heads = dict(self.place, **(heads or {}))
+        devices = {d: flags_on for d in self.flag_devices}
+        devices.update({r: 0 for r in self.registers})
+        for op in self.addends + [self.result]:
+            if op == self.result:
+                # (d) starts with words no valid result holds, so an unwritten (d) shows.
+                words = result_initial or [0xFFFF] * self.words
+            else:
+                words = self.ops.words(values[op], raw=(raw or {}).get(op))
+            for address, word in zip(operand_words(heads[op], self.words), words):
+                prefix, number = split_address(address)
+                if number < self.b.sizes.get(prefix, number + 1):  # words past the range do not exist
+                    devices.setdefault(address, word & 0xFFFF)
+        operands = {op: {"device": heads[op]} for op in self.addends + [self.result]}
+        return self.b.vector(instr, key, tags=tags, description=description, operands=operands, devices=devices,
+                             steps=steps or [{"en": True}], clauses=clauses, printed=printed)
+
+    def hms(self, values):
+        return ":".join(f"{values[n]:02d}" for n in self.names)
+
+    def manual_examples(self):
+        for ex in self.doc["examples"]:
+            heads = ex.get("devices")
+            values = {self.addends[0]: ex["s1"], self.addends[1]: ex["s2"]}
+            yield self.case(self.every_scan, f"manual-example/{ex['id']}", tags=["manual-example"], clauses=[ex["clause"]],
+                            description=f"{self.hms(ex['s1'])} + {self.hms(ex['s2'])} (manual example {ex['id']}).",
+                            values=values, heads=heads, printed=ex["printed"])
+
+    def carries(self):
+        """A carry out of each field into the next, the wrap of the top field, and the zero result."""
+        top = self.fields[0]
+        patterns = []
+        for i, f in enumerate(self.fields):
+            a = {n: 0 for n in self.names}
+            b = {n: 0 for n in self.names}
+            a[f["name"]], b[f["name"]] = f["max"], 1
+            patterns.append((f"carry-out-of-{f['name']}", a, b))
+            maxed = {g["name"]: g["max"] for g in self.fields[i:]}
+            patterns.append((f"ripple-from-{f['name']}", dict(a, **maxed), b))
+        zero = {n: 0 for n in self.names}
+        half = dict(zero, **{top["name"]: (top["max"] + 1) // 2})
+        just = dict(zero, **{top["name"]: top["max"]})
+        one_top = dict(zero, **{top["name"]: 1})
+        maxall = {f["name"]: f["max"] for f in self.fields}
+        patterns += [("exact-wrap-halves", half, half), ("exact-wrap-top", just, one_top), ("zero-plus-zero", zero, zero),
+                     ("max-plus-max", maxall, maxall), ("max-plus-zero", maxall, zero), ("below-wrap", just, zero)]
+        for name, a, b in patterns:
+            for flags_on in (False, True):
+                values = {self.addends[0]: a, self.addends[1]: b}
+                yield self.case(self.every_scan, f"carry/{name}/flags-{'on' if flags_on else 'off'}-before", tags=["wrap", "boundary"],
+                                description=f"{self.hms(a)} + {self.hms(b)}, flags {'on' if flags_on else 'off'} before the execution.",
+                                values=values, flags_on=flags_on)
+
+    def range_errors(self):
+        for op in self.addends:
+            for f in self.fields:
+                for v in signed_boundaries(f):
+                    values = {o: self.ops.values() for o in self.addends}
+                    values[op] = self.ops.values(**{f["name"]: v})
+                    valid = f["min"] <= v <= f["max"]
+                    yield self.case(self.every_scan, f"range/{op}.{f['name']}={v}", tags=["boundary" if valid else "invalid-range"],
+                                    description=f"{op} {f['name']} = {v} ({'inside' if valid else 'outside'} {f['min']}..{f['max']}).",
+                                    values=values, flags_on=True)
+
+    def device_range(self):
+        values = {o: self.ops.values() for o in self.addends}
+        for op in self.addends + [self.result]:
+            prefix = split_address(self.place[op])[0]
+            size = self.b.sizes[prefix]
+            for beyond in (0, 1, 2):
+                head = top_head(prefix, size, self.words, beyond)
+                yield self.case(self.every_scan, f"device-range/{op}={head}", tags=["device-range"],
+                                description=f"{op} at {head}: its words {'end at the last' if beyond == 0 else f'run {beyond} past the last'} {prefix} device.",
+                                values=values, heads={op: head})
+
+    def same_device(self):
+        """(s1) and (d) the same device: TADD adds again every scan, TADDP once per rising edge."""
+        s1, s2 = self.addends
+        step = {n: 0 for n in self.names}
+        step[self.names[-1]] = 1
+        start = self.ops.values()
+        for instr in (self.every_scan, self.pulse_form):
+            steps = [{"en": True}, {"en": True}, {"en": False}, {"en": True}]
+            heads = {self.result: self.place[s1]}
+            yield self.case(instr, "same-device/s1-is-d", tags=["same-device", "pulse"],
+                            description=f"(s1) and (d) are both {self.place[s1]}; EN on, on, off, on.",
+                            values={s1: start, s2: step}, heads=heads, steps=steps, result_initial=self.ops.words(start))
+
+    def pulse(self):
+        s1, s2 = self.addends
+        seq = [False, True, True, False, True, True]
+        a = self.ops.values()
+        for instr in (self.every_scan, self.pulse_form):
+            steps = []
+            for i, en in enumerate(seq):
+                # Change (s2) before every scan, so each execution leaves its own trace in (d).
+                b = {n: 0 for n in self.names}
+                b[self.names[-1]] = i + 1
+                steps.append({"set": dict(zip(operand_words(self.place[s2], self.words), self.ops.words(b))), "en": en})
+            yield self.case(instr, "pulse/off-on-on-off-on-on", tags=["pulse"],
+                            description="EN off, on, on, off, on, on, with (s2) changed before every scan.",
+                            values={s1: a, s2: {n: 0 for n in self.names}}, steps=steps)
+            yield self.case(instr, "pulse/en-off", tags=["pulse"], description="EN stays off: nothing is written.",
+                            values={s1: a, s2: a}, steps=[{"en": False}], flags_on=True)
+
+    def random(self):
+        gen = self.doc["generation"]
+        for d in draw_addition(self.fields, gen["seed"], gen["random_examples"]):
+            yield self.case(self.every_scan, f"random/{d['key']}", tags=["random"],
+                            description=f"{self.hms(d['s1'])} + {self.hms(d['s2'])}, drawn by hypothesis with a fixed seed.",
+                            values={self.addends[0]: d["s1"], self.addends[1]: d["s2"]})
+
+
+def clock_add_cases(fam, builder):
+    c = AddCases(fam, builder)
+    for family in (c.manual_examples, c.carries, c.range_errors, c.device_range, c.same_device, c.pulse, c.random):
+        yield from family()

@@ -1,0 +1,129 @@
+"""Cases for `hour_meter` families: scan sequences with the elapsed time of each scan."""
+from plcvec.cases.common import Operands
+from plcvec.cases.random_cases import draw_hour_meter
+from plcvec.engine.words import operand_words
+
+
+class HourCases:
+    def __init__(self, fam, builder):
+        self.fam, self.b, self.doc = fam, builder, fam.doc
+        self.fields = self.doc["data"]["fields"]
+        self.names = [f["name"] for f in self.fields]
+        self.ops = Operands(self.fields)
+        ops = self.doc["operands"]
+        role = {v["role"]: k for k, v in ops.items()}
+        self.preset, self.measured, self.output, self.work = role["preset"], role["measured"], role["output"], role["work"]
+        self.words = {k: v.get("words", 1) for k, v in ops.items()}
+        self.place = self.doc["generation"]["placement"]
+        self.unit = self.doc["data"]["subsecond_units_per_second"]
+        self.error_device = self.doc["error"]["device"]
+        self.instr = next(iter(builder.instructions))
+        self.cf = self.doc["data"]["constant_field"]["field"]
+
+    def hms(self, **kw):
+        v = {n: 0 for n in self.names}
+        v.update(kw)
+        return v
+
+    def seconds(self, n):
+        """Field values for n whole seconds, by the spec's own radices."""
+        return self.ops.codec.from_units(n)
+
+    def case(self, key, *, tags, description, preset, measured, steps, output=False, error=False,
+             preset_raw=None, clauses=()):
+        devices = {self.error_device: error, self.place[self.output]: output}
+        operands = {op: {"device": self.place[op]} for op in (self.measured, self.output, self.work)}
+        if isinstance(preset, int):
+            operands[self.preset] = {"constant": preset}
+        else:
+            operands[self.preset] = {"device": self.place[self.preset]}
+            self.ops.place(devices, self.place[self.preset], self.ops.words(preset, raw=preset_raw))
+        self.ops.place(devices, self.place[self.measured], self.ops.words(measured))
+        scratch = operand_words(self.place[self.work], self.words[self.work])
+        devices.update({a: 0 for a in scratch})
+        return self.b.vector(self.instr, key, tags=tags, description=description, operands=operands,
+                             devices=devices, steps=steps, scratch=scratch, clauses=clauses)
+
+    def on(self, ms, n=1):
+        return [{"input": True, "elapsed_ms": ms}] * n
+
+    def basics(self):
+        five = self.seconds(5)
+        yield self.case("reach/whole-seconds", tags=["scan-sequence"], preset=five, measured=self.hms(),
+                        steps=self.on(self.unit, 6), description="One second per scan for six scans; the preset of 5 s is reached at the fifth.")
+        yield self.case("reach/one-big-step", tags=["scan-sequence"], preset=five, measured=self.hms(),
+                        steps=self.on(self.unit * 7), description="A single scan of 7 s passes the 5 s preset.")
+        yield self.case("reach/already-past", tags=["scan-sequence"], preset=five, measured=self.seconds(100),
+                        steps=self.on(0), description="D1 already past the preset: the first execution turns the output on.")
+        yield self.case("subsecond/tenths", tags=["subsecond"], preset=self.seconds(2), measured=self.hms(),
+                        steps=self.on(self.unit // 10, 12), description="Twelve scans of a tenth of a second add up to 1 s, with the rest kept.")
+        yield self.case("subsecond/remainder-kept", tags=["subsecond"], preset=self.seconds(2), measured=self.hms(),
+                        steps=self.on(self.unit * 4 // 10, 5), description="Five scans of 0.4 s: 1 s after the third, 2 s after the fifth.")
+        yield self.case("subsecond/just-under", tags=["subsecond"], preset=self.seconds(1), measured=self.hms(),
+                        steps=self.on(self.unit - 1) + self.on(1), description="0.999 s then 0.001 s: the second completes on the second scan.")
+        carry = {n: f["max"] for n, f in zip(self.names, self.fields)}
+        carry[self.names[0]] = 0
+        yield self.case("carry/into-top-field", tags=["wrap", "boundary"], preset=self.seconds(10 ** 7), measured=carry,
+                        steps=self.on(self.unit), description="D1 at 0:59:59 plus 1 s carries into the hour.")
+
+    def constants(self):
+        top = self.fields[0]
+        per_top = self.ops.codec.modulus() // (top["max"] + 1)  # seconds in one unit of the top field
+        yield self.case("constant/one", tags=["constant", "boundary"], preset=1, measured=self.seconds(per_top - 1),
+                        steps=self.on(self.unit, 2), description=f"Constant preset 1 ({self.cf} only): reached after 1 s from 0:59:59.")
+        yield self.case("constant/max", tags=["constant", "boundary"], preset=top["max"],
+                        measured={n: (top["max"] if n == self.cf else 0) for n in self.names},
+                        steps=self.on(self.unit), description=f"Constant preset {top['max']}: D1 starts at it, so one scan turns D2 on.")
+        yield self.case("constant/zero", tags=["constant", "boundary", "zero-preset"], preset=0, measured=self.hms(),
+                        steps=self.on(0) + self.on(self.unit), description="Constant preset 0.")
+        yield self.case("register/zero", tags=["boundary", "zero-preset"], preset=self.hms(), measured=self.hms(),
+                        steps=self.on(self.unit), description="Preset 0:00:00 in data registers.")
+
+    def wrap(self):
+        top = {f["name"]: f["max"] for f in self.fields}
+        yield self.case("wrap/output-stays-on", tags=["wrap"], preset=self.seconds(1), measured=top, output=True,
+                        steps=self.on(self.unit, 2), description="D1 at the largest value with D2 on: one second later it is 0:00:00 and D2 stays on.")
+        below = self.ops.codec.from_units(self.ops.codec.modulus() - 2)
+        yield self.case("wrap/reach-then-wrap", tags=["wrap"], preset=top, measured=below,
+                        steps=self.on(self.unit, 3), description="Reach the largest preset, wrap, and keep measuring.")
+
+    def invalid_preset(self):
+        for f in self.fields[1:]:
+            for bad in (f["max"] + 1, 0xFFFF):
+                preset = self.hms(**{f["name"]: bad})
+                yield self.case(f"invalid-preset/{f['name']}={bad}/before-output", tags=["invalid-range"], preset=preset,
+                                measured=self.hms(), steps=self.on(self.unit, 2),
+                                description=f"Preset {f['name']} = {bad} (over {f['max']}) before D2 turned on: error flag on, D1 still measured, D2 stays off.")
+                yield self.case(f"invalid-preset/{f['name']}={bad}/after-output", tags=["invalid-range"],
+                                preset=self.seconds(1), measured=self.seconds(5), output=True,
+                                steps=[{"input": True, "elapsed_ms": self.unit,
+                                        "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(preset)))}],
+                                description=f"Preset changed to {f['name']} = {bad} after D2 turned on: D2 off, error flag on, D1 still measured.")
+        yield self.case("invalid-preset/recovers", tags=["invalid-range", "scan-sequence"], preset=self.hms(**{self.names[1]: self.fields[1]["max"] + 1}),
+                        measured=self.hms(), steps=self.on(self.unit) + [{"input": True, "elapsed_ms": self.unit,
+                        "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(self.seconds(1))))}],
+                        description="An invalid preset, then a valid one already reached: D2 turns on; the error flag stays as it was.")
+
+    def input_off(self):
+        yield self.case("input/off-on-off", tags=["input-off", "scan-sequence"], preset=self.seconds(3), measured=self.hms(),
+                        steps=self.on(self.unit * 15 // 10) + [{"input": False, "elapsed_ms": self.unit * 5}] + self.on(self.unit * 15 // 10),
+                        description="1.5 s on, 5 s off, 1.5 s on: only ON time counts.")
+        yield self.case("input/off-after-reach", tags=["input-off", "scan-sequence"], preset=self.seconds(1), measured=self.hms(),
+                        steps=self.on(self.unit) + [{"input": False, "elapsed_ms": self.unit}],
+                        description="The input goes off after D2 turned on.")
+        yield self.case("input/preset-raised-after-reach", tags=["scan-sequence"], preset=self.seconds(1), measured=self.hms(),
+                        steps=self.on(self.unit) + [{"input": True, "elapsed_ms": self.unit,
+                                                     "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(self.seconds(self.ops.codec.modulus() // (self.fields[0]["max"] + 1)))))}],
+                        description="After D2 turned on the preset is raised above D1.")
+
+    def random(self):
+        gen = self.doc["generation"]
+        for d in draw_hour_meter(self.fields, gen["seed"], gen["random_examples"]):
+            yield self.case(f"random/{d['key']}", tags=["random"], preset=d["preset"], measured=d["measured"], steps=d["steps"],
+                            description="A scan sequence drawn by hypothesis with a fixed seed.")
+
+
+def hour_meter_cases(fam, builder):
+    c = HourCases(fam, builder)
+    for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.input_off, c.random):
+        yield from family()

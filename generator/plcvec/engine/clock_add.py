@@ -1,0 +1,70 @@
+"""Rule kind `clock_add`: add two clock values field by field with carry, wrapping at the top field.
+
+The radix of each field is its range (max + 1); the sum past the top field's range wraps and sets the
+carry flags; a zero result sets the zero flags. Error checks run in the order the spec lists them.
+"""
+from plcvec.engine.words import FieldCodec, in_device_range
+
+
+class ClockAdd:
+    def __init__(self, doc):
+        self.doc = doc
+        self.codec = FieldCodec(doc["data"]["fields"])
+        self.ops = doc["operands"]
+        self.addends = [k for k, v in self.ops.items() if v["role"] == "addend"]
+        self.result = next(k for k, v in self.ops.items() if v["role"] == "result")
+        self.flags = doc["flags"]
+        self.errors = doc["errors"]
+
+    def execute(self, instr, operands, state, step, ctx, trace):
+        en = bool(step["en"])
+        previous, ctx["en"] = ctx.get("en", False), en
+        if not en:
+            return None
+        trace.add(instr["clause"])
+        if instr["execution"] == "rising_edge" and previous:
+            return None  # the pulse form executes on the rising edge only
+        values = {}
+        for check in self.errors["checks"]:
+            failed = self._failed(check, operands, state, values, ctx["device_sizes"])
+            if failed:
+                trace.add(check["clause"])
+                for register in self.errors["registers"]["devices"]:
+                    state[register] = check["code"]
+                trace.add(self.errors["registers"]["clause"])
+                ctx["error"] = {"code": check["code"]}
+                if self.errors["on_error"] == "computed" and check["check"] == "field_range":
+                    self._add(values, operands, state, trace)
+                return None
+        self._add(values, operands, state, trace)
+        return None
+
+    def _failed(self, check, operands, state, values, device_sizes):
+        for op in check["operands"]:
+            head = operands[op]["device"]
+            if check["check"] == "device_range":
+                if not in_device_range(head, self.ops[op]["words"], device_sizes):
+                    return True
+            else:
+                values[op] = self.codec.read(state, head)
+                if not all(self.codec.in_range(f, values[op][f["name"]]) for f in self.codec.fields):
+                    return True
+        return False
+
+    def _add(self, values, operands, state, trace):
+        trace.add(self.doc["data"]["order_clause"])
+        total = 0
+        for op in self.addends:
+            v = values.get(op) or self.codec.read(state, operands[op]["device"])
+            total += self.codec.to_units(v)
+        modulus = self.codec.modulus()
+        carry = total >= modulus if self.flags["carry_at_wrap"] else total > modulus
+        result = total % modulus
+        self.codec.write(state, operands[self.result]["device"], self.codec.from_units(result))
+        zero = result == 0
+        for name, on in (("carry", carry), ("zero", zero)):
+            if on:
+                trace.add(self.flags[name]["clause"])
+            for device in self.flags[name]["devices"]:
+                if self.flags["written"] == "always" or on:
+                    state[device] = on

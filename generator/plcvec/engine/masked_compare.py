@@ -1,0 +1,136 @@
+"""Rule kind `masked_compare`: compare the fields a selector word picks, most significant first.
+
+Covers the FX5 LDTM/LDDT families (select bits, current-clock bit, SM709) and the CP1E DT family
+(mask bits, BCD bytes, arithmetic flags), each entirely described by its spec.
+"""
+from plcvec.engine import logic
+from plcvec.engine.words import FieldCodec, encode, in_device_range, operand_words
+
+ORDERINGS = ("lt", "eq", "gt")
+
+
+class _Error(Exception):
+    pass
+
+
+class MaskedCompare:
+    def __init__(self, doc):
+        self.doc = doc
+        self.codec = FieldCodec(doc["data"]["fields"])
+        self.fields = doc["data"]["fields"]
+        self.sel = doc["selector"]
+        self.validity = doc["validity"]
+        self.flags = doc.get("flags")
+        self.logic = doc["logic"]
+        self.ops = doc["operands"]
+        self.data_ops = [k for k, v in self.ops.items() if v["role"] == "data"]
+        self.words = {k: v.get("words", 1) for k, v in self.ops.items()}
+        self.conditions = {c["symbol"]: c for c in doc["instructions"]["conditions"]}
+        self.reserved_mask = sum(1 << b for b in self.sel["reserved_bits"])
+
+    # -- the instruction ---------------------------------------------------------------------------
+    def execute(self, instr, operands, state, step, ctx, trace):
+        """Run one execution; returns the logic result passed on to the rest of the rung."""
+        form, cond = instr["form"], self.conditions[instr["symbol"]]
+        trace.add(form["clause"])
+        rlo_in = step.get("rlo_in")
+        err = self.validity["error"]
+        if state[err["device"]] and err.get("latch", True):
+            trace.add(err.get("latch_clause"))
+        skip = logic.skipped(form["logic"], rlo_in, self.logic)
+        if skip is not None:
+            return skip
+        trace.add(cond["clause"])
+        try:
+            ordering = self.compare(operands, state, step, ctx, trace)
+        except _Error:
+            state[err["device"]] = True
+            trace.add(err.get("clause"))
+            ctx["error"] = {"device": err["device"]}
+            return logic.combine(form["logic"], rlo_in, err["result"])
+        if ordering is None:  # non-continuity without an error
+            return logic.combine(form["logic"], rlo_in, False)
+        if self.flags:
+            trace.add(self.flags["clause"])
+            for symbol, device in self.flags["devices"].items():
+                state[device] = self.flags["table"][ordering][symbol]
+        return logic.combine(form["logic"], rlo_in, ordering in cond["true_when"])
+
+    def selector_value(self, operand, state):
+        return operand["constant"] if "constant" in operand else state[operand["device"]]
+
+    def compare(self, operands, state, step, ctx, trace):
+        """The ordering of the selected fields of the first data operand against the second (or the clock)."""
+        sel = self.selector_value(operands[self.sel["operand"]], state)
+        source_bit = self.sel.get("source_bit")
+        clock_mode = bool(source_bit) and bool(sel >> source_bit["bit"] & 1)
+        if clock_mode:
+            trace.add(source_bit["clause"])
+        first, second = self.data_ops
+        compared_ops = [first] if clock_mode else [first, second]
+
+        device_range = self.validity["device_range"]
+        if device_range["check"]:
+            checked = compared_ops + ([second] if clock_mode and device_range["s2_in_clock_mode"] else [])
+            for op in checked:
+                if not in_device_range(operands[op]["device"], self.words[op], ctx["device_sizes"]):
+                    trace.add(device_range["clause"])
+                    raise _Error
+        values = {op: self.codec.read(state, operands[op]["device"]) for op in compared_ops}
+        if clock_mode:
+            values[second] = {f["name"]: step["clock"][f["name"]] for f in self.fields}
+
+        if self.validity["scope"] == "all":
+            self._check(values, compared_ops, self.fields, trace)
+
+        if sel & self.reserved_mask:
+            trace.add(self.sel.get("reserved_clause"))
+            action = self.sel["on_reserved"]
+            if action == "non_continuity":
+                return None
+            if action == "error":
+                raise _Error
+        want = 1 if self.sel["polarity"] == "select" else 0
+        selected = [f for f in self.fields if (sel >> self.sel["field_bits"][f["name"]] & 1) == want]
+        for f in self.fields:
+            trace.add(self.sel["field_clauses"][f["name"]])
+        if not selected:
+            trace.add(self.sel["no_field_clause"])
+            action = self.sel["on_no_field"]
+            if action == "non_continuity":
+                return None
+            if action == "error":
+                raise _Error
+            return "eq"
+        if self.validity["scope"] == "selected":
+            self._check(values, compared_ops, selected, trace)
+        trace.add(self.doc["data"]["order_clause"])
+        for f in selected:
+            trace.add(f["clause"])
+            a, b = values[first][f["name"]], values[second][f["name"]]
+            if a is None or b is None:
+                # Only reached when non-BCD data is not checked: compare the raw bytes.
+                a = self._raw(state, operands[first], f) if a is None else self._raw_of(a, f)
+                b = self._raw(state, operands[second], f) if b is None else self._raw_of(b, f)
+            if a != b:
+                return "lt" if a < b else "gt"
+        return "eq"
+
+    def _check(self, values, compared_ops, fields, trace):
+        for op in compared_ops:
+            for f in fields:
+                v = values[op][f["name"]]
+                if v is None:
+                    if self.validity["bcd"] == "error":
+                        trace.add(f["clause"])
+                        raise _Error
+                elif not self.codec.in_range(f, v) and self.validity["range"] == "error":
+                    trace.add(f["clause"])
+                    raise _Error
+
+    def _raw(self, state, operand, f):
+        words = [state[a] for a in operand_words(operand["device"], 1 + max(x["word"] for x in self.fields))]
+        return self.codec.raw(words, f)
+
+    def _raw_of(self, value, f):
+        return encode(value, f["encoding"], f["width"])

@@ -1,0 +1,27 @@
+"""What each tag means: written into every vector file's header so consumers can filter by reason."""
+
+TAGS = {
+    "boundary": "A field at the edge of its range, or an operand at the edge of its device range, that must be accepted.",
+    "condition": "One instruction against one ordering of the data, decided by one field.",
+    "constant": "An operand given as a constant instead of a device.",
+    "current-clock": "The comparison uses the current clock (injected per step) or the CPU's clock area.",
+    "device-range": "An operand's words reach or pass the end of its device range.",
+    "input-off": "The input of a measuring instruction goes off during the sequence.",
+    "invalid-bcd": "A field holds a nibble above 9, which is not BCD.",
+    "invalid-range": "A field outside the range the manual gives for it.",
+    "latch": "An error flag held over several executions.",
+    "logic": "AND/OR forms with the preceding logic on and off.",
+    "manual-example": "Reproduces an example printed in the manual; `printed` holds the manual's own expectation.",
+    "nonexistent-date": "A date no calendar has, whose fields are each within range.",
+    "pulse": "Execution on the rising edge of the execution condition, over a sequence of scans.",
+    "random": "Drawn with hypothesis from the spec's ranges with a fixed seed.",
+    "reconstructed": "The manual's input values were lost; these satisfy its printed table.",
+    "reserved-bit": "A selector bit the manual reserves, alone or mixed with others.",
+    "same-device": "The same device is both a source and the destination.",
+    "scan-sequence": "Several executions with the elapsed time of each.",
+    "selector": "One class of selector/mask word: a subset of fields, for each source.",
+    "subsecond": "Elapsed times below one second that must accumulate.",
+    "wrap": "A value that carries past its top field and wraps.",
+    "zero-preset": "A preset of zero.",
+    "zero-selector": "A selector that selects no field.",
+}
