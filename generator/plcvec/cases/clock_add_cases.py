@@ -127,7 +127,8 @@ class AddCases:
                             description="EN off, on, on, off, on, on, with (s2) changed before every scan.",
                             values={s1: a, s2: {n: 0 for n in self.names}}, steps=steps)
             yield self.case(instr, "pulse/en-off", tags=["pulse"], description="EN stays off: nothing is written.",
-                            values={s1: a, s2: a}, steps=[{"en": False}], flags_on=True)
+                            values={s1: a, s2: a}, steps=[{"en": False}], flags_on=True,
+                            clauses=[self.b.instructions[instr]["clause"]])
 
     def random(self):
         gen = self.doc["generation"]

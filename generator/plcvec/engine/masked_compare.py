@@ -7,6 +7,7 @@ from plcvec.engine import logic
 from plcvec.engine.words import FieldCodec, encode, in_device_range, operand_words
 
 ORDERINGS = ("lt", "eq", "gt")
+ERROR = "error"
 
 
 class _Error(Exception):
@@ -41,20 +42,33 @@ class MaskedCompare:
         if skip is not None:
             return skip
         trace.add(cond["clause"])
+        outcome = self.evaluate(operands, state, step, ctx, trace)
+        return logic.combine(form["logic"], rlo_in, self.contact(cond["symbol"], outcome))
+
+    def evaluate(self, operands, state, step, ctx, trace):
+        """Compare once and write the error device and flags: "error", None (non-continuity) or an ordering.
+
+        Which condition symbol asked does not change anything written, only the contact (see contact()).
+        """
         try:
             ordering = self.compare(operands, state, step, ctx, trace)
         except _Error:
+            err = self.validity["error"]
             state[err["device"]] = True
             trace.add(err.get("clause"))
             ctx["error"] = {"device": err["device"]}
-            return logic.combine(form["logic"], rlo_in, err["result"])
-        if ordering is None:  # non-continuity without an error
-            return logic.combine(form["logic"], rlo_in, False)
-        if self.flags:
+            return ERROR
+        if ordering is not None and self.flags:
             trace.add(self.flags["clause"])
             for symbol, device in self.flags["devices"].items():
                 state[device] = self.flags["table"][ordering][symbol]
-        return logic.combine(form["logic"], rlo_in, ordering in cond["true_when"])
+        return ordering
+
+    def contact(self, symbol, outcome):
+        """The contact state a condition symbol gives for an outcome of evaluate()."""
+        if outcome == ERROR:
+            return self.validity["error"]["result"]
+        return outcome is not None and outcome in self.conditions[symbol]["true_when"]
 
     def selector_value(self, operand, state):
         return operand["constant"] if "constant" in operand else state[operand["device"]]

@@ -2,21 +2,67 @@
 
 Plain PyYAML keeps the last of two equal keys without a word; a spec must never silently lose a fact,
 so the node tree is walked here and every mapping is built by hand.
+
+Only plain YAML values are built: a tag outside the YAML core schema (`!!python/object`, `!!binary`,
+a local `!tag`) is refused before anything is constructed, and so are aliases (`*name`), which could
+share one value between two places or make a value contain itself.
 """
 import yaml
 
 from plcvec.errors import SpecError
 
+_CORE = "tag:yaml.org,2002:"
+_SCALAR_TAGS = {_CORE + t for t in ("str", "int", "float", "bool", "null", "timestamp")}
+_COLLECTION_TAGS = {yaml.MappingNode: _CORE + "map", yaml.SequenceNode: _CORE + "seq"}
+
+# Contexts PyYAML reports for a construct that was opened and never closed: the line that opened it
+# is the one to fix, not the (often much later) line where the parser gave up.
+_UNCLOSED = ("while parsing a flow", "while scanning a quoted scalar", "while scanning a block scalar")
+
+
+class _AliasError(Exception):
+    def __init__(self, mark, name):
+        self.mark, self.name = mark, name
+
+
+class _SpecLoader(yaml.SafeLoader):
+    """PyYAML's SafeLoader, refusing aliases while composing."""
+
+    def compose_node(self, parent, index):
+        if self.check_event(yaml.AliasEvent):
+            event = self.peek_event()
+            raise _AliasError(event.start_mark, event.anchor)
+        return super().compose_node(parent, index)
+
+
+def _syntax_error(path, exc):
+    problem, context = exc.problem, exc.context
+    pmark, cmark = exc.problem_mark, exc.context_mark
+    if context and cmark and context.startswith(_UNCLOSED) and (pmark is None or pmark.line != cmark.line):
+        what = context.replace("while parsing ", "").replace("while scanning ", "")
+        detail = f"{problem} on line {pmark.line + 1}" if pmark else problem
+        return SpecError(path, cmark.line + 1, f"YAML syntax error: the {what} that starts on this line is not closed ({detail})")
+    mark = pmark or cmark
+    text = problem or context or "cannot be parsed"
+    if context and problem and mark is pmark and cmark is not None:
+        text = f"{problem} ({context} on line {cmark.line + 1})"
+    return SpecError(path, mark.line + 1 if mark else None, f"YAML syntax error: {text}")
+
 
 def load_with_lines(path, text):
     """Return (data, lines) where lines maps a path tuple (keys and indexes) to its 1-based line."""
-    loader = yaml.SafeLoader(text)
+    loader = _SpecLoader(text)
     try:
         node = loader.get_single_node()
+    except _AliasError as exc:
+        raise SpecError(path, exc.mark.line + 1,
+                        f"aliases (*{exc.name}) are not allowed in a spec: write the value out") from None
+    except yaml.reader.ReaderError as exc:
+        line = text.count("\n", 0, exc.position) + 1 if isinstance(exc.position, int) else None
+        char = exc.character if isinstance(exc.character, str) else chr(exc.character)
+        raise SpecError(path, line, f"character {ord(char):#06x} is not allowed in a YAML file") from None
     except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        line = mark.line + 1 if mark else None
-        raise SpecError(path, line, f"YAML syntax error: {exc.problem or exc.context}") from None
+        raise _syntax_error(path, exc) from None
     except yaml.YAMLError as exc:
         raise SpecError(path, None, f"YAML error: {exc}") from None
     finally:
@@ -28,16 +74,31 @@ def load_with_lines(path, text):
     return data, lines
 
 
+def _check_tag(node, path):
+    line = node.start_mark.line + 1
+    allowed = _COLLECTION_TAGS.get(type(node))
+    if (node.tag == allowed) if allowed else (node.tag in _SCALAR_TAGS):
+        return
+    if node.tag == _CORE + "value":
+        raise SpecError(path, line, "a bare '=' must be quoted (\"=\")")
+    shown = "!!" + node.tag[len(_CORE):] if node.tag.startswith(_CORE) else node.tag
+    if "python/" in node.tag:
+        raise SpecError(path, line, f"tag {shown} is not allowed in a spec: the loader never builds Python objects")
+    raise SpecError(path, line, f"tag {shown} is not allowed in a spec: only plain YAML values (strings, numbers, booleans, null, lists, mappings)")
+
+
 def _build(node, where, lines, path, loader):
     lines[where] = node.start_mark.line + 1
+    _check_tag(node, path)
     if isinstance(node, yaml.MappingNode):
         out = {}
         for key_node, value_node in node.value:
             if not isinstance(key_node, yaml.ScalarNode):
                 raise SpecError(path, key_node.start_mark.line + 1, "a mapping key must be a plain scalar")
-            if key_node.tag == "tag:yaml.org,2002:merge":
+            if key_node.tag == _CORE + "merge":
                 raise SpecError(path, key_node.start_mark.line + 1, "merge keys (<<) are not allowed in a spec")
-            key = loader.construct_object(key_node)
+            _check_tag(key_node, path)
+            key = _construct(key_node, path, loader)
             if not isinstance(key, (str, int)) or isinstance(key, bool):
                 raise SpecError(path, key_node.start_mark.line + 1, f"mapping key {key!r} must be a string")
             key = str(key)
@@ -51,7 +112,12 @@ def _build(node, where, lines, path, loader):
         return out
     if isinstance(node, yaml.SequenceNode):
         return [_build(item, where + (i,), lines, path, loader) for i, item in enumerate(node.value)]
+    return _construct(node, path, loader)
+
+
+def _construct(node, path, loader):
     try:
         return loader.construct_object(node, deep=True)
     except yaml.YAMLError as exc:
-        raise SpecError(path, node.start_mark.line + 1, f"bad scalar: {exc}") from None
+        problem = getattr(exc, "problem", None) or str(exc)
+        raise SpecError(path, node.start_mark.line + 1, f"bad value {node.value!r}: {problem}") from None
