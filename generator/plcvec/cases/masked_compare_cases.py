@@ -315,7 +315,7 @@ class CompareCases:
         yield self.case(self.load_form, eq_symbol, "latch/invalid-then-valid-then-cleared",
                         tags=["latch", "invalid-range"],
                         description=f"Invalid data, then valid data, then the program turns {err['device']} off: "
-                                    f"{'it stays on until cleared' if err.get('latch', True) else 'it reflects each execution'}.",
+                                    "whether it stays on until cleared is the spec's latch rule for this flag.",
                         s1=bad, s2=good, sel=sel, steps=steps)
         yield self.case(self.load_form, eq_symbol, "latch/already-on-valid-data",
                         tags=["latch"], extra_devices={err["device"]: True},

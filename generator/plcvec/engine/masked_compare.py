@@ -58,6 +58,9 @@ class MaskedCompare:
             trace.add(err.get("clause"))
             ctx["error"] = {"device": err["device"]}
             return ERROR
+        err = self.validity["error"]
+        if not err.get("latch", True):
+            state[err["device"]] = False  # an error flag that reports each execution, not a latch
         if ordering is not None and self.flags:
             trace.add(self.flags["clause"])
             for symbol, device in self.flags["devices"].items():

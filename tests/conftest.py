@@ -1,0 +1,32 @@
+import json
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[1]
+MANUAL_DIR = REPO.parent / "shared" / "manual"
+
+
+@pytest.fixture(scope="session")
+def repo():
+    return REPO
+
+
+@pytest.fixture(scope="session")
+def families():
+    from plcvec.spec.loader import load_spec
+
+    return {f.name: f for f in load_spec(REPO / "spec")}
+
+
+@pytest.fixture(scope="session")
+def golden():
+    """The committed vector files, {family: parsed file}."""
+    manifest = json.loads((REPO / "vectors" / "manifest.json").read_text())
+    return {name: json.loads((REPO / "vectors" / entry["file"]).read_text())
+            for name, entry in manifest["families"].items()}
+
+
+@pytest.fixture(scope="session")
+def all_vectors(golden):
+    return [v for f in golden.values() for v in f["vectors"]]

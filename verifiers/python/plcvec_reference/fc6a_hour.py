@@ -1,0 +1,119 @@
+"""IDEC FC6A MICROSmart: HOUR (hour meter).
+
+Written from the manual page fc6a-hour-meter-HOUR.txt.
+"""
+from __future__ import annotations
+
+from .machine import DeviceMemory
+
+ALTERNATIVES = {
+    "HOUR-OUTPUT-OFF": ("latched", "recompared"),
+    "HOUR-INPUT-OFF": ("hold", "reset"),
+    "HOUR-PRESET-ZERO": ("immediate", "never"),
+}
+
+DEFAULTS = {
+    "HOUR-OUTPUT-OFF": "latched",     # or "recompared"
+    "HOUR-INPUT-OFF": "hold",         # or "reset"
+    "HOUR-PRESET-ZERO": "immediate",  # or "never"
+}
+
+ERROR_FLAG = "M8004"
+# "the value returns to 0 hours 0 minutes 0 seconds" after "65,535 hours 59 minutes 59 seconds"
+CYCLE = 65536 * 3600
+
+
+def to_seconds(hms) -> int:
+    h, m, s = hms
+    return h * 3600 + m * 60 + s
+
+
+def from_seconds(total: int):
+    h, rest = divmod(total, 3600)
+    m, s = divmod(rest, 60)
+    return [h, m, s]
+
+
+class HourMeter:
+    """An FC6A CPU executing one HOUR instruction per scan.
+
+    The fraction of a second already measured lives in this object (on the CPU it
+    is in the system work area D3, D3+1, whose contents vectors never compare).
+    """
+
+    CONTACT = False
+
+    def __init__(self, devices: dict, device_sizes: dict, choices: dict | None = None):
+        self.mem = DeviceMemory(devices, device_sizes)
+        self.choices = dict(DEFAULTS)
+        self.choices.update(choices or {})
+        self.fraction_ms = 0
+        self.wrapped = False   # for "recompared": D2 stays on across a wrap
+
+    def preset(self, operand: dict):
+        # "When source device S1 is designated by a constant, the preset value can be 0
+        # through 65,535 in hours, then minutes and seconds are set to 0."
+        if "constant" in operand:
+            return [operand["constant"] & 0xFFFF, 0, 0]
+        # "Source device S1, when designated by a data register, ... occupy 3 consecutive
+        # data registers ... to store hour, minute, and second data."
+        return self.mem.read_block(operand["device"], 3)
+
+    @staticmethod
+    def preset_valid(p) -> bool:
+        # "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."
+        return 0 <= p[0] <= 65535 and 0 <= p[1] <= 59 and 0 <= p[2] <= 59
+
+    def execute(self, instruction: str, operands: dict, step: dict):
+        if instruction != "HOUR":
+            raise ValueError(instruction)
+        mem = self.mem
+        d1 = operands["D1"]["device"]
+        d2 = operands["D2"]["device"]
+        on = bool(step["input"])
+
+        if not on:
+            # "While input is on, the ON duration of the input is measured."  Off: HOUR-INPUT-OFF.
+            if self.choices["HOUR-INPUT-OFF"] == "reset":
+                mem.write_block(d1, [0, 0, 0])
+                self.fraction_ms = 0
+            return None
+
+        # Measure: the whole elapsed time since the previous execution is ON time.
+        self.fraction_ms += int(step["elapsed_ms"])
+        whole, self.fraction_ms = divmod(self.fraction_ms, 1000)
+        total = to_seconds(mem.read_block(d1, 3)) + whole
+        wrapped_now = total >= CYCLE
+        # "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59
+        # seconds, the value returns to 0 hours 0 minutes 0 seconds to repeat another
+        # measuring cycle, with the comparison output remaining on."
+        total %= CYCLE
+        mem.write_block(d1, from_seconds(total))
+
+        p = self.preset(operands["S1"])
+        if not self.preset_valid(p):
+            # "When any of the hour, minute, or second data of source device S1 exceeds the
+            # valid range, a user program execution error will result, turning on special
+            # internal relay M8004 ... but the input ON duration is measured."
+            # "... is changed to an invalid value after the comparison output has turned
+            # on, the comparison output is turned off."
+            mem.write(ERROR_FLAG, True)
+            mem.write(d2, False)
+            return None
+
+        preset = to_seconds(p)
+        reached = total >= preset
+        if preset == 0 and self.choices["HOUR-PRESET-ZERO"] == "never":
+            reached = False
+        # "When the D1 value reaches the S1 value, an output or internal relay assigned by
+        # destination device D2 is turned on."
+        if self.choices["HOUR-OUTPUT-OFF"] == "latched":
+            if reached:
+                mem.write(d2, True)
+        else:  # recompared: D2 = D1 >= S1, except that it stays on across a wrap
+            if wrapped_now and mem.read(d2):
+                self.wrapped = True
+            if reached:
+                self.wrapped = False
+            mem.write(d2, bool(reached or (self.wrapped and mem.read(d2))))
+        return None
