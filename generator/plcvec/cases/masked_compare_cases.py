@@ -94,6 +94,10 @@ class CompareCases:
     def all_fields(self):
         return self.selector(self.names)
 
+    def symbol_for(self, ordering):
+        """The condition that is true for exactly this one ordering (=, <, >)."""
+        return next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == [ordering])
+
     # -- case families ------------------------------------------------------------------------------
     def manual_examples(self):
         for ex in self.doc["examples"]:
@@ -120,7 +124,7 @@ class CompareCases:
         # Data equal in the compared fields and different in every masked one; then one compared field differs.
         a = self.ops.values()
         b = {n: (v if n in compared else self.ops.mid(n, 1)) for n, v in a.items()}
-        symbol = next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == ["eq"])
+        symbol = self.symbol_for("eq")
         yield self.case(self.load_form, symbol, f"manual-example/{ex['id']}/masked-fields-differ",
                         tags=["manual-example"], clauses=[ex["clause"]],
                         description=f"{ex['says']} Only the masked fields differ, so the data are equal.",
@@ -170,8 +174,7 @@ class CompareCases:
         return (f["max"] + 1) & ((1 << f["width"]) - 1)
 
     def selector_classes(self):
-        eq_symbol, lt_symbol, gt_symbol = (next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == [o])
-                                           for o in ("eq", "lt", "gt"))
+        eq_symbol, lt_symbol, gt_symbol = (self.symbol_for(o) for o in ("eq", "lt", "gt"))
         sources = [False, True] if self.clock_bit else [False]
         # Two data patterns: every field differs with alternating direction; and the top field equal.
         a = self.ops.values()
@@ -214,7 +217,7 @@ class CompareCases:
                                 s1=equal, s2=equal, sel=value, sel_constant=constant, clock=clock)
 
     def boundaries(self):
-        eq_symbol = next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == ["eq"])
+        eq_symbol = self.symbol_for("eq")
         for f in self.fields:
             for op in (self.first, self.second):
                 for v in signed_boundaries(f):
@@ -254,7 +257,7 @@ class CompareCases:
         spec = self.doc.get("nonexistent_dates")
         if not spec:
             return
-        lt_symbol, eq_symbol = (next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == [o]) for o in ("lt", "eq"))
+        lt_symbol, eq_symbol = self.symbol_for("lt"), self.symbol_for("eq")
         last = self.names[-1]
         for date in spec["dates"]:
             slug = "-".join(str(date[n]) for n in self.names)
@@ -271,7 +274,7 @@ class CompareCases:
         dr = self.doc["validity"]["device_range"]
         if not dr["check"]:
             return
-        eq_symbol = next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == ["eq"])
+        eq_symbol = self.symbol_for("eq")
         equal = self.ops.words(self.ops.values())
         for op in (self.first, self.second):
             prefix = split_address(self.place[op])[0]
@@ -304,7 +307,7 @@ class CompareCases:
                                 s1=self.ops.words(a), s2=dummy, sel=sel, clock=clock)
 
     def latching(self):
-        eq_symbol = next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == ["eq"])
+        eq_symbol = self.symbol_for("eq")
         err = self.doc["validity"]["error"]
         good = self.ops.words(self.ops.values())
         bad = self.ops.words(self.ops.values(), raw={self.names[0]: self._invalid_raw(self.fields[0])})
@@ -326,8 +329,8 @@ class CompareCases:
         area = self.doc.get("clock_area")
         if not area:
             return
-        eq_symbol = next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == ["eq"])
-        lt_symbol = next(c["symbol"] for c in self.doc["instructions"]["conditions"] if c["true_when"] == ["lt"])
+        eq_symbol = self.symbol_for("eq")
+        lt_symbol = self.symbol_for("lt")
         now = self.ops.values()
         for symbol, other, rel in ((eq_symbol, now, "equal to"), (lt_symbol, self.pair_with(self.names[0], "lt")[1], "before")):
             yield self.case(self.load_form, symbol, f"clock-area/{'equal' if other is now else 'before'}",
