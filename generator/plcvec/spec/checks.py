@@ -23,7 +23,7 @@ def _unique(fam, items, where, what):
     for i, item in enumerate(items):
         key = item["id"] if "id" in item else item.get("name")
         if key in seen:
-            raise fam.error(where + (i,), f"duplicate {what} id {key!r} (also item {seen[key] + 1})")
+            raise fam.error(where + (i,), f"duplicate {what} id {key!r} (first used on line {fam.line_of(*where, seen[key])})")
         seen[key] = i
 
 
@@ -65,9 +65,10 @@ def _check_references(fam):
                     raise fam.error(where + (key,), f"unknown interpretation {value!r}")
                 interp = fam.interpretations[value]
                 param = where[-1]
-                for alt in interp["alternatives"]:
+                index = list(fam.interpretations).index(value)
+                for k, alt in enumerate(interp["alternatives"]):
                     if param not in alt["sets"]:
-                        raise fam.error(("interpretations", list(fam.interpretations).index(value)),
+                        raise fam.error(("interpretations", index, "alternatives", k, "sets"),
                                         f"interpretation {value!r} alternative {alt['id']!r} does not set {param!r}, "
                                         f"which {'.'.join(map(str, where))} takes from it")
 
@@ -80,9 +81,12 @@ def _check_interpretations(fam):
         if interp["default"] not in ids:
             raise fam.error(("interpretations", i, "default"),
                             f"default {interp['default']!r} is not one of the alternatives {ids}")
-        keys = {tuple(sorted(a["sets"])) for a in interp["alternatives"]}
-        if len(keys) != 1:
-            raise fam.error(("interpretations", i, "alternatives"), f"alternatives of {interp['id']!r} set different parameters")
+        first = sorted(interp["alternatives"][0]["sets"])
+        for k, alt in enumerate(interp["alternatives"][1:], 1):
+            if sorted(alt["sets"]) != first:
+                raise fam.error(("interpretations", i, "alternatives", k, "sets"),
+                                f"alternative {alt['id']!r} of {interp['id']!r} sets {sorted(alt['sets'])}, "
+                                f"but {interp['alternatives'][0]['id']!r} sets {first}: alternatives must set the same parameters")
         used = any(n.get("interpretation") == interp["id"] for _, n in _walk(fam.doc) if len(n) == 1)
         if not used:
             raise fam.error(("interpretations", i), f"interpretation {interp['id']!r} is not referenced by any rule parameter")
@@ -102,7 +106,7 @@ def _check_fields(fam):
         if f["lsb"] + f["width"] > 16:
             raise fam.error(where, f"field {f['name']!r}: bits {f['lsb']}..{f['lsb'] + f['width'] - 1} do not fit a 16-bit word")
         if f["encoding"] == "bcd" and f["width"] % 4:
-            raise fam.error(where, f"field {f['name']!r}: a BCD field must be a whole number of 4-bit digits")
+            raise fam.error(where, f"field {f['name']!r}: width {f['width']} is not a whole number of 4-bit BCD digits")
         if f["encoding"] in ("signed16", "unsigned16") and f["width"] != 16:
             raise fam.error(where, f"field {f['name']!r}: encoding {f['encoding']} needs width 16")
         lo, hi = _ENCODING_LIMITS[f["encoding"]](f["width"])
@@ -127,13 +131,15 @@ def _check_selector(fam):
     if set(sel["field_clauses"]) != set(names):
         raise fam.error(("selector", "field_clauses"), f"field_clauses must name exactly the fields {sorted(names)}")
     owner = {}
-    bits = [(b, f"field {f}") for f, b in sel["field_bits"].items()] + [(b, "reserved") for b in sel["reserved_bits"]]
+    bits = [(b, f"field {f}", ("selector", "field_bits", f)) for f, b in sel["field_bits"].items()]
+    bits += [(b, "reserved", ("selector", "reserved_bits", j)) for j, b in enumerate(sel["reserved_bits"])]
     if "source_bit" in sel:
-        bits.append((sel["source_bit"]["bit"], "current-clock bit"))
-    for b, who in bits:
+        bits.append((sel["source_bit"]["bit"], "current-clock bit", ("selector", "source_bit", "bit")))
+    for b, who, where in bits:
         if b in owner:
-            raise fam.error(("selector",), f"bit {b} is assigned twice ({owner[b]} and {who})")
-        owner[b] = who
+            other, other_where = owner[b]
+            raise fam.error(where, f"bit {b} is assigned twice ({who} here, {other} on line {fam.line_of(*other_where)})")
+        owner[b] = who, where
     if "source_bit" in sel:
         clock = doc.get("current_clock", {}).get("fields")
         if clock is None:

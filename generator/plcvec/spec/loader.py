@@ -64,30 +64,59 @@ def _describe(error):
     if error.validator is False or error.validator_value is False:
         return where, f"key {where[-1]!r} is not allowed for this kind of instruction family"
     if error.validator == "required":
-        return where, error.message.replace("is a required property", "is required but missing")
+        return where, (f"{'.'.join(map(str, where))}: " if where else "") + \
+            error.message.replace("is a required property", "is required but missing")
     if error.validator == "type":
         return where, f"{'.'.join(map(str, where)) or 'value'}: expected {error.validator_value}, got {json.dumps(error.instance, default=str)[:60]}"
     return where, f"{'.'.join(map(str, where)) or 'document'}: {error.message[:300]}"
 
 
+def _describe_forbidden(error, doc):
+    """A `false` subschema under `properties`: jsonschema leaves the key out of the error's path, so find it."""
+    where = tuple(error.absolute_path)
+    container = doc
+    for step in where:
+        container = container[step]
+    key = None
+    if isinstance(container, dict):
+        same = [k for k, v in container.items() if v is error.instance] or \
+               [k for k, v in container.items() if v == error.instance]
+        key = same[0] if same else None
+    kind = doc.get("kind") if isinstance(doc, dict) else None
+    if key is None:
+        return where, f"{'.'.join(map(str, where)) or 'document'}: a value is not allowed here for kind {kind!r}"
+    return where + (key,), f"key {key!r} is not allowed for this kind of instruction family (kind: {kind})"
+
+
 def load_family(path):
     path = Path(path)
     try:
-        text = path.read_text(encoding="utf-8")
+        raw = path.read_bytes()
     except OSError as exc:
-        raise SpecError(path, None, f"cannot read: {exc.strerror}") from None
+        raise SpecError(path, None, f"cannot read: {exc.strerror or exc}") from None
+    try:
+        text = raw.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise SpecError(path, None, f"not UTF-8 text ({exc.reason})") from None
+        line = raw.count(b"\n", 0, exc.start) + 1
+        column = exc.start - (raw.rfind(b"\n", 0, exc.start) + 1) + 1
+        raise SpecError(path, line, f"not UTF-8 text: byte {raw[exc.start]:#04x} at column {column} "
+                                    f"cannot be decoded ({exc.reason}); save the file as UTF-8") from None
     doc, lines = load_with_lines(path, text)
     if not isinstance(doc, dict):
         raise SpecError(path, 1, "a spec file must be a mapping at the top level")
-    errors = sorted(_schema_validator().iter_errors(doc), key=lambda e: (list(map(str, e.absolute_path)), e.validator))
+    errors = sorted(_schema_validator().iter_errors(doc), key=lambda e: (list(map(str, e.absolute_path)), str(e.validator)))
     if errors:
-        best = jsonschema.exceptions.best_match(errors)
-        # best_match may name an `allOf`/`if` wrapper: prefer the deepest concrete error below it.
-        while best.context:
-            best = jsonschema.exceptions.best_match(best.context)
-        where, message = _describe(best)
+        # A key the family's kind forbids (a `false` subschema) is the cause of whatever else is wrong
+        # with its value, so it is reported first.
+        forbidden = [e for e in errors if e.schema is False]
+        if forbidden:
+            where, message = _describe_forbidden(forbidden[0], doc)
+        else:
+            best = jsonschema.exceptions.best_match(errors)
+            # best_match may name an `allOf`/`if` wrapper: prefer the deepest concrete error below it.
+            while best.context:
+                best = jsonschema.exceptions.best_match(best.context)
+            where, message = _describe(best)
         family = Family.__new__(Family)
         family.path, family.lines = path, lines
         raise SpecError(path, Family.line_of(family, *where), message)

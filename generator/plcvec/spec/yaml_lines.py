@@ -20,6 +20,13 @@ _COLLECTION_TAGS = {yaml.MappingNode: _CORE + "map", yaml.SequenceNode: _CORE + 
 _UNCLOSED = ("while parsing a flow", "while scanning a quoted scalar", "while scanning a block scalar")
 
 
+_HINTS = (
+    ("mapping values are not allowed here", "check the indentation, or quote a value that contains ': '"),
+    ("found character '\\t'", "indent with spaces, not tabs"),
+    ("expected <block end>", "check the indentation"),
+)
+
+
 class _AliasError(Exception):
     def __init__(self, mark, name):
         self.mark, self.name = mark, name
@@ -35,15 +42,43 @@ class _SpecLoader(yaml.SafeLoader):
         return super().compose_node(parent, index)
 
 
-def _syntax_error(path, exc):
+def _runaway_quote(text, line):
+    """The start line of a quoted string that spans lines and ends on 0-based `line`, if any.
+
+    A missing closing quote makes YAML read on to the next quote character, often lines later, and
+    the parser only stumbles there; the line to fix is the one where the string opened.
+    """
+    found = None
+    try:
+        for token in yaml.scan(text, Loader=yaml.SafeLoader):
+            if token.start_mark.line > line:
+                break
+            if (isinstance(token, yaml.ScalarToken) and token.style in ('"', "'")
+                    and token.start_mark.line < token.end_mark.line == line):
+                found = token.start_mark.line
+    except yaml.YAMLError:
+        pass
+    return found
+
+
+def _syntax_error(path, exc, text):
     problem, context = exc.problem, exc.context
     pmark, cmark = exc.problem_mark, exc.context_mark
+    start = _runaway_quote(text, pmark.line) if pmark else None
+    if start is not None:
+        return SpecError(path, start + 1, f"YAML syntax error: the quoted string that starts on this line runs on to "
+                                          f"line {pmark.line + 1}; is its closing quote missing? ({problem})")
     if context and cmark and context.startswith(_UNCLOSED) and (pmark is None or pmark.line != cmark.line):
         what = context.replace("while parsing ", "").replace("while scanning ", "")
+        what = what[2:] if what.startswith("a ") else what
         detail = f"{problem} on line {pmark.line + 1}" if pmark else problem
         return SpecError(path, cmark.line + 1, f"YAML syntax error: the {what} that starts on this line is not closed ({detail})")
     mark = pmark or cmark
     text = problem or context or "cannot be parsed"
+    for start, hint in _HINTS:
+        if text.startswith(start):
+            text += f" ({hint})"
+            break
     if context and problem and mark is pmark and cmark is not None:
         text = f"{problem} ({context} on line {cmark.line + 1})"
     return SpecError(path, mark.line + 1 if mark else None, f"YAML syntax error: {text}")
@@ -51,8 +86,9 @@ def _syntax_error(path, exc):
 
 def load_with_lines(path, text):
     """Return (data, lines) where lines maps a path tuple (keys and indexes) to its 1-based line."""
-    loader = _SpecLoader(text)
+    loader = None
     try:
+        loader = _SpecLoader(text)  # the reader checks every character here
         node = loader.get_single_node()
     except _AliasError as exc:
         raise SpecError(path, exc.mark.line + 1,
@@ -62,11 +98,12 @@ def load_with_lines(path, text):
         char = exc.character if isinstance(exc.character, str) else chr(exc.character)
         raise SpecError(path, line, f"character {ord(char):#06x} is not allowed in a YAML file") from None
     except yaml.MarkedYAMLError as exc:
-        raise _syntax_error(path, exc) from None
+        raise _syntax_error(path, exc, text) from None
     except yaml.YAMLError as exc:
         raise SpecError(path, None, f"YAML error: {exc}") from None
     finally:
-        loader.dispose()
+        if loader is not None:
+            loader.dispose()
     if node is None:
         raise SpecError(path, 1, "the file is empty")
     lines = {}
@@ -100,7 +137,8 @@ def _build(node, where, lines, path, loader):
             _check_tag(key_node, path)
             key = _construct(key_node, path, loader)
             if not isinstance(key, (str, int)) or isinstance(key, bool):
-                raise SpecError(path, key_node.start_mark.line + 1, f"mapping key {key!r} must be a string")
+                raise SpecError(path, key_node.start_mark.line + 1,
+                                f"mapping key {key_node.value!r} must be a string (quote it)")
             key = str(key)
             if key in out:
                 first = lines[where + (key,)]
@@ -118,6 +156,6 @@ def _build(node, where, lines, path, loader):
 def _construct(node, path, loader):
     try:
         return loader.construct_object(node, deep=True)
-    except yaml.YAMLError as exc:
+    except (yaml.YAMLError, ValueError, TypeError, OverflowError) as exc:
         problem = getattr(exc, "problem", None) or str(exc)
         raise SpecError(path, node.start_mark.line + 1, f"bad value {node.value!r}: {problem}") from None

@@ -1,0 +1,244 @@
+"""Malformed spec files: every mistake is reported as "file:line: plain message", never as a traceback.
+
+Each case copies the real spec folder, breaks ONE file with a text-level edit at a known line, and checks
+(a) in process that load_spec raises SpecError naming that file and line with a plain message, and
+(b) as a user would that `plcvec lint` exits 2 and prints "file.yaml:LINE" on stderr without a traceback.
+"""
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from plcvec.errors import SpecError
+from plcvec.spec.loader import load_spec
+
+REPO = Path(__file__).resolve().parents[1]
+SPEC = REPO / "spec"
+
+TC = "fx5-time-compare.yaml"
+DC = "fx5-date-compare.yaml"
+TA = "fx5-time-add.yaml"
+CP = "cp1e-time-compare.yaml"
+HM = "fc6a-hour-meter.yaml"
+
+
+# ---------------------------------------------------------------- text-level edits
+
+def replace(line, old, new):
+    """Replace `old` (which must occur exactly once) on 1-based `line` with `new`."""
+    def edit(lines):
+        assert lines[line - 1].count(old) == 1, f"line {line} does not hold {old!r} once: {lines[line - 1]!r}"
+        lines[line - 1] = lines[line - 1].replace(old, new)
+        return lines
+    return edit
+
+
+def insert(line, text):
+    """Insert `text` as the new line `line` (what was there moves down)."""
+    def edit(lines):
+        lines.insert(line - 1, text)
+        return lines
+    return edit
+
+
+def delete(line, expect):
+    def edit(lines):
+        assert expect in lines[line - 1], f"line {line} is {lines[line - 1]!r}"
+        del lines[line - 1]
+        return lines
+    return edit
+
+
+def whole(data):
+    """Replace the file's content by `data` (str or bytes)."""
+    def edit(lines):
+        return data
+    return edit
+
+
+def apply(folder, name, edit):
+    path = folder / name
+    lines = path.read_text(encoding="utf-8").split("\n")
+    out = edit(lines)
+    if isinstance(out, list):
+        out = "\n".join(out)
+    path.write_bytes(out if isinstance(out, bytes) else out.encode("utf-8"))
+    return path
+
+
+def latin1_line(line, old, new):
+    """Like replace, but writes that one line in Latin-1 so the file is no longer UTF-8."""
+    def edit(lines):
+        assert lines[line - 1].count(old) == 1
+        lines[line - 1] = lines[line - 1].replace(old, new)
+        return b"\n".join(l.encode("latin-1" if i == line - 1 else "utf-8") for i, l in enumerate(lines))
+    return edit
+
+
+# ---------------------------------------------------------------- the cases
+# (id, file broken, edit, line the error must name, phrase the message must contain)
+
+CASES = [
+    # YAML syntax
+    ("yaml-bad-indentation", TC, replace(6, "manual:", "  manual:"), 6, "check the indentation"),
+    ("yaml-unclosed-brace", TC,
+     replace(106, "clause: range.hour}", "clause: range.hour"), 106, "flow mapping that starts on this line is not closed"),
+    ("yaml-unclosed-bracket", TC, replace(116, "13, 14]", "13, 14"), 116, "flow sequence that starts on this line is not closed"),
+    ("yaml-unclosed-quote", TC, replace(26, "says: The hour", "says: 'The hour"), 26, "closing quote missing"),
+    ("control-character", TC, replace(26, "hour word", "hour\x07word"), 26, "is not allowed in a YAML file"),
+    ("yaml-tab-indent", TC, replace(113, "  polarity", "\tpolarity"), 113, "not tabs"),
+    # keys
+    ("duplicate-key-top", TC, insert(6, "family: fx5-other"), 6, "duplicate key 'family'"),
+    ("duplicate-key-flow", TC, replace(106, "max: 23,", "max: 23, max: 22,"), 106, "duplicate key 'max'"),
+    ("unknown-key", TC, replace(106, "clause: range.hour}", "clause: range.hour, unit: h}"), 106,
+     "unknown key 'unit'"),
+    ("unknown-top-key", TA, insert(7, "commentary: none"), 7, "unknown key 'commentary'"),
+    ("key-not-allowed-for-kind", TC, insert(139, "errors: {registers: {devices: [SD0]}, checks: []}"), 139,
+     "not allowed for this kind"),
+    ("selector-in-clock-add", TA, insert(92, "selector: {operand: s1}"), 92, "not allowed for this kind"),
+    ("merge-key", TC, replace(107, "{name: minute,", "{<<: {word: 1}, name: minute,"), 107, "merge keys"),
+    # types and required values
+    ("wrong-type-min", TC, replace(106, "min: 0,", "min: zero,"), 106, "expected integer"),
+    ("wrong-type-quoted-int", TA, replace(103, "code: 0x2820", 'code: "0x2820"'), 103, "expected integer"),
+    ("impossible-date", TC, insert(186, "    checked: 2026-02-30"), 186, "bad value '2026-02-30'"),
+    ("alternatives-set-different-parameters", TA,
+     replace(115, "sets: {written: set_only}", "sets: {written: set_only, extra: 1}"), 115,
+     "alternatives must set the same parameters"),
+    ("clause-without-source", TC, delete(12, "source:"), 10, "clauses.0: 'source' is required but missing"),
+    ("source-without-quote", TC,
+     replace(15, """, quote: '("=", "<>", ">", "<=", "<", ">=" enters □.)'}""", "}"), 15,
+     "'quote' is required but missing"),
+    ("interpretation-quote-without-quote", TA,
+     replace(111, ', quote: "If the result is 0 (0:00:00), the zero flag turns on."}', "}"), 111,
+     "'quote' is required but missing"),
+    # field ranges and encodings
+    ("field-min-greater-than-max", TC, replace(107, "min: 0, max: 59", "min: 60, max: 59"), 107,
+     "min 60 is greater than max 59"),
+    ("signed16-range-too-large", TC, replace(106, "max: 23", "max: 40000"), 106, "does not fit signed16"),
+    ("bcd-range-too-large", CP, replace(88, "max: 99", "max: 100"), 88, "does not fit bcd"),
+    ("bcd-width-not-digits", CP, replace(90, "width: 8", "width: 6"), 90, "width 6 is not a whole number of 4-bit BCD digits"),
+    ("field-overlap-word", TC, replace(107, "word: 1", "word: 0"), 107, "overlaps field 'hour'"),
+    ("field-overlap-bits", CP, replace(89, "lsb: 0", "lsb: 4"), 89, "overlaps field 'year'"),
+    # references
+    ("unknown-clause", TC, replace(106, "clause: range.hour}", "clause: range.hours}"), 106,
+     "unknown clause 'range.hours'"),
+    ("unknown-clause-in-erratum", TA, replace(142, "clause: carry", "clause: carry.flag"), 142,
+     "unknown clause 'carry.flag'"),
+    ("unknown-interpretation", TC, replace(133, "FX5-SM709-SCOPE", "FX5-SM709-SCOP"), 133,
+     "unknown interpretation 'FX5-SM709-SCOP'"),
+    ("interpretation-default-not-alternative", TC, replace(149, "default: selected-fields", "default: selected"),
+     149, "default 'selected' is not one of the alternatives"),
+    ("alternative-does-not-set-parameter", TC, replace(148, "sets: {scope: all}", "sets: {scop: all}"), 148,
+     "does not set 'scope'"),
+    ("duplicate-clause-id", TC, replace(13, "- id: mnemonics", "- id: purpose"), 13, "duplicate clause id 'purpose' (first used on line 10)"),
+    ("duplicate-interpretation-id", TA, replace(118, "id: TADD-EXACT-24", "id: TADD-FLAGS-OFF"), 118,
+     "duplicate interpretation id 'TADD-FLAGS-OFF'"),
+    # selector bits
+    ("selector-field-bit-is-reserved", TC, replace(116, "[3, 4,", "[2, 3, 4,"), 116, "bit 2 is assigned twice"),
+    ("selector-two-fields-one-bit", TC, replace(114, "minute: 1", "minute: 0"), 114, "bit 0 is assigned twice"),
+    ("selector-clock-bit-is-reserved", DC, replace(126, "bit: 15,", "bit: 14,"), 126,
+     "bit 14 is assigned twice (current-clock bit here, reserved on line 121)"),
+    # whole files
+    ("empty-file", TC, whole(""), 1, "empty"),
+    ("comments-only-file", TC, whole("# nothing here yet\n"), 1, "empty"),
+    ("top-level-list", TC, whole("- family: fx5-time-compare\n- kind: masked_compare\n"), 1,
+     "must be a mapping at the top level"),
+    ("top-level-scalar", TC, whole("fx5-time-compare\n"), 1, "must be a mapping at the top level"),
+    ("not-utf8", TC, latin1_line(26, "hour word", "hour wörd"), 26, "not UTF-8"),
+    ("same-family-in-two-files", TC, replace(4, "family: fx5-time-compare", "family: fx5-date-compare"), 4,
+     "also defined in fx5-date-compare.yaml"),
+    # unsafe YAML: a Python tag is refused, never constructed
+    ("python-object-tag-scalar", TC,
+     replace(106, "clause: range.hour}", "clause: !!python/object/apply:os.system [echo pwned]}"), 106,
+     "not allowed"),
+    ("python-name-tag", TC, replace(4, "family: fx5-time-compare", "family: !!python/name:os.system"), 4,
+     "not allowed"),
+    ("python-object-tag-mapping", TC,
+     replace(12, "source: {", "source: !!python/object:plcvec.errors.SpecError {"), 12, "not allowed"),
+    ("recursive-alias", TC, insert(182, "  loop: &a [*a]"), 182, "alias"),
+]
+
+IDS = [c[0] for c in CASES]
+
+
+def test_enough_cases():
+    assert len(CASES) >= 18
+    assert len(set(IDS)) == len(IDS)
+
+
+@pytest.fixture
+def broken(tmp_path, request):
+    """A copy of spec/ with one file broken; returns (folder, broken file, line, phrase)."""
+    case_id, name, edit, line, phrase = request.param
+    folder = tmp_path / "spec"
+    shutil.copytree(SPEC, folder)
+    path = apply(folder, name, edit)
+    return folder, path, line, phrase
+
+
+@pytest.mark.parametrize("broken", CASES, ids=IDS, indirect=True)
+def test_load_spec_names_file_and_line(broken):
+    folder, path, line, phrase = broken
+    with pytest.raises(SpecError) as info:
+        load_spec(folder)
+    err = info.value
+    assert Path(err.path).name == path.name, str(err)
+    assert err.line == line, str(err)
+    assert phrase in err.message, str(err)
+    assert str(err) == f"{err.path}:{line}: {err.message}"
+    # A plain sentence: one line, no Python object reprs.
+    for noise in ("\n", "Traceback", "False schema", "object at 0x", "<unicode string>", "tag:yaml.org"):
+        assert noise not in err.message, str(err)
+
+
+@pytest.mark.parametrize("broken", CASES, ids=IDS, indirect=True)
+def test_lint_exits_2_with_file_and_line(broken, tmp_path):
+    folder, path, line, phrase = broken
+    proc = subprocess.run([sys.executable, "-m", "plcvec", "lint", "--spec-dir", str(folder)],
+                          capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert proc.returncode == 2, proc.stderr
+    assert "Traceback" not in proc.stderr
+    assert f"{path.name}:{line}: " in proc.stderr
+    assert phrase in proc.stderr
+    assert proc.stderr.startswith("plcvec: ")
+    assert proc.stdout == ""
+
+
+def test_python_tag_is_never_executed(tmp_path):
+    """A !!python/object/apply tag would run a command under yaml.load; the loader must refuse it."""
+    folder = tmp_path / "spec"
+    shutil.copytree(SPEC, folder)
+    marker = tmp_path / "pwned"
+    apply(folder, TC, replace(106, "clause: range.hour}",
+                              f"clause: !!python/object/apply:os.system ['touch {marker}']}}"))
+    with pytest.raises(SpecError) as info:
+        load_spec(folder)
+    assert "tag" in info.value.message
+    proc = subprocess.run([sys.executable, "-m", "plcvec", "lint", "--spec-dir", str(folder)],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert not marker.exists()
+
+
+def test_loader_uses_safe_yaml():
+    """The YAML loader class is PyYAML's SafeLoader (or a subclass of it), never Loader/UnsafeLoader."""
+    import yaml
+
+    from plcvec.spec import yaml_lines
+
+    source = Path(yaml_lines.__file__).read_text()
+    assert "UnsafeLoader" not in source and "FullLoader" not in source and "yaml.load(" not in source
+    with pytest.raises(SpecError):
+        yaml_lines.load_with_lines("x.yaml", "a: !!python/object/new:dict {}\n")
+    data, lines = yaml_lines.load_with_lines("x.yaml", "a: 1\nb: [x, y]\n")
+    assert data == {"a": 1, "b": ["x", "y"]} and lines[("b",)] == 2
+    assert issubclass(yaml_lines._SpecLoader, yaml.SafeLoader)
+
+
+def test_the_real_spec_still_lints(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "plcvec", "lint", "--spec-dir", str(SPEC)],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.count(": ok (") == len(list(SPEC.glob("*.yaml")))
