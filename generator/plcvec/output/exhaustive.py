@@ -75,8 +75,12 @@ def _write_family(fam, path, choices):
               f'"initial": {{"operands": {dumps_value(operands)}, "devices": ')
     pre_init, post_init = dumps_value(dict(sorted(state0.items()))).split(str(marker))
     clock_part = f'"clock": {dumps_value(b)}, '
-    names = [(json.dumps(f"{fam.name}/{name}/exhaustive/"), json.dumps(name), json.dumps(instr["st"]), instr["symbol"])
+    conditions = {c["symbol"]: c for c in fam.doc["instructions"]["conditions"]}
+    names = [(json.dumps(f"{fam.name}/{name}/exhaustive/"), json.dumps(name), json.dumps(instr["st"]), instr["symbol"],
+              {instr["form"]["clause"], conditions[instr["symbol"]]["clause"]})
              for name, instr in loads]
+    selop = cases.selop
+    clause_cache = {}
     source_bit = cases.clock_bit["bit"] if cases.clock_bit else None
     tmp = path.with_name(f".{path.name}.partial")
     n = 0
@@ -88,7 +92,10 @@ def _write_family(fam, path, choices):
             step = {"clock": b} if source_bit is not None and sel >> source_bit & 1 else {}
             ctx = {"device_sizes": sizes}
             before = dict(state)
-            outcome = engine.evaluate(operands, state, step, ctx, set())
+            trace = set()
+            outcome = engine.evaluate(operands, state, step, ctx, trace)
+            trace.discard(None)
+            traced = frozenset(trace)
             changed = dumps_value({k: v for k, v in sorted(state.items()) if before[k] != v})
             error = ctx.get("error")
             result_outcome = ('{"category": "error", "errors": [%s]}' % dumps_value(dict(step=0, **error))) if error else '{"category": "value"}'
@@ -96,9 +103,15 @@ def _write_family(fam, path, choices):
             initial = f"{pre_init}{sel}{post_init}"
             clock = clock_part if step else ""
             sel_id = f"{sel:04X}H"
-            for vid, name, st, symbol in names:
+            description = f'"description": "{selop} = {sel_id}", '
+            for vid, name, st, symbol, own in names:
                 result = "true" if engine.contact(symbol, outcome) else "false"
-                out.write(f'{{"id": {vid[:-1]}{sel_id}", "family": "{fam.name}", "instruction": {name}, "st": {st}, {common}{initial}}}, '
+                key = (traced, symbol)
+                clauses = clause_cache.get(key)
+                if clauses is None:  # few distinct clause sets: format each once
+                    clauses = clause_cache[key] = json.dumps(sorted(fam.clause_ref(c) for c in trace | own))
+                out.write(f'{{"id": {vid[:-1]}{sel_id}", "family": "{fam.name}", "instruction": {name}, "st": {st}, '
+                          f'{description}"clauses": {clauses}, {common}{initial}}}, '
                           f'"steps": [{{{clock}"expect": {{"devices": {changed}, "result": {result}}}}}], '
                           f'"final": {{"devices": {tail_state}}}, "outcome": {result_outcome}}}\n')
                 n += 1
