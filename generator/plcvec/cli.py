@@ -20,13 +20,14 @@ def _generate(args):
     if args.check:
         return _check(out, files)
     # The manifest goes last: a run cut short never leaves a manifest naming files it did not write.
+    written = 0
     for name in sorted(files, key=lambda n: n == "manifest.json"):
         target = out / name
         if target.exists() and target.read_text(encoding="utf-8") == files[name]:
             continue
         write_atomic(target, files[name])
-    total = sum(1 for _ in files)
-    print(f"plcvec: wrote {total} files to {out}")
+        written += 1
+    print(f"plcvec: {written} of {len(files)} files written to {out} ({len(files) - written} already up to date)")
     return 0
 
 
@@ -124,3 +125,6 @@ def main(argv=None):
         return 130
     except BrokenPipeError:
         return 1
+    except OSError as exc:
+        print(f"plcvec: {exc.filename or ''}: {exc.strerror or exc}", file=sys.stderr)
+        return 2

@@ -81,8 +81,9 @@ class HourCases:
 
     def wrap(self):
         top = {f["name"]: f["max"] for f in self.fields}
-        yield self.case("wrap/output-stays-on", tags=["wrap"], preset=self.seconds(1), measured=top, output=True,
-                        steps=self.on(self.unit, 2), description="D1 at the largest value with D2 on: one second later it is 0:00:00 and D2 stays on.")
+        one_top_unit = self.seconds(self.ops.codec.modulus() // (self.fields[0]["max"] + 1))
+        yield self.case("wrap/output-stays-on", tags=["wrap"], preset=one_top_unit, measured=top, output=True,
+                        steps=self.on(self.unit, 2), description="D1 at the largest value with D2 on: one second later it is 0:00:00, below the preset, and D2 stays on.")
         below = self.ops.codec.from_units(self.ops.codec.modulus() - 2)
         yield self.case("wrap/reach-then-wrap", tags=["wrap"], preset=top, measured=below,
                         steps=self.on(self.unit, 3), description="Reach the largest preset, wrap, and keep measuring.")
