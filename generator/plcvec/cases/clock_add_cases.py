@@ -23,7 +23,7 @@ class AddCases:
         self.every_scan, self.pulse_form = by_exec.get("every_scan"), by_exec.get("rising_edge")
 
     def case(self, instr, key, *, tags, description, values, heads=None, steps=None, flags_on=False,
-             clauses=(), printed=None, raw=None, result_initial=None):
+             clauses=(), printed=None, result_initial=None):
         heads = dict(self.place, **(heads or {}))
         devices = {d: flags_on for d in self.flag_devices}
         devices.update({r: 0 for r in self.registers})
@@ -32,7 +32,7 @@ class AddCases:
                 # (d) starts with words no valid result holds, so an unwritten (d) shows.
                 words = result_initial or [0xFFFF] * self.words
             else:
-                words = self.ops.words(values[op], raw=(raw or {}).get(op))
+                words = self.ops.words(values[op])
             for address, word in zip(operand_words(heads[op], self.words), words):
                 prefix, number = split_address(address)
                 if number < self.b.sizes.get(prefix, number + 1):  # words past the range do not exist

@@ -1,5 +1,5 @@
 """Pieces shared by the case families: operand contents, slugs, placement."""
-from plcvec.engine.words import FieldCodec, operand_words, split_address
+from plcvec.engine.words import FieldCodec, operand_words
 
 
 def hexw(value):
@@ -50,7 +50,3 @@ class Operands:
 def top_head(prefix, size, words, beyond):
     """The head address whose words end `beyond` words past the top of the device range (0 = the last fit)."""
     return f"{prefix}{size - words + beyond}"
-
-
-def same_prefix(address):
-    return split_address(address)[0]

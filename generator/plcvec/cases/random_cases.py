@@ -43,7 +43,7 @@ def key_of(value):
     return hashlib.sha256(json.dumps(value, sort_keys=True).encode()).hexdigest()[:12]
 
 
-def field_values(field, valid_weight=True):
+def field_values(field):
     """Mostly in-range values, with the boundary set mixed in."""
     return st.one_of(st.integers(field["min"], field["max"]), st.sampled_from(signed_boundaries(field)))
 
