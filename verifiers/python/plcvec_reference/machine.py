@@ -9,16 +9,27 @@ from __future__ import annotations
 
 import copy
 import re
+from functools import lru_cache
 
 _ADDR = re.compile(r"^([A-Z]+)(\d+)$")
 
 
+@lru_cache(maxsize=None)  # a program names few devices; parse each name once
 def split_address(address: str):
     """'D100' -> ('D', 100).  Names without a number (P_EQ) -> (name, None)."""
     m = _ADDR.match(address)
     if not m:
         return address, None
     return m.group(1), int(m.group(2))
+
+
+@lru_cache(maxsize=None)
+def offset_address(base: str, offset: int) -> str:
+    """'D100', 2 -> 'D102'."""
+    kind, number = split_address(base)
+    if number is None:
+        raise ValueError(f"{base} is not a numbered device")
+    return f"{kind}{number + offset}"
 
 
 def to_signed16(word: int) -> int:
@@ -40,10 +51,7 @@ class DeviceMemory:
         self.sizes = dict(device_sizes or {})
 
     def address(self, base: str, offset: int) -> str:
-        kind, number = split_address(base)
-        if number is None:
-            raise ValueError(f"{base} is not a numbered device")
-        return f"{kind}{number + offset}"
+        return offset_address(base, offset)
 
     def block_in_range(self, base: str, words: int) -> bool:
         """True when base .. base+words-1 all exist in the device."""

@@ -1,0 +1,119 @@
+"""Adapters: how the runner reaches an implementation.
+
+A Python adapter object has two methods:
+
+    hello(request: dict) -> dict
+        `request` is the runner's hello message (suite version, spec hash, the families with their
+        instructions and interpretations). Returns {"adapter": {"name", "version"},
+        "instructions": [...], "interpretations": {id: alternative}}: the hello-response message
+        without `type` and `protocol`.
+    run(request: dict) -> dict
+        `request` is one vector without its expectations (run-request.schema.json#/$defs/request).
+        Returns {"steps": [{"result"?, "devices"}]}, or {"skip": reason}, or {"error": message}:
+        a result message without `type` and `id`.
+
+`InProcess` drives such an object directly; `stdio.StdioAdapter` drives a process that speaks
+the same messages as JSON lines. Both hand the runner the same `Answer`s.
+"""
+from __future__ import annotations
+
+import importlib
+import sys
+import traceback
+from dataclasses import dataclass
+from pathlib import Path
+
+from .errors import VerifyError
+from .protocol import PROTOCOL_VERSION, schema_errors
+
+
+@dataclass
+class Answer:
+    """What came back for one vector: a result message (not yet validated), or a fault of the adapter's."""
+
+    id: str
+    message: dict | None
+    fault: str | None = None
+
+
+class AdapterAbort(VerifyError):
+    """The adapter cannot be driven any further (handshake failed, kept crashing)."""
+
+
+def check_hello(answer, source: str) -> dict:
+    errors = schema_errors("hello-response", answer)
+    if errors:
+        if isinstance(answer, dict) and answer.get("type") == "fatal":
+            raise AdapterAbort(f"{source} refused the handshake: {answer.get('message')}")
+        raise AdapterAbort(f"{source}: the handshake answer does not match hello-response.schema.json:\n  "
+                           + "\n  ".join(errors))
+    if answer["protocol"] != PROTOCOL_VERSION:
+        raise AdapterAbort(f"{source} speaks protocol {answer['protocol']}; this runner speaks {PROTOCOL_VERSION}")
+    return answer
+
+
+class InProcess:
+    """Drive a Python adapter object in this process."""
+
+    def __init__(self, adapter, label: str | None = None):
+        self.adapter = adapter
+        self.label = label or type(adapter).__name__
+        self.notes: list[tuple[str | None, str]] = []
+
+    def hello(self, request: dict) -> dict:
+        try:
+            body = self.adapter.hello(request)
+        except Exception as exc:
+            raise AdapterAbort(f"{self.label}.hello() raised {type(exc).__name__}: {exc}")
+        answer = {"type": "hello", "protocol": PROTOCOL_VERSION}
+        answer.update(body or {})
+        return check_hello(answer, self.label)
+
+    def answers(self, requests, wire=None):
+        run = self.adapter.run
+        for request in requests:
+            vid = request["id"]
+            try:
+                body = run(request)
+            except Exception as exc:
+                tb = traceback.extract_tb(exc.__traceback__)[-1]
+                yield Answer(vid, None, f"{self.label}.run() raised {type(exc).__name__}: {exc} "
+                                        f"({Path(tb.filename).name}:{tb.lineno})")
+                continue
+            if type(body) is not dict:
+                yield Answer(vid, None, f"{self.label}.run() returned {type(body).__name__}, not a dict")
+                continue
+            yield Answer(vid, dict(body, type="result", id=vid))
+
+    def close(self):
+        close = getattr(self.adapter, "close", None)
+        if close:
+            close()
+
+
+def load_python_adapter(spec: str, args=()):
+    """`module:Class` (or `path/to/file.py:Class`) -> an instance, built with `args` as strings."""
+    if ":" not in spec:
+        raise VerifyError(f"--python takes MODULE:CLASS (e.g. plcvec_reference.adapter:ReferenceAdapter), got {spec!r}")
+    module_name, _, attr = spec.rpartition(":")
+    try:
+        if module_name.endswith(".py"):
+            path = Path(module_name).resolve()
+            if not path.exists():
+                raise VerifyError(f"--python {spec}: no such file {path}")
+            sys.path.insert(0, str(path.parent))
+            module_name = path.stem
+        module = importlib.import_module(module_name)
+    except VerifyError:
+        raise
+    except ImportError as exc:
+        raise VerifyError(f"--python {spec}: cannot import {module_name}: {exc}")
+    except Exception as exc:
+        raise VerifyError(f"--python {spec}: importing {module_name} raised {type(exc).__name__}: {exc}")
+    factory = getattr(module, attr, None)
+    if factory is None:
+        raise VerifyError(f"--python {spec}: {module_name} has no {attr}")
+    try:
+        return factory(*args)
+    except Exception as exc:
+        raise VerifyError(f"--python {spec}: {attr}({', '.join(map(repr, args))}) raised {type(exc).__name__}: {exc}")

@@ -1,0 +1,117 @@
+"""`plcvec verify`: the CI gate. Exit 0 all passed, 1 failures, 2 usage or harness error."""
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from .errors import VerifyError
+
+DEFAULT_VECTORS = Path(__file__).resolve().parents[3] / "vectors"
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    how = p.add_mutually_exclusive_group(required=True)
+    how.add_argument("--adapter", metavar="CMD", help='run this adapter process, e.g. "./emu --plcvec" (PROTOCOL.md)')
+    how.add_argument("--python", metavar="MODULE:CLASS", help="an adapter object in this process (adapters.py)")
+    p.add_argument("--vectors", default=str(DEFAULT_VECTORS), help="vector folder or family file (default: %(default)s)")
+    sel = p.add_argument_group("selection (each repeatable; OR within one, AND across)")
+    sel.add_argument("--family", action="append", default=[])
+    sel.add_argument("--instruction", action="append", default=[], help='e.g. "LDDT<=" or "TADDP"')
+    sel.add_argument("--tag", action="append", default=[], help="e.g. boundary, nonexistent-date")
+    sel.add_argument("--id", action="append", default=[], metavar="GLOB", help='id glob, e.g. "fx5-time-add/TADD/*"')
+    sel.add_argument("--interpretation", action="append", default=[], metavar="ID",
+                     help="vectors whose outcome depends on this interpretation")
+    sel.add_argument("--shard", metavar="K/N", help="run the K-th of N shards (by a hash of the id)")
+    p.add_argument("--choose", action="append", default=[], metavar="ID=ALT",
+                   help="the alternative this implementation follows, for adapters that do not declare it")
+    p.add_argument("--expectations", metavar="FILE", help="known failures (TOML, see known.py)")
+    p.add_argument("--write-expectations", metavar="FILE",
+                   help="write the failing vectors as a new expectations file (reason: 'not yet triaged')")
+    p.add_argument("--jsonl", metavar="FILE", help="write one JSON line per vector")
+    p.add_argument("--junit", metavar="FILE", help="write JUnit XML")
+    p.add_argument("--timeout", type=float, default=30.0, help="seconds per batch before the adapter is killed (default 30)")
+    p.add_argument("--batch-size", type=int, default=256, help="vectors per request line (default 256)")
+    p.add_argument("--max-restarts", type=int, default=10, help="restarts after adapter faults before giving up")
+    p.add_argument("--quiet", "-q", action="store_true", help="only the totals line")
+    p.add_argument("--verbose", "-v", action="store_true", help="also list skipped and known failures")
+    p.add_argument("--no-progress", action="store_true", help="no progress bar even on a terminal")
+
+
+def register(sub, spec_parent) -> None:
+    p = sub.add_parser("verify", help="run the vectors against an implementation (CI gate)",
+                       description=__doc__)
+    add_arguments(p)
+    p.set_defaults(func=main_args)
+
+
+def build_selection(args):
+    from .suite import Selection, parse_shard
+
+    return Selection(families=tuple(args.family), instructions=tuple(args.instruction), tags=tuple(args.tag),
+                     ids=tuple(args.id), interpretations=tuple(args.interpretation),
+                     shard=parse_shard(args.shard) if args.shard else None)
+
+
+def parse_choices(items) -> dict:
+    out = {}
+    for text in items:
+        if "=" not in text:
+            raise VerifyError(f"--choose takes INTERPRETATION=ALTERNATIVE, got {text!r}")
+        k, v = text.split("=", 1)
+        out[k] = v
+    return out
+
+
+def make_adapter(args):
+    from .adapters import InProcess, load_python_adapter
+    from .stdio import StdioAdapter
+
+    if args.python:
+        return InProcess(load_python_adapter(args.python), args.python)
+    if args.timeout <= 0 or args.batch_size < 1:
+        raise VerifyError("--timeout must be > 0 and --batch-size >= 1")
+    return StdioAdapter(args.adapter, timeout=args.timeout, batch_size=args.batch_size, max_restarts=args.max_restarts)
+
+
+def main_args(args) -> int:
+    from . import reports
+    from .known import KnownFailures, write_expectations
+    from .progress import Progress
+    from .runner import run
+    from .suite import Suite
+
+    try:
+        suite = Suite.load(args.vectors)
+        selection = build_selection(args)
+        known = KnownFailures.load(args.expectations) if args.expectations else None
+        adapter = make_adapter(args)
+        progress = None if args.no_progress or args.quiet else Progress.for_stream(sys.stderr)
+        report = run(suite, adapter, selection, choose=parse_choices(args.choose), known=known,
+                     progress=progress)
+        if progress:
+            progress.done()
+        # Reports first: whatever the outcome, the CI job keeps them.
+        if args.jsonl:
+            reports.write_jsonl(report, args.jsonl)
+        if args.junit:
+            reports.write_junit(report, args.junit)
+        if args.write_expectations:
+            n = write_expectations(args.write_expectations, report.results, "not yet triaged")
+            print(f"plcvec verify: {n} known failures written to {args.write_expectations}", file=sys.stderr)
+        text = reports.summary_text(report, verbose=args.verbose)
+        if args.quiet:
+            text = text.rstrip("\n").rsplit("\n", 1)[-1] + "\n"
+        sys.stdout.write(text)
+        if report.aborted:
+            print(f"plcvec verify: {report.aborted}", file=sys.stderr)
+        return report.exit_code
+    except VerifyError as exc:
+        print(f"plcvec verify: {exc}", file=sys.stderr)
+        return 2
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="python3 -m plcvec_verify", description=__doc__)
+    add_arguments(p)
+    return main_args(p.parse_args(argv))

@@ -1,0 +1,72 @@
+"""Field-by-field comparison of what an adapter reported with what a vector expects.
+
+Everything must match exactly, including the JSON type: a bit device is true/false and a word
+is an integer, so a bit reported as 1 is wrong even though Python's 1 == True.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .expect import Expected
+
+_MISSING = "<not reported>"
+_UNLISTED = "<not in the vector>"
+
+
+@dataclass(frozen=True)
+class Problem:
+    """One field that differs: where, what was expected, what the adapter reported."""
+
+    step: int | None       # None: about the vector as a whole (e.g. the number of steps)
+    field: str             # "result", a device address, or "steps"
+    expected: object
+    actual: object
+    before: object = None  # the field's value before the step, when it is a device
+
+    def line(self) -> str:
+        where = f"step {self.step} " if self.step is not None else ""
+        text = f"{where}{self.field}: expected {_show(self.expected)}, got {_show(self.actual)}"
+        if self.before is not None and self.expected == self.before:
+            text += " (the step must leave it unchanged)"
+        elif self.before is not None:
+            text += f" (before the step: {_show(self.before)})"
+        return text
+
+
+def _show(value):
+    if value is True:
+        return "true"
+    if value is False:
+        return "false"
+    if isinstance(value, str) and value.startswith("<"):
+        return value
+    return repr(value)
+
+
+def _same(expected, actual) -> bool:
+    return expected == actual and type(expected) is type(actual)
+
+
+def compare(expected: Expected, steps: list) -> list[Problem]:
+    """The problems of one vector's reported `steps` (an empty list means it passed)."""
+    if len(steps) != len(expected.states):
+        return [Problem(None, "steps", f"{len(expected.states)} steps", f"{len(steps)} steps")]
+    problems = []
+    scratch = expected.scratch
+    for i, (step, want_state, want_result, typed) in enumerate(
+            zip(steps, expected.states, expected.results, expected.typed)):
+        if want_result is not None and not _same(want_result, step.get("result", _MISSING)):
+            problems.append(Problem(i, "result", want_result, step.get("result", _MISSING)))
+        got = step["devices"]
+        if scratch:
+            got = {k: v for k, v in got.items() if k not in scratch}
+        # Fast path: equal dicts, and the right type wherever 0/1 could pass for false/true. Most
+        # vectors pass, and this is where a run spends its time.
+        if got == want_state and all(type(got[k]) is t for k, t in typed):
+            continue
+        before = expected.befores[i]
+        for dev in sorted(set(want_state) | set(got)):
+            want, have = want_state.get(dev, _UNLISTED), got.get(dev, _MISSING)
+            if not _same(want, have):
+                problems.append(Problem(i, dev, want, have, before.get(dev)))
+    return problems

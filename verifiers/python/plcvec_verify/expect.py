@@ -1,0 +1,75 @@
+"""What a vector expects of an implementation that follows given interpretation alternatives.
+
+A vector stores, per step, only the devices that changed (`expect.devices`) and the full state at
+the end (`final.devices`). Adapters report the full state after every step, which is simpler to
+produce for any emulator; so the expected full state after each step is worked out here once, and
+checked against the vector's own `final` so that an inconsistent vector file is caught, not trusted.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .errors import VerifyError
+
+# Step keys that are inputs; everything a step holds except `expect`.
+_EXPECT = "expect"
+
+
+@dataclass(frozen=True)
+class Expected:
+    id: str
+    results: tuple          # per step: True/False for contact instructions, None otherwise
+    states: tuple           # per step: {device: value} after the step, scratch left out
+    befores: tuple          # per step: the state the step started from (after `set`), for messages
+    typed: tuple            # per step: ((device, type), ...) for values equal to 0 or 1, see compare.py
+    scratch: frozenset
+    outcome: dict           # the outcome category under the chosen alternatives
+    choices: dict           # interpretation -> alternative applied (only those the vector depends on)
+
+
+def request_of(vector: dict) -> dict:
+    """The part of a vector an adapter receives: everything needed to run it, no expectation."""
+    return {
+        "id": vector["id"],
+        "family": vector["family"],
+        "instruction": vector["instruction"],
+        "assumes": vector.get("assumes", {}),
+        "initial": vector["initial"],
+        "steps": [{k: v for k, v in step.items() if k != _EXPECT} for step in vector["steps"]],
+    }
+
+
+def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
+    """The expectation of `vector` for an implementation declaring `choices` (others: `defaults`)."""
+    outcome = vector["outcome"]
+    touched = outcome.get("interpretations", ())
+    applied = {i: choices.get(i, defaults.get(i)) for i in touched}
+    steps_expect = [s[_EXPECT] for s in vector["steps"]]
+    final = vector["final"]["devices"]
+    category = outcome.get("default", outcome) if touched else outcome
+    if any(applied[i] != defaults.get(i) for i in touched):
+        for alt in vector.get("alternatives", ()):
+            if all(alt["choices"].get(i) == a for i, a in applied.items()):
+                steps_expect, final, category = alt["expect"], alt["final"]["devices"], alt["outcome"]
+                break
+        else:
+            raise VerifyError(f"vector {vector['id']}: no expectation for "
+                              + ", ".join(f"{i}={a}" for i, a in sorted(applied.items()))
+                              + " (the vector file lists no such alternative)")
+    scratch = frozenset(vector["initial"].get("scratch", ()))
+    state = {k: v for k, v in vector["initial"]["devices"].items() if k not in scratch}
+    states, befores, results = [], [], []
+    for step, expect in zip(vector["steps"], steps_expect):
+        state.update((k, v) for k, v in (step.get("set") or {}).items() if k not in scratch)
+        befores.append(dict(state))
+        state.update(expect.get("devices", {}))
+        states.append(dict(state))
+        results.append(expect.get("result"))
+    if len(steps_expect) != len(vector["steps"]):
+        raise VerifyError(f"vector {vector['id']}: {len(vector['steps'])} steps but {len(steps_expect)} expectations")
+    if states[-1] != final:
+        raise VerifyError(f"vector {vector['id']}: the per-step changes do not add up to `final` "
+                          "(the vector file is inconsistent; regenerate it)")
+    # Python's 1 == True: only values equal to 0 or 1 can compare equal under the wrong JSON type.
+    typed = tuple(tuple((k, type(v)) for k, v in st.items() if v in (0, 1)) for st in states)
+    return Expected(vector["id"], tuple(results), tuple(states), tuple(befores), typed, scratch, category, applied)

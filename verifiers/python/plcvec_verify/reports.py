@@ -1,0 +1,156 @@
+"""Reports of a run: a summary for people, JSON lines for programs, JUnit XML for CI dashboards.
+
+Each records what a result means only together with: the suite version, the spec hash, the
+adapter, and the interpretation alternative every vector was judged by.
+"""
+from __future__ import annotations
+
+import json
+import os
+import tempfile
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL, RunReport
+
+SHOW_PROBLEMS = 12     # field lines shown per failing vector in the summary
+
+
+def header(report: RunReport) -> dict:
+    s = report.suite
+    return {
+        "suite": s.source,
+        "suite_version": s.suite_version,
+        "schema_version": s.schema_version,
+        "spec_sha256": s.spec_sha256,
+        "adapter": report.adapter,
+        "interpretations": {i: {"alternative": d["alternative"], "declared": d["declared"]}
+                            for i, d in sorted(report.interpretations.items())},
+        "selection": {k: list(v) if isinstance(v, tuple) else v
+                      for k, v in vars(report.selection).items() if v},
+    }
+
+
+def summary_text(report: RunReport, verbose: bool = False) -> str:
+    """What a person reads at the end of a run: each failing vector with its field diff, then totals."""
+    lines = []
+    by_id = report.suite.by_id
+    for r in report.results:
+        if r.status not in FAILING and not (verbose and r.status in (XFAIL, SKIP)):
+            continue
+        v = by_id.get(r.id, {})
+        lines.append(f"{r.status.upper()} {r.id}")
+        if v.get("description"):
+            lines.append(f"    {v['instruction']}: {v['description']}")
+        if r.choices:
+            lines.append("    judged by: " + ", ".join(f"{i}={a}" for i, a in sorted(r.choices.items())))
+        for p in r.problems[:SHOW_PROBLEMS]:
+            lines.append(f"    {p.line()}")
+        if len(r.problems) > SHOW_PROBLEMS:
+            lines.append(f"    ... and {len(r.problems) - SHOW_PROBLEMS} more differences")
+        if r.message:
+            lines.append(f"    {r.message}")
+        for note in r.notes:
+            lines.append(f"    note: {note}")
+        if v.get("clauses"):
+            lines.append("    spec clauses: " + ", ".join(v["clauses"]))
+    noted = [r for r in report.results if r.notes and r.status not in FAILING]
+    for r in noted[:SHOW_PROBLEMS]:
+        for note in r.notes:
+            lines.append(f"NOTE {r.id}: {note}")
+    for note in report.notes:
+        lines.append(f"NOTE adapter: {note}")
+    if report.aborted:
+        lines.append(f"ABORTED: {report.aborted}")
+    h = header(report)
+    adapter = report.adapter.get("name", "?") + (f" {report.adapter['version']}" if report.adapter.get("version") else "")
+    lines.append("")
+    lines.append(f"plcvec verify: {adapter} against {h['suite']} (suite {h['suite_version'] or '?'}, "
+                 f"schema {h['schema_version']}, spec sha256 {h['spec_sha256'][:12] or '?'})")
+    declared = [f"{i}={d['alternative']}" for i, d in h["interpretations"].items() if d["declared"]]
+    lines.append("interpretations: " + (", ".join(declared) + "; " if declared else "") + "others default")
+    counts = report.counts
+    parts = [f"{counts[s]} {s}" for s in STATUSES if counts[s] or s in (PASS, FAIL)]
+    lines.append(f"{len(report.results)} vectors: " + ", ".join(parts) + f" in {report.seconds:.2f} s")
+    return "\n".join(lines) + "\n"
+
+
+def jsonl_lines(report: RunReport):
+    yield {"type": "run", **header(report)}
+    for r in report.results:
+        item = {"type": "vector", "id": r.id, "family": r.family, "instruction": r.instruction, "status": r.status}
+        if r.choices:
+            item["choices"] = r.choices
+        if r.problems:
+            item["problems"] = [{"step": p.step, "field": p.field, "expected": _jsonable(p.expected),
+                                 "actual": _jsonable(p.actual)} for p in r.problems]
+        if r.message:
+            item["message"] = r.message
+        if r.notes:
+            item["notes"] = r.notes
+        yield item
+    yield {"type": "summary", "counts": report.counts, "seconds": round(report.seconds, 3),
+           "aborted": report.aborted or None, "notes": report.notes, "exit_code": report.exit_code}
+
+
+def _jsonable(value):
+    return value if isinstance(value, (bool, int, float, str)) or value is None else repr(value)
+
+
+def write_jsonl(report: RunReport, path) -> None:
+    _write(path, "".join(json.dumps(item, sort_keys=True, ensure_ascii=False) + "\n" for item in jsonl_lines(report)))
+
+
+def junit_xml(report: RunReport) -> str:
+    h = header(report)
+    root = ET.Element("testsuites", name="plcvec", tests=str(len(report.results)),
+                      failures=str(report.count(FAIL) + report.count(STALE)),
+                      errors=str(report.count(ERROR) + report.count(NOT_RUN)), time=f"{report.seconds:.3f}")
+    families = {}
+    for r in report.results:
+        families.setdefault(r.family or "(expectations file)", []).append(r)
+    by_id = report.suite.by_id
+    for family, results in sorted(families.items()):
+        suite = ET.SubElement(root, "testsuite", name=family, tests=str(len(results)),
+                              failures=str(sum(r.status in (FAIL, STALE) for r in results)),
+                              errors=str(sum(r.status in (ERROR, NOT_RUN) for r in results)),
+                              skipped=str(sum(r.status in (SKIP, XFAIL) for r in results)))
+        props = ET.SubElement(suite, "properties")
+        for name, value in (("suite_version", h["suite_version"]), ("schema_version", h["schema_version"]),
+                            ("spec_sha256", h["spec_sha256"]), ("adapter", json.dumps(h["adapter"], sort_keys=True))):
+            ET.SubElement(props, "property", name=name, value=str(value))
+        for i, d in h["interpretations"].items():
+            ET.SubElement(props, "property", name=f"interpretation.{i}",
+                          value=d["alternative"] + ("" if d["declared"] else " (default)"))
+        for r in results:
+            case = ET.SubElement(suite, "testcase", classname=f"plcvec.{family}", name=r.id)
+            detail = "\n".join([p.line() for p in r.problems] + ([r.message] if r.message else []) + r.notes
+                               + (["spec clauses: " + ", ".join(by_id[r.id]["clauses"])] if r.id in by_id else []))
+            if r.status == FAIL:
+                ET.SubElement(case, "failure", message=f"{len(r.problems)} field(s) differ", type="mismatch").text = detail
+            elif r.status == STALE:
+                ET.SubElement(case, "failure", message="stale known failure", type="stale").text = detail
+            elif r.status in (ERROR, NOT_RUN):
+                ET.SubElement(case, "error", message=r.message[:200], type=r.status).text = detail
+            elif r.status in (SKIP, XFAIL):
+                ET.SubElement(case, "skipped", message=r.message[:200])
+    ET.indent(root)
+    return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
+
+
+def write_junit(report: RunReport, path) -> None:
+    _write(path, junit_xml(report))
+
+
+def _write(path, text: str) -> None:
+    """Replace the file whole: a CI dashboard never reads half a report."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise

@@ -1,0 +1,178 @@
+"""Running a selection of vectors through an adapter and judging every answer.
+
+The run is: handshake (which instructions the adapter supports, which interpretation alternatives
+it follows), the expectation of each vector under those alternatives, the answers streamed back
+and compared field by field, and last the expectations file (known failures) applied. Whatever
+happens to the adapter, the results gathered so far are kept, so the reports can always be written.
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+
+from .adapters import AdapterAbort
+from .compare import Problem, compare
+from .errors import VerifyError
+from .expect import expected_of, request_of
+from .known import KnownFailures
+from .protocol import hello_request, result_errors
+from .suite import Selection, Suite
+
+# Result statuses. Only the first three let a run pass.
+PASS, SKIP, XFAIL = "pass", "skip", "xfail"
+FAIL, ERROR, STALE, NOT_RUN = "fail", "error", "stale", "not-run"
+STATUSES = (PASS, FAIL, ERROR, SKIP, XFAIL, STALE, NOT_RUN)
+FAILING = frozenset((FAIL, ERROR, STALE, NOT_RUN))
+
+
+@dataclass
+class VectorResult:
+    id: str
+    family: str
+    instruction: str
+    status: str
+    problems: list = field(default_factory=list)      # [Problem] for fail
+    message: str = ""                                 # error/skip/xfail/stale reason
+    notes: list = field(default_factory=list)         # e.g. what the adapter wrote to stderr
+    choices: dict = field(default_factory=dict)       # interpretation -> alternative the vector was judged by
+
+
+@dataclass
+class RunReport:
+    suite: Suite
+    adapter: dict
+    interpretations: dict          # id -> {"alternative", "declared": bool, "family"}
+    results: list
+    seconds: float = 0.0
+    aborted: str = ""
+    notes: list = field(default_factory=list)   # adapter notes not tied to a vector
+    selection: Selection = field(default_factory=Selection)
+
+    def count(self, status):
+        return sum(1 for r in self.results if r.status == status)
+
+    @property
+    def counts(self):
+        return {s: self.count(s) for s in STATUSES}
+
+    @property
+    def failed(self):
+        return [r for r in self.results if r.status in FAILING]
+
+    @property
+    def exit_code(self):
+        if self.aborted:
+            return 2
+        return 1 if self.failed else 0
+
+
+class Plan:
+    """The vectors of one run with their requests and expectations, built once.
+
+    Kept apart from the run so that repeated runs (the benchmark, the pytest plugin) and the
+    selection of vectors do not pay for it again.
+    """
+
+    def __init__(self, suite: Suite, vectors: list, choices: dict):
+        defaults = {i: d["default"] for i, d in suite.interpretations().items()}
+        self.vectors = vectors
+        self.requests = {v["id"]: request_of(v) for v in vectors}
+        self.expected = {v["id"]: expected_of(v, choices, defaults) for v in vectors}
+        self.wire: dict[str, bytes] = {}   # encoded requests, filled by a process adapter
+
+
+def resolve_choices(suite: Suite, families, declared: dict, cli: dict) -> dict:
+    """interpretation -> {"alternative", "declared", "family"} for every interpretation of `families`."""
+    known = suite.interpretations()
+    for source, choices in (("the adapter declares", declared), ("--choose gives", cli)):
+        for interp, alt in choices.items():
+            if interp not in known:
+                raise VerifyError(f"{source} interpretation {interp!r}, which no vector file defines "
+                                  f"(known: {', '.join(sorted(known))})")
+            if alt not in known[interp]["alternatives"]:
+                raise VerifyError(f"{source} {interp}={alt}, but {interp} has the alternatives "
+                                  f"{', '.join(known[interp]['alternatives'])}")
+    for interp, alt in cli.items():
+        if interp in declared and declared[interp] != alt:
+            raise VerifyError(f"--choose {interp}={alt}, but the adapter declares {interp}={declared[interp]}")
+    out = {}
+    for interp, d in sorted(known.items()):
+        if d["family"] not in families:
+            continue
+        chosen = declared.get(interp, cli.get(interp))
+        out[interp] = {"alternative": chosen or d["default"], "declared": chosen is not None, "family": d["family"]}
+    return out
+
+
+def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: dict | None = None,
+        known: KnownFailures | None = None, progress=None, plan: Plan | None = None) -> RunReport:
+    """Run the selected vectors through `adapter` (adapters.InProcess or stdio.StdioAdapter)."""
+    started = time.perf_counter()
+    vectors = selection.apply(suite.vectors)
+    families = sorted({v["family"] for v in vectors}) or sorted(suite.headers)
+    hello = adapter.hello(hello_request(suite, families))
+    interpretations = resolve_choices(suite, families, hello.get("interpretations", {}), choose or {})
+    choices = {i: d["alternative"] for i, d in interpretations.items()}
+    supported = set(hello["instructions"])
+
+    results: dict[str, VectorResult] = {}
+    runnable = []
+    for v in vectors:
+        if v["instruction"] in supported:
+            runnable.append(v)
+        else:
+            results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], SKIP,
+                                            message=f"the adapter does not support {v['instruction']}")
+    if plan is None:
+        plan = Plan(suite, runnable, choices)
+    by_id = suite.by_id
+    report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection)
+    total, done, failed = len(runnable), 0, 0
+    try:
+        for answer in adapter.answers([plan.requests[v["id"]] for v in runnable], plan.wire):
+            v = by_id[answer.id]
+            exp = plan.expected[answer.id]
+            msg = answer.message
+            errors = () if answer.fault else result_errors(msg)
+            if answer.fault or errors:
+                fault = answer.fault or "the result does not match result.schema.json: " + "; ".join(errors)
+                r = VectorResult(v["id"], v["family"], v["instruction"], ERROR, message=fault, choices=exp.choices)
+            elif "steps" in msg:
+                problems = compare(exp, msg["steps"])
+                r = VectorResult(v["id"], v["family"], v["instruction"], FAIL if problems else PASS,
+                                 problems, choices=exp.choices)
+            elif "skip" in msg:
+                r = VectorResult(v["id"], v["family"], v["instruction"], SKIP, message=msg["skip"], choices=exp.choices)
+            else:
+                r = VectorResult(v["id"], v["family"], v["instruction"], ERROR,
+                                 message=f"the adapter reported an error: {msg['error']}", choices=exp.choices)
+            results[answer.id] = r
+            done += 1
+            failed += r.status in FAILING
+            if progress:
+                progress(done, total, failed)
+    except AdapterAbort as exc:
+        report.aborted = str(exc)
+    finally:
+        try:
+            adapter.close()
+        except Exception as exc:  # closing must never lose the results
+            report.notes.append(f"closing the adapter: {type(exc).__name__}: {exc}")
+    for v in runnable:
+        if v["id"] not in results:
+            results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], NOT_RUN,
+                                            message="not run: the adapter stopped before it")
+    for vid, text in getattr(adapter, "notes", ()):
+        if vid in results:
+            results[vid].notes.append(text)
+        else:
+            report.notes.append(text)
+    report.results = [results[v["id"]] for v in vectors]
+    if known is not None:
+        known.apply(report.results, suite)
+    report.seconds = time.perf_counter() - started
+    return report
+
+
+__all__ = ["run", "Plan", "RunReport", "VectorResult", "Problem", "STATUSES", "FAILING",
+           "PASS", "FAIL", "ERROR", "SKIP", "XFAIL", "STALE", "NOT_RUN"]

@@ -1,0 +1,354 @@
+"""Driving an adapter process over JSON lines on its stdin/stdout (PROTOCOL.md).
+
+One long-lived process: a handshake, then batches of vectors, each answered by one result line
+per vector, matched by id. Two batches are kept in flight so the process never waits for the
+runner between batches. One single-threaded loop on non-blocking pipes does the writing, the
+reading of stdout and stderr, and the timeouts, so a stuck adapter can never block the runner
+(a blocking write into a full pipe while the adapter blocks writing to us would deadlock).
+
+Faults (the process crashing or exiting, hanging past the per-batch timeout, a line that is not
+JSON, an id that was not sent or answered twice) are blamed on the vector being run: the first one
+sent and not yet answered, which is exact for adapters that answer in order and flush each line
+(serve.py does). The process is then killed and restarted, and the rest of the batch is sent again,
+so one crash costs one vector, not the run. A result of the wrong shape is blamed on its own id and
+needs no restart. Anything written to stderr is kept as a note on the vector being run.
+"""
+from __future__ import annotations
+
+import json
+import os
+import selectors
+import shlex
+import signal
+import subprocess
+import time
+from collections import deque
+
+from .adapters import AdapterAbort, Answer, check_hello
+from .errors import VerifyError
+from .protocol import encode
+
+READ_CHUNK = 1 << 16
+STDERR_KEEP = 2000          # characters of stderr kept per note
+EXIT_GRACE_S = 2.0          # after `bye`, how long the adapter has to exit before it is killed
+
+
+class _Fault(Exception):
+    """The stream is broken: kill, blame the vector being run, restart."""
+
+
+class StdioAdapter:
+    def __init__(self, command, *, timeout: float = 30.0, batch_size: int = 256, max_restarts: int = 10,
+                 cwd=None, env=None):
+        self.argv = shlex.split(command) if isinstance(command, str) else list(command)
+        if not self.argv:
+            raise VerifyError("--adapter: empty command")
+        self.label = self.argv[0].rsplit("/", 1)[-1]
+        self.command = command if isinstance(command, str) else shlex.join(command)
+        self.timeout = timeout
+        self.batch_size = max(1, batch_size)
+        self.max_restarts = max_restarts
+        self.cwd, self.env = cwd, env
+        self.notes: list[tuple[str | None, str]] = []
+        self.restarts = 0
+        self.proc = None
+        self._hello_request = None
+        self._stderr_buf = b""
+        self._answered: set[str] = set()
+
+    # -- process life ---------------------------------------------------------------------------
+
+    def _spawn(self):
+        try:
+            self.proc = subprocess.Popen(self.argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                         stderr=subprocess.PIPE, bufsize=0, cwd=self.cwd, env=self.env,
+                                         start_new_session=True)
+        except OSError as exc:
+            raise AdapterAbort(f"--adapter {self.command}: cannot start it: {exc.strerror or exc}")
+        for f in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
+            os.set_blocking(f.fileno(), False)
+        self._out = b""
+        self._in = b""
+        self._stderr_buf = b""
+        self._sel = selectors.DefaultSelector()
+        self._sel.register(self.proc.stdout, selectors.EVENT_READ, "out")
+        self._sel.register(self.proc.stderr, selectors.EVENT_READ, "err")
+        self._writing = False
+        self._stdout_open = True
+
+    def _kill(self):
+        if self.proc is None:
+            return
+        try:
+            os.killpg(self.proc.pid, signal.SIGKILL)
+        except (ProcessLookupError, PermissionError):
+            pass
+        self._drain_stderr_now()
+        self.proc.wait()
+        self._sel.close()
+        for f in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
+            try:
+                f.close()
+            except OSError:
+                pass
+        self.proc = None
+
+    def hello(self, request: dict) -> dict:
+        self._hello_request = request
+        self._spawn()
+        return self._handshake()
+
+    def _handshake(self):
+        self._queue(encode(self._hello_request))
+        deadline = time.monotonic() + self.timeout
+        while True:
+            try:
+                lines = self._pump(deadline, current=None)
+            except _Fault as fault:
+                self._kill()
+                raise AdapterAbort(f"--adapter {self.command}: no handshake: {fault}{self._stderr_hint(None)}")
+            if lines:
+                try:
+                    answer = json.loads(lines[0])
+                    if len(lines) > 1:
+                        raise AdapterAbort(f"--adapter {self.command}: wrote {len(lines)} lines for the handshake, "
+                                           f"expected one; the second: {_clip(lines[1])}")
+                    return check_hello(answer, f"--adapter {self.command}")
+                except ValueError:
+                    self._kill()
+                    raise AdapterAbort(f"--adapter {self.command}: the handshake answer is not JSON: {_clip(lines[0])}")
+                except AdapterAbort:
+                    self._kill()
+                    raise
+
+    def close(self):
+        if self.proc is None:
+            return
+        try:
+            self._queue(encode({"type": "bye"}))
+            deadline = time.monotonic() + EXIT_GRACE_S
+            while self._out and time.monotonic() < deadline:
+                self._pump(deadline, current=None)
+            self.proc.stdin.close()
+            while self._stdout_open and time.monotonic() < deadline:
+                lines = self._pump(deadline, current=None)
+                if lines:
+                    self.notes.append((None, f"adapter wrote after the run: {_clip(lines[0])}"))
+        except (_Fault, OSError):
+            pass
+        try:
+            status = self.proc.wait(timeout=max(0.0, deadline - time.monotonic()))
+            if status != 0:
+                self.notes.append((None, f"adapter exited with status {status} after `bye`"))
+        except subprocess.TimeoutExpired:
+            self.notes.append((None, f"adapter did not exit within {EXIT_GRACE_S:.0f} s of `bye`; killed"))
+        self._kill()
+
+    # -- the loop -------------------------------------------------------------------------------
+
+    def _queue(self, data: bytes):
+        self._out += data
+        if not self._writing:
+            try:
+                self._sel.register(self.proc.stdin, selectors.EVENT_WRITE, "in")
+                self._writing = True
+            except (ValueError, OSError):
+                pass
+
+    def _pump(self, deadline: float, current: str | None) -> list[bytes]:
+        """Write what is queued and read what is there; return complete stdout lines.
+
+        Raises _Fault when the process is gone or the deadline passes with no line read.
+        """
+        while True:
+            wait = deadline - time.monotonic()
+            if wait <= 0:
+                raise _Fault(f"no answer within {self.timeout:g} s (timeout); the adapter was killed")
+            lines = []
+            for key, _ in self._sel.select(wait):
+                if key.data == "in":
+                    try:
+                        n = os.write(key.fileobj.fileno(), self._out[:READ_CHUNK])
+                    except BrokenPipeError:
+                        self._sel.unregister(key.fileobj)
+                        self._writing = False
+                        self._out = b""
+                        continue
+                    except BlockingIOError:
+                        continue
+                    self._out = self._out[n:]
+                    if not self._out:
+                        self._sel.unregister(key.fileobj)
+                        self._writing = False
+                elif key.data == "err":
+                    chunk = os.read(key.fileobj.fileno(), READ_CHUNK)
+                    if not chunk:
+                        self._sel.unregister(key.fileobj)
+                    else:
+                        self._stderr(chunk, current)
+                else:
+                    chunk = os.read(key.fileobj.fileno(), READ_CHUNK)
+                    if not chunk:
+                        self._sel.unregister(key.fileobj)
+                        self._stdout_open = False
+                        status = self.proc.wait()
+                        self._flush_stderr(current)
+                        raise _Fault(_exit_text(status))
+                    self._in += chunk
+                    if b"\n" in chunk:
+                        *lines, self._in = self._in.split(b"\n")
+            lines = [line for line in lines if line.strip()]
+            if lines:
+                return lines
+
+    def _stderr(self, chunk: bytes, current):
+        self._stderr_buf += chunk
+        if b"\n" in self._stderr_buf:
+            text, _, self._stderr_buf = self._stderr_buf.rpartition(b"\n")
+            self._note_stderr(text, current)
+
+    def _flush_stderr(self, current):
+        if self._stderr_buf:
+            self._note_stderr(self._stderr_buf, current)
+            self._stderr_buf = b""
+
+    def _drain_stderr_now(self):
+        try:
+            while True:
+                chunk = os.read(self.proc.stderr.fileno(), READ_CHUNK)
+                if not chunk:
+                    break
+                self._stderr_buf += chunk
+        except (BlockingIOError, OSError, ValueError):
+            pass
+        self._flush_stderr(None)
+
+    def _note_stderr(self, data: bytes, current):
+        text = data.decode("utf-8", "replace").strip()
+        if not text:
+            return
+        if self.notes and self.notes[-1][0] == current and self.notes[-1][1].startswith("stderr: "):
+            vid, old = self.notes[-1]
+            self.notes[-1] = (vid, (old + "\n" + text)[:STDERR_KEEP])
+        else:
+            self.notes.append((current, "stderr: " + text[:STDERR_KEEP]))
+
+    def _stderr_hint(self, vid):
+        texts = [t for v, t in self.notes if v == vid and t.startswith("stderr: ")]
+        return f"; adapter {texts[-1]}" if texts else ""
+
+    # -- running vectors ------------------------------------------------------------------------
+
+    def answers(self, requests, wire: dict | None = None):
+        """Yield an Answer for every request, in the order answers arrive.
+
+        `wire` caches each request's encoded line by id, for runs that repeat (runner.Plan).
+        """
+        wire = {} if wire is None else wire
+        pending = deque(requests)         # not yet sent
+        isolate = deque()                 # to be re-run one at a time, after a fault
+        sent: dict[str, dict] = {}        # id -> request, sent and not answered (in sending order)
+        batches: deque = deque()          # [batch number, unanswered count] in flight, oldest first
+        batch_of: dict[str, list] = {}    # id -> its entry in `batches`
+        batch_no = 0
+        deadline = None
+
+        def send(chunk):
+            nonlocal batch_no
+            entry = [batch_no, len(chunk)]
+            batches.append(entry)
+            lines = []
+            for r in chunk:
+                vid = r["id"]
+                sent[vid] = r
+                batch_of[vid] = entry
+                line = wire.get(vid)
+                if line is None:
+                    line = wire[vid] = encode(r)[:-1]
+                lines.append(line)
+            body = b",".join(lines)
+            self._queue(b'{"type":"run","batch":%d,"vectors":[' % batch_no + body + b"]}\n")
+            batch_no += 1
+
+        while pending or sent or isolate:
+            if isolate:
+                # After a fault with several vectors unanswered, the culprit is found by sending
+                # them one at a time: an adapter that buffers its output (most do) may have died
+                # on any of them.
+                if not sent:
+                    send([isolate.popleft()])
+                    deadline = time.monotonic() + self.timeout
+            else:
+                while pending and len(batches) < 2:
+                    send([pending.popleft() for _ in range(min(self.batch_size, len(pending)))])
+                    if len(batches) == 1:
+                        deadline = time.monotonic() + self.timeout
+            current = next(iter(sent))
+            try:
+                for msg in self._messages(self._pump(deadline, current)):
+                    vid = msg.get("id") if isinstance(msg, dict) else None
+                    if isinstance(msg, dict) and msg.get("type") == "fatal":
+                        raise _Fault(f"the adapter gave up: {msg.get('message')}")
+                    if vid not in sent:
+                        if not isinstance(vid, str):
+                            raise _Fault(f"the adapter wrote a message with no vector id: {_clip(json.dumps(msg))}")
+                        raise _Fault(f"the adapter answered id {vid!r}, which "
+                                     + ("was already answered" if vid in self._answered else "was not sent"))
+                    del sent[vid]
+                    self._answered.add(vid)
+                    batch_of.pop(vid)[1] -= 1
+                    yield Answer(vid, msg)
+                    while batches and batches[0][1] == 0:
+                        batches.popleft()
+                        deadline = time.monotonic() + self.timeout
+            except _Fault as fault:
+                self._kill()
+                unanswered = list(sent.values())
+                sent.clear()
+                batches.clear()
+                batch_of.clear()
+                if len(unanswered) == 1:
+                    blamed = unanswered[0]["id"]
+                    yield Answer(blamed, None, f"{fault} (while running {blamed}){self._stderr_hint(blamed)}")
+                else:
+                    isolate.extendleft(reversed(unanswered))
+                if pending or isolate:
+                    self._restart()
+
+    def _messages(self, lines):
+        """Parse complete lines; one json.loads for the lot when they are all JSON (the usual case)."""
+        try:
+            parsed = json.loads(b"[" + b",".join(lines) + b"]")
+            if len(parsed) == len(lines):   # else some line held more than one value
+                return parsed
+        except ValueError:
+            pass
+        out = []
+        for line in lines:
+            try:
+                out.append(json.loads(line))
+            except ValueError:
+                raise _Fault(f"the adapter wrote a line that is not JSON: {_clip(line)}")
+        return out
+
+    def _restart(self):
+        self.restarts += 1
+        if self.restarts > self.max_restarts:
+            raise AdapterAbort(f"--adapter {self.command}: gave up after {self.max_restarts} restarts")
+        self._spawn()
+        self._handshake()
+
+
+def _clip(line: bytes, limit: int = 120) -> str:
+    text = line.decode("utf-8", "replace") if isinstance(line, bytes) else str(line)
+    return repr(text if len(text) <= limit else text[:limit] + "...")
+
+
+def _exit_text(status: int) -> str:
+    if status < 0:
+        try:
+            name = signal.Signals(-status).name
+        except ValueError:
+            name = f"signal {-status}"
+        return f"the adapter was killed by {name}"
+    return f"the adapter exited with status {status} before answering"

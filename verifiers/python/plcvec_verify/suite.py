@@ -1,0 +1,154 @@
+"""Loading a vector set and choosing which of its vectors to run.
+
+A vector set is a folder with `manifest.json` and the family files it names (what `plcvec
+generate` writes), or a single family file. Nothing here depends on the generator: an
+implementer needs only the published files.
+"""
+from __future__ import annotations
+
+import fnmatch
+import json
+import zlib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from .errors import VerifyError
+
+# The major schema version this verifier understands (CONTRACT.md, "Versioning"): a 2.x file may
+# mean something else by the same fields, so it is refused rather than misread.
+SCHEMA_MAJOR = 1
+
+
+@dataclass
+class Suite:
+    """The vectors of one set, with each family file's header."""
+
+    vectors: list[dict]
+    headers: dict[str, dict]          # family -> file header (everything but "vectors")
+    source: str
+    suite_version: str = ""
+    schema_version: str = ""
+    spec_sha256: str = ""
+    by_id: dict[str, dict] = field(default_factory=dict)
+
+    def __post_init__(self):
+        self.by_id = {v["id"]: v for v in self.vectors}
+
+    @classmethod
+    def load(cls, path) -> "Suite":
+        path = Path(path)
+        if path.is_dir():
+            manifest = _read_json(path / "manifest.json")
+            try:
+                files = [path / entry["file"] for entry in manifest["families"].values()]
+            except (KeyError, TypeError, AttributeError):
+                raise VerifyError(f"{path / 'manifest.json'}: no `families` with a `file` each; is this a plcvec vector folder?")
+            suite_version = str(manifest.get("generator_version") or "")
+            manifest_hash = manifest.get("spec_sha256", "")
+        elif path.exists():
+            files, suite_version, manifest_hash = [path], "", ""
+        else:
+            raise VerifyError(f"{path}: no such vector folder or file")
+        headers, vectors, spec_hashes, schema_versions = {}, [], set(), set()
+        for file in files:
+            data = _read_json(file)
+            if not isinstance(data, dict) or not isinstance(data.get("vectors"), list) or "family" not in data:
+                raise VerifyError(f"{file}: not a plcvec vector file (no `family` and `vectors`)")
+            version = str(data.get("schema_version", ""))
+            major = version.split(".")[0]
+            if major != str(SCHEMA_MAJOR):
+                raise VerifyError(f"{file}: schema_version {version or '(none)'} is not {SCHEMA_MAJOR}.x; "
+                                  f"this verifier reads {SCHEMA_MAJOR}.x files only (see CONTRACT.md, Versioning)")
+            schema_versions.add(version)
+            spec_hashes.add(data.get("spec_sha256", ""))
+            headers[data["family"]] = {k: v for k, v in data.items() if k != "vectors"}
+            vectors.extend(data["vectors"])
+        seen = set()
+        for v in vectors:
+            if v["id"] in seen:
+                raise VerifyError(f"{path}: vector id {v['id']} appears twice")
+            seen.add(v["id"])
+        return cls(vectors=vectors, headers=headers, source=str(path), suite_version=suite_version,
+                   schema_version=", ".join(sorted(schema_versions)),
+                   spec_sha256=manifest_hash or ", ".join(sorted(h for h in spec_hashes if h)))
+
+    def interpretations(self, families=None) -> dict[str, dict]:
+        """interpretation id -> {"family", "default", "alternatives": [ids]} for the given families."""
+        out = {}
+        for family, header in sorted(self.headers.items()):
+            if families is not None and family not in families:
+                continue
+            for interp in header.get("interpretations", []):
+                out[interp["id"]] = {"family": family, "default": interp["default"],
+                                     "alternatives": [a["id"] for a in interp["alternatives"]]}
+        return out
+
+    def instructions(self) -> dict[str, list[str]]:
+        return {family: list(h.get("instructions", [])) for family, h in sorted(self.headers.items())}
+
+
+def _read_json(path: Path):
+    try:
+        text = path.read_text(encoding="utf-8")
+    except FileNotFoundError:
+        raise VerifyError(f"{path}: no such file")
+    except OSError as exc:
+        raise VerifyError(f"{path}: {exc.strerror}")
+    try:
+        return json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise VerifyError(f"{path}:{exc.lineno}: not valid JSON ({exc.msg})")
+
+
+def touched_interpretations(vector: dict) -> set[str]:
+    """The interpretations a vector's outcome depends on."""
+    return set(vector["outcome"].get("interpretations", ()))
+
+
+@dataclass(frozen=True)
+class Selection:
+    """Filters; each list is OR within itself, and the filters are AND together."""
+
+    families: tuple = ()
+    instructions: tuple = ()
+    tags: tuple = ()
+    ids: tuple = ()                  # glob patterns (fnmatch) on the id
+    interpretations: tuple = ()      # vectors whose outcome depends on one of these
+    shard: tuple | None = None       # (k, n), 1 <= k <= n
+
+    def matches(self, v: dict) -> bool:
+        if self.families and v["family"] not in self.families:
+            return False
+        if self.instructions and v["instruction"] not in self.instructions:
+            return False
+        if self.tags and not set(self.tags) & set(v.get("tags", ())):
+            return False
+        if self.ids and not any(fnmatch.fnmatchcase(v["id"], p) for p in self.ids):
+            return False
+        if self.interpretations and not set(self.interpretations) & touched_interpretations(v):
+            return False
+        if self.shard and shard_of(v["id"], self.shard[1]) != self.shard[0]:
+            return False
+        return True
+
+    def apply(self, vectors: list[dict]) -> list[dict]:
+        return [v for v in vectors if self.matches(v)]
+
+
+def shard_of(vector_id: str, n: int) -> int:
+    """The shard (1..n) a vector belongs to.
+
+    A hash of the id rather than its position: adding a vector to the suite moves no other vector
+    to another shard, so a CI job's history stays comparable.
+    """
+    return zlib.crc32(vector_id.encode("utf-8")) % n + 1
+
+
+def parse_shard(text: str) -> tuple[int, int]:
+    try:
+        k, n = (int(x) for x in text.split("/"))
+    except ValueError:
+        raise VerifyError(f"--shard takes K/N (e.g. 2/4), got {text!r}")
+    if not 1 <= k <= n:
+        raise VerifyError(f"--shard {text}: K must be between 1 and N")
+    return k, n
