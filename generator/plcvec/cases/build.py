@@ -27,7 +27,7 @@ def instruction_list(fam):
                 names = {"form_mnemonic": form["mnemonic"], "symbol": cond["symbol"],
                          "form_st": form["st"], "condition_st": cond["st"]}
                 item = {"name": naming["ladder"].format(**names), "st": naming["st"].format(**names),
-                        "form": form, "symbol": cond["symbol"]}
+                        "form": form, "symbol": cond["symbol"], "naming_clause": naming["clause"]}
                 if "function_code" in cond:
                     item["function_code"] = cond["function_code"]
                 out.append(item)
@@ -43,6 +43,11 @@ class VectorBuilder:
         self._engines = {}
         self.ids = set()
         self.defaults = fam.default_choices()
+        coverage = fam.doc.get("coverage", {})
+        # Clauses the spec says every vector embodies (names, operand types, encoding), and those a
+        # vector cites because the generator tagged it for that reason.
+        self.every_vector = set(coverage.get("every_vector", []))
+        self.by_tag = coverage.get("by_tag", {})
 
     def engine(self, choices):
         key = tuple(sorted(choices.items()))
@@ -114,7 +119,7 @@ class VectorBuilder:
             "st": instr.get("st", instruction),
             "description": description,
             "tags": sorted(set(tags)),
-            "clauses": sorted(self.fam.clause_ref(c) for c in trace | set(clauses)),
+            "clauses": sorted(self.fam.clause_ref(c) for c in trace | set(clauses) | self._cited(instr, operands, tags)),
             "assumes": {"device_sizes": self.sizes},
             "initial": {"operands": operands, "devices": dict(sorted(devices.items()))},
             "steps": [dict({k: s[k] for k in STEP_INPUTS if k in s}, expect=e) for s, e in zip(steps, expects)],
@@ -128,6 +133,14 @@ class VectorBuilder:
         if printed is not None:
             vector["printed"] = printed
         return vector
+
+
+    def _cited(self, instr, operands, tags):
+        """Clauses a vector exercises by what it is, whatever the engine does with it: the clause of each
+        operand it uses, the naming of its instruction, and the spec's coverage section."""
+        cited = {self.fam.doc["operands"][name]["clause"] for name in operands}
+        cited |= {instr["naming_clause"]} if "naming_clause" in instr else set()
+        return cited | self.every_vector | {self.by_tag[t] for t in tags if t in self.by_tag}
 
 
 def _errors_in_code(operands):

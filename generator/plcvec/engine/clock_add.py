@@ -28,10 +28,12 @@ class ClockAdd:
         for check in self.errors["checks"]:
             failed = self._failed(check, operands, state, values, ctx["device_sizes"])
             if failed:
-                trace.add(check["clause"])
-                for register in self.errors["registers"]["devices"]:
+                trace.update(failed)
+                registers = self.errors["registers"]
+                for register in registers["devices"]:
                     state[register] = check["code"]
-                trace.add(self.errors["registers"]["clause"])
+                    trace.add(registers.get("device_clauses", {}).get(register))
+                trace.add(registers["clause"])
                 ctx["error"] = {"code": check["code"]}
                 if self.errors["on_error"] == "computed" and check["check"] == "field_range":
                     self._add(values, operands, state, trace)
@@ -40,16 +42,22 @@ class ClockAdd:
         return None
 
     def _failed(self, check, operands, state, values, device_sizes):
+        """The clauses a failed check breaks (empty when it passes).
+
+        A range check cites the clause of each field found out of range, not the check's own clause:
+        the manual gives each range its own row of the error table (hour 0 to 23; minute, second 0 to 59).
+        """
         for op in check["operands"]:
             head = operands[op]["device"]
             if check["check"] == "device_range":
                 if not in_device_range(head, self.ops[op]["words"], device_sizes):
-                    return True
+                    return {check["clause"]}
             else:
                 values[op] = self.codec.read(state, head)
-                if not all(self.codec.in_range(f, values[op][f["name"]]) for f in self.codec.fields):
-                    return True
-        return False
+                bad = {f["clause"] for f in self.codec.fields if not self.codec.in_range(f, values[op][f["name"]])}
+                if bad:
+                    return bad
+        return set()
 
     def _add(self, values, operands, state, trace):
         trace.add(self.doc["data"]["order_clause"])
@@ -68,3 +76,4 @@ class ClockAdd:
             for device in self.flags[name]["devices"]:
                 if self.flags["written"] == "always" or on:
                     state[device] = on
+                    trace.add(self.flags[name].get("device_clauses", {}).get(device))

@@ -29,6 +29,8 @@ class HourMeter:
             return None
         fraction = ctx.get("fraction", 0) + step["elapsed_ms"]
         whole, ctx["fraction"] = divmod(fraction, self.units)
+        if whole and state[d2]:
+            trace.add(self.doc["data"].get("keep_measuring_clause"))  # D1 goes on growing past the preset
         total = self.codec.to_units(self.codec.read(state, d1)) + whole
         modulus = self.codec.modulus()
         if total >= modulus:
@@ -71,6 +73,7 @@ class HourMeter:
         else:
             values = self.codec.read(state, operand["device"])
         fields = self.codec.fields
+        trace.update(f["clause"] for f in fields)  # every field of the preset is checked against its range
         if not all(self.codec.in_range(f, values[f["name"]]) for f in fields):
             return None
         return values

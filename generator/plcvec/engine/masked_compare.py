@@ -63,6 +63,7 @@ class MaskedCompare:
             state[err["device"]] = False  # an error flag that reports each execution, not a latch
         if ordering is not None and self.flags:
             trace.add(self.flags["clause"])
+            trace.add(self.flags.get("written_clause"))
             for symbol, device in self.flags["devices"].items():
                 state[device] = self.flags["table"][ordering][symbol]
         return ordering
@@ -119,6 +120,12 @@ class MaskedCompare:
             if action == "error":
                 raise _Error
             return "eq"
+        # Reached with at least one field selected: a selector value the manual lists as valid when no
+        # reserved bit is set; a field left out is the masking the manual describes.
+        if not sel & self.reserved_mask:
+            trace.add(self.sel.get("valid_clause"))
+        if len(selected) < len(self.fields):
+            trace.add(self.sel.get("unselected_clause"))
         if self.validity["scope"] == "selected":
             self._check(values, compared_ops, selected, trace)
         trace.add(self.doc["data"]["order_clause"])

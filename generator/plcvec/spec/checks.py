@@ -1,4 +1,5 @@
 """Consistency checks a JSON Schema cannot express: references, ranges, bit layouts, unique ids."""
+from plcvec.output.tags import TAGS
 
 # The value range each word encoding can hold at all, by field width; a field range outside it is a typo.
 _ENCODING_LIMITS = {
@@ -34,6 +35,7 @@ def check_family(fam):
     _unique(fam, doc["errata"], ("errata",), "erratum")
     _unique(fam, doc.get("examples", []), ("examples",), "example")
     _check_references(fam)
+    _check_coverage(fam)
     _check_interpretations(fam)
     _check_fields(fam)
     if fam.kind == "masked_compare":
@@ -56,10 +58,12 @@ def _check_references(fam):
             if key in ("clause",) or key.endswith("_clause"):
                 if value not in fam.clauses:
                     raise fam.error(where + (key,), f"unknown clause {value!r}")
-            if key == "field_clauses":
+            if key.endswith("_clauses"):  # field_clauses, device_clauses: {name: clause id}
                 for f, c in value.items():
                     if c not in fam.clauses:
                         raise fam.error(where + (key, f), f"unknown clause {c!r}")
+                    if key == "device_clauses" and f not in node.get("devices", []):
+                        raise fam.error(where + (key, f), f"device {f!r} is not one of the devices {node.get('devices', [])}")
             if key == "interpretation" and len(node) == 1:
                 if value not in fam.interpretations:
                     raise fam.error(where + (key,), f"unknown interpretation {value!r}")
@@ -71,6 +75,24 @@ def _check_references(fam):
                         raise fam.error(("interpretations", index, "alternatives", k, "sets"),
                                         f"interpretation {value!r} alternative {alt['id']!r} does not set {param!r}, "
                                         f"which {'.'.join(map(str, where))} takes from it")
+
+
+def _check_coverage(fam):
+    """The coverage section names clauses and generator tags; a typo would silently cite nothing."""
+    coverage = fam.doc.get("coverage", {})
+    for i, c in enumerate(coverage.get("every_vector", [])):
+        if c not in fam.clauses:
+            raise fam.error(("coverage", "every_vector", i), f"unknown clause {c!r}")
+    for tag, c in coverage.get("by_tag", {}).items():
+        if tag not in TAGS:
+            raise fam.error(("coverage", "by_tag", tag), f"unknown tag {tag!r} (known: {', '.join(sorted(TAGS))})")
+        if c not in fam.clauses:
+            raise fam.error(("coverage", "by_tag", tag), f"unknown clause {c!r}")
+    cited = set(coverage.get("every_vector", [])) | set(coverage.get("by_tag", {}).values())
+    for i, entry in enumerate(coverage.get("no_vectors", [])):
+        if entry["clause"] in cited:
+            raise fam.error(("coverage", "no_vectors", i, "clause"),
+                            f"clause {entry['clause']!r} is said to have no vectors but the coverage section cites it in vectors")
 
 
 def _check_interpretations(fam):
