@@ -48,29 +48,46 @@ def field_values(field):
     return st.one_of(st.integers(field["min"], field["max"]), st.sampled_from(signed_boundaries(field)))
 
 
-def draw_compare(cases, seed_value, count):
-    fields = cases.fields
+def in_range(fields):
+    """Every field within the range the spec gives it."""
+    return st.fixed_dictionaries({f["name"]: st.integers(f["min"], f["max"]) for f in fields})
+
+
+def around_range(fields):
+    """Every field mostly in range, with its boundary set (and what lies just past it) mixed in."""
+    return st.fixed_dictionaries({f["name"]: field_values(f) for f in fields})
+
+
+def compare_parts(cases):
+    """The strategies of one comparison case, by name (`plcvec fuzz` recombines them)."""
     subsets = sorted({cases.selector([n for i, n in enumerate(cases.names) if m >> i & 1], clock)
                       for m in range(1 << len(cases.names))
                       for clock in ([False, True] if cases.clock_bit else [False])})
-    values = st.fixed_dictionaries({f["name"]: field_values(f) for f in fields})
-    valid_values = st.fixed_dictionaries({f["name"]: st.integers(f["min"], f["max"]) for f in fields})
-    strategy = st.fixed_dictionaries({
+    return {
         "form": st.sampled_from(sorted(cases.forms)),
         "symbol": st.sampled_from(cases.conditions),
-        "a": values, "b": values, "clock": valid_values,
+        "a": around_range(cases.fields), "b": around_range(cases.fields), "clock": in_range(cases.fields),
         "sel": st.one_of(st.sampled_from(subsets), st.integers(0, 0xFFFF)),
         "rlo_in": st.booleans(),
-    })
-    for d in _collect(strategy, seed_value, count):
-        clock_mode = bool(cases.clock_bit) and bool(d["sel"] >> cases.clock_bit["bit"] & 1)
-        yield {
-            "key": key_of(d), "form": d["form"], "symbol": d["symbol"],
-            "s1": cases.ops.words(d["a"], raw=_raw_overflow(fields, d["a"])),
-            "s2": cases.ops.words(d["b"], raw=_raw_overflow(fields, d["b"])),
-            "sel": d["sel"], "clock": d["clock"] if clock_mode else None,
-            "rlo_in": None if cases.forms[d["form"]]["logic"] == "load" else d["rlo_in"],
-        }
+    }
+
+
+def compare_case(cases, d):
+    """A drawn comparison (form, symbol, a, b, clock, sel, rlo_in) as the operand words of a case."""
+    fields = cases.fields
+    clock_mode = bool(cases.clock_bit) and bool(d["sel"] >> cases.clock_bit["bit"] & 1)
+    return {
+        "key": key_of(d), "form": d["form"], "symbol": d["symbol"],
+        "s1": cases.ops.words(d["a"], raw=_raw_overflow(fields, d["a"])),
+        "s2": cases.ops.words(d["b"], raw=_raw_overflow(fields, d["b"])),
+        "sel": d["sel"], "clock": d["clock"] if clock_mode else None,
+        "rlo_in": None if cases.forms[d["form"]]["logic"] == "load" else d["rlo_in"],
+    }
+
+
+def draw_compare(cases, seed_value, count):
+    for d in _collect(st.fixed_dictionaries(compare_parts(cases)), seed_value, count):
+        yield compare_case(cases, d)
 
 
 def _raw_overflow(fields, values):
@@ -80,14 +97,18 @@ def _raw_overflow(fields, values):
 
 
 def draw_addition(fields, seed_value, count):
-    hms = st.fixed_dictionaries({f["name"]: st.integers(f["min"], f["max"]) for f in fields})
+    hms = in_range(fields)
     for d in _collect(st.fixed_dictionaries({"s1": hms, "s2": hms}), seed_value, count):
         yield dict(d, key=key_of(d))
 
 
+def hour_meter_step():
+    """One scan of an hour meter: the input, and the time since the previous scan (mostly short)."""
+    return st.fixed_dictionaries({"input": st.booleans(), "elapsed_ms": st.one_of(st.integers(0, 2500), st.integers(0, 10 ** 7))})
+
+
 def draw_hour_meter(fields, seed_value, count):
-    value = st.fixed_dictionaries({f["name"]: st.integers(f["min"], f["max"]) for f in fields})
-    step = st.fixed_dictionaries({"input": st.booleans(), "elapsed_ms": st.one_of(st.integers(0, 2500), st.integers(0, 10 ** 7))})
-    strategy = st.fixed_dictionaries({"preset": value, "measured": value, "steps": st.lists(step, min_size=1, max_size=6)})
+    value = in_range(fields)
+    strategy = st.fixed_dictionaries({"preset": value, "measured": value, "steps": st.lists(hour_meter_step(), min_size=1, max_size=6)})
     for d in _collect(strategy, seed_value, count):
         yield dict(d, key=key_of(d))
