@@ -17,7 +17,7 @@ from hypothesis.internal.conjecture.providers import HypothesisProvider
 from plcvec.cases.common import signed_boundaries
 
 
-class _SeededProvider(HypothesisProvider):
+class SeededProvider(HypothesisProvider):
     """Hypothesis' own provider, minus its habit of mixing in constants found in whatever modules the
     process has imported (which made the draws depend on, e.g., whether pytest had loaded the tests)."""
 
@@ -25,13 +25,20 @@ class _SeededProvider(HypothesisProvider):
         return None
 
 
+def draw_seeded(strategy, rng):
+    """One value of `strategy` drawn from `rng` alone, and the choices hypothesis made for it (which
+    replay it, e.g. for shrinking)."""
+    data = ConjectureData(random=rng, provider=SeededProvider)
+    with BuildContext(data, is_final=True, wrapped_test=None):
+        value = data.draw(strategy)
+    return value, data.choices
+
+
 def _collect(strategy, seed_value, count):
     rng = random.Random(seed_value)
     drawn, seen = [], set()
     for _ in range(count):
-        data = ConjectureData(random=rng, provider=_SeededProvider)
-        with BuildContext(data, is_final=True, wrapped_test=None):
-            value = data.draw(strategy)
+        value, _ = draw_seeded(strategy, rng)
         key = json.dumps(value, sort_keys=True)
         if key not in seen:
             seen.add(key)
