@@ -105,10 +105,15 @@ def resolve_choices(suite: Suite, families, declared: dict, cli: dict) -> dict:
 
 
 def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: dict | None = None,
-        known: KnownFailures | None = None, progress=None, plan: Plan | None = None) -> RunReport:
-    """Run the selected vectors through `adapter` (adapters.InProcess or stdio.StdioAdapter)."""
+        known: KnownFailures | None = None, progress=None, plan: Plan | None = None,
+        vectors: list | None = None) -> RunReport:
+    """Run the selected vectors through `adapter` (adapters.InProcess or stdio.StdioAdapter).
+
+    `vectors`, when given, is the list to run instead of `selection` (the pytest plugin passes the
+    items pytest kept after -k and friends).
+    """
     started = time.perf_counter()
-    vectors = selection.apply(suite.vectors)
+    vectors = selection.apply(suite.vectors) if vectors is None else vectors
     families = sorted({v["family"] for v in vectors}) or sorted(suite.headers)
     hello = adapter.hello(hello_request(suite, families))
     interpretations = resolve_choices(suite, families, hello.get("interpretations", {}), choose or {})

@@ -55,6 +55,7 @@ class StdioAdapter:
         self._hello_request = None
         self._stderr_buf = b""
         self._answered: set[str] = set()
+        self._last_answered = None
 
     # -- process life ---------------------------------------------------------------------------
 
@@ -76,15 +77,16 @@ class StdioAdapter:
         self._writing = False
         self._stdout_open = True
 
-    def _kill(self):
+    def _kill(self, current=None):
         if self.proc is None:
             return
         try:
             os.killpg(self.proc.pid, signal.SIGKILL)
         except (ProcessLookupError, PermissionError):
             pass
-        self._drain_stderr_now()
         self.proc.wait()
+        self._drain_stderr_now()
+        self._settle_stderr(current, everything=True)
         self._sel.close()
         for f in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
             try:
@@ -103,7 +105,7 @@ class StdioAdapter:
         deadline = time.monotonic() + self.timeout
         while True:
             try:
-                lines = self._pump(deadline, current=None)
+                lines = self._pump(deadline)
             except _Fault as fault:
                 self._kill()
                 raise AdapterAbort(f"--adapter {self.command}: no handshake: {fault}{self._stderr_hint(None)}")
@@ -113,7 +115,9 @@ class StdioAdapter:
                     if len(lines) > 1:
                         raise AdapterAbort(f"--adapter {self.command}: wrote {len(lines)} lines for the handshake, "
                                            f"expected one; the second: {_clip(lines[1])}")
-                    return check_hello(answer, f"--adapter {self.command}")
+                    hello = check_hello(answer, f"--adapter {self.command}")
+                    self._settle_stderr(None)          # start-up chatter belongs to no vector
+                    return hello
                 except ValueError:
                     self._kill()
                     raise AdapterAbort(f"--adapter {self.command}: the handshake answer is not JSON: {_clip(lines[0])}")
@@ -128,10 +132,10 @@ class StdioAdapter:
             self._queue(encode({"type": "bye"}))
             deadline = time.monotonic() + EXIT_GRACE_S
             while self._out and time.monotonic() < deadline:
-                self._pump(deadline, current=None)
+                self._pump(deadline)
             self.proc.stdin.close()
             while self._stdout_open and time.monotonic() < deadline:
-                lines = self._pump(deadline, current=None)
+                lines = self._pump(deadline)
                 if lines:
                     self.notes.append((None, f"adapter wrote after the run: {_clip(lines[0])}"))
         except (_Fault, OSError):
@@ -155,7 +159,7 @@ class StdioAdapter:
             except (ValueError, OSError):
                 pass
 
-    def _pump(self, deadline: float, current: str | None) -> list[bytes]:
+    def _pump(self, deadline: float) -> list[bytes]:
         """Write what is queued and read what is there; return complete stdout lines.
 
         Raises _Fault when the process is gone or the deadline passes with no line read.
@@ -185,15 +189,13 @@ class StdioAdapter:
                     if not chunk:
                         self._sel.unregister(key.fileobj)
                     else:
-                        self._stderr(chunk, current)
+                        self._stderr_buf += chunk
                 else:
                     chunk = os.read(key.fileobj.fileno(), READ_CHUNK)
                     if not chunk:
                         self._sel.unregister(key.fileobj)
                         self._stdout_open = False
-                        status = self.proc.wait()
-                        self._flush_stderr(current)
-                        raise _Fault(_exit_text(status))
+                        raise _Fault(_exit_text(self.proc.wait()))
                     self._in += chunk
                     if b"\n" in chunk:
                         *lines, self._in = self._in.split(b"\n")
@@ -201,16 +203,20 @@ class StdioAdapter:
             if lines:
                 return lines
 
-    def _stderr(self, chunk: bytes, current):
-        self._stderr_buf += chunk
-        if b"\n" in self._stderr_buf:
-            text, _, self._stderr_buf = self._stderr_buf.rpartition(b"\n")
-            self._note_stderr(text, current)
+    def _settle_stderr(self, current, everything=False):
+        """Note the complete stderr lines read so far against `current`.
 
-    def _flush_stderr(self, current):
-        if self._stderr_buf:
-            self._note_stderr(self._stderr_buf, current)
-            self._stderr_buf = b""
+        Called after the stdout lines of the same read are processed: an adapter writes a
+        vector's stderr after the previous vector's answer, so the vector running then is the
+        first one still unanswered once those answers are counted.
+        """
+        if everything:
+            text, self._stderr_buf = self._stderr_buf, b""
+        elif b"\n" in self._stderr_buf:
+            text, _, self._stderr_buf = self._stderr_buf.rpartition(b"\n")
+        else:
+            return
+        self._note_stderr(text, current)
 
     def _drain_stderr_now(self):
         try:
@@ -221,20 +227,22 @@ class StdioAdapter:
                 self._stderr_buf += chunk
         except (BlockingIOError, OSError, ValueError):
             pass
-        self._flush_stderr(None)
 
     def _note_stderr(self, data: bytes, current):
         text = data.decode("utf-8", "replace").strip()
         if not text:
             return
-        if self.notes and self.notes[-1][0] == current and self.notes[-1][1].startswith("stderr: "):
+        if self.notes and self.notes[-1][0] == current and self.notes[-1][1].startswith("stderr"):
             vid, old = self.notes[-1]
             self.notes[-1] = (vid, (old + "\n" + text)[:STDERR_KEEP])
         else:
-            self.notes.append((current, "stderr: " + text[:STDERR_KEEP]))
+            # stderr and stdout are separate pipes, so which vector was running when a line was
+            # written is known only to within the window between two answers; say so.
+            window = f" (written after {self._last_answered} was answered)" if self._last_answered else ""
+            self.notes.append((current, f"stderr{window}: " + text[:STDERR_KEEP]))
 
     def _stderr_hint(self, vid):
-        texts = [t for v, t in self.notes if v == vid and t.startswith("stderr: ")]
+        texts = [t for v, t in self.notes if v == vid and t.startswith("stderr")]
         return f"; adapter {texts[-1]}" if texts else ""
 
     # -- running vectors ------------------------------------------------------------------------
@@ -285,25 +293,30 @@ class StdioAdapter:
                         deadline = time.monotonic() + self.timeout
             current = next(iter(sent))
             try:
-                for msg in self._messages(self._pump(deadline, current)):
+                for msg in self._messages(self._pump(deadline)):
                     vid = msg.get("id") if isinstance(msg, dict) else None
                     if isinstance(msg, dict) and msg.get("type") == "fatal":
                         raise _Fault(f"the adapter gave up: {msg.get('message')}")
                     if vid not in sent:
+                        if vid in self._answered:
+                            # The stream is still in step; the vector answered twice is the culprit.
+                            yield Answer(vid, None, f"the adapter answered {vid} twice")
+                            continue
                         if not isinstance(vid, str):
                             raise _Fault(f"the adapter wrote a message with no vector id: {_clip(json.dumps(msg))}")
-                        raise _Fault(f"the adapter answered id {vid!r}, which "
-                                     + ("was already answered" if vid in self._answered else "was not sent"))
+                        raise _Fault(f"the adapter answered id {vid!r}, which was not sent")
                     del sent[vid]
                     self._answered.add(vid)
+                    self._last_answered = vid
                     batch_of.pop(vid)[1] -= 1
                     yield Answer(vid, msg)
                     while batches and batches[0][1] == 0:
                         batches.popleft()
                         deadline = time.monotonic() + self.timeout
+                self._settle_stderr(next(iter(sent)) if sent else self._last_answered)
             except _Fault as fault:
-                self._kill()
                 unanswered = list(sent.values())
+                self._kill(unanswered[0]["id"] if unanswered else current)
                 sent.clear()
                 batches.clear()
                 batch_of.clear()
@@ -311,6 +324,8 @@ class StdioAdapter:
                     blamed = unanswered[0]["id"]
                     yield Answer(blamed, None, f"{fault} (while running {blamed}){self._stderr_hint(blamed)}")
                 else:
+                    self.notes.append((None, f"{fault}, with {len(unanswered)} vectors of the batch unanswered "
+                                             "(from " + unanswered[0]["id"] + "); restarted to run them one at a time"))
                     isolate.extendleft(reversed(unanswered))
                 if pending or isolate:
                     self._restart()

@@ -1,0 +1,65 @@
+"""An adapter process that misbehaves on purpose, for the fault tests.
+
+    python3 faulty.py MODE TARGET
+
+Answers like the reference implementation, except on the vector whose id is TARGET, where it
+does MODE: crash (aborts), crash-all (aborts on every vector), hang, garbage (a line that is not JSON),
+unknown-id, wrong-shape, exit-early (exit 0 without answering), stderr (a message on stderr,
+then a correct answer), duplicate (answers the target twice), bad-hello (a handshake answer of
+the wrong shape), fatal-hello (refuses the handshake). It buffers its output per batch, as most
+adapters do, so the runner must find the culprit by itself.
+"""
+import json
+import os
+import sys
+import time
+
+from plcvec_reference.adapter import ReferenceAdapter
+from plcvec_verify.protocol import PROTOCOL_VERSION, encode
+
+mode, target = sys.argv[1], sys.argv[2] if len(sys.argv) > 2 else ""
+adapter = ReferenceAdapter()
+out = sys.stdout.buffer
+
+for line in sys.stdin.buffer:
+    msg = json.loads(line)
+    if msg["type"] == "hello":
+        if mode == "bad-hello":
+            out.write(encode({"type": "hello", "protocol": PROTOCOL_VERSION, "instructions": "all"}))
+        elif mode == "fatal-hello":
+            out.write(encode({"type": "fatal", "message": "this adapter needs a license key"}))
+        else:
+            out.write(encode({"type": "hello", "protocol": PROTOCOL_VERSION, **adapter.hello(msg)}))
+        out.flush()
+        continue
+    if msg["type"] == "bye":
+        break
+    for request in msg["vectors"]:
+        result = {"type": "result", "id": request["id"], **adapter.run(request)}
+        if mode == "crash-all":
+            out.flush()
+            os.abort()
+        if request["id"] == target:
+            if mode == "crash":
+                out.flush()
+                os.abort()
+            if mode == "hang":
+                out.flush()
+                time.sleep(3600)
+            if mode == "exit-early":
+                out.flush()
+                os._exit(0)
+            if mode == "garbage":
+                out.write(b"Segmentation fault in module clock.c\n")
+                continue
+            if mode == "unknown-id":
+                result["id"] = "no-such/vector"
+            if mode == "wrong-shape":
+                result["steps"] = [{"devices": {"D100": "twelve"}}]
+            if mode == "stderr":
+                sys.stderr.write(f"warning: clock not set while running {request['id']}\n")
+                sys.stderr.flush()
+            if mode == "duplicate":
+                out.write(encode(result))
+        out.write(encode(result))
+    out.flush()
