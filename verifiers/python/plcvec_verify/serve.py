@@ -36,12 +36,11 @@ def serve(adapter, stdin=None, stdout=None) -> int:
         elif kind == "run":
             write = stdout.write
             for request in msg["vectors"]:
+                result = {"type": "result", "id": request["id"]}
                 try:
-                    result = adapter.run(request)
+                    result.update(adapter.run(request))
                 except Exception as exc:  # the implementation's failure on this vector, not the loop's
-                    result = {"error": _describe(exc)}
-                result["type"] = "result"
-                result["id"] = request["id"]
+                    result["error"] = _describe(exc)
                 write(encode(result))
             # One flush per batch: a write per result would cost more than the result. If the
             # implementation dies mid-batch, the runner re-runs the unanswered vectors one at a

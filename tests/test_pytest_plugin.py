@@ -1,0 +1,63 @@
+"""The pytest plugin, as an implementer runs it: in an empty project folder, through pytest itself."""
+import subprocess
+import sys
+
+import pytest
+
+from plcvec_verify import Suite
+
+from conftest import REPO
+
+REFERENCE = ["--plcvec-python", "plcvec_reference.adapter:ReferenceAdapter"]
+
+
+def pytest_in(tmp_path, *args):
+    proc = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q", *args],
+                          cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    return proc.returncode, proc.stdout + proc.stderr
+
+
+@pytest.fixture(scope="module")
+def suite():
+    return Suite.load(REPO / "vectors")
+
+
+def test_one_item_per_vector_named_by_id(tmp_path, suite):
+    rc, out = pytest_in(tmp_path, *REFERENCE, "--collect-only")
+    assert rc == 0, out
+    listed = {line.split("::")[-1] for line in out.splitlines() if "::plcvec::" in line}
+    assert listed == set(suite.by_id)
+
+
+def test_reference_passes_with_keyword_selection(tmp_path, suite):
+    rc, out = pytest_in(tmp_path, *REFERENCE, "-k", "TADDP")
+    want = sum("TADDP" in v["id"] or v["instruction"] == "TADDP" for v in suite.vectors)
+    assert rc == 0 and f"{want} passed" in out, out
+
+
+def test_markers_select_by_tag(tmp_path, suite):
+    rc, out = pytest_in(tmp_path, *REFERENCE, "-m", "nonexistent_date")
+    want = sum("nonexistent-date" in v["tags"] for v in suite.vectors)
+    assert rc == 0 and f"{want} passed" in out, out
+
+
+def test_a_failing_vector_shows_the_field_diff_and_clauses_and_x_stops(tmp_path, suite):
+    vid = "fx5-time-add/TADD/manual-example/program"
+    rc, out = pytest_in(tmp_path, "--plcvec-python", "plcvec_reference.adapter:ReferenceAdapter",
+                        "--plcvec-choose", "TADD-EXACT-24=carry-above-24", "-k", "manual", "-x")
+    assert rc == 1, out
+    # Declared carry-at-24 by the reference, so the --plcvec-choose conflict is a usage error on every item.
+    assert "but the adapter declares TADD-EXACT-24=carry-at-24" in out
+    faulty = f"{sys.executable} {REPO / 'tests' / 'adapters' / 'faulty.py'} wrong-shape {vid}"
+    rc, out = pytest_in(tmp_path, "--plcvec-adapter", faulty, "-k", "fx5-time-add", "-x")
+    assert rc == 1 and f"FAILED ::plcvec::{vid}" in out and "stopping after 1 failures" in out, out
+    assert "does not match result.schema.json" in out
+
+
+def test_expectations_file_turns_a_failure_into_xfail(tmp_path):
+    vid = "fx5-time-add/TADD/manual-example/program"
+    (tmp_path / "known.toml").write_text(f'[[known-failure]]\nid = "{vid}"\nreason = "tracked"\n')
+    faulty = f"{sys.executable} {REPO / 'tests' / 'adapters' / 'faulty.py'} wrong-shape {vid}"
+    rc, out = pytest_in(tmp_path, "--plcvec-adapter", faulty, "--plcvec-expectations", "known.toml",
+                        "-k", "manual-example and TADD")
+    assert rc == 0 and "1 xfailed" in out, out

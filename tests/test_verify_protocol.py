@@ -1,0 +1,80 @@
+"""The protocol's messages: the schemas themselves, the transcript in PROTOCOL.md, and the cheap
+check the runner uses for result messages, which must never accept what the schema rejects."""
+import json
+import re
+import subprocess
+import sys
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from plcvec_verify import Suite
+from plcvec_verify.expect import request_of
+from plcvec_verify.protocol import PROTOCOL_VERSION, SCHEMAS, hello_request, result_looks_valid, schema_errors, validator
+
+from conftest import REPO
+
+PROTOCOL_MD = REPO / "verifiers" / "PROTOCOL.md"
+
+# Values near every boundary the schema draws: JSON types, word range, empty strings, extra keys.
+scalars = st.one_of(st.booleans(), st.integers(-2, 2), st.integers(65534, 65537), st.just(1.0), st.just(1.5),
+                    st.none(), st.just(""), st.text(max_size=3))
+devices = st.dictionaries(st.one_of(st.just(""), st.sampled_from(["D100", "SM709", "P_EQ"])), scalars, max_size=3)
+steps = st.lists(st.fixed_dictionaries({}, optional={"devices": st.one_of(devices, scalars),
+                                                     "result": scalars, "extra": scalars}), max_size=2)
+messages = st.fixed_dictionaries({}, optional={
+    "type": st.sampled_from(["result", "hello", "Result"]), "id": st.one_of(st.text(max_size=2), st.integers()),
+    "steps": st.one_of(steps, scalars), "skip": scalars, "error": scalars, "extra": scalars})
+
+
+@settings(max_examples=3000, suppress_health_check=[HealthCheck.too_slow], database=None, derandomize=True)
+@given(messages)
+def test_cheap_check_never_accepts_what_the_schema_rejects(msg):
+    if result_looks_valid(msg):
+        assert schema_errors("result", msg) == [], msg
+
+
+def test_cheap_check_accepts_the_usual_answers():
+    ok = {"type": "result", "id": "x", "steps": [{"result": True, "devices": {"D100": 65535, "SM709": False}}]}
+    assert result_looks_valid(ok) and not schema_errors("result", ok)
+    assert result_looks_valid({"type": "result", "id": "x", "skip": "no TADDP"})
+    for bad in ({"type": "result", "id": "x", "steps": [{"devices": {"D100": 65536}}]},
+                {"type": "result", "id": "x", "steps": [{"devices": {"D100": 1}, "result": 1}]},
+                {"type": "result", "id": "x", "skip": "a", "error": "b"},
+                {"type": "result", "id": "x"}):
+        assert not result_looks_valid(bad) and schema_errors("result", bad), bad
+
+
+def test_every_schema_is_a_valid_json_schema():
+    for name in SCHEMAS:
+        validator(name)   # check_schema raises on a broken schema
+
+
+def test_requests_and_hello_match_their_schemas():
+    suite = Suite.load(REPO / "vectors")
+    assert schema_errors("hello-request", hello_request(suite, sorted(suite.headers))) == []
+    batch = {"type": "run", "batch": 0, "vectors": [request_of(v) for v in suite.vectors]}
+    assert schema_errors("run-request", batch) == []
+
+
+def _transcript():
+    """The `>` (runner) and `<` (adapter) lines of the worked transcript in PROTOCOL.md."""
+    text = PROTOCOL_MD.read_text()
+    block = re.search(r"<!-- transcript -->\n```\n(.*?)```", text, re.S).group(1)
+    return [(line[0], json.loads(line[2:])) for line in block.splitlines() if line[:2] in ("> ", "< ")]
+
+
+def test_the_documented_transcript_is_valid_and_is_what_the_reference_answers():
+    lines = _transcript()
+    kinds = {"hello": ("hello-request", "hello-response"), "run": ("run-request", None), "result": (None, "result"),
+             "bye": ("bye", None)}
+    for direction, msg in lines:
+        schema = kinds[msg["type"]][0 if direction == ">" else 1]
+        assert schema and schema_errors(schema, msg) == [], (direction, msg)
+    # Replaying the runner's lines to the reference adapter gives the adapter's lines.
+    sent = "".join(json.dumps(m) + "\n" for d, m in lines if d == ">")
+    proc = subprocess.run([sys.executable, "-m", "plcvec_reference.adapter"], input=sent, capture_output=True,
+                          text=True, timeout=60)
+    got = [json.loads(x) for x in proc.stdout.splitlines()]
+    assert got == [m for d, m in lines if d == "<"]
+    assert proc.returncode == 0 and lines[0][1]["protocol"] == PROTOCOL_VERSION
