@@ -2,7 +2,7 @@
 
     # expectations.toml
     [[known-failure]]
-    id = "fx5-date-compare/LDDT</example/nonexistent/day/B<C"
+    id = "fx5-date-compare/LDDT</nonexistent/2024-2-30/s1/vs-previous"
     reason = "our calendar check rejects 2008/02/31 (tracked as #12)"
 
 A listed vector that fails is reported as `xfail` and does not fail the run. A listed vector that
