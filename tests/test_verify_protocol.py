@@ -78,3 +78,35 @@ def test_the_documented_transcript_is_valid_and_is_what_the_reference_answers():
     got = [json.loads(x) for x in proc.stdout.splitlines()]
     assert got == [m for d, m in lines if d == "<"]
     assert proc.returncode == 0 and lines[0][1]["protocol"] == PROTOCOL_VERSION
+
+
+@settings(max_examples=1500, suppress_health_check=[HealthCheck.too_slow], database=None, derandomize=True)
+@given(data=st.data())
+def test_an_answer_the_comparison_accepts_is_valid_against_the_schema(data):
+    """The runner validates fully only answers that differ; so an accepted answer must be valid."""
+    from plcvec_verify.compare import compare
+    from plcvec_verify.expect import expected_of
+    from plcvec_verify.protocol import result_shape_ok
+
+    suite = _suite()
+    v = data.draw(st.sampled_from(suite.vectors[:: 37]))
+    exp = expected_of(v, {}, {})
+    steps = []
+    for state, result in zip(exp.states, exp.results):
+        devices = {k: data.draw(st.one_of(st.just(val), scalars)) for k, val in state.items()}
+        step = {"devices": devices}
+        if result is not None:
+            step["result"] = data.draw(st.one_of(st.just(result), scalars))
+        steps.append(step)
+    msg = {"type": "result", "id": v["id"], "steps": steps}
+    if result_shape_ok(msg) and compare(exp, steps) == []:
+        assert schema_errors("result", msg) == [], msg
+
+
+_SUITE = []
+
+
+def _suite():
+    if not _SUITE:
+        _SUITE.append(Suite.load(REPO / "vectors"))
+    return _SUITE[0]

@@ -26,7 +26,7 @@ def _child(args):
     return seconds, usage.ru_maxrss / 1024, out
 
 
-def run_benchmark(spec_dir, out_dir=None):
+def run_benchmark(spec_dir, out_dir=None, verify=True):
     from plcvec.output.golden import build_golden
     from plcvec.spec.loader import load_spec
 
@@ -62,4 +62,11 @@ def run_benchmark(spec_dir, out_dir=None):
           f"memory {rows[3][1] / rows[2][1]:.0f}x the vectors in {flat:.2f}x the peak RSS")
     print(json.dumps({"golden_seconds": round(golden_s, 3), "exhaustive_vectors_per_s": round(ex_rate),
                       "exhaustive_peak_rss_mib": round(rows[3][3], 1), "memory_ratio_3_vs_1_family": round(flat, 3)}))
+    if verify:
+        # The verifier's own figures, on the committed vectors it ships with (plcvec_verify/bench.py).
+        from plcvec_verify.bench import print_verify_benchmark
+        from plcvec_verify.command import DEFAULT_VECTORS
+
+        print()
+        print_verify_benchmark(DEFAULT_VECTORS)
     return 0

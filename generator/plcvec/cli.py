@@ -12,6 +12,8 @@ REPO = Path(__file__).resolve().parents[2]
 # One line per stage command module (see build_parser).
 _STAGE_COMMANDS = [
     "plcvec_verify.command",
+    "plcvec.fuzz.command",
+    "plcvec.review.command",
 ]
 
 
@@ -79,7 +81,7 @@ def _parse_choice(text):
 def _bench(args):
     from plcvec.bench import run_benchmark
 
-    return run_benchmark(args.spec_dir, Path(args.out) if args.out else None)
+    return run_benchmark(args.spec_dir, Path(args.out) if args.out else None, verify=not args.no_verify)
 
 
 def _lint(args):
@@ -112,6 +114,7 @@ def build_parser():
 
     b = sub.add_parser("bench", parents=[spec], help="measure generation speed and memory")
     b.add_argument("--out", help="folder for the exhaustive tier during the benchmark (default: a temporary one)")
+    b.add_argument("--no-verify", action="store_true", help="skip the verifier's figures")
     b.set_defaults(func=_bench)
 
     lint = sub.add_parser("lint", parents=[spec], help="load and validate the spec files only")

@@ -91,6 +91,26 @@ def result_errors(msg) -> list[str]:
     return schema_errors("result", msg)
 
 
+def result_shape_ok(msg) -> bool:
+    """The structure a comparison can walk, without looking at each device value.
+
+    The runner compares first and validates fully only when the comparison finds a difference:
+    a comparison that passes has seen every reported value equal, with its type, to a value of
+    the vector, and those are valid. This saves the walk over every value of every answer.
+    """
+    if type(msg) is not dict or len(msg) != 3 or msg.get("type") != "result" or type(msg.get("id")) is not str:
+        return False
+    steps = msg.get("steps")
+    if type(steps) is not list:
+        return False
+    for step in steps:
+        if type(step) is not dict or type(step.get("devices")) is not dict:
+            return False
+        if len(step) != 1 and (len(step) != 2 or type(step.get("result")) is not bool):
+            return False
+    return True
+
+
 def hello_request(suite, families, *, protocol=PROTOCOL_VERSION) -> dict:
     """The runner's first line: who is asking, for which suite, and what it contains."""
     interps = suite.interpretations(families)

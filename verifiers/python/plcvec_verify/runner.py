@@ -15,7 +15,7 @@ from .compare import Problem, compare
 from .errors import VerifyError
 from .expect import expected_of, request_of
 from .known import KnownFailures
-from .protocol import hello_request, result_errors
+from .protocol import hello_request, result_errors, result_shape_ok
 from .suite import Selection, Suite
 
 # Result statuses. Only the first three let a run pass.
@@ -25,7 +25,7 @@ STATUSES = (PASS, FAIL, ERROR, SKIP, XFAIL, STALE, NOT_RUN)
 FAILING = frozenset((FAIL, ERROR, STALE, NOT_RUN))
 
 
-@dataclass
+@dataclass(slots=True)
 class VectorResult:
     id: str
     family: str
@@ -106,11 +106,11 @@ def resolve_choices(suite: Suite, families, declared: dict, cli: dict) -> dict:
 
 def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: dict | None = None,
         known: KnownFailures | None = None, progress=None, plan: Plan | None = None,
-        vectors: list | None = None) -> RunReport:
+        vectors: list | None = None, keep_open: bool = False) -> RunReport:
     """Run the selected vectors through `adapter` (adapters.InProcess or stdio.StdioAdapter).
 
     `vectors`, when given, is the list to run instead of `selection` (the pytest plugin passes the
-    items pytest kept after -k and friends).
+    items pytest kept after -k and friends). `keep_open` leaves the adapter running for another run.
     """
     started = time.perf_counter()
     vectors = selection.apply(suite.vectors) if vectors is None else vectors
@@ -138,12 +138,16 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
             v = by_id[answer.id]
             exp = plan.expected[answer.id]
             msg = answer.message
-            errors = () if answer.fault else result_errors(msg)
+            problems = None
+            if not answer.fault and result_shape_ok(msg):
+                problems = compare(exp, msg["steps"])     # the usual case: shape fine, compare at once
+            errors = () if answer.fault or problems == [] else result_errors(msg)
             if answer.fault or errors:
                 fault = answer.fault or "the result does not match result.schema.json: " + "; ".join(errors)
                 r = VectorResult(v["id"], v["family"], v["instruction"], ERROR, message=fault, choices=exp.choices)
             elif "steps" in msg:
-                problems = compare(exp, msg["steps"])
+                if problems is None:
+                    problems = compare(exp, msg["steps"])
                 r = VectorResult(v["id"], v["family"], v["instruction"], FAIL if problems else PASS,
                                  problems, choices=exp.choices)
             elif "skip" in msg:
@@ -160,7 +164,8 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
         report.aborted = str(exc)
     finally:
         try:
-            adapter.close()
+            if not keep_open or report.aborted:
+                adapter.close()
         except Exception as exc:  # closing must never lose the results
             report.notes.append(f"closing the adapter: {type(exc).__name__}: {exc}")
     for v in runnable:
