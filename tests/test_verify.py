@@ -74,6 +74,27 @@ def test_wrong_result_is_reported_with_the_field(suite):
     assert [r.id for r in report.failed] == [v["id"]] and report.exit_code == 1
     (problem,) = report.failed[0].problems
     assert (problem.step, problem.field, problem.expected, problem.actual) == (0, "result", want, not want)
+    text = summary_text(report)
+    show = {True: "true", False: "false"}
+    assert f"FAIL {v['id']}\n" in text
+    assert f"step 0 result: expected {show[want]}, got {show[not want]}" in text
+    assert "spec clauses: " + ", ".join(v["clauses"]) in text
+
+
+def test_progress_bar_only_on_a_terminal(suite):
+    import io
+
+    from plcvec_verify.progress import Progress
+
+    class Terminal(io.StringIO):
+        def isatty(self):
+            return True
+    assert Progress.for_stream(io.StringIO()) is None
+    screen = Terminal()
+    bar = Progress.for_stream(screen)
+    run(suite, InProcess(Oracle(suite)), Selection(families=("fx5-time-add",)), progress=bar)
+    n = len(Selection(families=("fx5-time-add",)).apply(suite.vectors))
+    assert f"{n}/{n} vectors, 0 failing" in screen.getvalue()
 
 
 def test_a_bit_reported_as_an_integer_fails_though_python_says_1_equals_true(suite):
