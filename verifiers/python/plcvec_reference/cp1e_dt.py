@@ -85,6 +85,9 @@ class CP1ETimeCompare:
     """
 
     CONTACT = True
+    # Class attributes, so that a subclass (a mutant) can change one of them.
+    FIELDS = FIELDS
+    is_bcd = staticmethod(is_bcd)
 
     def __init__(self, devices: dict, device_sizes: dict, choices: dict | None = None):
         self.mem = DeviceMemory(devices, device_sizes)
@@ -95,6 +98,12 @@ class CP1ETimeCompare:
         # Error: P_ER on, execution condition OFF, the six arithmetic flags untouched.
         self.mem.write(ERROR_FLAG, True)
         return False
+
+    def reflect_flags(self, order: int):
+        # "the result of a time comparison instruction is reflected in the arithmetic
+        # flags (=, <>, <, <=, >, >=)."
+        for symbol, flag in FLAGS.items():
+            self.mem.write(flag, FLAG_TABLE[order][symbol])
 
     def evaluate(self, condition: str, operands: dict) -> bool:
         mem = self.mem
@@ -108,7 +117,7 @@ class CP1ETimeCompare:
 
         # "To mask a time value, set the corresponding bit in the control word (C) to 1."
         # "compares the unmasked values (corresponding bit of C set to 0)"
-        unmasked = [f for f in FIELDS if not (c >> f[5]) & 1]
+        unmasked = [f for f in self.FIELDS if not (c >> f[5]) & 1]
         if not unmasked and self.choices["CP1E-ALL-MASKED"] == "error":
             return self._error()
 
@@ -116,7 +125,7 @@ class CP1ETimeCompare:
         for offset, byte, _name, lo, hi, _bit in unmasked:
             a, b = field_byte(s1, offset, byte), field_byte(s2, offset, byte)
             for raw in (a, b):
-                if not is_bcd(raw):
+                if not self.is_bcd(raw):
                     # "Second (00 to 59, BCD)" ... (CP1E-NON-BCD)
                     if self.choices["CP1E-NON-BCD"] == "error":
                         return self._error()
@@ -130,10 +139,7 @@ class CP1ETimeCompare:
             if order == 0 and a != b:
                 order = -1 if a < b else 1
 
-        # "the result of a time comparison instruction is reflected in the arithmetic
-        # flags (=, <>, <, <=, >, >=)."
-        for symbol, flag in FLAGS.items():
-            mem.write(flag, FLAG_TABLE[order][symbol])
+        self.reflect_flags(order)
         if self.choices["CP1E-ER-FLAG"] == "reflects-each-execution":
             mem.write(ERROR_FLAG, False)     # executed without error
         return FLAG_TABLE[order][condition]

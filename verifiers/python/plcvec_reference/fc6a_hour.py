@@ -42,6 +42,7 @@ class HourMeter:
     """
 
     CONTACT = False
+    CYCLE = CYCLE   # a class attribute, so that a subclass (a mutant) can change it
 
     def __init__(self, devices: dict, device_sizes: dict, choices: dict | None = None):
         self.mem = DeviceMemory(devices, device_sizes)
@@ -64,6 +65,12 @@ class HourMeter:
         # "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."
         return 0 <= p[0] <= 65535 and 0 <= p[1] <= 59 and 0 <= p[2] <= 59
 
+    @staticmethod
+    def reached(total: int, preset: int) -> bool:
+        # "When the measured input ON duration value in destination device D1 reaches the
+        # preset value designated by source device S1, the comparison output ... turns on."
+        return total >= preset
+
     def execute(self, instruction: str, operands: dict, step: dict):
         if instruction != "HOUR":
             raise ValueError(instruction)
@@ -83,11 +90,11 @@ class HourMeter:
         self.fraction_ms += int(step["elapsed_ms"])
         whole, self.fraction_ms = divmod(self.fraction_ms, 1000)
         total = to_seconds(mem.read_block(d1, 3)) + whole
-        wrapped_now = total >= CYCLE
+        wrapped_now = total >= self.CYCLE
         # "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59
         # seconds, the value returns to 0 hours 0 minutes 0 seconds to repeat another
         # measuring cycle, with the comparison output remaining on."
-        total %= CYCLE
+        total %= self.CYCLE
         mem.write_block(d1, from_seconds(total))
 
         p = self.preset(operands["S1"])
@@ -102,7 +109,7 @@ class HourMeter:
             return None
 
         preset = to_seconds(p)
-        reached = total >= preset
+        reached = self.reached(total, preset)
         if preset == 0 and self.choices["HOUR-PRESET-ZERO"] == "never":
             reached = False
         # "When the D1 value reaches the S1 value, an output or internal relay assigned by

@@ -36,6 +36,9 @@ class TADDMachine:
     """An FX5 CPU executing TADD or TADDP once per scan."""
 
     CONTACT = False
+    # Class attributes, so that a subclass (a mutant) can change one of them.
+    CARRY_FLAGS = CARRY_FLAGS
+    RANGES = RANGES
 
     def __init__(self, devices: dict, device_sizes: dict, choices: dict | None = None):
         self.mem = DeviceMemory(devices, device_sizes)
@@ -49,15 +52,27 @@ class TADDMachine:
 
     def _set_flags(self, carry: bool, zero: bool):
         if self.choices["TADD-FLAGS-OFF"] == "written-each-execution":
-            for f in CARRY_FLAGS:
+            for f in self.CARRY_FLAGS:
                 self.mem.write(f, carry)
             self.mem.write(ZERO_FLAG, zero)
         else:  # set-only: an execution only ever turns a flag on
             if carry:
-                for f in CARRY_FLAGS:
+                for f in self.CARRY_FLAGS:
                     self.mem.write(f, True)
             if zero:
                 self.mem.write(ZERO_FLAG, True)
+
+    def wrap(self, total: int):
+        """The sum in seconds -> (the result in seconds, the carry)."""
+        # "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the
+        # result will be the sum minus 24:00:00."  But: "If 1 second is added to 23:59:59,
+        # the result will be 0:00:00. This turns on both the carry flag and the zero flag."
+        # and the flag table: "If the result exceeds ... 23:59:59".  -> TADD-EXACT-24.
+        if self.choices["TADD-EXACT-24"] == "carry-at-24":
+            carry = total >= DAY
+        else:
+            carry = total > DAY
+        return total % DAY, carry
 
     def add(self, operands: dict):
         """One execution of the addition."""
@@ -77,22 +92,14 @@ class TADDMachine:
 
         # "3405H Any of values specified by (s1) and (s2) is outside the following range.
         # 0 to 23 / ... (s1)+1, (s2)+1, (s1)+2, and (s2)+2 ... 0 to 59"
-        bad = any(not lo <= v <= hi for data in (s1, s2) for v, (lo, hi) in zip(data, RANGES))
+        bad = any(not lo <= v <= hi for data in (s1, s2) for v, (lo, hi) in zip(data, self.RANGES))
         if bad:
             self._error(ERR_VALUE_RANGE)
             if self.choices["TADD-ON-ERROR"] == "not-executed":
                 return
 
         total = (s1[0] + s2[0]) * 3600 + (s1[1] + s2[1]) * 60 + (s1[2] + s2[2])
-        # "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the
-        # result will be the sum minus 24:00:00."  But: "If 1 second is added to 23:59:59,
-        # the result will be 0:00:00. This turns on both the carry flag and the zero flag."
-        # and the flag table: "If the result exceeds ... 23:59:59".  -> TADD-EXACT-24.
-        if self.choices["TADD-EXACT-24"] == "carry-at-24":
-            carry = total >= DAY
-        else:
-            carry = total > DAY
-        result = total % DAY
+        result, carry = self.wrap(total)
         h, rest = divmod(result, 3600)
         m, s = divmod(rest, 60)
         mem.write_block(d_dev, [h, m, s])
