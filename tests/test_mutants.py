@@ -1,0 +1,121 @@
+"""The verifier is tested by mutants (design principle 7).
+
+The reference implementation passes every vector; each mutant of it (one plausible bug) must be
+rejected, in process and over the stdio protocol, by vectors of every family the bug is in, for
+what it computes (a wrong answer, not a crash). The vectors that catch each mutant are printed
+(pytest -rP) and listed in verifiers/python/plcvec_reference/MUTANTS.md, which is checked here
+against a fresh run.
+"""
+import re
+import sys
+
+import pytest
+
+from plcvec_verify import InProcess, Selection, StdioAdapter, Suite, run
+from plcvec_reference import MACHINES
+from plcvec_reference.adapter import ReferenceAdapter
+from plcvec_reference.mutants import MUTANTS
+from plcvec_reference.mutants.report import run_mutant
+
+from conftest import REPO
+
+DOC = REPO / "verifiers" / "python" / "plcvec_reference" / "MUTANTS.md"
+SHOW = 5
+ROW = re.compile(r"^\| `(?P<name>[^`]+)` \| (?P<families>[^|]+) \| (?P<bug>.+) \| (?P<ids>.+) \|$")
+
+
+@pytest.fixture(scope="module")
+def suite():
+    return Suite.load(REPO / "vectors")
+
+
+@pytest.fixture(scope="module")
+def in_process(suite):
+    """name -> the in-process report on that mutant, each run once per module."""
+    reports = {}
+
+    def report(name):
+        if name not in reports:
+            reports[name] = run_mutant(suite, name)
+        return reports[name]
+    return report
+
+
+def doc_rows():
+    rows = {}
+    for line in DOC.read_text(encoding="utf-8").splitlines():
+        m = ROW.match(line)
+        if m:
+            rows[m["name"]] = {"families": tuple(f.strip() for f in m["families"].split(",")),
+                               "bug": m["bug"], "ids": re.findall(r"`([^`]+)`", m["ids"])}
+    return rows
+
+
+def test_reference_passes_every_vector(suite):
+    report = run(suite, InProcess(ReferenceAdapter()))
+    assert report.exit_code == 0, [(r.id, r.status, r.problems[:1] or r.message) for r in report.failed[:SHOW]]
+    assert report.counts["pass"] == len(suite.vectors)
+
+
+def test_at_least_twelve_mutants_two_per_family():
+    assert len(MUTANTS) >= 12, sorted(MUTANTS)
+    per_family = {f: [n for n, m in MUTANTS.items() if f in m.families] for f in MACHINES}
+    thin = {f: names for f, names in per_family.items() if len(names) < 2}
+    assert not thin, f"families with fewer than two mutants: {thin}"
+    for m in MUTANTS.values():
+        assert set(m.families) <= set(MACHINES), m.name
+        assert m.description.endswith(".") and len(m.description) > 30, m.name
+
+
+@pytest.mark.parametrize("name", list(MUTANTS))
+def test_mutant_bug_is_confined_to_its_families(name):
+    m = MUTANTS[name]
+    for family, (base, _args) in MACHINES.items():
+        machine = m.make_machine(family, {}, {}, None)
+        if family in m.families:
+            assert type(machine) is m.cls and isinstance(machine, base), family
+        else:
+            assert type(machine) is base, family
+
+
+@pytest.mark.parametrize("name", list(MUTANTS))
+def test_verifier_rejects_mutant(name, suite, in_process):
+    m = MUTANTS[name]
+    report = in_process(name)
+    caught = [(r.id, r.status) for r in report.failed]
+    print(f"{name}: caught by {len(caught)} vectors in process, e.g. {[vid for vid, _ in caught[:SHOW]]}")
+    assert report.exit_code == 1 and caught, f"{name} survives: no vector catches '{m.description}'"
+    crashed = [(r.id, r.status, r.message) for r in report.failed if r.status != "fail"]
+    assert not crashed, f"{name} is rejected for a crash or a bad answer, not for its bug: {crashed[:SHOW]}"
+    families = {r.family for r in report.failed}
+    assert families == set(m.families), (
+        f"{name}: the bug is in {m.families} but vectors of {sorted(families)} catch it")
+
+    # The same verdicts over the stdio protocol (only its families: the rest is the plain reference).
+    stdio = run(suite, StdioAdapter([sys.executable, "-m", "plcvec_reference.adapter", "--mutant", name]),
+                Selection(families=m.families))
+    assert name in stdio.adapter["name"]
+    assert stdio.exit_code == 1 and not stdio.aborted, stdio.aborted
+    over_stdio = [(r.id, r.status) for r in stdio.failed]
+    print(f"{name}: caught by {len(over_stdio)} vectors over stdio")
+    assert over_stdio == caught, (
+        f"{name}: in process and stdio disagree; only in process {sorted(set(caught) - set(over_stdio))[:SHOW]}, "
+        f"only over stdio {sorted(set(over_stdio) - set(caught))[:SHOW]}")
+
+
+def test_doc_lists_every_mutant():
+    rows = doc_rows()
+    assert sorted(rows) == sorted(MUTANTS), "MUTANTS.md and MUTANTS differ; python3 -m plcvec_reference.mutants prints the table"
+    for name, row in rows.items():
+        assert row["families"] == MUTANTS[name].families, name
+        assert row["bug"] == MUTANTS[name].description, name
+        assert row["ids"], f"MUTANTS.md names no vector that catches {name}"
+
+
+@pytest.mark.parametrize("name", list(MUTANTS))
+def test_doc_vectors_catch_their_mutant(name, in_process):
+    row = doc_rows().get(name)
+    if row is None:
+        pytest.fail(f"{name} is not in MUTANTS.md")
+    caught = {r.id for r in in_process(name).failed}
+    assert set(row["ids"]) <= caught, f"MUTANTS.md says {sorted(set(row['ids']) - caught)} catch {name}; they do not"

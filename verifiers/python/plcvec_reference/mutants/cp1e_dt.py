@@ -1,0 +1,55 @@
+"""Mutants of the CP1E time comparisons LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT."""
+from __future__ import annotations
+
+from ..cp1e_dt import CP1ETimeCompare
+from ..machine import operand_value
+from . import mutant, with_operand
+
+FAMILY = ("cp1e-time-compare",)
+
+
+@mutant("cp1e-bcd-read-as-binary", FAMILY,
+        "The time bytes are taken as plain binary without checking that they are BCD, so a "
+        "byte such as 1AH is compared instead of turning P_ER on.")
+class BCDReadAsBinary(CP1ETimeCompare):
+    is_bcd = staticmethod(lambda byte: True)
+
+
+@mutant("cp1e-mask-bit-shifted", FAMILY,
+        "The mask bits of C are counted from 1: bit 01 masks the seconds ... bit 06 the year, "
+        "instead of 'Bits 00 to 05 of C mask the seconds, minutes, hours, day, month, and year'.")
+class MaskBitShifted(CP1ETimeCompare):
+    FIELDS = [field[:-1] + (field[-1] + 1,) for field in CP1ETimeCompare.FIELDS]
+
+
+@mutant("cp1e-mask-inverted", FAMILY,
+        "A C bit set to 1 selects its field for comparison, the opposite of 'To mask a time "
+        "value, set the corresponding bit in the control word (C) to 1'.")
+class MaskInverted(CP1ETimeCompare):
+    def evaluate(self, condition, operands):
+        mask_bits = sum(1 << field[-1] for field in self.FIELDS)
+        c = operand_value(self.mem, operands["C"]) ^ mask_bits
+        return super().evaluate(condition, with_operand(operands, "C", c))
+
+
+@mutant("cp1e-seconds-first", FAMILY,
+        "The unmasked fields are compared from S1 (seconds) up instead of from the year down, so "
+        "a later field decides before an earlier one.")
+class SecondsFirst(CP1ETimeCompare):
+    FIELDS = CP1ETimeCompare.FIELDS[::-1]
+
+
+@mutant("cp1e-and-as-or", FAMILY,
+        "AND =DT … AND >=DT combine the comparison with the preceding logic as OR does.")
+class AndAsOr(CP1ETimeCompare):
+    def execute(self, instruction, operands, step):
+        form, _, symbol = instruction.partition(" ")
+        return super().execute(f"OR {symbol}" if form == "AND" else instruction, operands, step)
+
+
+@mutant("cp1e-flags-not-reflected", FAMILY,
+        "The arithmetic flags (=, <>, <, <=, >, >=) are left alone, although 'the result of a "
+        "time comparison instruction is reflected in the arithmetic flags'.")
+class FlagsNotReflected(CP1ETimeCompare):
+    def reflect_flags(self, order):
+        pass

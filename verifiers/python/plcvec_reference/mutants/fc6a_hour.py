@@ -1,0 +1,79 @@
+"""Mutants of the FC6A hour meter HOUR."""
+from __future__ import annotations
+
+from ..fc6a_hour import HourMeter, to_seconds
+from . import mutant
+
+FAMILY = ("fc6a-hour-meter",)
+
+
+@mutant("hour-output-above-preset", FAMILY,
+        "D2 turns on only once D1 is past S1, not when 'the D1 value reaches the S1 value'.")
+class OutputAbovePreset(HourMeter):
+    @staticmethod
+    def reached(total, preset):
+        return total > preset
+
+
+@mutant("hour-drops-fraction", FAMILY,
+        "Each scan's ON time is cut to whole seconds and the remainder thrown away, so many "
+        "short scans never add up to the 'measured input ON duration'.")
+class DropsFraction(HourMeter):
+    def execute(self, instruction, operands, step):
+        super().execute(instruction, operands, step)
+        self.fraction_ms = 0
+
+
+@mutant("hour-wrap-early", FAMILY,
+        "D1 returns to 0 when the hour reaches 65,535, not after it 'exceeds 65,535 hours "
+        "59 minutes 59 seconds'.")
+class WrapEarly(HourMeter):
+    CYCLE = HourMeter.CYCLE - 3600
+
+
+@mutant("hour-wrap-clears-d2", FAMILY,
+        "When D1 returns to 0 hours 0 minutes 0 seconds D2 is turned off with it, instead of "
+        "'with the comparison output remaining on'.")
+class WrapClearsD2(HourMeter):
+    def execute(self, instruction, operands, step):
+        d1 = operands["D1"]["device"]
+        before = to_seconds(self.mem.read_block(d1, 3))
+        super().execute(instruction, operands, step)
+        # While the input is on D1 only goes down when it wraps.
+        if step["input"] and to_seconds(self.mem.read_block(d1, 3)) < before:
+            self.mem.write(operands["D2"]["device"], False)
+
+
+class _OnInvalidPreset(HourMeter):
+    """Runs the reference, then undoes some of what it does when S1 is out of range."""
+
+    def execute(self, instruction, operands, step):
+        if not step["input"] or self.preset_valid(self.preset(operands["S1"])):
+            return super().execute(instruction, operands, step)
+        kept = self.keep(operands)
+        super().execute(instruction, operands, step)
+        self.restore(operands, kept)
+        return None
+
+
+@mutant("hour-invalid-preset-stops-measuring", FAMILY,
+        "An out-of-range S1 cancels the execution and D1 stops, although the manual says "
+        "'but the input ON duration is measured'.")
+class InvalidPresetStopsMeasuring(_OnInvalidPreset):
+    def keep(self, operands):
+        return self.mem.read_block(operands["D1"]["device"], 3), self.fraction_ms
+
+    def restore(self, operands, kept):
+        d1, self.fraction_ms = kept
+        self.mem.write_block(operands["D1"]["device"], d1)
+
+
+@mutant("hour-invalid-preset-keeps-d2", FAMILY,
+        "When S1 'is changed to an invalid value after the comparison output has turned on', "
+        "D2 stays on instead of 'the comparison output is turned off'.")
+class InvalidPresetKeepsD2(_OnInvalidPreset):
+    def keep(self, operands):
+        return self.mem.read(operands["D2"]["device"])
+
+    def restore(self, operands, kept):
+        self.mem.write(operands["D2"]["device"], kept)

@@ -1,0 +1,151 @@
+"""Mutants of the FX5 time and date comparisons (LDTM□/ANDTM□/ORTM□, LDDT□/ANDDT□/ORDT□)."""
+from __future__ import annotations
+
+import calendar
+
+from ..fx5_compare import CONDITIONS, SM709, FX5CompareMachine
+from ..machine import operand_value, to_signed16
+from . import DeviceRangeUnchecked, mutant, with_operand
+
+TIME, DATE = "fx5-time-compare", "fx5-date-compare"
+BOTH = (TIME, DATE)
+
+# (s3) "(5) When 1 is set to the 15 bit, the data in the device specified by (s1) is compared
+# with the current time"; "(1) ... (2) ... (3)": bits 0 to 2 select the fields.
+CLOCK_BIT = 0x8000
+FIELD_BITS = 0x0007
+
+
+class _FieldsMisread(FX5CompareMachine):
+    """Built on misread(fields): the bug is in how the page's field table was copied."""
+
+    @staticmethod
+    def misread(fields):
+        raise NotImplementedError
+
+    def __init__(self, *args):
+        super().__init__(*args)
+        self.fields = self.misread(self.fields)
+
+
+@mutant("fx5-low-field-first", BOTH,
+        "The selected fields are compared from (s1)+2 up (second before minute before hour, "
+        "day before month before year), so a later field decides before an earlier one.")
+class LowFieldFirst(_FieldsMisread):
+    @staticmethod
+    def misread(fields):
+        return fields[::-1]
+
+
+@mutant("fx5-selector-bits-reversed", BOTH,
+        "The (s3) bit configuration is read from the other end: b0 selects hour (year) and b2 "
+        "second (day), instead of '(1) Set \"second\" as comparison target' for b0.")
+class SelectorBitsReversed(_FieldsMisread):
+    @staticmethod
+    def misread(fields):
+        top = max(bit for *_, bit in fields)
+        return [(offset, name, lo, hi, top - bit) for offset, name, lo, hi, bit in fields]
+
+
+class _S3Misread(FX5CompareMachine):
+    """Executes as if (s3) held misread(s3): the bug is in how (s3) is decoded."""
+
+    @staticmethod
+    def misread(s3: int) -> int:
+        raise NotImplementedError
+
+    def evaluate(self, condition, operands, clock):
+        s3 = operand_value(self.mem, operands["s3"])
+        return super().evaluate(condition, with_operand(operands, "s3", self.misread(s3)), clock)
+
+
+@mutant("fx5-clock-bit-ignored", BOTH,
+        "Bit 15 of (s3) is ignored: (s1) is always compared with (s2), never with the current "
+        "time or date.")
+class ClockBitIgnored(_S3Misread):
+    @staticmethod
+    def misread(s3):
+        return s3 & ~CLOCK_BIT
+
+
+@mutant("fx5-reserved-bits-ignored", BOTH,
+        "Bits 3 to 14 of (s3) are masked off instead of '(4) Set 0. If a value other than 0 is "
+        "set, the operation result will be non-continuity'.")
+class ReservedBitsIgnored(_S3Misread):
+    @staticmethod
+    def misread(s3):
+        return s3 & (CLOCK_BIT | FIELD_BITS)
+
+
+@mutant("fx5-empty-selector-equal", BOTH,
+        "When 0 is set to the 0 to 2 bits no field differs, so the data count as equal (TM=/DT= "
+        "conducts) instead of 'the operation result will be non-continuity'.")
+class EmptySelectorEqual(FX5CompareMachine):
+    def evaluate(self, condition, operands, clock):
+        if operand_value(self.mem, operands["s3"]) & ~CLOCK_BIT == 0:
+            return CONDITIONS[condition](0)
+        return super().evaluate(condition, operands, clock)
+
+
+@mutant("fx5-sm709-not-latched", BOTH,
+        "SM709 is written on every execution, off when the data are good, although 'Once SM709 "
+        "turns on, the on state is held until the CPU module is powered off or reset'.")
+class SM709NotLatched(FX5CompareMachine):
+    def evaluate(self, condition, operands, clock):
+        self.raised = False
+        result = super().evaluate(condition, operands, clock)
+        if not self.raised:
+            self.mem.write(SM709, False)
+        return result
+
+    def _error(self):
+        self.raised = True
+        return super()._error()
+
+
+@mutant("fx5-device-range-unchecked", BOTH,
+        "(s1) to (s1)+2 and (s2) to (s2)+2 are not checked against the device range, although 'If "
+        "the device areas ... exceed the corresponding device range, SM709 turns on'.")
+class DeviceRangeUncheckedFX5(DeviceRangeUnchecked, FX5CompareMachine):
+    pass
+
+
+@mutant("fx5-time-hour-24-accepted", (TIME,),
+        "The hour range check is off by one ('within the range 0 to 23' taken as 0 to 24), so "
+        "hour 24 is compared instead of turning SM709 on.")
+class Hour24Accepted(_FieldsMisread):
+    @staticmethod
+    def misread(fields):
+        return [(offset, name, lo, hi + 1 if name == "hour" else hi, bit) for offset, name, lo, hi, bit in fields]
+
+
+def nonexistent(words) -> bool:
+    """A year/month/day whose day is past the end of its month (2006/02/30)."""
+    year, month, day = (to_signed16(w) for w in words)
+    if not 1 <= month <= 12:
+        return False
+    days = calendar.mdays[month] + (month == 2 and calendar.isleap(year))
+    return day > days
+
+
+@mutant("fx5-date-calendar-check", (DATE,),
+        "A date that does not exist but is within the setting range (2006/02/30) turns SM709 on, "
+        "although 'Even if the data are not recognized as date data, SM709 does not turn on if "
+        "the data are within the setting range'.")
+class CalendarCheck(FX5CompareMachine):
+    def _out_of_range(self, words, selected_only_bits) -> bool:
+        day_bit = next(bit for _o, name, *_, bit in self.fields if name == "day")
+        day_checked = selected_only_bits is None or (selected_only_bits >> day_bit) & 1
+        return super()._out_of_range(words, selected_only_bits) or bool(day_checked and nonexistent(words))
+
+
+@mutant("fx5-date-nonexistent-rejected", (DATE,),
+        "A date that does not exist (2008/02/31) makes the result non-continuity, although the "
+        "manual says it 'can be set' and 'the comparison operation is performed'.")
+class NonexistentRejected(FX5CompareMachine):
+    def evaluate(self, condition, operands, clock):
+        result = super().evaluate(condition, operands, clock)
+        dates = [self.mem.read_block(operands["s1"]["device"], 3)]
+        if not operand_value(self.mem, operands["s3"]) & CLOCK_BIT:
+            dates.append(self.mem.read_block(operands["s2"]["device"], 3))
+        return result and not any(nonexistent(d) for d in dates)
