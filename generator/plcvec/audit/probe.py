@@ -69,9 +69,16 @@ class CompareProbe:
             if not same or error:
                 self._compared[selector] = None
             else:
-                self._compared[selector] = [
-                    f["name"] for f in self.fields
-                    if not self.contact(self.eq_symbol, selector, base, dict(base, **{f["name"]: self.c.ops.mid(f["name"], 1)}))[0]]
+                compared = []
+                for f in self.fields:
+                    other = dict(base, **{f["name"]: self.c.ops.mid(f["name"], 1)})
+                    equal, error = self.contact(self.eq_symbol, selector, base, other)
+                    if error:  # an error is no answer to "is this field compared?"
+                        raise AuditError(f"{self.fam.path}: {self.c.selop} = {selector:#06x} gives an error for "
+                                         f"in-range data differing in {f['name']}")
+                    if not equal:
+                        compared.append(f["name"])
+                self._compared[selector] = compared
         return self._compared[selector]
 
 
