@@ -79,14 +79,18 @@ def compare_parts(cases):
     }
 
 
-def compare_case(cases, d):
-    """A drawn comparison (form, symbol, a, b, clock, sel, rlo_in) as the operand words of a case."""
+def compare_case(cases, d, raw=None):
+    """A drawn comparison (form, symbol, a, b, clock, sel, rlo_in) as the operand words of a case.
+
+    `raw` may map "a" and "b" to field bits placed over the drawn values as they are (bits that no value
+    encodes, such as a nibble above 9 in a BCD field)."""
     fields = cases.fields
+    raw = raw or {}
     clock_mode = bool(cases.clock_bit) and bool(d["sel"] >> cases.clock_bit["bit"] & 1)
     return {
         "key": key_of(d), "form": d["form"], "symbol": d["symbol"],
-        "s1": cases.ops.words(d["a"], raw=_raw_overflow(fields, d["a"])),
-        "s2": cases.ops.words(d["b"], raw=_raw_overflow(fields, d["b"])),
+        "s1": cases.ops.words(d["a"], raw={**_raw_overflow(fields, d["a"]), **raw.get("a", {})}),
+        "s2": cases.ops.words(d["b"], raw={**_raw_overflow(fields, d["b"]), **raw.get("b", {})}),
         "sel": d["sel"], "clock": d["clock"] if clock_mode else None,
         "rlo_in": None if cases.forms[d["form"]]["logic"] == "load" else d["rlo_in"],
     }
