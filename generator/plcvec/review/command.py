@@ -1,0 +1,66 @@
+"""`plcvec review`: write the review (HTML and Markdown) and, with --check, fail on its problems."""
+import sys
+from pathlib import Path
+
+from plcvec.errors import PlcvecError
+
+REPO = Path(__file__).resolve().parents[3]
+FILES = ("review.html", "review.md")
+
+
+def register(sub, spec_parent):
+    r = sub.add_parser("review", parents=[spec_parent],
+                       help="render the spec for a reviewer: rules beside manual quotes, audit, coverage",
+                       description="Render the whole spec as one self-contained HTML file and as Markdown: "
+                                   "layouts, every rule beside its manual quote, interpretations with the vectors "
+                                   "they affect, errata, the audit of the manual's tables, and the coverage matrix.")
+    r.add_argument("--out", default=str(REPO / "build" / "review"),
+                   help="folder for review.html and review.md (default: %(default)s)")
+    r.add_argument("--manual-dir", metavar="DIR",
+                   help="the manual text files; every provenance quote of the spec must be found in them")
+    r.add_argument("--check", action="store_true",
+                   help="exit 1 on a missing quote, an uncovered clause, or an audit disagreement no erratum records")
+    r.add_argument("--no-write", action="store_true", help="with --check: only check, write no report")
+    r.set_defaults(func=run)
+
+
+def run(args):
+    from plcvec.output.atomic import write_atomic
+    from plcvec.output.golden import family_vectors
+    from plcvec.review.model import build_model, run_audit
+    from plcvec.review.quotes import check_quotes, read_manual
+    from plcvec.review.render import render
+    from plcvec.spec.loader import load_spec
+
+    if args.no_write and not args.check:
+        raise PlcvecError("--no-write only makes sense with --check")
+    # The manual folder is read first: a wrong path is reported before the slower work.
+    manual = read_manual(args.manual_dir) if args.manual_dir else None
+    families = load_spec(args.spec_dir)
+    quotes = check_quotes(families, manual) if manual is not None else None
+    # The vectors this spec generates, built in process (not read from vectors/), so the review always
+    # describes the spec given by --spec-dir; the files' serialization is not needed here.
+    vectors = {fam.name: family_vectors(fam) for fam in families}
+    model = build_model(families, vectors, quotes=quotes, audit=run_audit(families))
+    out = Path(args.out)
+    if not args.no_write:
+        if out.exists() and not out.is_dir():
+            raise PlcvecError(f"--out {out}: not a folder")
+        for name, text in render(model).items():
+            write_atomic(out / name, text)
+    print(_headline(model["summary"]) + ("" if args.no_write else f"; wrote {', '.join(str(out / n) for n in FILES)}"))
+    if args.check:
+        for line in model["problem_lines"]:
+            print(line, file=sys.stderr)
+        if model["problems"]:
+            print(f"plcvec review --check: {len(model['problems'])} problems", file=sys.stderr)
+            return 1
+    return 0
+
+
+def _headline(s):
+    quotes = "quotes not checked" if s["quotes_checked"] is None else \
+        f"{s['quotes_missing']} of {s['quotes_checked']} quotes missing"
+    audit = f"{s['audit_unrecorded']} unrecorded audit disagreements" if s["audit_available"] else "audit not available"
+    return (f"plcvec review: {s['families']} families, {s['clauses']} clauses, {s['vectors']} vectors; {quotes}; "
+            f"{s['uncovered']} uncovered clauses; {audit}")
