@@ -12,6 +12,7 @@ REPO = Path(__file__).resolve().parents[2]
 # One line per stage command module (see build_parser).
 _STAGE_COMMANDS = [
     "plcvec_verify.command",
+    "plcvec.fuzz.command",
     "plcvec.review.command",
     "plcvec.output.diff_command",
 ]

@@ -6,6 +6,7 @@ TAGS = {
     "constant": "An operand given as a constant instead of a device.",
     "current-clock": "The comparison uses the current clock (injected per step) or the CPU's clock area.",
     "device-range": "An operand's words reach or pass the end of its device range.",
+    "fuzz": "Found by `plcvec fuzz`: the minimal case of a disagreement between an implementation and the spec.",
     "input-off": "The input of a measuring instruction goes off during the sequence.",
     "invalid-bcd": "A field holds a nibble above 9, which is not BCD.",
     "invalid-range": "A field outside the range the manual gives for it.",
