@@ -1,8 +1,6 @@
-"""`plcvec fuzz`: the reference implementation survives it, planted bugs are caught and shrunk to
-minimal vectors that are valid vector files, runs are deterministic, harness errors exit 2.
-
-The buggy adapters are the reference implementation with one bug each, planted here; run as a script,
-this file serves one of them over the stdio protocol: `python3 tests/test_fuzz.py every-scan`.
+"""`plcvec fuzz`: the reference implementation survives it, planted bugs (fuzz_planted.py) and the
+reference's mutants are caught and shrunk to minimal vectors that are valid vector files, runs are
+deterministic, harness errors exit 2.
 """
 import json
 import shlex
@@ -13,57 +11,13 @@ from pathlib import Path
 import jsonschema
 import pytest
 
-from plcvec_reference import make_machine
-from plcvec_reference.adapter import ReferenceAdapter
-from plcvec_reference.fx5_compare import FX5CompareMachine
-from plcvec_reference.fx5_tadd import TADDMachine
+import fuzz_planted
+from fuzz_planted import PLANTED
 
 REPO = Path(__file__).resolve().parents[1]
-THIS = Path(__file__).resolve()
+PLANTED_FILE = Path(fuzz_planted.__file__).resolve()
 REFERENCE = "plcvec_reference.adapter:ReferenceAdapter"
 REFERENCE_CMD = f"{shlex.quote(sys.executable)} -m plcvec_reference.adapter"
-
-
-class HourAsMinuteMachine(FX5CompareMachine):
-    """Reads the minute word where the hour belongs when comparing (the range check is still right)."""
-
-    def _compare(self, s1, s2, s3):
-        return super()._compare([s1[1], *s1[1:]], [s2[1], *s2[1:]], s3)
-
-
-class EveryScanMachine(TADDMachine):
-    """TADDP adds on every scan EN is on, as TADD does, instead of on the rising edge only."""
-
-    def execute(self, instruction, operands, step):
-        return super().execute("TADD", operands, step)
-
-
-class _Planted(ReferenceAdapter):
-    MACHINES = {}
-
-    def __init__(self):
-        super().__init__()
-        self.make_machine = lambda family, *args: make_machine(family, *args, cls=self.MACHINES.get(family))
-
-
-class HourAsMinute(_Planted):
-    MACHINES = {"fx5-time-compare": HourAsMinuteMachine}
-
-
-class EveryScan(_Planted):
-    MACHINES = {"fx5-time-add": EveryScanMachine}
-
-
-class CrashOnConstantPreset(ReferenceAdapter):
-    """Raises on an HOUR preset given as a constant: a crash is a disagreement too."""
-
-    def run(self, request):
-        if request["initial"]["operands"].get("S1", {}).get("constant") is not None:
-            raise RuntimeError("constant presets are not supported")
-        return super().run(request)
-
-
-PLANTED = {"hour-as-minute": HourAsMinute, "every-scan": EveryScan}
 
 
 def fuzz(capsys, *args):
@@ -75,11 +29,11 @@ def fuzz(capsys, *args):
 
 
 def planted(name):
-    return f"{THIS}:{PLANTED[name].__name__}"
+    return f"{PLANTED_FILE}:{PLANTED[name].__name__}"
 
 
 def planted_cmd(name):
-    return f"{shlex.quote(sys.executable)} {shlex.quote(str(THIS))} {name}"
+    return f"{shlex.quote(sys.executable)} {shlex.quote(str(PLANTED_FILE))} {name}"
 
 
 def single_vector(path):
@@ -177,11 +131,20 @@ def test_the_printed_vector_is_ready_to_run(tmp_path, capsys):
 
 
 def test_a_crash_is_a_disagreement(capsys):
-    code, out, err = fuzz(capsys, "--python", f"{THIS}:CrashOnConstantPreset", "--family", "fc6a-hour-meter",
+    code, out, err = fuzz(capsys, "--python", f"{PLANTED_FILE}:CrashOnConstantPreset", "--family", "fc6a-hour-meter",
                           "--examples", 500)
     assert code == 1, out + err
     assert "raised RuntimeError: constant presets are not supported" in out
     assert '"S1": {"constant": 0}' in out   # the smallest constant
+
+
+def test_a_dying_process_is_a_disagreement(capsys):
+    """Each case that kills the adapter process costs a restart, during the search and the shrinking."""
+    code, out, err = fuzz(capsys, "--adapter", planted_cmd("exit-on-constant-preset"), "--family", "fc6a-hour-meter",
+                          "--examples", 500)
+    assert code == 1, out + err
+    assert "the adapter exited with status 3 before answering" in out
+    assert '"S1": {"constant": 0}' in out
 
 
 def test_instruction_filter(capsys):
@@ -259,8 +222,3 @@ def test_usage_errors_exit_2(capsys):
     code, _, err = fuzz(capsys, "--python", "no_such_module:Adapter")
     assert code == 2 and "cannot import" in err
 
-
-if __name__ == "__main__":
-    from plcvec_verify.serve import serve
-
-    sys.exit(serve(PLANTED[sys.argv[1]]()))
