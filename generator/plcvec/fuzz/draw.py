@@ -35,7 +35,7 @@ def _outside(fields, values):
     return any(not f["min"] <= values[f["name"]] <= f["max"] for f in fields)
 
 
-def raw_bits(fields):
+def _raw_bits(fields):
     """Some fields (any, none or all) given as raw bits of their width, whatever they encode."""
     return st.fixed_dictionaries({}, optional={f["name"]: st.integers(0, (1 << f["width"]) - 1) for f in fields})
 
@@ -90,7 +90,7 @@ class CompareDrawer(_Drawer):
             # compares with (s2) rather than the current clock unless the clock is what differs.
             "instruction": st.sampled_from(self.instructions), "sel": parts.pop("sel"), **parts,
             "tie": st.fixed_dictionaries({}, optional={n: st.just(True) for n in c.names}),  # (s2) fields equal to (s1)'s
-            "raw": _sometimes(st.tuples(st.sampled_from(["a", "b"]), raw_bits(c.fields)), 3),
+            "raw": _sometimes(st.tuples(st.sampled_from(["a", "b"]), _raw_bits(c.fields)), 3),
             "sel_constant": st.booleans() if self.constant_selector else st.just(False),
             "flag_on": st.booleans(),
             # Further scans with the same inputs; True: the program turns the error flag off before it.
