@@ -108,3 +108,16 @@ def test_crash_mid_batch_via_cli_keeps_all_other_verdicts_in_the_reports(target,
     lines = [json.loads(x) for x in jsonl.read_text().splitlines()]
     assert sum(x.get("status") == "pass" for x in lines) == len([x for x in lines if x["type"] == "vector"]) - 1
     assert "SIGABRT" in junit.read_text()
+
+
+def test_a_fault_on_the_last_vector_leaves_the_adapter_usable(suite, target):
+    """Callers that drive `answers` themselves (fuzz, shrinking) call again after a fault."""
+    from plcvec_verify.expect import request_of
+
+    adapter = faulty("crash", target)
+    first = run(suite, adapter, Selection(ids=(target,)), keep_open=True)
+    assert first.results[0].status == "error"
+    other = next(v for v in FAMILY.apply(suite.vectors) if v["id"] != target)
+    (answer,) = list(adapter.answers([request_of(other)]))
+    assert answer.fault is None and answer.id == other["id"] and "steps" in answer.message
+    adapter.close()

@@ -55,12 +55,9 @@ class Target:
         self.skipped = 0
 
     def judge(self, vectors, ids=None):
-        """A Verdict per vector, in order. Each request gets an id of its own, `<vector id>@<n>`: a
-        process adapter refuses an id it has answered before, and shrinking runs one vector many times."""
-        if getattr(self.adapter, "proc", ()) is None:
-            # A process adapter that faulted on the last request of a call is left stopped (it restarts
-            # only for requests of the same call still to run); shrinking calls again, so start it anew.
-            self.adapter._restart()
+        """A Verdict per vector, in order. Each request gets an id of its own, `<vector id>@<n>`, so that
+        what the adapter writes (stderr notes, faults) names the very run, though shrinking runs one
+        vector many times."""
         sent = {}
         for i, vector in enumerate(vectors):
             self.requests += 1

@@ -124,7 +124,7 @@ def hello_request(suite, families, *, protocol=PROTOCOL_VERSION) -> dict:
             family: {
                 "instructions": suite.headers[family].get("instructions", []),
                 "interpretations": {i: {"default": d["default"], "alternatives": d["alternatives"]}
-                                    for i, d in interps.items() if d["family"] == family},
+                                    for i, d in interps.items() if family in d["families"]},
             }
             for family in sorted(families)
         },

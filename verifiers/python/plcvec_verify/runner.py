@@ -97,10 +97,11 @@ def resolve_choices(suite: Suite, families, declared: dict, cli: dict) -> dict:
             raise VerifyError(f"--choose {interp}={alt}, but the adapter declares {interp}={declared[interp]}")
     out = {}
     for interp, d in sorted(known.items()):
-        if d["family"] not in families:
+        if not set(d["families"]) & set(families):
             continue
         chosen = declared.get(interp, cli.get(interp))
-        out[interp] = {"alternative": chosen or d["default"], "declared": chosen is not None, "family": d["family"]}
+        out[interp] = {"alternative": chosen or d["default"], "declared": chosen is not None,
+                       "families": d["families"]}
     return out
 
 

@@ -259,6 +259,11 @@ class StdioAdapter:
         `wire` caches each request's encoded line by id, for runs that repeat (runner.Plan).
         """
         wire = {} if wire is None else wire
+        if self.proc is None:
+            if self._hello_request is None:
+                raise VerifyError("StdioAdapter.answers() before hello()")
+            # A fault on the last vector of an earlier call left the process stopped.
+            self._restart()
         pending = deque(requests)         # not yet sent
         isolate = deque()                 # to be re-run one at a time, after a fault
         sent: dict[str, dict] = {}        # id -> request, sent and not answered (in sending order)

@@ -73,14 +73,23 @@ class Suite:
                    spec_sha256=manifest_hash or ", ".join(sorted(h for h in spec_hashes if h)))
 
     def interpretations(self, families=None) -> dict[str, dict]:
-        """interpretation id -> {"family", "default", "alternatives": [ids]} for the given families."""
+        """interpretation id -> {"families", "default", "alternatives": [ids]} for the given families.
+
+        One interpretation may belong to several families (the FX5 time and date comparisons share
+        theirs): an implementation declares it once, and it holds for all of them.
+        """
         out = {}
         for family, header in sorted(self.headers.items()):
             if families is not None and family not in families:
                 continue
             for interp in header.get("interpretations", []):
-                out[interp["id"]] = {"family": family, "default": interp["default"],
-                                     "alternatives": [a["id"] for a in interp["alternatives"]]}
+                alternatives = [a["id"] for a in interp["alternatives"]]
+                seen = out.setdefault(interp["id"], {"families": [], "default": interp["default"],
+                                                     "alternatives": alternatives})
+                if (seen["default"], seen["alternatives"]) != (interp["default"], alternatives):
+                    raise VerifyError(f"{self.source}: interpretation {interp['id']} has other alternatives or "
+                                      f"another default in {family} than in {seen['families'][0]}")
+                seen["families"].append(family)
         return out
 
     def instructions(self) -> dict[str, list[str]]:
