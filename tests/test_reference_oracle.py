@@ -89,3 +89,23 @@ def test_unknown_interpretation_is_refused(all_vectors):
         plcvec_reference.run_vector(v, {"NO-SUCH-INTERPRETATION": "x"})
     with pytest.raises(ValueError):
         plcvec_reference.run_vector(v, {"TADD-EXACT-24": "no-such-alternative"})
+
+
+@pytest.mark.parametrize("family", FAMILIES)
+def test_reference_passes_under_every_combination_of_alternatives(family, golden):
+    """An implementation may take several non-default alternatives at once; the vectors must hold
+    the expectation of every combination, not only of one alternative at a time."""
+    import itertools
+
+    from plcvec_verify import InProcess, Selection, Suite, run
+    from plcvec_reference.adapter import ReferenceAdapter
+
+    suite = Suite.load(REPO / "vectors")
+    interps = {i["id"]: [a["id"] for a in i["alternatives"]] for i in golden[family]["interpretations"]}
+    failures = []
+    for combo in itertools.product(*interps.values()):
+        choices = dict(zip(interps, combo))
+        report = run(suite, InProcess(ReferenceAdapter(choices=choices)), Selection(families=(family,)))
+        if report.exit_code:
+            failures.append(f"{choices}: {[r.id for r in report.failed][:3]} ({len(report.failed)} failing)")
+    assert not failures, "\n".join(failures[:10])

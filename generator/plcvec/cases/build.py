@@ -87,25 +87,27 @@ class VectorBuilder:
         self.ids.add(vid)
         for error in _errors_in_code(operands):
             raise GeneratorBug(f"{vid}: {error}")
-        expects, final, outcome, trace = self.run(instr, operands, devices, steps, scratch, self.defaults)
-        touched = []
-        for iid, interp in self.fam.interpretations.items():
-            for alt in interp["alternatives"]:
-                if alt["id"] == interp["default"]:
-                    continue
-                other = self.run(instr, operands, devices, steps, scratch, dict(self.defaults, **{iid: alt["id"]}))
-                if other[:3] != (expects, final, outcome):
-                    touched.append(iid)
-                    break
+        # Run the vector under every combination of the family's alternatives (at most a few dozen):
+        # checking one interpretation at a time would miss a result that changes only when two
+        # non-default alternatives are taken together.
+        names = list(self.fam.interpretations)
+        options = [[a["id"] for a in self.fam.interpretations[i]["alternatives"]] for i in names]
+        results = {combo: self.run(instr, operands, devices, steps, scratch, dict(zip(names, combo)))
+                   for combo in itertools.product(*options)}
+        expects, final, outcome, trace = results[tuple(self.defaults[i] for i in names)]
+        # An interpretation touches the vector when changing it alone, anywhere in the grid,
+        # changes the result; the result is then a function of the touched ones only.
+        touched = [iid for k, iid in enumerate(names)
+                   if any(results[c][:3] != results[c[:k] + (alt,) + c[k + 1:]][:3]
+                          for c in results for alt in options[k] if alt != c[k])]
         alternatives = []
         if touched:
-            options = [[(iid, a["id"]) for a in self.fam.interpretations[iid]["alternatives"]] for iid in touched]
-            for combo in itertools.product(*options):
-                choice = dict(combo)
+            for combo in itertools.product(*(options[names.index(i)] for i in touched)):
+                choice = dict(zip(touched, combo))
                 if all(choice[i] == self.defaults[i] for i in touched):
                     continue
-                a_expects, a_final, a_outcome, a_trace = self.run(
-                    instr, operands, devices, steps, scratch, dict(self.defaults, **choice))
+                key = tuple(choice.get(i, self.defaults[i]) for i in names)
+                a_expects, a_final, a_outcome, a_trace = results[key]
                 trace |= a_trace
                 alternatives.append({"choices": choice, "expect": a_expects, "final": {"devices": a_final},
                                      "outcome": a_outcome})
