@@ -269,10 +269,13 @@ def test_tadd_error_code_follows_the_spec(tmp_path, baseline):
 
 def test_error_device_name_follows_the_spec(tmp_path, baseline):
     folder = edited_spec(tmp_path, DC_FILE, 134, "device: SM709", "device: SM710")
+    # Regression cases (spec/regressions/) give their devices by name, as recorded, so they do not
+    # follow a rename (generate reports such a case at its line): only derived vectors are compared.
+    (folder / "regressions" / f"{DC}.yaml").unlink()
     regenerated = generate(folder)
     after = regenerated[DC]
 
-    assert set(after) == set(baseline[DC])
+    assert set(after) == {vid for vid, v in baseline[DC].items() if "regression" not in v["tags"]}
     text = json.dumps(after)
     assert '"SM709"' not in text
 

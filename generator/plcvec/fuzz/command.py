@@ -6,6 +6,8 @@ ready to keep. Deterministic with --seed. Exit 0 no disagreement, 1 one found, 2
 """
 import sys
 import time
+from functools import partial
+from pathlib import Path
 
 from plcvec.errors import PlcvecError
 
@@ -32,6 +34,9 @@ def register(sub, spec_parent):
                    help="adapter restarts after crashes before giving up; a crash is a finding, and shrinking it "
                         "restarts the adapter once per crashing case (default %(default)s)")
     p.add_argument("--out", metavar="FILE", help="also write the minimal case here, as a vector file")
+    p.add_argument("--regression", action="store_true",
+                   help="append the minimal case to the spec's regressions/<family>.yaml (then `plcvec generate` "
+                        "makes it a golden vector); the file is replaced atomically, and only if the spec accepts it")
     p.set_defaults(func=main_args)
 
 
@@ -75,6 +80,8 @@ def _fuzz(args, families, asked, adapter, choose):
     from plcvec.fuzz.shrink import NotReproduced, shrink
     from plcvec.fuzz import report
     from plcvec.output.atomic import write_atomic
+    from plcvec.spec.loader import REGRESSIONS_DIR
+    from plcvec.spec.regressions import append_case, case_of
     from plcvec_verify.expect import expected_of
 
     try:
@@ -113,9 +120,18 @@ def _fuzz(args, families, asked, adapter, choose):
         judged_by = expected_of(vector, target.choices, target.defaults).choices
         if args.out:
             write_atomic(args.out, report.vector_file(fam, vector, target.name, args.seed))
-        sys.stdout.write(report.disagreement(fam, vector, verdict, adapter=target.name, seed=args.seed,
-                                             found=found.examples, examples=args.examples, runs=runs,
-                                             judged_by=judged_by, out=args.out))
+        note = report.regression_note(target.name, args.seed, verdict)
+        regression = Path(args.spec_dir) / REGRESSIONS_DIR / f"{fam.name}.yaml"
+        printed = partial(report.disagreement, fam, vector, verdict, adapter=target.name, seed=args.seed,
+                          found=found.examples, examples=args.examples, runs=runs, judged_by=judged_by,
+                          out=args.out, note=note, regression=regression)
+        if args.regression:
+            try:
+                append_case(regression, fam, note, case_of(vector))
+            except (PlcvecError, OSError):   # the case is still printed, to append by hand
+                sys.stdout.write(printed(appended=False))
+                raise
+        sys.stdout.write(printed(appended=args.regression))
         _timing(found.examples, searched, runs, shrunk)
         return 1
     finally:

@@ -5,6 +5,7 @@ of requests), so two runs with the same seed print the same bytes; the timing go
 """
 from plcvec.output.canonical import dumps_vector_file
 from plcvec.output.golden import family_header
+from plcvec.spec.regressions import case_key, case_of, stanza
 
 
 def vector_file(fam, vector, adapter, seed):
@@ -20,7 +21,13 @@ def _name(adapter):
     return " ".join(str(adapter.get(k)) for k in ("name", "version") if adapter.get(k))
 
 
-def disagreement(fam, vector, verdict, *, adapter, seed, found, examples, runs, judged_by, out):
+def regression_note(adapter, seed, verdict):
+    """A first note for the regression case: how it was found and what differed; say which bug it was."""
+    return f"found by plcvec fuzz --seed {seed} against {_name(adapter)}: {verdict.lines[0] if verdict.lines else 'disagreement'}"
+
+
+def disagreement(fam, vector, verdict, *, adapter, seed, found, examples, runs, judged_by, out, note, regression,
+                 appended):
     lines = [f"plcvec fuzz: {_name(adapter)} disagrees with the spec on example {found} of {examples} (seed {seed}).",
              f"Shrunk by hypothesis ({runs} runs) to {vector['id']}:", "",
              vector_file(fam, vector, adapter, seed).rstrip("\n"), ""]
@@ -35,6 +42,14 @@ def disagreement(fam, vector, verdict, *, adapter, seed, found, examples, runs, 
         lines.append(f"Written to {out}; `plcvec verify --vectors {out}` runs it again.")
     else:
         lines.append("--out FILE writes it; `plcvec verify --vectors FILE` then runs it as a regression test.")
+    case = case_of(vector)
+    becomes = f"{fam.name}/{vector['instruction']}/{case_key(case)}"
+    if appended:
+        lines.append(f"Appended to {regression} as this regression case; `plcvec generate` makes it the golden vector {becomes}:")
+    else:
+        lines.append(f"To keep it as the golden vector {becomes}, append this regression case to {regression} "
+                     "(or run again with --regression), say in its note which bug it caught, and run `plcvec generate`:")
+    lines.append(stanza(note, case).rstrip("\n"))
     return "\n".join(lines) + "\n"
 
 

@@ -17,6 +17,7 @@ TAGS = {
     "pulse": "Execution on the rising edge of the execution condition, over a sequence of scans.",
     "random": "Drawn with hypothesis from the spec's ranges with a fixed seed.",
     "reconstructed": "The manual's input values were lost; these satisfy its printed table.",
+    "regression": "A case that once exposed a bug in an implementation (spec/regressions/), kept so it stays fixed; its note says which bug.",
     "reserved-bit": "A selector bit the manual reserves, alone or mixed with others.",
     "same-device": "The same device is both a source and the destination.",
     "scan-sequence": "Several executions with the elapsed time of each.",

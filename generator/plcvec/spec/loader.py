@@ -12,6 +12,7 @@ from plcvec.spec.yaml_lines import load_with_lines
 REPO = Path(__file__).resolve().parents[3]
 DEFAULT_SPEC_DIR = REPO / "spec"
 SCHEMA_PATH = DEFAULT_SPEC_DIR / "schema" / "spec.schema.json"
+REGRESSIONS_DIR = "regressions"   # spec/regressions/<family>.yaml: see spec/regressions.py
 
 
 class Family:
@@ -24,11 +25,10 @@ class Family:
         self.kind = doc["kind"]
         self.clauses = {c["id"]: c for c in doc["clauses"]}
         self.interpretations = {i["id"]: i for i in doc["interpretations"]}
+        self.regressions = None   # the family's spec/regressions/<family>.yaml, once loaded (Regressions)
 
     def line_of(self, *where):
-        while where and where not in self.lines:
-            where = where[:-1]
-        return self.lines.get(where)
+        return line_of(self.lines, where)
 
     def error(self, where, message):
         return SpecError(self.path, self.line_of(*where), message)
@@ -88,38 +88,55 @@ def _describe_forbidden(error, doc):
     return where + (key,), f"key {key!r} is not allowed for this kind of instruction family (kind: {kind})"
 
 
-def load_family(path):
-    path = Path(path)
+def read_text(path):
+    """The text of a spec file, or a SpecError naming it (unreadable; not UTF-8, with line and column)."""
     try:
         raw = path.read_bytes()
     except OSError as exc:
         raise SpecError(path, None, f"cannot read: {exc.strerror or exc}") from None
     try:
-        text = raw.decode("utf-8")
+        return raw.decode("utf-8")
     except UnicodeDecodeError as exc:
         line = raw.count(b"\n", 0, exc.start) + 1
         column = exc.start - (raw.rfind(b"\n", 0, exc.start) + 1) + 1
         raise SpecError(path, line, f"not UTF-8 text: byte {raw[exc.start]:#04x} at column {column} "
                                     f"cannot be decoded ({exc.reason}); save the file as UTF-8") from None
+
+
+def validate(path, doc, lines, validator):
+    """Raise a SpecError at the line of the first (most telling) schema error of `doc`, if any."""
+    errors = sorted(validator.iter_errors(doc), key=lambda e: (list(map(str, e.absolute_path)), str(e.validator)))
+    if not errors:
+        return
+    # A key the family's kind forbids (a `false` subschema) is the cause of whatever else is wrong
+    # with its value, so it is reported first.
+    forbidden = [e for e in errors if e.schema is False]
+    if forbidden:
+        where, message = _describe_forbidden(forbidden[0], doc)
+    else:
+        best = jsonschema.exceptions.best_match(errors)
+        # best_match may name an `allOf`/`if` wrapper: prefer the deepest concrete error below it.
+        while best.context:
+            best = jsonschema.exceptions.best_match(best.context)
+        where, message = _describe(best)
+    raise SpecError(path, line_of(lines, where), message)
+
+
+def line_of(lines, where):
+    """The line of the value at path `where`, or of the nearest enclosing value that has one."""
+    where = tuple(where)
+    while where and where not in lines:
+        where = where[:-1]
+    return lines.get(where)
+
+
+def load_family(path):
+    path = Path(path)
+    text = read_text(path)
     doc, lines = load_with_lines(path, text)
     if not isinstance(doc, dict):
         raise SpecError(path, 1, "a spec file must be a mapping at the top level")
-    errors = sorted(_schema_validator().iter_errors(doc), key=lambda e: (list(map(str, e.absolute_path)), str(e.validator)))
-    if errors:
-        # A key the family's kind forbids (a `false` subschema) is the cause of whatever else is wrong
-        # with its value, so it is reported first.
-        forbidden = [e for e in errors if e.schema is False]
-        if forbidden:
-            where, message = _describe_forbidden(forbidden[0], doc)
-        else:
-            best = jsonschema.exceptions.best_match(errors)
-            # best_match may name an `allOf`/`if` wrapper: prefer the deepest concrete error below it.
-            while best.context:
-                best = jsonschema.exceptions.best_match(best.context)
-            where, message = _describe(best)
-        family = Family.__new__(Family)
-        family.path, family.lines = path, lines
-        raise SpecError(path, Family.line_of(family, *where), message)
+    validate(path, doc, lines, _schema_validator())
     family = Family(path, doc, lines, text)
     check_family(family)
     return family
@@ -137,6 +154,9 @@ def load_spec(spec_dir=None):
         if fam.name in families:
             raise fam.error(("family",), f"family {fam.name!r} is also defined in {families[fam.name].path.name}")
         families[fam.name] = fam
+    from plcvec.spec.regressions import load_regressions  # it uses this module's readers
+
+    load_regressions(spec_dir / REGRESSIONS_DIR, families)
     return [families[k] for k in sorted(families)]
 
 
@@ -144,4 +164,6 @@ def spec_hash(families):
     h = hashlib.sha256()
     for fam in families:
         h.update(fam.name.encode() + b"\0" + fam.sha256.encode() + b"\n")
+        if fam.regressions is not None:
+            h.update(f"{REGRESSIONS_DIR}/{fam.name}".encode() + b"\0" + fam.regressions.sha256.encode() + b"\n")
     return h.hexdigest()
