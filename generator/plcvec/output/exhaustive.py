@@ -6,7 +6,6 @@ interpretation choices (the defaults unless --choose says otherwise), named in t
 """
 import json
 import time
-from pathlib import Path
 
 from plcvec import SCHEMA_VERSION
 from plcvec.cases.build import VectorBuilder
