@@ -62,6 +62,11 @@ class Suite:
             schema_versions.add(version)
             spec_hashes.add(data.get("spec_sha256", ""))
             headers[data["family"]] = {k: v for k, v in data.items() if k != "vectors"}
+            for index, v in enumerate(data["vectors"]):
+                problem = _shape_problem(v, data["family"])
+                if problem:
+                    name = v.get("id") if isinstance(v, dict) and isinstance(v.get("id"), str) else f"#{index}"
+                    raise VerifyError(f"{file}: vector {name}: {problem} (is the file a plcvec vector file, unedited?)")
             vectors.extend(data["vectors"])
         seen = set()
         for v in vectors:
@@ -94,6 +99,29 @@ class Suite:
 
     def instructions(self) -> dict[str, list[str]]:
         return {family: list(h.get("instructions", [])) for family, h in sorted(self.headers.items())}
+
+
+# What the runner reads of a vector, checked once at load so that a damaged file is reported by
+# name rather than failing half-way through a run (the full schema is vectors/schema/).
+_VECTOR_KEYS = {"id": str, "family": str, "instruction": str, "initial": dict, "steps": list,
+                "final": dict, "outcome": dict}
+
+
+def _shape_problem(v, family) -> str:
+    if not isinstance(v, dict):
+        return "not a JSON object"
+    for key, kind in _VECTOR_KEYS.items():
+        if not isinstance(v.get(key), kind):
+            return f"no `{key}` ({kind.__name__})"
+    if v["family"] != family:
+        return f"family {v['family']!r} in a {family!r} file"
+    if not isinstance(v["initial"].get("devices"), dict) or not isinstance(v["initial"].get("operands"), dict):
+        return "`initial` needs `devices` and `operands`"
+    if not v["steps"] or not all(isinstance(st, dict) and isinstance(st.get("expect"), dict) for st in v["steps"]):
+        return "every step needs an `expect`"
+    if not isinstance(v["final"].get("devices"), dict):
+        return "`final` needs `devices`"
+    return ""
 
 
 def _read_json(path: Path):
