@@ -16,6 +16,7 @@ import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 
+from .atomic import write_atomic
 from .errors import VerifyError
 
 SECTION = "known-failure"
@@ -107,7 +108,7 @@ def write_expectations(path, results, reason: str) -> int:
         if (r.status in FAILING and r.status != NOT_RUN and r.family) or r.status == XFAIL:
             lines += [f"[[{SECTION}]]", f"id = {_toml_str(r.id)}", f"reason = {_toml_str(reason)}", ""]
             n += 1
-    Path(path).write_text("\n".join(lines), encoding="utf-8")
+    write_atomic(path, "\n".join(lines))
     return n
 
 

@@ -6,11 +6,8 @@ adapter, and the interpretation alternative every vector was judged by.
 from __future__ import annotations
 
 import json
-import os
-import tempfile
 import xml.etree.ElementTree as ET
-from pathlib import Path
-
+from .atomic import write_atomic
 from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL, RunReport
 
 SHOW_PROBLEMS = 12     # field lines shown per failing vector in the summary
@@ -98,7 +95,7 @@ def _jsonable(value):
 
 
 def write_jsonl(report: RunReport, path) -> None:
-    _write(path, "".join(json.dumps(item, sort_keys=True, ensure_ascii=False) + "\n" for item in jsonl_lines(report)))
+    write_atomic(path, "".join(json.dumps(item, sort_keys=True, ensure_ascii=False) + "\n" for item in jsonl_lines(report)))
 
 
 def junit_xml(report: RunReport) -> str:
@@ -139,18 +136,4 @@ def junit_xml(report: RunReport) -> str:
 
 
 def write_junit(report: RunReport, path) -> None:
-    _write(path, junit_xml(report))
-
-
-def _write(path, text: str) -> None:
-    """Replace the file whole: a CI dashboard never reads half a report."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", dir=path.parent)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8") as f:
-            f.write(text)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_atomic(path, junit_xml(report))
