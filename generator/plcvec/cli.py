@@ -15,6 +15,8 @@ _STAGE_COMMANDS = [
     "plcvec.fuzz.command",
     "plcvec.review.command",
     "plcvec.output.diff_command",
+    "plcvec.export.command",
+    "plcvec.native_bench",
 ]
 
 

@@ -55,6 +55,16 @@ def _passes(suite, adapter, plan, keep_open):
     return statistics.median(rates)
 
 
+def in_process_rate(vectors_dir) -> tuple[int, float]:
+    """(vectors, vectors/s) judging the golden set in process with the Python reference: the
+    figure the native verifiers' benchmarks are set beside (`plcvec bench-native`)."""
+    from plcvec_reference.adapter import ReferenceAdapter
+
+    suite = Suite.load(vectors_dir)
+    plan = Plan(suite, suite.vectors, {})
+    return len(suite.vectors), _passes(suite, InProcess(ReferenceAdapter()), plan, keep_open=False)
+
+
 def run_verify_benchmark(vectors_dir) -> list[tuple[str, int, float, float]]:
     """Rows of (label, vectors, seconds, vectors/s)."""
     from plcvec_reference.adapter import ReferenceAdapter

@@ -1,0 +1,197 @@
+"""`plcvec export`: names, literals, the JSON Lines copy, rendering, --check and stale files."""
+import json
+import os
+import shutil
+import subprocess
+import textwrap
+
+import pytest
+
+from plcvec.cli import main
+from plcvec.export import names, targets
+from plcvec.export.literals import c_str, go_str, java_str, rust_str, ts_str
+from plcvec.export.model import load_model
+
+
+# -- identifiers ----------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("text, words", [
+    ("LDTM<=", ["LDTM", "LE"]),            # the FX5 manual's own ST name is LDTM_LE
+    ("ORDT<>", ["ORDT", "NE"]),
+    ("ANDTM>=", ["ANDTM", "GE"]),
+    ("LD <DT", ["LD", "LT", "DT"]),
+    ("OR =DT", ["OR", "EQ", "DT"]),
+    ("FX5-SM709-SCOPE", ["FX5", "SM709", "SCOPE"]),
+    ("manual-example", ["manual", "example"]),
+])
+def test_identifier_words(text, words):
+    assert names.identifier_words(text) == words
+
+
+def test_identifier_styles():
+    words = names.identifier_words("FX5-SM709-SCOPE")
+    assert names.upper_snake(words) == "FX5_SM709_SCOPE"
+    assert names.lower_snake(words) == "fx5_sm709_scope"
+    assert names.pascal(words) == "Fx5Sm709Scope"
+    assert names.camel(words) == "fx5Sm709Scope"
+    assert names.upper_snake("24-hour") == "_24_HOUR"      # no identifier starts with a digit
+    with pytest.raises(ValueError):
+        names.identifier_words("--")
+
+
+def test_every_exported_name_is_distinct_in_every_style(repo):
+    """Two spec names that collapse to one identifier would make a generated enum fail to compile."""
+    model = load_model(repo / "vectors")
+    groups = {"instructions": model.instructions, "tags": model.tags,
+              "interpretations": [i.name for i in model.interpretations],
+              "families": [f.name for f in model.families]}
+    groups.update({f"alternatives of {i.name.text}": i.alternatives for i in model.interpretations})
+    for what, group in groups.items():
+        for style in (names.upper_snake, names.pascal, names.lower_snake):
+            idents = [style(n) for n in group]
+            assert len(set(idents)) == len(idents), (what, style.__name__, idents)
+
+
+# -- string literals, read back by each language's own compiler -----------------------------------
+
+TRICKY = 'a"b\\c\n\t\r??=?\x01 é ≤ □ 😀 \u2028 end'
+TOOLS = {"c": "gcc", "go": "go", "rust": "rustc", "java": "javac", "ts": "node"}
+
+
+def _need(tool):
+    if shutil.which(tool) is None:
+        if os.environ.get("CI"):
+            pytest.fail(f"{tool} is not installed, and CI must run this test")
+        pytest.skip(f"{tool} is not installed")
+
+
+def _run(cmd, cwd):
+    proc = subprocess.run(cmd, cwd=cwd, capture_output=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr.decode(errors="replace")
+    return proc.stdout
+
+
+@pytest.mark.parametrize("lang", sorted(TOOLS))
+def test_literal_reads_back_exactly(lang, tmp_path):
+    """Each quoting, compiled and printed as UTF-8 bytes, gives back exactly the original text."""
+    _need(TOOLS[lang])
+    expected = TRICKY.encode("utf-8")
+    if lang == "c":
+        (tmp_path / "t.c").write_text(textwrap.dedent(f"""
+            #include <stdio.h>
+            #include <string.h>
+            static const char s[] = {c_str(TRICKY)};
+            int main(void) {{ fwrite(s, 1, strlen(s), stdout); return 0; }}
+        """))
+        _run(["gcc", "-std=c11", "-Wall", "-Werror", "-trigraphs", "-o", "t", "t.c"], tmp_path)
+        out = _run(["./t"], tmp_path)
+    elif lang == "go":
+        (tmp_path / "t.go").write_text(f'package main\nimport "os"\nfunc main() {{ os.Stdout.WriteString({go_str(TRICKY)}) }}\n')
+        out = _run(["go", "run", "t.go"], tmp_path)
+    elif lang == "rust":
+        (tmp_path / "t.rs").write_text(f'use std::io::Write;\nfn main() {{ std::io::stdout().write_all({rust_str(TRICKY)}.as_bytes()).unwrap(); }}\n')
+        _run(["rustc", "-o", "t", "t.rs"], tmp_path)
+        out = _run(["./t"], tmp_path)
+    elif lang == "java":
+        (tmp_path / "T.java").write_text(
+            "public class T { public static void main(String[] a) throws Exception {"
+            f" System.out.write({java_str(TRICKY)}.getBytes(java.nio.charset.StandardCharsets.UTF_8)); System.out.flush(); }} }}\n")
+        _run(["javac", "T.java"], tmp_path)
+        out = _run(["java", "-cp", ".", "T"], tmp_path)
+    else:
+        (tmp_path / "t.mjs").write_text(f"process.stdout.write(Buffer.from({ts_str(TRICKY)}, 'utf8'));\n")
+        out = _run(["node", "t.mjs"], tmp_path)
+    assert out == expected
+
+
+# -- the model and the JSON Lines copy ------------------------------------------------------------
+
+def test_jsonl_copy_holds_every_vector_unchanged(repo, golden):
+    model = load_model(repo / "vectors")
+    assert [f.name.text for f in model.families] == list(golden)
+    for fam in model.families:
+        lines = fam.jsonl.splitlines()
+        header = json.loads(lines[0])
+        original = golden[fam.name.text]
+        assert header == {k: v for k, v in original.items() if k != "vectors"}
+        assert [json.loads(line) for line in lines[1:]] == original["vectors"]
+        assert header["count"] == len(lines) - 1
+
+
+def test_shared_interpretation_is_listed_once(repo, golden):
+    model = load_model(repo / "vectors")
+    ids = [i.name.text for i in model.interpretations]
+    assert len(ids) == len(set(ids))
+    expected = {i["id"]: sorted(f for f, data in golden.items() if any(j["id"] == i["id"] for j in data["interpretations"]))
+                for data in golden.values() for i in data["interpretations"]}
+    assert {i.name.text: sorted(i.families) for i in model.interpretations} == expected
+
+
+# -- rendering and the command ---------------------------------------------------------------------
+
+@pytest.fixture
+def toy_language(tmp_path, monkeypatch):
+    """A language of two templates, in a template folder of its own."""
+    templates = tmp_path / "templates"
+    lang = templates / "toy"
+    lang.mkdir(parents=True)
+    (lang / "export.yaml").write_text(textwrap.dedent("""
+        root: verifiers/toy
+        vectors: vectors
+        generated: [gen]
+        files:
+          - {template: names.j2, output: gen/names.txt}
+          - {template: family.j2, output: "gen/{family}.txt", each: family}
+    """))
+    (lang / "names.j2").write_text(
+        "// {{ note }}\n{% for i in suite.instructions %}{{ i | upper_snake }} = {{ i.text | c_str }}\n{% endfor %}")
+    (lang / "family.j2").write_text("{{ family.name | pascal }} {{ family.vectors | length }}\n")
+    monkeypatch.setattr(targets, "TEMPLATES", templates)
+    return tmp_path / "out"
+
+
+def test_export_writes_checks_and_removes_stale_files(repo, golden, toy_language, capsys):
+    out = toy_language
+    args = ["export", "--lang", "toy", "--vectors", str(repo / "vectors"), "--root", str(out)]
+    assert main(args + ["--check"]) == 1                      # nothing there yet
+    assert main(args) == 0
+    names_txt = (out / "verifiers/toy/gen/names.txt").read_text()
+    assert "LDTM_LE = \"LDTM<=\"" in names_txt and "LD_LE_DT = \"LD <=DT\"" in names_txt
+    for fam, data in golden.items():
+        assert (out / f"verifiers/toy/gen/{fam}.txt").read_text().split()[1] == str(len(data["vectors"]))
+        assert (out / f"verifiers/toy/vectors/{fam}.jsonl").is_file()
+    index = json.loads((out / "verifiers/toy/vectors/index.json").read_text())
+    assert index["total"] == sum(len(d["vectors"]) for d in golden.values())
+    assert main(args + ["--check"]) == 0
+    capsys.readouterr()
+
+    (out / "verifiers/toy/gen/names.txt").write_text("edited by hand\n")
+    (out / "verifiers/toy/gen/old.txt").write_text("left from a family that is gone\n")
+    assert main(args + ["--check"]) == 1
+    err = capsys.readouterr().err
+    assert "gen/names.txt: differs" in err and "gen/old.txt: not produced by the export" in err
+    assert main(args) == 0
+    assert not (out / "verifiers/toy/gen/old.txt").exists()
+    assert main(args + ["--check"]) == 0
+
+
+def test_export_is_byte_identical_across_runs(repo, toy_language):
+    model = load_model(repo / "vectors")
+    assert targets.render("toy", model).files == targets.render("toy", load_model(repo / "vectors")).files
+
+
+def test_template_error_names_template_and_line(repo, toy_language, capsys):
+    (targets.TEMPLATES / "toy" / "family.j2").write_text("line one\n{{ family.no_such_field }}\n")
+    assert main(["export", "--lang", "toy", "--vectors", str(repo / "vectors"), "--root", str(toy_language)]) == 2
+    err = capsys.readouterr().err
+    assert "family.j2:2" in err and "no_such_field" in err
+
+
+def test_unknown_language_is_a_usage_error(repo, toy_language, capsys):
+    assert main(["export", "--lang", "cobol", "--vectors", str(repo / "vectors"), "--root", str(toy_language)]) == 2
+    assert "cobol: no such language (known: toy)" in capsys.readouterr().err
+
+
+def test_missing_vector_folder_is_named(tmp_path, toy_language, capsys):
+    assert main(["export", "--lang", "toy", "--vectors", str(tmp_path / "nope"), "--root", str(toy_language)]) == 2
+    assert "nope/manifest.json: no such file" in capsys.readouterr().err
