@@ -44,7 +44,8 @@ def test_every_exported_name_is_distinct_in_every_style(repo):
     model = load_model(repo / "vectors")
     groups = {"instructions": model.instructions, "tags": model.tags,
               "interpretations": [i.name for i in model.interpretations],
-              "families": [f.name for f in model.families]}
+              "families": [f.name for f in model.families], "devices": model.devices}
+    groups.update({f"clauses of {f.name.text}": f.clauses for f in model.families})
     groups.update({f"alternatives of {i.name.text}": i.alternatives for i in model.interpretations})
     for what, group in groups.items():
         for style in (names.upper_snake, names.pascal, names.lower_snake):
@@ -116,6 +117,21 @@ def test_jsonl_copy_holds_every_vector_unchanged(repo, golden):
         assert header == {k: v for k, v in original.items() if k != "vectors"}
         assert [json.loads(line) for line in lines[1:]] == original["vectors"]
         assert header["count"] == len(lines) - 1
+
+
+def test_devices_and_clauses_are_every_one_the_vectors_name(repo, golden):
+    model = load_model(repo / "vectors")
+    named = set()
+    for data in golden.values():
+        for v in data["vectors"]:
+            named.update(v["initial"]["devices"])
+            named.update(o["device"] for o in v["initial"]["operands"].values() if "device" in o)
+            named.update(d for alt in v.get("alternatives", ()) for d in alt["final"]["devices"])
+    assert {"D100", "SM709", "P_ER", "M8004"} <= named
+    assert [d.text for d in model.devices] == sorted(named)
+    for fam in model.families:
+        used = {c for v in golden[fam.name.text]["vectors"] for c in v["clauses"]}
+        assert [c.text for c in fam.clauses] == sorted(used)
 
 
 def test_shared_interpretation_is_listed_once(repo, golden):

@@ -46,6 +46,7 @@ class FamilyModel:
     header: dict
     vectors: list[dict]
     jsonl: str
+    clauses: list[Name] = field(default_factory=list)   # every clause its vectors exercise, sorted
 
 
 @dataclass
@@ -57,6 +58,7 @@ class SuiteModel:
     instructions: list[Name]          # every family's, in family order
     tags: list[Name]                  # the union, sorted
     interpretations: list[Interpretation]   # each once, even when several families share it
+    devices: list[Name] = field(default_factory=list)   # every device any vector names, sorted
     generated_note: str = GENERATED_NOTE
 
     @property
@@ -103,7 +105,8 @@ def load_model(vectors_dir) -> SuiteModel:
             name=_name(fam_name, data["title"]), kind=data["kind"], title=data["title"],
             spec_sha256=data["spec_sha256"], instructions=[_name(i) for i in data["instructions"]],
             tags=[tags[t] for t in data["tags"]], interpretations=fam_interps,
-            header=header, vectors=data["vectors"], jsonl=family_jsonl(data)))
+            header=header, vectors=data["vectors"], jsonl=family_jsonl(data),
+            clauses=[_name(c) for c in sorted({c for v in data["vectors"] for c in v.get("clauses", ())})]))
     return SuiteModel(
         suite_version=str(manifest.get("generator_version", "")),
         schema_version=str(manifest.get("schema_version", "")),
@@ -112,7 +115,27 @@ def load_model(vectors_dir) -> SuiteModel:
         instructions=[i for f in families for i in f.instructions],
         tags=[tags[t] for t in sorted(tags)],
         interpretations=list(interpretations.values()),
+        devices=[_name(d) for d in sorted({d for f in families for v in f.vectors for d in _devices_of(v)})],
     )
+
+
+def _devices_of(vector: dict):
+    """Every device a vector names: its initial state, operands, scratch, `set`s and expectations
+    under every alternative (so a table of device names built from these is never short of one)."""
+    initial = vector.get("initial", {})
+    yield from initial.get("devices", {})
+    yield from initial.get("scratch", ())
+    for operand in initial.get("operands", {}).values():
+        if "device" in operand:
+            yield operand["device"]
+    for step in vector.get("steps", ()):
+        yield from step.get("set", {})
+        yield from step.get("expect", {}).get("devices", {})
+    yield from vector.get("final", {}).get("devices", {})
+    for alt in vector.get("alternatives", ()):
+        for expect in alt.get("expect", ()):
+            yield from expect.get("devices", {})
+        yield from alt.get("final", {}).get("devices", {})
 
 
 def index_json(model: SuiteModel) -> str:
