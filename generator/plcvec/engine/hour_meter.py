@@ -25,6 +25,7 @@ class HourMeter:
         if not step["input"]:
             if self.knobs["input_off"] == "reset":
                 self.codec.write(state, d1, self.codec.from_units(0))
+            if self.knobs["input_off"] in ("reset", "hold_drop_fraction"):
                 ctx["fraction"] = 0
             return None
         fraction = ctx.get("fraction", 0) + step["elapsed_ms"]

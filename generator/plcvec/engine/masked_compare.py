@@ -126,8 +126,10 @@ class MaskedCompare:
             trace.add(self.sel.get("valid_clause"))
         if len(selected) < len(self.fields):
             trace.add(self.sel.get("unselected_clause"))
-        if self.validity["scope"] == "selected":
-            self._check(values, compared_ops, selected, trace)
+        # Checked only now that a comparison is made: the selected fields, or every field of each
+        # compared operand (scope "compared"); scope "all" was checked before the selector.
+        if self.validity["scope"] in ("selected", "compared"):
+            self._check(values, compared_ops, selected if self.validity["scope"] == "selected" else self.fields, trace)
         trace.add(self.doc["data"]["order_clause"])
         for f in selected:
             trace.add(f["clause"])

@@ -9,18 +9,18 @@ from .machine import DeviceMemory, operand_value
 ALTERNATIVES = {
     "CP1E-NON-BCD": ("error", "raw-bytes"),
     "CP1E-OUT-OF-RANGE": ("compared", "error"),
-    "CP1E-ALL-MASKED": ("error", "equal"),
+    "CP1E-ALL-MASKED": ("error", "equal", "not-compared"),
     "CP1E-C-HIGH-BITS": ("ignored", "error"),
-    "CP1E-AND-OR-WHEN-OFF": ("always-executed", "and-skipped"),
+    "CP1E-AND-OR-WHEN-OFF": ("always-executed", "and-skipped", "short-circuit"),
     "CP1E-ER-FLAG": ("reflects-each-execution", "held"),
 }
 
 DEFAULTS = {
     "CP1E-NON-BCD": "error",                 # or "raw-bytes"
     "CP1E-OUT-OF-RANGE": "compared",         # or "error"
-    "CP1E-ALL-MASKED": "error",              # or "equal"
+    "CP1E-ALL-MASKED": "error",              # or "equal", "not-compared"
     "CP1E-C-HIGH-BITS": "ignored",           # or "error"
-    "CP1E-AND-OR-WHEN-OFF": "always-executed",  # or "and-skipped"
+    "CP1E-AND-OR-WHEN-OFF": "always-executed",  # or "and-skipped", "short-circuit"
     "CP1E-ER-FLAG": "reflects-each-execution",  # or "held"
 }
 
@@ -120,6 +120,11 @@ class CP1ETimeCompare:
         unmasked = [f for f in self.FIELDS if not (c >> f[5]) & 1]
         if not unmasked and self.choices["CP1E-ALL-MASKED"] == "error":
             return self._error()
+        if not unmasked and self.choices["CP1E-ALL-MASKED"] == "not-compared":
+            # Nothing compared, no result: OFF, flags untouched, no error.
+            if self.choices["CP1E-ER-FLAG"] == "reflects-each-execution":
+                mem.write(ERROR_FLAG, False)
+            return False
 
         order = 0
         for offset, byte, _name, lo, hi, _bit in unmasked:
@@ -152,9 +157,11 @@ class CP1ETimeCompare:
             return self.evaluate(condition, operands)
         rlo = bool(step["rlo_in"])
         if form == "AND":
-            if not rlo and self.choices["CP1E-AND-OR-WHEN-OFF"] == "and-skipped":
+            if not rlo and self.choices["CP1E-AND-OR-WHEN-OFF"] in ("and-skipped", "short-circuit"):
                 return False
             contact = self.evaluate(condition, operands)
             return rlo and contact
+        if rlo and self.choices["CP1E-AND-OR-WHEN-OFF"] == "short-circuit":
+            return True
         contact = self.evaluate(condition, operands)
         return rlo or contact

@@ -8,13 +8,13 @@ from .machine import DeviceMemory
 
 ALTERNATIVES = {
     "HOUR-OUTPUT-OFF": ("latched", "recompared"),
-    "HOUR-INPUT-OFF": ("hold", "reset"),
+    "HOUR-INPUT-OFF": ("hold", "reset", "hold-drop-fraction"),
     "HOUR-PRESET-ZERO": ("immediate", "never"),
 }
 
 DEFAULTS = {
     "HOUR-OUTPUT-OFF": "latched",     # or "recompared"
-    "HOUR-INPUT-OFF": "hold",         # or "reset"
+    "HOUR-INPUT-OFF": "hold",         # or "reset", "hold-drop-fraction"
     "HOUR-PRESET-ZERO": "immediate",  # or "never"
 }
 
@@ -84,6 +84,8 @@ class HourMeter:
             if self.choices["HOUR-INPUT-OFF"] == "reset":
                 mem.write_block(d1, [0, 0, 0])
                 self.fraction_ms = 0
+            elif self.choices["HOUR-INPUT-OFF"] == "hold-drop-fraction":
+                self.fraction_ms = 0       # D1 kept; the part of a second is lost
             return None
 
         # Measure: the whole elapsed time since the previous execution is ON time.

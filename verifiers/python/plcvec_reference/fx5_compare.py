@@ -10,13 +10,13 @@ from .machine import DeviceMemory, to_signed16
 
 # Interpretation defaults (spec/fx5-time-compare.yaml, spec/fx5-date-compare.yaml).
 ALTERNATIVES = {
-    "FX5-SM709-SCOPE": ("selected-fields", "all-words"),
+    "FX5-SM709-SCOPE": ("selected-fields", "all-words", "compared-operands"),
     "FX5-AND-OR-WHEN-OFF": ("and-skipped", "always-executed", "short-circuit"),
     "FX5-CLOCK-S2-DEVICE-RANGE": ("ignored", "checked"),
 }
 
 DEFAULTS = {
-    "FX5-SM709-SCOPE": "selected-fields",          # or "all-words"
+    "FX5-SM709-SCOPE": "selected-fields",          # or "all-words", "compared-operands"
     "FX5-AND-OR-WHEN-OFF": "and-skipped",          # or "always-executed", "short-circuit"
     "FX5-CLOCK-S2-DEVICE-RANGE": "ignored",        # or "checked"
 }
@@ -149,6 +149,13 @@ class FX5CompareMachine:
                 return self._error()
             if not s3_valid:
                 return False
+        elif self.choices["FX5-SM709-SCOPE"] == "compared-operands":
+            # The operands are "comparison target data" as a whole, but only when the
+            # table says they "are compared": not for a selector that compares nothing.
+            if not s3_valid:
+                return False
+            if self._out_of_range(s1, None) or (not use_clock and self._out_of_range(s2, None)):
+                return self._error()
         else:  # selected-fields: a masked word is not comparison target data
             if not s3_valid:
                 return False
