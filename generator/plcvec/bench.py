@@ -65,8 +65,8 @@ def run_benchmark(spec_dir, out_dir=None, verify=True):
     if verify:
         # The verifier's own figures, on the committed vectors it ships with (plcvec_verify/bench.py).
         from plcvec_verify.bench import print_verify_benchmark
-        from plcvec_verify.command import DEFAULT_VECTORS
+        from plcvec_verify.locate import default_vectors
 
         print()
-        print_verify_benchmark(DEFAULT_VECTORS)
+        print_verify_benchmark(default_vectors().path)
     return 0

@@ -4,10 +4,8 @@ import importlib
 import sys
 from pathlib import Path
 
-from plcvec import __version__
+from plcvec import SCHEMA_VERSION, __version__
 from plcvec.errors import PlcvecError
-
-REPO = Path(__file__).resolve().parents[2]
 
 # One line per stage command module (see build_parser).
 _STAGE_COMMANDS = [
@@ -27,7 +25,7 @@ def _generate(args):
 
     families = load_spec(args.spec_dir)
     files, _ = build_golden(families)
-    out = Path(args.out)
+    out = _vectors_out(args)
     if args.check:
         return _check(out, files)
     # The manifest goes last: a run cut short never leaves a manifest naming files it did not write.
@@ -40,6 +38,28 @@ def _generate(args):
         written += 1
     print(f"plcvec: {written} of {len(files)} files written to {out} ({len(files) - written} already up to date)")
     return 0
+
+
+def _vectors_out(args):
+    """Where `generate` writes (or, with --check, what it compares): --out, else the checkout's vectors/.
+
+    Never the copy installed with the package: outside a checkout, `generate` writes only where it is told,
+    and never into site-packages; `--check` may compare with the installed copy, since it writes nothing."""
+    from plcvec_verify.locate import checkout, default_vectors, inside_installation
+
+    if args.out:
+        out = Path(args.out)
+    elif checkout() is not None:
+        out = checkout() / "vectors"
+    elif args.check:
+        out = default_vectors().path
+    else:
+        raise PlcvecError("generate: not in a plcvec checkout, so there is no vectors/ folder to write to; "
+                          "name one with --out DIR (the vectors installed with plcvec are never overwritten)")
+    if not args.check and inside_installation(out):
+        raise PlcvecError(f"generate: --out {out}: inside the Python installation (site-packages); "
+                          "name a folder of your own")
+    return out
 
 
 def _check(out, files):
@@ -96,15 +116,44 @@ def _lint(args):
     return 0
 
 
+class _Version(argparse.Action):
+    """--version: the suite version, the hash of the spec in use and the vector schema version (worked
+    out only when asked, since it reads the spec)."""
+
+    def __init__(self, option_strings, dest=argparse.SUPPRESS, **kw):
+        super().__init__(option_strings, dest, nargs=0, default=argparse.SUPPRESS, **kw)
+
+    def __call__(self, parser, namespace, values, option_string=None):
+        print(version_text())
+        parser.exit()
+
+
+def version_text():
+    from plcvec.spec.loader import default_spec, load_spec, spec_hash
+
+    lines = [f"plcvec {__version__} (suite version {__version__}, vector schema version {SCHEMA_VERSION})"]
+    try:
+        location = default_spec()
+        lines.append(f"spec sha256 {spec_hash(load_spec(location.path))} of {location.describe()}")
+    except PlcvecError as exc:
+        lines.append(f"spec: {exc}")
+    return "\n".join(lines)
+
+
 def build_parser():
+    from plcvec.spec.loader import default_spec_help
+    from plcvec_verify.locate import checkout
+
     p = argparse.ArgumentParser(prog="plcvec", description="Conformance test vectors for PLC clock and calendar instructions.")
-    p.add_argument("--version", action="version", version=f"plcvec {__version__}")
+    p.add_argument("--version", action=_Version, help="print the suite version, spec hash and schema version, and exit")
     sub = p.add_subparsers(dest="command", required=True)
     spec = argparse.ArgumentParser(add_help=False)
-    spec.add_argument("--spec-dir", default=str(REPO / "spec"), help="folder of spec *.yaml files (default: %(default)s)")
+    spec.add_argument("--spec-dir", help=f"folder of spec *.yaml files (default: {default_spec_help()})")
 
+    root = checkout()
     g = sub.add_parser("generate", parents=[spec], help="write the golden vectors from the spec")
-    g.add_argument("--out", default=str(REPO / "vectors"), help="output folder (default: %(default)s)")
+    g.add_argument("--out", help="output folder (default: " + (f"{root / 'vectors'}, the checkout's" if root else
+                   "none outside a checkout: name one; with --check, the vectors installed with plcvec") + ")")
     g.add_argument("--check", action="store_true", help="write nothing; exit 1 and name the files that differ")
     g.set_defaults(func=_generate)
 
@@ -133,6 +182,10 @@ def build_parser():
 def main(argv=None):
     args = build_parser().parse_args(argv)
     try:
+        if getattr(args, "spec_dir", False) is None:
+            from plcvec.spec.loader import default_spec
+
+            args.spec_dir = str(default_spec().path)
         return args.func(args)
     except PlcvecError as exc:
         print(f"plcvec: {exc}", file=sys.stderr)

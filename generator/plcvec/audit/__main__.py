@@ -4,12 +4,12 @@ import sys
 
 from plcvec.audit import audit_families
 from plcvec.errors import PlcvecError
-from plcvec.spec.loader import DEFAULT_SPEC_DIR, load_spec
+from plcvec.spec.loader import default_spec_help, load_spec
 
 
 def main(argv=None):
     p = argparse.ArgumentParser(prog="python3 -m plcvec.audit", description=__doc__.split(":")[1].strip())
-    p.add_argument("--spec-dir", default=str(DEFAULT_SPEC_DIR), help="folder of spec *.yaml files (default: %(default)s)")
+    p.add_argument("--spec-dir", help=f"folder of spec *.yaml files (default: {default_spec_help()})")
     p.add_argument("--json", action="store_true", help="print the findings as JSON")
     args = p.parse_args(argv)
     try:

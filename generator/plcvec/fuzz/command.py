@@ -126,6 +126,12 @@ def _fuzz(args, families, asked, adapter, choose):
                           found=found.examples, examples=args.examples, runs=runs, judged_by=judged_by,
                           out=args.out, note=note, regression=regression)
         if args.regression:
+            from plcvec_verify.locate import inside_installation
+
+            if inside_installation(regression):
+                sys.stdout.write(printed(appended=False))
+                raise PlcvecError(f"fuzz --regression: {regression} belongs to the installed plcvec, which is never "
+                                  "written; run in a checkout or name a spec folder of your own with --spec-dir")
             try:
                 append_case(regression, fam, note, case_of(vector))
             except (PlcvecError, OSError):   # the case is still printed, to append by hand

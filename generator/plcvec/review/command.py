@@ -4,8 +4,14 @@ from pathlib import Path
 
 from plcvec.errors import PlcvecError
 
-REPO = Path(__file__).resolve().parents[3]
 FILES = ("review.html", "review.md")
+
+
+def default_out():
+    """build/review of the checkout in use, else of the current folder."""
+    from plcvec_verify.locate import checkout
+
+    return (checkout() or Path.cwd()) / "build" / "review"
 
 
 def register(sub, spec_parent):
@@ -14,7 +20,7 @@ def register(sub, spec_parent):
                        description="Render the whole spec as one self-contained HTML file and as Markdown: "
                                    "layouts, every rule beside its manual quote, interpretations with the vectors "
                                    "they affect, errata, the audit of the manual's tables, and the coverage matrix.")
-    r.add_argument("--out", default=str(REPO / "build" / "review"),
+    r.add_argument("--out", default=str(default_out()),
                    help="folder for review.html and review.md (default: %(default)s)")
     r.add_argument("--manual-dir", metavar="DIR",
                    help="the manual text files; every provenance quote of the spec must be found in them")
@@ -48,7 +54,7 @@ def run(args):
             raise PlcvecError(f"--out {out}: not a folder")
         for name, text in render(model).items():
             write_atomic(out / name, text)
-    print(_headline(model["summary"]) + ("" if args.no_write else f"; wrote {', '.join(str(out / n) for n in FILES)}"))
+    print(_headline(model["summary"], args.spec_dir) + ("" if args.no_write else f"; wrote {', '.join(str(out / n) for n in FILES)}"))
     if args.check:
         for line in model["problem_lines"]:
             print(line, file=sys.stderr)
@@ -58,9 +64,9 @@ def run(args):
     return 0
 
 
-def _headline(s):
+def _headline(s, spec_dir):
     quotes = "quotes not checked" if s["quotes_checked"] is None else \
         f"{s['quotes_missing']} of {s['quotes_checked']} quotes missing"
     audit = f"{s['audit_unrecorded']} unrecorded audit disagreements" if s["audit_available"] else "audit not available"
-    return (f"plcvec review: {s['families']} families, {s['clauses']} clauses, {s['vectors']} vectors; {quotes}; "
+    return (f"plcvec review of {spec_dir}: {s['families']} families, {s['clauses']} clauses, {s['vectors']} vectors; {quotes}; "
             f"{s['uncovered']} uncovered clauses; {audit}")

@@ -5,14 +5,36 @@ from pathlib import Path
 
 import jsonschema
 
-from plcvec.errors import SpecError
+from plcvec_verify.errors import VerifyError
+from plcvec_verify.locate import locate
+
+from plcvec.errors import PlcvecError, SpecError
 from plcvec.spec.checks import check_family
 from plcvec.spec.yaml_lines import load_with_lines
 
-REPO = Path(__file__).resolve().parents[3]
-DEFAULT_SPEC_DIR = REPO / "spec"
-SCHEMA_PATH = DEFAULT_SPEC_DIR / "schema" / "spec.schema.json"
 REGRESSIONS_DIR = "regressions"   # spec/regressions/<family>.yaml: see spec/regressions.py
+
+
+def default_spec():
+    """The spec folder used when none is named: the checkout's spec/, else the copy installed with
+    plcvec (plcvec_verify/locate.py says how it is chosen), as a Location (path and kind)."""
+    try:
+        return locate("plcvec", "spec", "*.yaml")
+    except VerifyError as exc:
+        raise PlcvecError(f"{exc} (--spec-dir DIR)") from None
+
+
+def default_spec_help():
+    """For --help: the folder used when --spec-dir is not given, and whose it is."""
+    try:
+        return default_spec().describe()
+    except PlcvecError as exc:
+        return f"none: {exc}"
+
+
+def schema_path(name):
+    """A JSON Schema of the spec's files (spec/schema/NAME): the default spec's, whichever folder is loaded."""
+    return default_spec().path / "schema" / name
 
 
 class Family:
@@ -47,7 +69,7 @@ _validator = None
 def _schema_validator():
     global _validator
     if _validator is None:
-        schema = json.loads(SCHEMA_PATH.read_text())
+        schema = json.loads(schema_path("spec.schema.json").read_text())
         _validator = jsonschema.Draft202012Validator(schema)
     return _validator
 
@@ -144,7 +166,7 @@ def load_family(path):
 
 def load_spec(spec_dir=None):
     """All families in a spec folder, sorted by family name, with unique names."""
-    spec_dir = Path(spec_dir or DEFAULT_SPEC_DIR)
+    spec_dir = Path(spec_dir or default_spec().path)
     files = sorted(spec_dir.glob("*.yaml"))
     if not files:
         raise SpecError(spec_dir, None, "no *.yaml spec files in this folder")

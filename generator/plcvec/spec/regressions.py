@@ -13,10 +13,9 @@ import jsonschema
 from plcvec.cases.build import instruction_list
 from plcvec.errors import SpecError
 from plcvec.output.atomic import write_atomic
-from plcvec.spec.loader import DEFAULT_SPEC_DIR, line_of, read_text, validate
+from plcvec.spec.loader import line_of, read_text, schema_path, validate
 from plcvec.spec.yaml_lines import load_with_lines
 
-SCHEMA_PATH = DEFAULT_SPEC_DIR / "schema" / "regressions.schema.json"
 INPUTS = ("instruction", "operands", "devices", "scratch", "steps")
 TAG = "regression"
 NEW_FILE = ("# Regression cases of {family}: the inputs of vectors that once exposed a bug, each with a note saying\n"
@@ -74,7 +73,7 @@ def parse_regressions(path, text, fam):
     """The Regressions of `text` (the content of `path`), or a SpecError at the line of its first mistake."""
     global _validator
     if _validator is None:
-        _validator = jsonschema.Draft202012Validator(json.loads(SCHEMA_PATH.read_text()))
+        _validator = jsonschema.Draft202012Validator(json.loads(schema_path("regressions.schema.json").read_text()))
     cases, lines = load_with_lines(path, text)
     if not isinstance(cases, list):
         raise SpecError(path, 1, "a regression file is a list of cases (each starting with '- note:')")

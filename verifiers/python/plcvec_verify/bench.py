@@ -128,6 +128,6 @@ def print_verify_benchmark(vectors_dir) -> bool:
 
 
 if __name__ == "__main__":
-    from .command import DEFAULT_VECTORS
+    from .locate import default_vectors
 
-    print_verify_benchmark(sys.argv[1] if len(sys.argv) > 1 else DEFAULT_VECTORS)
+    print_verify_benchmark(sys.argv[1] if len(sys.argv) > 1 else default_vectors().path)

@@ -6,15 +6,14 @@ import sys
 from pathlib import Path
 
 from .errors import VerifyError
-
-DEFAULT_VECTORS = Path(__file__).resolve().parents[3] / "vectors"
+from .locate import default_vectors, default_vectors_text
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
     how = p.add_mutually_exclusive_group(required=True)
     how.add_argument("--adapter", metavar="CMD", help='run this adapter process, e.g. "./emu --plcvec" (PROTOCOL.md)')
     how.add_argument("--python", metavar="MODULE:CLASS", help="an adapter object in this process (adapters.py)")
-    p.add_argument("--vectors", default=str(DEFAULT_VECTORS), help="vector folder or family file (default: %(default)s)")
+    p.add_argument("--vectors", help=f"vector folder or family file (default: {default_vectors_text()})")
     sel = p.add_argument_group("selection (each repeatable; OR within one, AND across)")
     sel.add_argument("--family", action="append", default=[])
     sel.add_argument("--instruction", action="append", default=[], help='e.g. "LDDT<=" or "TADDP"')
@@ -82,7 +81,7 @@ def main_args(args) -> int:
     from .suite import Suite
 
     try:
-        suite = Suite.load(args.vectors)
+        suite = Suite.load(args.vectors or default_vectors().path)
         selection = build_selection(args)
         known = KnownFailures.load(args.expectations) if args.expectations else None
         adapter = make_adapter(args)

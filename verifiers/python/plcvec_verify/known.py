@@ -12,9 +12,14 @@ raised about skip lists). Ids are exact, not patterns, for the same reason.
 """
 from __future__ import annotations
 
-import tomllib
+import sys
 from dataclasses import dataclass
 from pathlib import Path
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # the same parser, published as a backport (a dependency below 3.11 only)
+    import tomli as tomllib
 
 from .atomic import write_atomic
 from .errors import VerifyError

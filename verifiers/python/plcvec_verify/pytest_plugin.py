@@ -20,7 +20,7 @@ def pytest_addoption(parser):
     g = parser.getgroup("plcvec", "plcvec conformance vectors")
     g.addoption("--plcvec-adapter", metavar="CMD", help="adapter process to verify (PROTOCOL.md)")
     g.addoption("--plcvec-python", metavar="MODULE:CLASS", help="adapter object to verify in process")
-    g.addoption("--plcvec-vectors", metavar="PATH", help="vector folder or file (default: the installed suite's vectors/)")
+    g.addoption("--plcvec-vectors", metavar="PATH", help="vector folder or file (default: the checkout's vectors/, else those installed with plcvec)")
     g.addoption("--plcvec-expectations", metavar="FILE", help="known failures (TOML)")
     g.addoption("--plcvec-choose", action="append", default=[], metavar="ID=ALT",
                 help="interpretation alternative the implementation follows, if its adapter does not declare it")
@@ -85,11 +85,11 @@ class VectorItem(pytest.Item):
 def pytest_configure(config):
     if not _enabled(config):
         return
-    from .command import DEFAULT_VECTORS
+    from .locate import default_vectors
     from .suite import Suite
 
     try:
-        config._plcvec_suite = Suite.load(config.getoption("plcvec_vectors") or DEFAULT_VECTORS)
+        config._plcvec_suite = Suite.load(config.getoption("plcvec_vectors") or default_vectors().path)
     except VerifyError as exc:
         raise pytest.UsageError(f"plcvec: {exc}")
     # Every tag becomes a marker (`-m boundary`), declared with the meaning the vector file gives it.
