@@ -1,0 +1,126 @@
+package plcvec
+
+import (
+	"fmt"
+	"sort"
+)
+
+// Problem is one field that differs: where, what the vector expects, what was reported.
+type Problem struct {
+	Step     int    // -1: about the vector as a whole (the number of steps)
+	Field    string // "result", a device name, or "steps"
+	Expected string // as the vector files write values: 13, true; or <not in the vector>
+	Actual   string // likewise; <not reported> when the implementation left it out
+	Before   string // a device's value before the step ("" when unknown or not a device)
+}
+
+const (
+	notReported = "<not reported>"
+	notListed   = "<not in the vector>"
+)
+
+// String is the problem as a line of a failure report.
+func (p Problem) String() string {
+	where := ""
+	if p.Step >= 0 {
+		where = fmt.Sprintf("step %d ", p.Step)
+	}
+	text := fmt.Sprintf("%s%s: expected %s, got %s", where, p.Field, p.Expected, p.Actual)
+	switch {
+	case p.Expected == notListed:
+		text += " (a write outside the vector: the instruction must not write it)"
+	case p.Before != "" && p.Before == p.Expected:
+		text += " (the step must leave it unchanged)"
+	case p.Before != "":
+		text += fmt.Sprintf(" (before the step: %s)", p.Before)
+	}
+	return text
+}
+
+func show(v Value) string {
+	if v == absent {
+		return notListed
+	}
+	return v.String()
+}
+
+// compare judges reported steps against the expectation: nil when everything matches exactly.
+func (e *expected) compare(steps []StepResult) []Problem {
+	if len(steps) != len(e.states) {
+		return []Problem{{Step: -1, Field: "steps", Expected: fmt.Sprintf("%d steps", len(e.states)),
+			Actual: fmt.Sprintf("%d steps", len(steps))}}
+	}
+	var problems []Problem
+	for i := range steps {
+		got := steps[i].Devices
+		want := e.states[i]
+		if r := e.results[i]; r != NoResult && steps[i].Result != r {
+			problems = append(problems, Problem{Step: i, Field: "result", Expected: r.String(), Actual: steps[i].Result.String()})
+		}
+		// Fast path: the image in the request's order, every compared value equal (Value's ==
+		// compares the JSON type too). Most vectors pass, and this is where a run spends its time.
+		if len(got) == len(e.names) {
+			same := true
+			for j := range got {
+				if got[j].Name != e.names[j] || (e.compared[j] && got[j].Value != want[j]) {
+					same = false
+					break
+				}
+			}
+			if same {
+				continue
+			}
+		}
+		problems = append(problems, e.deviceProblems(i, got)...)
+	}
+	return problems
+}
+
+// deviceProblems compares one step's image device by device, in name order.
+func (e *expected) deviceProblems(step int, got []Device) []Problem {
+	want, before := e.states[step], e.befores[step]
+	reported := make(map[string]Value, len(got))
+	var problems []Problem
+	for _, d := range got {
+		if _, dup := reported[d.Name]; dup {
+			problems = append(problems, Problem{Step: step, Field: d.Name, Expected: "one value",
+				Actual: "the device reported twice"})
+		}
+		reported[d.Name] = d.Value
+	}
+	listed := make(map[string]bool, len(e.names))
+	for j, name := range e.names {
+		listed[name] = true
+		if !e.compared[j] {
+			continue
+		}
+		have, ok := reported[name]
+		w := want[j]
+		switch {
+		case !ok && w == absent:
+		case !ok:
+			problems = append(problems, Problem{Step: step, Field: name, Expected: show(w), Actual: notReported, Before: showBefore(before[j])})
+		case have != w:
+			problems = append(problems, Problem{Step: step, Field: name, Expected: show(w), Actual: have.String(), Before: showBefore(before[j])})
+		}
+	}
+	var outside []string
+	for name := range reported {
+		if !listed[name] {
+			outside = append(outside, name)
+		}
+	}
+	sort.Strings(outside)
+	for _, name := range outside {
+		problems = append(problems, Problem{Step: step, Field: name, Expected: notListed, Actual: reported[name].String()})
+	}
+	sort.SliceStable(problems, func(a, b int) bool { return problems[a].Field < problems[b].Field })
+	return problems
+}
+
+func showBefore(v Value) string {
+	if v == absent {
+		return ""
+	}
+	return v.String()
+}

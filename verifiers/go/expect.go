@@ -1,0 +1,154 @@
+package plcvec
+
+import (
+	"fmt"
+	"sort"
+	"strings"
+)
+
+// absent marks a device that is not (yet) in the expected state.
+const absent Value = 1 << 31
+
+// expected is what one vector expects of an implementation that follows given alternatives.
+// A vector stores per step only the devices that changed, and the full state at the end;
+// implementations report the full image after every step, which is simpler for any emulator.
+// So the full expected state after each step is worked out here once, and checked against the
+// vector's own `final`, so that an inconsistent vector file is caught, not trusted.
+type expected struct {
+	names    []string  // every device of the vector, sorted (usually just the initial ones)
+	compared []bool    // parallel to names: false for scratch words
+	states   [][]Value // per step, parallel to names; absent where the state has no such device
+	befores  [][]Value // per step: the state the step started from (after `set`), for messages
+	results  []Result  // per step: the contact result expected, NoResult when none
+	choices  map[string]string
+	category string
+}
+
+func expectationOf(v *Vector, choices map[string]Choice, req *Request) (*expected, error) {
+	touched := v.Outcome.Interpretations
+	applied := make(map[string]string, len(touched))
+	isDefault := true
+	for _, id := range touched {
+		c, ok := choices[id]
+		if !ok {
+			return nil, fmt.Errorf("vector %s: depends on interpretation %s, which its file does not declare", v.ID, id)
+		}
+		applied[id] = c.Alternative
+		if c.Alternative != c.Default {
+			isDefault = false
+		}
+	}
+	stepExpects := make([]*Expect, len(v.Steps))
+	for i := range v.Steps {
+		stepExpects[i] = v.Steps[i].Expect
+	}
+	final := v.Final.Devices
+	category := v.Outcome.Category
+	if len(touched) > 0 && v.Outcome.Default != nil {
+		category = v.Outcome.Default.Category
+	}
+	if !isDefault {
+		found := false
+		for ai := range v.Alternatives {
+			alt := &v.Alternatives[ai]
+			match := true
+			for id, a := range applied {
+				if alt.Choices[id] != a {
+					match = false
+					break
+				}
+			}
+			if match {
+				for i := range alt.Expect {
+					stepExpects[i] = &alt.Expect[i]
+				}
+				final, category, found = alt.Final.Devices, alt.Outcome.Category, true
+				break
+			}
+		}
+		if !found {
+			keys := make([]string, 0, len(applied))
+			for id, a := range applied {
+				keys = append(keys, id+"="+a)
+			}
+			sort.Strings(keys)
+			return nil, fmt.Errorf("vector %s: no expectation for %s (the vector file lists no such alternative)",
+				v.ID, strings.Join(keys, ", "))
+		}
+	}
+
+	scratch := map[string]bool{}
+	for _, s := range v.Initial.Scratch {
+		scratch[s] = true
+	}
+	// The devices: the request's (sorted), then any other a step sets or expects.
+	names := make([]string, len(req.Devices))
+	index := make(map[string]int, len(req.Devices))
+	for i, d := range req.Devices {
+		names[i] = d.Name
+		index[d.Name] = i
+	}
+	extra := []string{}
+	note := func(name string) {
+		if _, ok := index[name]; !ok {
+			index[name] = -1
+			extra = append(extra, name)
+		}
+	}
+	for i, st := range v.Steps {
+		for name := range st.Set {
+			note(name)
+		}
+		for name := range stepExpects[i].Devices {
+			note(name)
+		}
+	}
+	for name := range final {
+		note(name)
+	}
+	if len(extra) > 0 {
+		names = append(names, extra...)
+		sort.Strings(names)
+		for i, n := range names {
+			index[n] = i
+		}
+	}
+	e := &expected{names: names, compared: make([]bool, len(names)), choices: applied, category: category}
+	state := make([]Value, len(names))
+	for i := range state {
+		state[i] = absent
+	}
+	for i, n := range names {
+		e.compared[i] = !scratch[n]
+		if val, ok := v.Initial.Devices[n]; ok {
+			state[i] = val
+		}
+	}
+	for i, st := range v.Steps {
+		for name, val := range st.Set {
+			state[index[name]] = val
+		}
+		e.befores = append(e.befores, append([]Value(nil), state...))
+		for name, val := range stepExpects[i].Devices {
+			state[index[name]] = val
+		}
+		e.states = append(e.states, append([]Value(nil), state...))
+		r := NoResult
+		if stepExpects[i].Result != nil {
+			r = Contact(*stepExpects[i].Result)
+		}
+		e.results = append(e.results, r)
+	}
+	last := e.states[len(e.states)-1]
+	for i, n := range names {
+		if scratch[n] {
+			continue
+		}
+		want, ok := final[n]
+		if (ok && last[i] != want) || (!ok && last[i] != absent) {
+			return nil, fmt.Errorf("vector %s: the per-step changes do not add up to `final` at %s "+
+				"(the vector file is inconsistent; regenerate it)", v.ID, n)
+		}
+	}
+	return e, nil
+}

@@ -1,0 +1,128 @@
+package plcvec
+
+import (
+	"errors"
+	"sort"
+)
+
+// Implementation is what the suite verifies, at the level of the contract (CONTRACT.md): it gets
+// one vector's initial state and its steps' inputs, and reports after each step the device
+// image and, for contact instructions, the result. An emulator that would rather only "execute
+// this instruction on my memory" implements Emulator and passes Emulate(e) instead.
+type Implementation interface {
+	// Hello says what the implementation is, which instructions it runs and which
+	// interpretation alternatives it follows (the handshake of PROTOCOL.md).
+	Hello() Hello
+	// Run runs every step of req from req's initial state, which it must not carry over from
+	// any earlier vector. It returns one StepResult per step, or Skip(reason) when it cannot run
+	// this vector (reported as skipped), or another error (reported as an error: the run fails).
+	Run(req *Request) ([]StepResult, error)
+}
+
+// Hello is an implementation's answer to the handshake.
+type Hello struct {
+	Name    string
+	Version string
+	// Instructions it runs, as in a vector's `instruction` (spec.Instr...). Vectors of other
+	// instructions are skipped. Nil means every instruction of the suite.
+	Instructions []string
+	// Interpretations: interpretation id -> the alternative followed (spec.Interp... ->
+	// spec.<Interp><Alternative>). Undeclared interpretations take their default.
+	Interpretations map[string]string
+}
+
+func (h Hello) supports(instruction string) bool {
+	return h.Instructions == nil || contains(h.Instructions, instruction)
+}
+
+// Result is the logic state after a contact instruction (LD/AND/OR forms). Instructions that
+// are not contacts (TADD, HOUR) report NoResult.
+type Result int8
+
+const (
+	NoResult Result = iota
+	ResultOff
+	ResultOn
+)
+
+// Contact is the Result of a contact whose logic state is on.
+func Contact(on bool) Result {
+	if on {
+		return ResultOn
+	}
+	return ResultOff
+}
+
+func (r Result) String() string {
+	switch r {
+	case ResultOn:
+		return "true"
+	case ResultOff:
+		return "false"
+	}
+	return "<not reported>"
+}
+
+// StepResult is the state after one step.
+type StepResult struct {
+	Result Result
+	// Devices: every device of the request (scratch words may be left out), plus any other
+	// device the step wrote. Any order; the request's order is the fastest to compare.
+	Devices []Device
+}
+
+// Request is one vector without its expectations: what an implementation needs to run it.
+type Request struct {
+	ID          string
+	Family      string
+	Instruction string
+	DeviceSizes map[string]int     // points of each device type: {"D": 8000} is D0..D7999
+	Devices     []Device           // the initial device image, sorted by name
+	Operands    map[string]Operand // s1, s2, d, S1, D1, C, ...
+	Scratch     []string           // work-area words: start at 0, never compared
+	Steps       []Inputs
+	addrs       []Addr // parallel to Devices
+}
+
+// NewRequest builds the request of a vector (or of a run message received over stdio).
+func NewRequest(id, family, instruction string, sizes map[string]int, devices map[string]Value,
+	operands map[string]Operand, scratch []string, steps []Inputs) *Request {
+	r := &Request{ID: id, Family: family, Instruction: instruction, DeviceSizes: sizes,
+		Operands: operands, Scratch: scratch, Steps: steps}
+	r.Devices = make([]Device, 0, len(devices))
+	for name, v := range devices {
+		r.Devices = append(r.Devices, Device{name, v})
+	}
+	sort.Slice(r.Devices, func(a, b int) bool { return r.Devices[a].Name < r.Devices[b].Name })
+	r.addrs = make([]Addr, len(r.Devices))
+	for i, d := range r.Devices {
+		r.addrs[i] = ParseAddr(d.Name)
+	}
+	return r
+}
+
+func requestOf(v *Vector) *Request {
+	steps := make([]Inputs, len(v.Steps))
+	for i, st := range v.Steps {
+		steps[i] = st.Inputs
+	}
+	return NewRequest(v.ID, v.Family, v.Instruction, v.Assumes.DeviceSizes, v.Initial.Devices,
+		v.Initial.Operands, v.Initial.Scratch, steps)
+}
+
+type skipError string
+
+func (e skipError) Error() string { return string(e) }
+
+// Skip is the error an implementation returns from Run for a vector it cannot run, saying why
+// ("no R devices"). It is reported as skipped, not failed.
+func Skip(reason string) error { return skipError(reason) }
+
+// IsSkip reports whether err is a Skip, and its reason.
+func IsSkip(err error) (string, bool) {
+	var s skipError
+	if errors.As(err, &s) {
+		return string(s), true
+	}
+	return "", false
+}

@@ -1,0 +1,316 @@
+package plcvec
+
+import (
+	"bytes"
+	"crypto/sha256"
+	"encoding/hex"
+	"encoding/json"
+	"errors"
+	"fmt"
+	"io/fs"
+	"os"
+	"path"
+	"path/filepath"
+	"sort"
+	"strconv"
+	"strings"
+	"sync"
+)
+
+// SchemaMajor is the major schema version this verifier reads (CONTRACT.md, "Versioning"): a 2.x
+// file may mean something else by the same fields, so it is refused rather than misread.
+const SchemaMajor = 1
+
+// EnvVectors names the environment variable that points the verifier at another copy of the
+// vectors than the one embedded in the package.
+const EnvVectors = "PLCVEC_VECTORS"
+
+// Suite is a loaded vector set: every family's header and vectors.
+type Suite struct {
+	Source        string // where it was read from ("embedded" or a path)
+	SuiteVersion  string
+	SchemaVersion string
+	SpecSHA256    string
+	Families      []string           // in file order
+	Headers       map[string]*Header // family -> header
+	Vectors       []*Vector          // family by family, each family sorted by id
+	byID          map[string]*Vector
+}
+
+// Vector returns the vector with this id, or nil.
+func (s *Suite) Vector(id string) *Vector { return s.byID[id] }
+
+var (
+	defaultOnce  sync.Once
+	defaultSuite *Suite
+	defaultErr   error
+)
+
+// Default is the suite a run uses unless told otherwise: the copy named by $PLCVEC_VECTORS if
+// it is set, else the copy embedded in this package. It is loaded once per process.
+func Default() (*Suite, error) {
+	defaultOnce.Do(func() {
+		if dir := os.Getenv(EnvVectors); dir != "" {
+			defaultSuite, defaultErr = Load(dir)
+			if defaultErr != nil {
+				defaultErr = fmt.Errorf("$%s: %w", EnvVectors, defaultErr)
+			}
+			return
+		}
+		defaultSuite, defaultErr = Embedded()
+	})
+	return defaultSuite, defaultErr
+}
+
+// Embedded loads the copy of the vectors compiled into this package.
+func Embedded() (*Suite, error) {
+	sub, err := fs.Sub(embedded, "vectors")
+	if err != nil {
+		return nil, err
+	}
+	return loadFS(sub, "embedded vectors", "(embedded)/")
+}
+
+// Load reads a vector set from a folder: the exported compact copy (index.json and one
+// <family>.jsonl each) or the repository's vectors/ folder (manifest.json and one <family>.json
+// each).
+func Load(dir string) (*Suite, error) {
+	info, err := os.Stat(dir)
+	if err != nil {
+		return nil, fmt.Errorf("%s: no such vector folder", dir)
+	}
+	if !info.IsDir() {
+		return nil, fmt.Errorf("%s: not a folder (give the folder holding index.json or manifest.json)", dir)
+	}
+	return loadFS(os.DirFS(dir), dir, strings.TrimSuffix(dir, string(filepath.Separator))+string(filepath.Separator))
+}
+
+// listing is what index.json (exported copy) and manifest.json (repository) have in common.
+type listing struct {
+	SuiteVersion     string `json:"suite_version"`
+	GeneratorVersion string `json:"generator_version"`
+	SchemaVersion    string `json:"schema_version"`
+	SpecSHA256       string `json:"spec_sha256"`
+	Total            *int   `json:"total"`
+	Families         map[string]struct {
+		File   string `json:"file"`
+		Count  *int   `json:"count"`
+		SHA256 string `json:"sha256"`
+	} `json:"families"`
+}
+
+func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
+	name, compact := "index.json", true
+	raw, err := fs.ReadFile(fsys, name)
+	if errors.Is(err, fs.ErrNotExist) {
+		name, compact = "manifest.json", false
+		raw, err = fs.ReadFile(fsys, name)
+	}
+	if err != nil {
+		return nil, fmt.Errorf("%s: no index.json (an exported copy) or manifest.json (a vector folder)", source)
+	}
+	var list listing
+	if err := json.Unmarshal(raw, &list); err != nil {
+		return nil, fmt.Errorf("%s%s:%d: not valid JSON (%v)", prefix, name, jsonErrorLine(raw, err), err)
+	}
+	if len(list.Families) == 0 {
+		return nil, fmt.Errorf("%s%s: no `families`; is this a plcvec vector folder?", prefix, name)
+	}
+	s := &Suite{Source: source, SuiteVersion: list.SuiteVersion, SpecSHA256: list.SpecSHA256,
+		Headers: map[string]*Header{}, byID: map[string]*Vector{}}
+	if s.SuiteVersion == "" {
+		s.SuiteVersion = list.GeneratorVersion
+	}
+	families := make([]string, 0, len(list.Families))
+	for f := range list.Families {
+		families = append(families, f)
+	}
+	sort.Strings(families)
+	versions := map[string]bool{}
+	for _, family := range families {
+		entry := list.Families[family]
+		if entry.File == "" || strings.Contains(entry.File, "..") {
+			return nil, fmt.Errorf("%s%s: family %s has no usable `file`", prefix, name, family)
+		}
+		data, err := fs.ReadFile(fsys, entry.File)
+		if err != nil {
+			return nil, fmt.Errorf("%s%s: cannot read it (listed in %s)", prefix, entry.File, name)
+		}
+		where := prefix + entry.File
+		if compact && entry.SHA256 != "" {
+			sum := sha256.Sum256(data)
+			if hex.EncodeToString(sum[:]) != entry.SHA256 {
+				return nil, fmt.Errorf("%s: its sha256 is not the one %s gives: the file is damaged or edited; export it again (plcvec export --lang go)", where, name)
+			}
+		}
+		var header *Header
+		var vectors []*Vector
+		if path.Ext(entry.File) == ".jsonl" {
+			header, vectors, err = parseJSONL(data, where)
+		} else {
+			header, vectors, err = parseFamilyJSON(data, where)
+		}
+		if err != nil {
+			return nil, err
+		}
+		if header.Family != family {
+			return nil, fmt.Errorf("%s: holds family %q, but %s lists it as %q", where, header.Family, name, family)
+		}
+		if entry.Count != nil && *entry.Count != len(vectors) {
+			return nil, fmt.Errorf("%s: %d vectors, but %s says %d (a truncated file?)", where, len(vectors), name, *entry.Count)
+		}
+		versions[header.SchemaVersion] = true
+		s.Families = append(s.Families, family)
+		s.Headers[family] = header
+		for _, v := range vectors {
+			if s.byID[v.ID] != nil {
+				return nil, fmt.Errorf("%s: vector id %s appears twice", where, v.ID)
+			}
+			s.byID[v.ID] = v
+		}
+		s.Vectors = append(s.Vectors, vectors...)
+	}
+	if list.Total != nil && *list.Total != len(s.Vectors) {
+		return nil, fmt.Errorf("%s%s: total %d, but the files hold %d vectors", prefix, name, *list.Total, len(s.Vectors))
+	}
+	all := make([]string, 0, len(versions))
+	for v := range versions {
+		all = append(all, v)
+	}
+	sort.Strings(all)
+	s.SchemaVersion = strings.Join(all, ", ")
+	if s.SchemaVersion == "" {
+		s.SchemaVersion = list.SchemaVersion
+	}
+	if _, err := s.interpretations(); err != nil {
+		return nil, err
+	}
+	return s, nil
+}
+
+func checkHeader(h *Header, where string) error {
+	if h.Family == "" {
+		return fmt.Errorf("%s: not a plcvec vector file (no `family`)", where)
+	}
+	major := strings.SplitN(h.SchemaVersion, ".", 2)[0]
+	if major != strconv.Itoa(SchemaMajor) {
+		v := h.SchemaVersion
+		if v == "" {
+			v = "(none)"
+		}
+		return fmt.Errorf("%s: schema_version %s is not %d.x; this verifier reads %d.x files only (see CONTRACT.md, Versioning)", where, v, SchemaMajor, SchemaMajor)
+	}
+	return nil
+}
+
+// parseJSONL reads an exported family file: line 1 the header, then one vector per line.
+func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
+	lines := bytes.Split(data, []byte("\n"))
+	if len(lines) > 0 && len(lines[len(lines)-1]) == 0 {
+		lines = lines[:len(lines)-1]
+	}
+	if len(lines) == 0 {
+		return nil, nil, fmt.Errorf("%s: empty; not a plcvec vector file", where)
+	}
+	header := &Header{}
+	if err := json.Unmarshal(lines[0], header); err != nil {
+		return nil, nil, fmt.Errorf("%s:1: the header is not valid (%v)", where, err)
+	}
+	if err := checkHeader(header, where); err != nil {
+		return nil, nil, err
+	}
+	vectors := make([]*Vector, 0, len(lines)-1)
+	for i, line := range lines[1:] {
+		lineNo := i + 2
+		v := &Vector{}
+		if err := json.Unmarshal(line, v); err != nil {
+			return nil, nil, fmt.Errorf("%s:%d: %s not a valid vector (%v)", where, lineNo, idOf(line), err)
+		}
+		if p := v.shapeProblem(header.Family); p != "" {
+			return nil, nil, fmt.Errorf("%s:%d: vector %s: %s (is the file a plcvec vector file, unedited?)", where, lineNo, nameOr(v.ID, lineNo), p)
+		}
+		vectors = append(vectors, v)
+	}
+	return header, vectors, nil
+}
+
+// parseFamilyJSON reads a repository family file: one JSON object, the header and `vectors`.
+func parseFamilyJSON(data []byte, where string) (*Header, []*Vector, error) {
+	var file struct {
+		Header
+		Vectors []json.RawMessage `json:"vectors"`
+	}
+	if err := json.Unmarshal(data, &file); err != nil {
+		return nil, nil, fmt.Errorf("%s:%d: not valid JSON (%v)", where, jsonErrorLine(data, err), err)
+	}
+	if err := checkHeader(&file.Header, where); err != nil {
+		return nil, nil, err
+	}
+	if file.Vectors == nil {
+		return nil, nil, fmt.Errorf("%s: not a plcvec vector file (no `vectors`)", where)
+	}
+	vectors := make([]*Vector, 0, len(file.Vectors))
+	for i, raw := range file.Vectors {
+		v := &Vector{}
+		if err := json.Unmarshal(raw, v); err != nil {
+			return nil, nil, fmt.Errorf("%s: vector %s: not a valid vector (%v)", where, nameOr(idOfString(raw), i), err)
+		}
+		if p := v.shapeProblem(file.Family); p != "" {
+			return nil, nil, fmt.Errorf("%s: vector %s: %s (is the file a plcvec vector file, unedited?)", where, nameOr(v.ID, i), p)
+		}
+		vectors = append(vectors, v)
+	}
+	h := file.Header
+	return &h, vectors, nil
+}
+
+func idOf(line []byte) string {
+	if id := idOfString(line); id != "" {
+		return "vector " + id + ":"
+	}
+	return "the line is"
+}
+
+// idOfString digs the id out of a vector that does not decode, so the error can name it.
+func idOfString(raw []byte) string {
+	var probe struct {
+		ID string `json:"id"`
+	}
+	_ = json.Unmarshal(raw, &probe)
+	if probe.ID == "" {
+		// A value error deeper in the object still leaves a readable id before it.
+		for _, key := range [][]byte{[]byte(`"id":"`), []byte(`"id": "`)} {
+			if i := bytes.Index(raw, key); i >= 0 {
+				rest := raw[i+len(key):]
+				if j := bytes.IndexByte(rest, '"'); j > 0 {
+					return string(rest[:j])
+				}
+			}
+		}
+	}
+	return probe.ID
+}
+
+func nameOr(id string, index int) string {
+	if id != "" {
+		return id
+	}
+	return "#" + strconv.Itoa(index)
+}
+
+func jsonErrorLine(data []byte, err error) int {
+	var syntax *json.SyntaxError
+	var typ *json.UnmarshalTypeError
+	offset := int64(-1)
+	if errors.As(err, &syntax) {
+		offset = syntax.Offset
+	} else if errors.As(err, &typ) {
+		offset = typ.Offset
+	}
+	if offset < 0 || offset > int64(len(data)) {
+		return 1
+	}
+	return bytes.Count(data[:offset], []byte("\n")) + 1
+}
+
+func itoa(n int) string { return strconv.Itoa(n) }

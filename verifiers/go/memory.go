@@ -1,0 +1,198 @@
+package plcvec
+
+// Memory is a vector's device image for the Emulator helper: the devices the vector lists,
+// each by name and address, and the writes to any device it does not list (which the runner
+// reports: an instruction must not write outside the vector).
+//
+// A device the vector does not list reads as 0 (false): CONTRACT.md leaves its value to the
+// implementation, and an instruction that depends on it is wrong whatever it reads.
+type Memory struct {
+	req     *Request
+	vals    []Value  // parallel to req.Devices
+	outside []Device // devices written that the vector does not list, in the order first written
+}
+
+// NewMemory is the initial device image of req.
+func NewMemory(req *Request) *Memory {
+	m := &Memory{req: req, vals: make([]Value, len(req.Devices))}
+	for i, d := range req.Devices {
+		m.vals[i] = d.Value
+	}
+	if req.addrs == nil {
+		req.addrs = make([]Addr, len(req.Devices))
+		for i, d := range req.Devices {
+			req.addrs[i] = ParseAddr(d.Name)
+		}
+	}
+	return m
+}
+
+func (m *Memory) index(a Addr) int {
+	for i := range m.req.addrs {
+		if m.req.addrs[i] == a {
+			return i
+		}
+	}
+	return -1
+}
+
+// Get returns a device's value and whether the image holds the device.
+func (m *Memory) Get(a Addr) (Value, bool) {
+	if i := m.index(a); i >= 0 {
+		return m.vals[i], true
+	}
+	name := a.String()
+	for _, d := range m.outside {
+		if d.Name == name {
+			return d.Value, true
+		}
+	}
+	return 0, false
+}
+
+// Word is the 16 bits of a word device (0 when the image does not hold it).
+func (m *Memory) Word(a Addr) uint16 {
+	v, _ := m.Get(a)
+	return v.Word()
+}
+
+// Words reads n consecutive words from a: D100, D101, ... (a multi-word operand).
+func (m *Memory) Words(a Addr, n int) []uint16 {
+	out := make([]uint16, n)
+	m.ReadWords(a, out)
+	return out
+}
+
+// ReadWords fills dst with len(dst) consecutive words from a, without allocating.
+func (m *Memory) ReadWords(a Addr, dst []uint16) {
+	for k := range dst {
+		dst[k] = m.Word(a.Offset(k))
+	}
+}
+
+// Bit is a bit device's state (false when the image does not hold it).
+func (m *Memory) Bit(a Addr) bool {
+	v, _ := m.Get(a)
+	return v.Bit()
+}
+
+// Set writes a device.
+func (m *Memory) Set(a Addr, v Value) {
+	if i := m.index(a); i >= 0 {
+		m.vals[i] = v
+		return
+	}
+	name := a.String()
+	for k := range m.outside {
+		if m.outside[k].Name == name {
+			m.outside[k].Value = v
+			return
+		}
+	}
+	m.outside = append(m.outside, Device{name, v})
+}
+
+// SetWord writes a word device.
+func (m *Memory) SetWord(a Addr, w uint16) { m.Set(a, Word(w)) }
+
+// SetWords writes consecutive words from a.
+func (m *Memory) SetWords(a Addr, words ...uint16) {
+	for k, w := range words {
+		m.Set(a.Offset(k), Word(w))
+	}
+}
+
+// SetBit writes a bit device.
+func (m *Memory) SetBit(a Addr, b bool) { m.Set(a, Bit(b)) }
+
+// InRange reports whether a .. a+words-1 all exist on the CPU the vector assumes
+// (assumes.device_sizes). A device type whose size the vector does not state is taken to exist.
+func (m *Memory) InRange(a Addr, words int) bool {
+	size, ok := m.req.DeviceSizes[a.Kind]
+	if !ok {
+		return true
+	}
+	return a.N >= 0 && a.N+words <= size
+}
+
+// Operand is the word value of a one-word operand: its constant (K/H) or its device's word.
+func (m *Memory) Operand(name string) uint16 {
+	op := m.req.Operands[name]
+	if op.Constant != nil {
+		return uint16(*op.Constant)
+	}
+	return m.Word(op.Addr())
+}
+
+// Request is the vector being run.
+func (m *Memory) Request() *Request { return m.req }
+
+// apply writes a step's `set` (values written by the outside world before the step).
+func (m *Memory) apply(set map[string]Value) {
+	for name, v := range set {
+		m.Set(ParseAddr(name), v)
+	}
+}
+
+// snapshot appends the whole image to dst: the request's devices in order, then the others.
+func (m *Memory) snapshot(dst []Device) []Device {
+	for i, d := range m.req.Devices {
+		dst = append(dst, Device{d.Name, m.vals[i]})
+	}
+	return append(dst, m.outside...)
+}
+
+// Emulator is the thin helper's interface, for an emulator that only wants to "execute this
+// instruction on my memory": Emulate turns it into an Implementation that sets up each
+// vector's memory, applies each step's `set`, and records the image after every step.
+type Emulator interface {
+	Hello() Hello
+	// NewCPU is a CPU in its power-on state for one vector: nothing carries over from another
+	// vector (not TADDP's previous execution condition, not HOUR's work area).
+	NewCPU(req *Request) (CPU, error)
+}
+
+// CPU executes one vector's instruction, once per step.
+type CPU interface {
+	// Execute runs the instruction once (one scan) with the step's inputs on mem and returns
+	// the contact result, or NoResult for an instruction that is not a contact.
+	Execute(mem *Memory, step *Inputs) (Result, error)
+}
+
+// Emulate is the Implementation that runs an Emulator.
+func Emulate(e Emulator) Implementation { return emulated{e} }
+
+type emulated struct{ e Emulator }
+
+func (em emulated) Hello() Hello { return em.e.Hello() }
+
+func (em emulated) Run(req *Request) ([]StepResult, error) {
+	cpu, err := em.e.NewCPU(req)
+	if err != nil {
+		return nil, err
+	}
+	mem := NewMemory(req)
+	n := len(req.Devices)
+	// One allocation for every step's image; an instruction rarely writes outside the vector.
+	images := make([]Device, 0, n*len(req.Steps))
+	out := make([]StepResult, len(req.Steps))
+	for i := range req.Steps {
+		step := &req.Steps[i]
+		if step.Set != nil {
+			mem.apply(step.Set)
+		}
+		r, err := cpu.Execute(mem, step)
+		if err != nil {
+			return nil, err
+		}
+		start := len(images)
+		if len(mem.outside) > 0 {
+			images = mem.snapshot(nil)
+			start = 0
+		} else {
+			images = mem.snapshot(images)
+		}
+		out[i] = StepResult{Result: r, Devices: images[start:len(images):len(images)]}
+	}
+	return out, nil
+}

@@ -1,0 +1,177 @@
+package reference
+
+// Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT (time comparison), from
+// cp1e-time-compare-DT.txt (W483 p. 2-93).
+
+import (
+	"fmt"
+	"strings"
+
+	"plcvec"
+	"plcvec/spec"
+)
+
+var pER = plcvec.Addr{Kind: "P_ER", N: -1}
+
+// The arithmetic flags: "the result of a time comparison instruction is reflected in the
+// arithmetic flags (=, <>, <, <=, >, >=)."
+var cp1eFlags = []struct {
+	condition string
+	addr      plcvec.Addr
+}{{"=", plcvec.Addr{Kind: "P_EQ", N: -1}}, {"<>", plcvec.Addr{Kind: "P_NE", N: -1}},
+	{"<", plcvec.Addr{Kind: "P_LT", N: -1}}, {"<=", plcvec.Addr{Kind: "P_LE", N: -1}},
+	{">", plcvec.Addr{Kind: "P_GT", N: -1}}, {">=", plcvec.Addr{Kind: "P_GE", N: -1}}}
+
+// cp1eField is one byte of the Calendar/Clock Area layout, most significant first:
+// "A351.00 to A351.07 Second (00 to 59, BCD)  A351.08 to A351.15 Minute (00 to 59, BCD)
+// A352.00 to A352.07 Hour (00 to 23, BCD)  A352.08 to A352.15 Day of month (01 to 31, BCD)
+// A353.00 to A353.07 Month (01 to 12, BCD)  A353.08 to A353.15 Year (00 to 99, BCD)"
+// "Bits 00 to 05 of C mask the seconds, minutes, hours, day, month, and year, respectively."
+type cp1eField struct {
+	word, shift uint
+	lo, hi      int
+	bit         uint
+}
+
+var cp1eFields = [6]cp1eField{
+	{2, 8, 0, 99, 5}, // year
+	{2, 0, 1, 12, 4}, // month
+	{1, 8, 1, 31, 3}, // day
+	{1, 0, 0, 23, 2}, // hour
+	{0, 8, 0, 59, 1}, // minute
+	{0, 0, 0, 59, 0}, // second
+}
+
+type cp1e struct {
+	parts                       Parts
+	form, condition             string
+	s1, s2                      plcvec.Addr
+	c                           plcvec.Operand
+	nonBCDError, rangeError     bool // CP1E-NON-BCD, CP1E-OUT-OF-RANGE
+	allMaskedError, highBitsErr bool // CP1E-ALL-MASKED, CP1E-C-HIGH-BITS
+	andSkipped, erEach          bool // CP1E-AND-OR-WHEN-OFF, CP1E-ER-FLAG
+}
+
+func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
+	c := &cp1e{parts: r.parts}
+	form, symbol, _ := strings.Cut(req.Instruction, " ")
+	if (form != "LD" && form != "AND" && form != "OR") || !strings.HasSuffix(symbol, "DT") ||
+		!knownCondition(strings.TrimSuffix(symbol, "DT")) {
+		return nil, fmt.Errorf("not a CP1E time comparison: %s", req.Instruction)
+	}
+	c.form, c.condition = form, strings.TrimSuffix(symbol, "DT")
+	s1, err := operand(req, "S1")
+	if err != nil {
+		return nil, err
+	}
+	s2, err := operand(req, "S2")
+	if err != nil {
+		return nil, err
+	}
+	if c.c, err = operand(req, "C"); err != nil {
+		return nil, err
+	}
+	c.s1, c.s2 = s1.Addr(), s2.Addr()
+	for _, q := range []struct {
+		id, when, other string
+		flag            *bool
+	}{
+		{spec.InterpCp1eNonBcd, spec.Cp1eNonBcdError, spec.Cp1eNonBcdRawBytes, &c.nonBCDError},
+		{spec.InterpCp1eOutOfRange, spec.Cp1eOutOfRangeError, spec.Cp1eOutOfRangeCompared, &c.rangeError},
+		{spec.InterpCp1eAllMasked, spec.Cp1eAllMaskedError, spec.Cp1eAllMaskedEqual, &c.allMaskedError},
+		{spec.InterpCp1eCHighBits, spec.Cp1eCHighBitsError, spec.Cp1eCHighBitsIgnored, &c.highBitsErr},
+		{spec.InterpCp1eAndOrWhenOff, spec.Cp1eAndOrWhenOffAndSkipped, spec.Cp1eAndOrWhenOffAlwaysExecuted, &c.andSkipped},
+		{spec.InterpCp1eErFlag, spec.Cp1eErFlagReflectsEachExecution, spec.Cp1eErFlagHeld, &c.erEach},
+	} {
+		alt, err := r.choice(q.id, q.when, q.other)
+		if err != nil {
+			return nil, err
+		}
+		*q.flag = alt == q.when
+	}
+	return c, nil
+}
+
+// Execute: "The time comparison instructions are treated just like the LD, AND, and OR
+// instructions to control the execution of subsequent instructions."
+func (c *cp1e) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
+	switch c.form {
+	case "LD":
+		return plcvec.Contact(c.evaluate(mem)), nil
+	case "AND":
+		if !step.RLOIn && c.andSkipped {
+			return plcvec.Contact(false), nil
+		}
+		return plcvec.Contact(c.parts.CP1EAnd(step.RLOIn, c.evaluate(mem))), nil
+	}
+	contact := c.evaluate(mem)
+	return plcvec.Contact(step.RLOIn || contact), nil
+}
+
+func isBCD(b int) bool   { return b>>4 <= 9 && b&0xF <= 9 }
+func bcdValue(b int) int { return b>>4*10 + b&0xF }
+
+func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
+	var s1, s2 [3]uint16
+	mem.ReadWords(c.s1, s1[:])
+	mem.ReadWords(c.s2, s2[:])
+	var ctl uint16
+	if c.c.Constant != nil {
+		ctl = uint16(*c.c.Constant)
+	} else {
+		ctl = mem.Word(c.c.Addr())
+	}
+	// Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS).
+	if ctl&0xFFC0 != 0 && c.highBitsErr {
+		return c.error(mem)
+	}
+	// "To mask a time value, set the corresponding bit in the control word (C) to 1."
+	// "compares the unmasked values (corresponding bit of C set to 0)"
+	order, unmasked := 0, 0
+	for _, f := range cp1eFields {
+		if c.parts.CP1EMasked(ctl, f.bit) {
+			continue
+		}
+		unmasked++
+		a, b := int(s1[f.word]>>f.shift&0xFF), int(s2[f.word]>>f.shift&0xFF)
+		for _, raw := range [2]int{a, b} {
+			if !isBCD(raw) {
+				if c.nonBCDError { // "Second (00 to 59, BCD)" ... (CP1E-NON-BCD)
+					return c.error(mem)
+				}
+			} else if v := bcdValue(raw); (v < f.lo || v > f.hi) && c.rangeError { // CP1E-OUT-OF-RANGE
+				return c.error(mem)
+			}
+		}
+		// "The time comparison instructions are limited to comparing 8-bit time values." For
+		// valid BCD the byte order is the numeric order; with raw-bytes the bytes are compared
+		// as unsigned 8-bit values.
+		if order == 0 && a != b {
+			order = 1
+			if a < b {
+				order = -1
+			}
+		}
+	}
+	if unmasked == 0 && c.allMaskedError {
+		return c.error(mem)
+	}
+	c.parts.CP1EReflectFlags(mem, order)
+	if c.erEach {
+		mem.SetBit(pER, false) // executed without error
+	}
+	return holds(c.condition, order)
+}
+
+// error: P_ER on, execution condition OFF, the six arithmetic flags untouched.
+func (c *cp1e) error(mem *plcvec.Memory) bool {
+	mem.SetBit(pER, true)
+	return false
+}
+
+// reflectFlags: the flag table's rows S1 = S2, S1 > S2, S1 < S2.
+func reflectFlags(mem *plcvec.Memory, order int) {
+	for _, f := range cp1eFlags {
+		mem.SetBit(f.addr, holds(f.condition, order))
+	}
+}

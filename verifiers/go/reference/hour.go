@@ -1,0 +1,140 @@
+package reference
+
+// IDEC FC6A MICROSmart: HOUR (hour meter), from fc6a-hour-meter-HOUR.txt.
+
+import (
+	"plcvec"
+	"plcvec/spec"
+)
+
+var m8004 = plcvec.Addr{Kind: "M", N: 8004} // "special internal relay M8004"
+
+// "the value returns to 0 hours 0 minutes 0 seconds" after "65,535 hours 59 minutes 59 seconds"
+const hourCycle = 65536 * 3600
+
+// hourMeter is an FC6A CPU executing one HOUR instruction per scan. The fraction of a second
+// already measured lives here (on the CPU it is in the system work area D3, D3+1, whose
+// contents vectors never compare).
+type hourMeter struct {
+	parts      Parts
+	s1         plcvec.Operand
+	d1, d2, d3 plcvec.Addr
+	recompared bool // HOUR-OUTPUT-OFF
+	resetOnOff bool // HOUR-INPUT-OFF
+	zeroNever  bool // HOUR-PRESET-ZERO
+	fractionMS int64
+	wrapped    bool // for "recompared": D2 stays on across a wrap
+}
+
+func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
+	if req.Instruction != spec.InstrHour {
+		return nil, plcvec.Skip("not HOUR: " + req.Instruction)
+	}
+	h := &hourMeter{parts: r.parts}
+	var err error
+	if h.s1, err = operand(req, "S1"); err != nil {
+		return nil, err
+	}
+	for _, o := range []struct {
+		name string
+		addr *plcvec.Addr
+	}{{"D1", &h.d1}, {"D2", &h.d2}, {"D3", &h.d3}} {
+		op, err := operand(req, o.name)
+		if err != nil {
+			if o.name == "D3" { // the work area is the CPU's own: a vector need not name it
+				continue
+			}
+			return nil, err
+		}
+		*o.addr = op.Addr()
+	}
+	output, err := r.choice(spec.InterpHourOutputOff, spec.HourOutputOffLatched, spec.HourOutputOffRecompared)
+	if err != nil {
+		return nil, err
+	}
+	input, err := r.choice(spec.InterpHourInputOff, spec.HourInputOffHold, spec.HourInputOffReset)
+	if err != nil {
+		return nil, err
+	}
+	zero, err := r.choice(spec.InterpHourPresetZero, spec.HourPresetZeroImmediate, spec.HourPresetZeroNever)
+	if err != nil {
+		return nil, err
+	}
+	h.recompared = output == spec.HourOutputOffRecompared
+	h.resetOnOff = input == spec.HourInputOffReset
+	h.zeroNever = zero == spec.HourPresetZeroNever
+	return h, nil
+}
+
+// measureKeepingFraction: "While input is on, the ON duration of the input is measured": all
+// the elapsed time counts, and the part of a second not yet whole is kept for the next scan.
+func measureKeepingFraction(fractionMS, elapsedMS int64) (int64, int64) {
+	total := fractionMS + elapsedMS
+	return total / 1000, total % 1000
+}
+
+func (h *hourMeter) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
+	if !step.Input {
+		if h.resetOnOff { // HOUR-INPUT-OFF
+			mem.SetWords(h.d1, 0, 0, 0)
+			h.fractionMS = 0
+		}
+		return plcvec.NoResult, nil
+	}
+	var whole int64
+	whole, h.fractionMS = h.parts.HourMeasure(h.fractionMS, step.ElapsedMS)
+	h.parts.HourWorkArea(mem, h.d3, h.fractionMS)
+	var d1 [3]uint16
+	mem.ReadWords(h.d1, d1[:])
+	total := int64(d1[0])*3600 + int64(d1[1])*60 + int64(d1[2]) + whole
+	// "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds, the
+	// value returns to 0 hours 0 minutes 0 seconds to repeat another measuring cycle, with the
+	// comparison output remaining on."
+	wrappedNow := total >= hourCycle
+	total %= hourCycle
+	mem.SetWords(h.d1, uint16(total/3600), uint16(total%3600/60), uint16(total%60))
+	if wrappedNow {
+		h.parts.HourOnWrap(mem, h.d2)
+	}
+
+	// "When source device S1 is designated by a constant, the preset value can be 0 through
+	// 65,535 in hours, then minutes and seconds are set to 0." A data register: "3 consecutive
+	// data registers ... to store hour, minute, and second data."
+	var p [3]uint16
+	if h.s1.Constant != nil {
+		p[0] = uint16(*h.s1.Constant)
+	} else {
+		mem.ReadWords(h.s1.Addr(), p[:])
+	}
+	// "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."
+	if p[1] > 59 || p[2] > 59 {
+		// "... a user program execution error will result, turning on special internal relay
+		// M8004 ... but the input ON duration is measured." "... is changed to an invalid value
+		// after the comparison output has turned on, the comparison output is turned off."
+		mem.SetBit(m8004, true)
+		mem.SetBit(h.d2, false)
+		return plcvec.NoResult, nil
+	}
+	preset := int64(p[0])*3600 + int64(p[1])*60 + int64(p[2])
+	// "When the measured input ON duration value in destination device D1 reaches the preset
+	// value designated by source device S1, the comparison output ... turns on."
+	reached := total >= preset
+	if preset == 0 && h.zeroNever {
+		reached = false
+	}
+	if !h.recompared {
+		if reached {
+			mem.SetBit(h.d2, true)
+		}
+		return plcvec.NoResult, nil
+	}
+	// recompared: D2 = D1 >= S1, except that it stays on across a wrap
+	if wrappedNow && mem.Bit(h.d2) {
+		h.wrapped = true
+	}
+	if reached {
+		h.wrapped = false
+	}
+	mem.SetBit(h.d2, reached || (h.wrapped && mem.Bit(h.d2)))
+	return plcvec.NoResult, nil
+}

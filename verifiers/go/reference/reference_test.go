@@ -1,0 +1,98 @@
+package reference_test
+
+import (
+	"sort"
+	"strings"
+	"testing"
+
+	"plcvec"
+	"plcvec/reference"
+)
+
+func mustNew(t testing.TB, choices map[string]string) plcvec.Implementation {
+	t.Helper()
+	r, err := reference.New(choices)
+	if err != nil {
+		t.Fatal(err)
+	}
+	return r.Implementation()
+}
+
+// TestReference runs every vector under the default alternatives, one subtest per vector id.
+func TestReference(t *testing.T) {
+	report := plcvec.Run(t, mustNew(t, nil), plcvec.Options{})
+	suite, err := plcvec.Default()
+	if err != nil {
+		t.Fatal(err)
+	}
+	if !t.Failed() && !testing.Short() && len(report.Verdicts) == len(suite.Vectors) {
+		if c := report.Counts(); c[plcvec.StatusPass] != len(suite.Vectors) {
+			t.Errorf("%d of %d vectors passed: %v", c[plcvec.StatusPass], len(suite.Vectors), c)
+		}
+	}
+}
+
+// combinations is every combination of the alternatives of the given interpretations, taken
+// from the loaded suite (never a list typed here: an alternative the spec gains is run too).
+func combinations(interps []plcvec.Interpretation) []map[string]string {
+	out := []map[string]string{{}}
+	for _, i := range interps {
+		var next []map[string]string
+		for _, combo := range out {
+			for _, alt := range i.Alternatives {
+				c := map[string]string{i.ID: alt}
+				for k, v := range combo {
+					c[k] = v
+				}
+				next = append(next, c)
+			}
+		}
+		out = next
+	}
+	return out
+}
+
+// TestEveryCombination: the reference passes every vector of every family under every
+// combination of that family's interpretation alternatives, as the Python reference does.
+func TestEveryCombination(t *testing.T) {
+	suite, err := plcvec.Default()
+	if err != nil {
+		t.Fatal(err)
+	}
+	for _, family := range suite.Families {
+		var interps []plcvec.Interpretation
+		for _, i := range suite.Interpretations() {
+			for _, f := range i.Families {
+				if f == family {
+					interps = append(interps, i)
+				}
+			}
+		}
+		combos := combinations(interps)
+		if len(combos) < 2 {
+			t.Errorf("%s: %d combinations of alternatives; expected the family to have interpretations", family, len(combos))
+		}
+		for _, choices := range combos {
+			keys := make([]string, 0, len(choices))
+			for k, v := range choices {
+				keys = append(keys, k+"="+v)
+			}
+			sort.Strings(keys)
+			name := family + "/" + strings.Join(keys, ",")
+			t.Run(name, func(t *testing.T) {
+				report, err := plcvec.Verify(mustNew(t, choices), plcvec.Options{
+					Suite: suite, Selection: plcvec.Selection{Families: []string{family}}})
+				if err != nil {
+					t.Fatal(err)
+				}
+				for _, v := range report.Failed() {
+					t.Error("\n" + v.Text())
+				}
+				c := report.Counts()
+				if c[plcvec.StatusPass] != len(report.Verdicts) || c[plcvec.StatusPass] == 0 {
+					t.Errorf("%v", c)
+				}
+			})
+		}
+	}
+}

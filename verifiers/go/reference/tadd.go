@@ -1,0 +1,169 @@
+package reference
+
+// Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data), from fx5-time-add-TADD.txt.
+
+import (
+	"fmt"
+
+	"plcvec"
+	"plcvec/spec"
+)
+
+const day = 24 * 3600
+
+var (
+	// "SM700 Carry ... SM8020 Zero ... SM8022 Carry"
+	sm700, sm8020, sm8022 = plcvec.Addr{Kind: "SM", N: 700}, plcvec.Addr{Kind: "SM", N: 8020}, plcvec.Addr{Kind: "SM", N: 8022}
+	// "Error code (SD0/SD8067)"
+	errorRegisters = []plcvec.Addr{{Kind: "SD", N: 0}, {Kind: "SD", N: 8067}}
+	// "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)"
+	taddRanges = [3][2]int{{0, 23}, {0, 59}, {0, 59}}
+)
+
+const (
+	errDeviceRange = 0x2820 // "The device range specified by (s1), (s2), and (d) exceeds ..."
+	errValueRange  = 0x3405 // "Any of values specified by (s1) and (s2) is outside the following range."
+)
+
+type tadd struct {
+	parts        Parts
+	pulse        bool
+	s1, s2, d    plcvec.Addr
+	flagsEach    bool // TADD-FLAGS-OFF: written-each-execution
+	carryAt24    bool // TADD-EXACT-24
+	computeOnErr bool // TADD-ON-ERROR: computed
+	previousEN   bool // TADDP: the state before the first scan is off
+}
+
+func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
+	t := &tadd{parts: r.parts}
+	switch req.Instruction {
+	case spec.InstrTadd:
+	case spec.InstrTaddp:
+		t.pulse = true
+	default:
+		return nil, fmt.Errorf("not TADD/TADDP: %s", req.Instruction)
+	}
+	for _, o := range []struct {
+		name string
+		addr *plcvec.Addr
+	}{{"s1", &t.s1}, {"s2", &t.s2}, {"d", &t.d}} {
+		op, err := operand(req, o.name)
+		if err != nil {
+			return nil, err
+		}
+		*o.addr = op.Addr()
+	}
+	flags, err := r.choice(spec.InterpTaddFlagsOff, spec.TaddFlagsOffWrittenEachExecution, spec.TaddFlagsOffSetOnly)
+	if err != nil {
+		return nil, err
+	}
+	exact, err := r.choice(spec.InterpTaddExact24, spec.TaddExact24CarryAt24, spec.TaddExact24CarryAbove24)
+	if err != nil {
+		return nil, err
+	}
+	onError, err := r.choice(spec.InterpTaddOnError, spec.TaddOnErrorNotExecuted, spec.TaddOnErrorComputed)
+	if err != nil {
+		return nil, err
+	}
+	if r.parts.TADDOnError != "" {
+		onError = r.parts.TADDOnError
+	}
+	t.flagsEach = flags == spec.TaddFlagsOffWrittenEachExecution
+	t.carryAt24 = exact == spec.TaddExact24CarryAt24
+	t.computeOnErr = onError == spec.TaddOnErrorComputed
+	return t, nil
+}
+
+// taddRuns: TADD executes every scan while EN is on; TADDP on the rising edge of EN only.
+func taddRuns(pulse, en, previous bool) bool {
+	if pulse {
+		return en && !previous
+	}
+	return en
+}
+
+func (t *tadd) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
+	run := t.parts.TADDRuns(t.pulse, step.EN, t.previousEN)
+	t.previousEN = step.EN
+	if run {
+		t.add(mem)
+	}
+	return plcvec.NoResult, nil
+}
+
+func (t *tadd) add(mem *plcvec.Memory) {
+	// "2820H The device range specified by (s1), (s2), and (d) exceeds the corresponding device
+	// range." Nothing is read or written. ("These instructions occupy three points for each of
+	// three devices")
+	for _, a := range []plcvec.Addr{t.s1, t.s2, t.d} {
+		if !mem.InRange(a, 3) {
+			t.error(mem, errDeviceRange)
+			return
+		}
+	}
+	var raw [3]uint16
+	var s1, s2 [3]int
+	mem.ReadWords(t.s1, raw[:])
+	for k := range raw {
+		s1[k] = signed16(raw[k])
+	}
+	mem.ReadWords(t.s2, raw[:])
+	for k := range raw {
+		s2[k] = signed16(raw[k])
+	}
+	for k, r := range taddRanges {
+		if s1[k] < r[0] || s1[k] > r[1] || s2[k] < r[0] || s2[k] > r[1] {
+			t.error(mem, errValueRange)
+			if !t.computeOnErr {
+				return
+			}
+			break
+		}
+	}
+	total := (s1[0]+s2[0])*3600 + (s1[1]+s2[1])*60 + (s1[2] + s2[2])
+	result, carry := t.parts.TADDWrap(total, t.carryAt24)
+	mem.SetWords(t.d, uint16(result/3600), uint16(result%3600/60), uint16(result%60))
+	// "If the result is 0 (0:00:00), the zero flag turns on."
+	t.setFlags(mem, carry, result == 0)
+}
+
+// wrapDay: "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result
+// will be the sum minus 24:00:00." But: "If 1 second is added to 23:59:59, the result will be
+// 0:00:00. This turns on both the carry flag and the zero flag." -> TADD-EXACT-24.
+func wrapDay(total int, carryAt24 bool) (int, bool) {
+	carry := total > day
+	if carryAt24 {
+		carry = total >= day
+	}
+	result := total % day
+	if result < 0 { // a negative word (invalid data computed under TADD-ON-ERROR=computed)
+		result += day
+	}
+	return result, carry
+}
+
+func (t *tadd) setFlags(mem *plcvec.Memory, carry, zero bool) {
+	if t.flagsEach {
+		for _, f := range t.parts.TADDCarryFlags {
+			mem.SetBit(f, carry)
+		}
+		mem.SetBit(sm8020, zero)
+		return
+	}
+	// set-only: an execution only ever turns a flag on
+	if carry {
+		for _, f := range t.parts.TADDCarryFlags {
+			mem.SetBit(f, true)
+		}
+	}
+	if zero {
+		mem.SetBit(sm8020, true)
+	}
+}
+
+func (t *tadd) error(mem *plcvec.Memory, code uint16) {
+	for _, r := range errorRegisters {
+		mem.SetWord(r, code)
+	}
+}

@@ -1,0 +1,152 @@
+package plcvec
+
+import "encoding/json"
+
+// Vector is one test vector as the vector files hold it (vectors/schema/vector-file.schema.json).
+// Fields a later minor schema version adds are ignored, as CONTRACT.md asks.
+type Vector struct {
+	ID           string          `json:"id"`
+	Family       string          `json:"family"`
+	Instruction  string          `json:"instruction"`
+	ST           string          `json:"st"`
+	Description  string          `json:"description"`
+	Tags         []string        `json:"tags"`
+	Clauses      []string        `json:"clauses"`
+	Assumes      Assumes         `json:"assumes"`
+	Initial      *Initial        `json:"initial"`
+	Steps        []VectorStep    `json:"steps"`
+	Final        *State          `json:"final"`
+	Outcome      *Outcome        `json:"outcome"`
+	Alternatives []Alternative   `json:"alternatives"`
+	Printed      json.RawMessage `json:"printed,omitempty"`
+}
+
+// Assumes holds what the vector assumes of the CPU: the number of points of each device type.
+type Assumes struct {
+	DeviceSizes map[string]int `json:"device_sizes"`
+}
+
+// Initial is the state a vector starts from.
+type Initial struct {
+	Devices  map[string]Value   `json:"devices"`
+	Operands map[string]Operand `json:"operands"`
+	// Scratch words are the implementation's own work area: never compared.
+	Scratch []string `json:"scratch"`
+}
+
+// Operand is {"device": "D100"} or {"constant": 7}.
+type Operand struct {
+	Device   string `json:"device,omitempty"`
+	Constant *int   `json:"constant,omitempty"`
+}
+
+// IsConstant reports whether the operand is a K/H constant rather than a device.
+func (o Operand) IsConstant() bool { return o.Constant != nil }
+
+// Addr is the operand's device address (its first word for a multi-word operand).
+func (o Operand) Addr() Addr { return ParseAddr(o.Device) }
+
+// Inputs are the inputs of one execution (one scan); which ones a step holds depends on the
+// family (CONTRACT.md, "Executing"). Absent inputs are zero.
+type Inputs struct {
+	Set       map[string]Value `json:"set,omitempty"`
+	RLOIn     bool             `json:"rlo_in"`
+	Clock     map[string]int   `json:"clock,omitempty"`
+	EN        bool             `json:"en"`
+	Input     bool             `json:"input"`
+	ElapsedMS int64            `json:"elapsed_ms"`
+}
+
+// VectorStep is one step of a vector: its inputs and what it expects.
+type VectorStep struct {
+	Inputs
+	Expect *Expect `json:"expect"`
+}
+
+// Expect is what one step expects: the contact result (LD/AND/OR forms) and the devices whose
+// value changed in the step.
+type Expect struct {
+	Result  *bool            `json:"result,omitempty"`
+	Devices map[string]Value `json:"devices"`
+}
+
+// State is a full device image.
+type State struct {
+	Devices map[string]Value `json:"devices"`
+}
+
+// Outcome is the vector's outcome category; for `implementation-defined`, the interpretations
+// it depends on and the outcome under their defaults.
+type Outcome struct {
+	Category        string          `json:"category"`
+	Interpretations []string        `json:"interpretations,omitempty"`
+	Reason          string          `json:"reason,omitempty"`
+	Default         *Outcome        `json:"default,omitempty"`
+	Errors          json.RawMessage `json:"errors,omitempty"`
+}
+
+// Alternative is the expectation under one combination of interpretation alternatives.
+type Alternative struct {
+	Choices map[string]string `json:"choices"`
+	Expect  []Expect          `json:"expect"`
+	Final   State             `json:"final"`
+	Outcome Outcome           `json:"outcome"`
+}
+
+// Header is a family file's header: everything but the vectors.
+type Header struct {
+	Family          string                 `json:"family"`
+	Kind            string                 `json:"kind"`
+	Title           string                 `json:"title"`
+	SchemaVersion   string                 `json:"schema_version"`
+	SpecSHA256      string                 `json:"spec_sha256"`
+	Instructions    []string               `json:"instructions"`
+	Tags            map[string]string      `json:"tags"`
+	Interpretations []HeaderInterpretation `json:"interpretations"`
+	Count           int                    `json:"count"`
+}
+
+// HeaderInterpretation is one interpretation as a family file declares it.
+type HeaderInterpretation struct {
+	ID           string `json:"id"`
+	Question     string `json:"question"`
+	Default      string `json:"default"`
+	Alternatives []struct {
+		ID   string `json:"id"`
+		Says string `json:"says"`
+	} `json:"alternatives"`
+}
+
+// shapeProblem names what a vector lacks that the runner needs, or "" (the full schema is
+// vectors/schema/; this is what is read, checked once at load so a damaged file is named).
+func (v *Vector) shapeProblem(family string) string {
+	switch {
+	case v.ID == "":
+		return "no `id`"
+	case v.Family == "":
+		return "no `family`"
+	case v.Family != family:
+		return "family " + v.Family + " in a " + family + " file"
+	case v.Instruction == "":
+		return "no `instruction`"
+	case v.Initial == nil || v.Initial.Devices == nil || v.Initial.Operands == nil:
+		return "`initial` needs `devices` and `operands`"
+	case len(v.Steps) == 0:
+		return "no `steps`"
+	case v.Final == nil || v.Final.Devices == nil:
+		return "`final` needs `devices`"
+	case v.Outcome == nil || v.Outcome.Category == "":
+		return "no `outcome`"
+	}
+	for i, st := range v.Steps {
+		if st.Expect == nil {
+			return "step " + itoa(i) + " has no `expect`"
+		}
+	}
+	for i, a := range v.Alternatives {
+		if len(a.Expect) != len(v.Steps) {
+			return "alternative " + itoa(i) + " has " + itoa(len(a.Expect)) + " expectations for " + itoa(len(v.Steps)) + " steps"
+		}
+	}
+	return ""
+}

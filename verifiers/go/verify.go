@@ -1,0 +1,229 @@
+package plcvec
+
+import (
+	"fmt"
+	"runtime/debug"
+	"sort"
+	"strings"
+)
+
+// Status is a vector's verdict. Only pass, skip and xfail let a run pass.
+type Status string
+
+const (
+	StatusPass  Status = "pass"
+	StatusFail  Status = "fail"
+	StatusError Status = "error"
+	StatusSkip  Status = "skip"
+	StatusXFail Status = "xfail"
+	StatusStale Status = "stale"
+)
+
+// Failing reports whether the status fails a run.
+func (s Status) Failing() bool { return s == StatusFail || s == StatusError || s == StatusStale }
+
+// Verdict is the judgement of one vector.
+type Verdict struct {
+	ID          string
+	Family      string
+	Instruction string
+	Status      Status
+	Problems    []Problem         // for Fail: the fields that differ
+	Message     string            // for Error, Skip, XFail, Stale: why
+	Choices     map[string]string // interpretation -> alternative the vector was judged by (those it depends on)
+	Vector      *Vector           // nil for an expectations-file id the suite does not have
+}
+
+// Options tell a run what to verify.
+type Options struct {
+	// Suite to run; nil is Default(): $PLCVEC_VECTORS or the embedded copy.
+	Suite *Suite
+	// Selection of vectors; the zero value selects all. A selection that selects nothing is an
+	// error: a gate never passes by accident.
+	Selection Selection
+	// Expectations is the path of a TOML expectations file of known failures (CONTRACT.md):
+	// a listed vector that fails is xfail, one that passes is stale and fails the run.
+	Expectations string
+}
+
+// Plan is a run prepared once: the selected vectors with their requests and their expectations
+// under the implementation's alternatives. Verify prepares one; a benchmark keeps it and judges
+// the same vectors again and again.
+type Plan struct {
+	Suite   *Suite
+	Hello   Hello
+	Choices map[string]Choice // every interpretation of the suite
+	Cases   []*Case
+	Known   *KnownFailures // nil without an expectations file
+}
+
+// Case is one selected vector with its request and expectation.
+type Case struct {
+	Vector  *Vector
+	Request *Request
+	expect  *expected // nil when the implementation does not run the instruction
+}
+
+// Prepare builds the plan of a run of impl: handshake, selection, expectations.
+func Prepare(impl Implementation, opts Options) (*Plan, error) {
+	suite := opts.Suite
+	if suite == nil {
+		var err error
+		if suite, err = Default(); err != nil {
+			return nil, err
+		}
+	}
+	vectors, err := suite.Select(opts.Selection)
+	if err != nil {
+		return nil, err
+	}
+	if len(vectors) == 0 {
+		return nil, fmt.Errorf("the selection selects no vector of %s (%d vectors): nothing would be verified", suite.Source, len(suite.Vectors))
+	}
+	hello := impl.Hello()
+	choices, err := suite.resolveChoices(hello.Interpretations)
+	if err != nil {
+		return nil, err
+	}
+	p := &Plan{Suite: suite, Hello: hello, Choices: choices, Cases: make([]*Case, len(vectors))}
+	for i, v := range vectors {
+		c := &Case{Vector: v, Request: requestOf(v)}
+		if hello.supports(v.Instruction) {
+			if c.expect, err = expectationOf(v, choices, c.Request); err != nil {
+				return nil, fmt.Errorf("%s: %w", suite.Source, err)
+			}
+		}
+		p.Cases[i] = c
+	}
+	if opts.Expectations != "" {
+		if p.Known, err = LoadKnownFailures(opts.Expectations); err != nil {
+			return nil, err
+		}
+	}
+	return p, nil
+}
+
+// Judge runs one case through impl and judges it (before known failures are applied).
+func (c *Case) Judge(impl Implementation) (verdict Verdict) {
+	v := c.Vector
+	verdict = Verdict{ID: v.ID, Family: v.Family, Instruction: v.Instruction, Vector: v}
+	if c.expect == nil {
+		verdict.Status, verdict.Message = StatusSkip, "the implementation does not run "+v.Instruction
+		return verdict
+	}
+	verdict.Choices = c.expect.choices
+	defer func() {
+		// An implementation that panics on one vector fails that vector, not the run.
+		if r := recover(); r != nil {
+			verdict.Status = StatusError
+			verdict.Message = fmt.Sprintf("the implementation panicked: %v\n%s", r, trimStack(debug.Stack()))
+		}
+	}()
+	steps, err := impl.Run(c.Request)
+	if err != nil {
+		if reason, ok := IsSkip(err); ok {
+			verdict.Status, verdict.Message = StatusSkip, reason
+		} else {
+			verdict.Status, verdict.Message = StatusError, "the implementation reported an error: "+err.Error()
+		}
+		return verdict
+	}
+	if verdict.Problems = c.expect.compare(steps); verdict.Problems != nil {
+		verdict.Status = StatusFail
+	} else {
+		verdict.Status = StatusPass
+	}
+	return verdict
+}
+
+// trimStack keeps the frames below the panic, not the runner's own.
+func trimStack(stack []byte) string {
+	lines := strings.Split(string(stack), "\n")
+	for i, l := range lines {
+		if strings.HasPrefix(l, "panic(") && i+2 < len(lines) {
+			lines = lines[i+2:]
+			break
+		}
+	}
+	if len(lines) > 12 {
+		lines = lines[:12]
+	}
+	return strings.Join(lines, "\n")
+}
+
+// Run is a whole run's verdicts with what they were judged against.
+type Report struct {
+	Plan     *Plan
+	Verdicts []Verdict
+}
+
+// Verify runs the selected vectors through impl outside `go test` (a command, a benchmark, a
+// CI tool); Run is the same inside a test, one subtest per vector.
+func Verify(impl Implementation, opts Options) (*Report, error) {
+	plan, err := Prepare(impl, opts)
+	if err != nil {
+		return nil, err
+	}
+	return plan.Verify(impl), nil
+}
+
+// Verify judges every case of the plan with impl, then applies the expectations file.
+func (p *Plan) Verify(impl Implementation) *Report {
+	r := &Report{Plan: p, Verdicts: make([]Verdict, len(p.Cases))}
+	for i, c := range p.Cases {
+		r.Verdicts[i] = c.Judge(impl)
+	}
+	if p.Known != nil {
+		for i := range r.Verdicts {
+			p.Known.apply(&r.Verdicts[i])
+		}
+		r.Verdicts = append(r.Verdicts, p.Known.unknownIDs(p.Suite)...)
+	}
+	return r
+}
+
+// Counts is the number of verdicts of each status.
+func (r *Report) Counts() map[Status]int {
+	out := map[Status]int{}
+	for _, v := range r.Verdicts {
+		out[v.Status]++
+	}
+	return out
+}
+
+// Failed lists the verdicts that fail the run.
+func (r *Report) Failed() []Verdict {
+	var out []Verdict
+	for _, v := range r.Verdicts {
+		if v.Status.Failing() {
+			out = append(out, v)
+		}
+	}
+	return out
+}
+
+// OK reports whether the run passes: nothing failed, and at least one vector was really run
+// (an implementation that skips everything is not a pass).
+func (r *Report) OK() bool {
+	c := r.Counts()
+	return len(r.Failed()) == 0 && c[StatusPass]+c[StatusXFail] > 0
+}
+
+// Interpretations is a line naming the alternative followed for every interpretation, declared
+// or default: a result means nothing without it.
+func (p *Plan) Interpretations() string {
+	ids := make([]string, 0, len(p.Choices))
+	for id := range p.Choices {
+		ids = append(ids, id)
+	}
+	sort.Strings(ids)
+	parts := make([]string, len(ids))
+	for i, id := range ids {
+		c := p.Choices[id]
+		parts[i] = id + "=" + c.Alternative
+		if !c.Declared {
+			parts[i] += " (default)"
+		}
+	}
+	return strings.Join(parts, ", ")
+}
