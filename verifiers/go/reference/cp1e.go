@@ -43,13 +43,13 @@ var cp1eFields = [6]cp1eField{
 }
 
 type cp1e struct {
-	parts                       Parts
-	form, condition             string
-	s1, s2                      plcvec.Addr
-	c                           plcvec.Operand
-	nonBCDError, rangeError     bool // CP1E-NON-BCD, CP1E-OUT-OF-RANGE
-	allMaskedError, highBitsErr bool // CP1E-ALL-MASKED, CP1E-C-HIGH-BITS
-	andSkipped, erEach          bool // CP1E-AND-OR-WHEN-OFF, CP1E-ER-FLAG
+	parts                   Parts
+	form, condition         string
+	s1, s2                  plcvec.Addr
+	c                       plcvec.Operand
+	nonBCDError, rangeError bool   // CP1E-NON-BCD, CP1E-OUT-OF-RANGE
+	highBitsErr, erEach     bool   // CP1E-C-HIGH-BITS, CP1E-ER-FLAG
+	allMasked, andOrWhenOff string // CP1E-ALL-MASKED, CP1E-AND-OR-WHEN-OFF
 }
 
 func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
@@ -78,9 +78,7 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	}{
 		{spec.InterpCp1eNonBcd, spec.Cp1eNonBcdError, spec.Cp1eNonBcdRawBytes, &c.nonBCDError},
 		{spec.InterpCp1eOutOfRange, spec.Cp1eOutOfRangeError, spec.Cp1eOutOfRangeCompared, &c.rangeError},
-		{spec.InterpCp1eAllMasked, spec.Cp1eAllMaskedError, spec.Cp1eAllMaskedEqual, &c.allMaskedError},
 		{spec.InterpCp1eCHighBits, spec.Cp1eCHighBitsError, spec.Cp1eCHighBitsIgnored, &c.highBitsErr},
-		{spec.InterpCp1eAndOrWhenOff, spec.Cp1eAndOrWhenOffAndSkipped, spec.Cp1eAndOrWhenOffAlwaysExecuted, &c.andSkipped},
 		{spec.InterpCp1eErFlag, spec.Cp1eErFlagReflectsEachExecution, spec.Cp1eErFlagHeld, &c.erEach},
 	} {
 		alt, err := r.choice(q.id, q.when, q.other)
@@ -88,6 +86,14 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 			return nil, err
 		}
 		*q.flag = alt == q.when
+	}
+	if c.allMasked, err = r.choice(spec.InterpCp1eAllMasked, spec.Cp1eAllMaskedError, spec.Cp1eAllMaskedEqual,
+		spec.Cp1eAllMaskedNotCompared); err != nil {
+		return nil, err
+	}
+	if c.andOrWhenOff, err = r.choice(spec.InterpCp1eAndOrWhenOff, spec.Cp1eAndOrWhenOffAlwaysExecuted,
+		spec.Cp1eAndOrWhenOffAndSkipped, spec.Cp1eAndOrWhenOffShortCircuit); err != nil {
+		return nil, err
 	}
 	return c, nil
 }
@@ -99,10 +105,13 @@ func (c *cp1e) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, 
 	case "LD":
 		return plcvec.Contact(c.evaluate(mem)), nil
 	case "AND":
-		if !step.RLOIn && c.andSkipped {
+		if !step.RLOIn && c.andOrWhenOff != spec.Cp1eAndOrWhenOffAlwaysExecuted {
 			return plcvec.Contact(false), nil
 		}
 		return plcvec.Contact(c.parts.CP1EAnd(step.RLOIn, c.evaluate(mem))), nil
+	}
+	if step.RLOIn && c.andOrWhenOff == spec.Cp1eAndOrWhenOffShortCircuit {
+		return plcvec.Contact(true), nil
 	}
 	contact := c.evaluate(mem)
 	return plcvec.Contact(step.RLOIn || contact), nil
@@ -127,12 +136,28 @@ func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
 	}
 	// "To mask a time value, set the corresponding bit in the control word (C) to 1."
 	// "compares the unmasked values (corresponding bit of C set to 0)"
-	order, unmasked := 0, 0
+	unmasked := 0
+	for _, f := range cp1eFields {
+		if !c.parts.CP1EMasked(ctl, f.bit) {
+			unmasked++
+		}
+	}
+	switch {
+	case unmasked > 0:
+	case c.allMasked == spec.Cp1eAllMaskedError:
+		return c.error(mem)
+	case c.allMasked == spec.Cp1eAllMaskedNotCompared:
+		// Nothing compared, no result: OFF, flags untouched, no error.
+		if c.erEach {
+			mem.SetBit(pER, false)
+		}
+		return false
+	}
+	order := 0
 	for _, f := range cp1eFields {
 		if c.parts.CP1EMasked(ctl, f.bit) {
 			continue
 		}
-		unmasked++
 		a, b := int(s1[f.word]>>f.shift&0xFF), int(s2[f.word]>>f.shift&0xFF)
 		for _, raw := range [2]int{a, b} {
 			if !isBCD(raw) {
@@ -152,9 +177,6 @@ func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
 				order = -1
 			}
 		}
-	}
-	if unmasked == 0 && c.allMaskedError {
-		return c.error(mem)
 	}
 	c.parts.CP1EReflectFlags(mem, order)
 	if c.erEach {

@@ -38,7 +38,7 @@ type fx5Compare struct {
 	condition    string // =, <>, >, <=, <, >=
 	s1, s2       plcvec.Addr
 	s3           plcvec.Operand
-	allWords     bool   // FX5-SM709-SCOPE
+	scope        string // FX5-SM709-SCOPE
 	andOrWhenOff string // FX5-AND-OR-WHEN-OFF
 	checkClockS2 bool   // FX5-CLOCK-S2-DEVICE-RANGE
 }
@@ -70,11 +70,10 @@ func newFX5Compare(r *Reference, req *plcvec.Request, fields [3]field) (plcvec.C
 		return nil, err
 	}
 	c.s1, c.s2 = s1.Addr(), s2.Addr()
-	scope, err := r.choice(spec.InterpFx5Sm709Scope, spec.Fx5Sm709ScopeSelectedFields, spec.Fx5Sm709ScopeAllWords)
-	if err != nil {
+	if c.scope, err = r.choice(spec.InterpFx5Sm709Scope, spec.Fx5Sm709ScopeSelectedFields,
+		spec.Fx5Sm709ScopeAllWords, spec.Fx5Sm709ScopeComparedOperands); err != nil {
 		return nil, err
 	}
-	c.allWords = scope == spec.Fx5Sm709ScopeAllWords
 	if c.andOrWhenOff, err = r.choice(spec.InterpFx5AndOrWhenOff, spec.Fx5AndOrWhenOffAndSkipped,
 		spec.Fx5AndOrWhenOffAlwaysExecuted, spec.Fx5AndOrWhenOffShortCircuit); err != nil {
 		return nil, err
@@ -171,14 +170,24 @@ func (c *fx5Compare) evaluate(mem *plcvec.Memory, step *plcvec.Inputs) bool {
 	// "If the comparison target data in the device are not recognized as time data, SM709 turns
 	// on after the instruction is executed and the operation result will be non-continuity."
 	// Which words are "comparison target data" is interpretation FX5-SM709-SCOPE.
-	if c.allWords {
+	switch c.scope {
+	case spec.Fx5Sm709ScopeAllWords: // every word, whether or not the comparison is made
 		if c.outOfRange(s1, 0xFFFF) || (!useClock && c.outOfRange(s2, 0xFFFF)) {
 			return c.invalid(mem)
 		}
 		if !s3Valid {
 			return false
 		}
-	} else {
+	case spec.Fx5Sm709ScopeComparedOperands:
+		// The operands are "comparison target data" as a whole, but only when the table says
+		// they "are compared": not for a selector that compares nothing.
+		if !s3Valid {
+			return false
+		}
+		if c.outOfRange(s1, 0xFFFF) || (!useClock && c.outOfRange(s2, 0xFFFF)) {
+			return c.invalid(mem)
+		}
+	default: // selected-fields: a masked word is not comparison target data
 		if !s3Valid {
 			return false
 		}

@@ -19,9 +19,9 @@ type hourMeter struct {
 	parts      Parts
 	s1         plcvec.Operand
 	d1, d2, d3 plcvec.Addr
-	recompared bool // HOUR-OUTPUT-OFF
-	resetOnOff bool // HOUR-INPUT-OFF
-	zeroNever  bool // HOUR-PRESET-ZERO
+	recompared bool   // HOUR-OUTPUT-OFF
+	inputOff   string // HOUR-INPUT-OFF
+	zeroNever  bool   // HOUR-PRESET-ZERO
 	fractionMS int64
 	wrapped    bool // for "recompared": D2 stays on across a wrap
 }
@@ -52,8 +52,8 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if err != nil {
 		return nil, err
 	}
-	input, err := r.choice(spec.InterpHourInputOff, spec.HourInputOffHold, spec.HourInputOffReset)
-	if err != nil {
+	if h.inputOff, err = r.choice(spec.InterpHourInputOff, spec.HourInputOffHold, spec.HourInputOffReset,
+		spec.HourInputOffHoldDropFraction); err != nil {
 		return nil, err
 	}
 	zero, err := r.choice(spec.InterpHourPresetZero, spec.HourPresetZeroImmediate, spec.HourPresetZeroNever)
@@ -61,7 +61,6 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 		return nil, err
 	}
 	h.recompared = output == spec.HourOutputOffRecompared
-	h.resetOnOff = input == spec.HourInputOffReset
 	h.zeroNever = zero == spec.HourPresetZeroNever
 	return h, nil
 }
@@ -75,9 +74,12 @@ func measureKeepingFraction(fractionMS, elapsedMS int64) (int64, int64) {
 
 func (h *hourMeter) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
 	if !step.Input {
-		if h.resetOnOff { // HOUR-INPUT-OFF
+		switch h.inputOff { // HOUR-INPUT-OFF
+		case spec.HourInputOffReset:
 			mem.SetWords(h.d1, 0, 0, 0)
 			h.fractionMS = 0
+		case spec.HourInputOffHoldDropFraction:
+			h.fractionMS = 0 // D1 kept; the part of a second is lost
 		}
 		return plcvec.NoResult, nil
 	}

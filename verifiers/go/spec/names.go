@@ -13,7 +13,7 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "16e04a093d32a18911a4d612d43f0be0055f67c54c6d46f8804222ff37135a24"
+const SpecSHA256 = "90c2e2a0e8b4a5d89805b7e473f0bd4ec243612a5aa1faeca464e99c0de22e12"
 
 // Total is the number of vectors in the exported copy.
 const Total = 2899
@@ -198,6 +198,9 @@ const Cp1eAllMaskedError = "error"
 // Cp1eAllMaskedEqual: Nothing is compared, so the data are equal: =, <=, >= on.
 const Cp1eAllMaskedEqual = "equal"
 
+// Cp1eAllMaskedNotCompared: Nothing is compared, so no comparison condition holds: the execution condition is OFF, the six flags are left as they were, and it is no error (P_ER is written off like any execution without error).
+const Cp1eAllMaskedNotCompared = "not-compared"
+
 // InterpCp1eCHighBits: What do bits 06 to 15 of C do?
 const InterpCp1eCHighBits = "CP1E-C-HIGH-BITS"
 
@@ -215,6 +218,9 @@ const Cp1eAndOrWhenOffAlwaysExecuted = "always-executed"
 
 // Cp1eAndOrWhenOffAndSkipped: An AND form with its execution condition OFF is not executed and leaves the flags as they were.
 const Cp1eAndOrWhenOffAndSkipped = "and-skipped"
+
+// Cp1eAndOrWhenOffShortCircuit: An AND form with its execution condition OFF and an OR form with it ON are not executed (their result is already decided) and leave the flags as they were.
+const Cp1eAndOrWhenOffShortCircuit = "short-circuit"
 
 // InterpCp1eErFlag: Once the Error Flag is on, does the next execution that ends without error turn it off again?
 const InterpCp1eErFlag = "CP1E-ER-FLAG"
@@ -243,6 +249,9 @@ const HourInputOffHold = "hold"
 // HourInputOffReset: While the input is off D1 returns to 0:00:00 and the fraction is dropped; D2 is kept.
 const HourInputOffReset = "reset"
 
+// HourInputOffHoldDropFraction: While the input is off D1 and D2 are kept, but the fraction of a second counted in the work area is dropped: each ON period counts whole seconds from its own start.
+const HourInputOffHoldDropFraction = "hold-drop-fraction"
+
 // InterpHourPresetZero: Does a preset of 0:00:00 turn D2 on?
 const InterpHourPresetZero = "HOUR-PRESET-ZERO"
 
@@ -260,6 +269,9 @@ const Fx5Sm709ScopeSelectedFields = "selected-fields"
 
 // Fx5Sm709ScopeAllWords: All three words of (s1) and, unless (s2) is ignored, of (s2) are checked whenever the instruction executes.
 const Fx5Sm709ScopeAllWords = "all-words"
+
+// Fx5Sm709ScopeComparedOperands: All three words of each compared operand ((s1) and, unless (s2) is ignored, (s2)) are checked, but only when a comparison is made: (s3) has no reserved bit set and selects at least one field. A selector that compares nothing checks nothing.
+const Fx5Sm709ScopeComparedOperands = "compared-operands"
 
 // InterpFx5AndOrWhenOff: Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on?
 const InterpFx5AndOrWhenOff = "FX5-AND-OR-WHEN-OFF"
@@ -343,14 +355,14 @@ var Families = []Family{
 var Interpretations = []Interpretation{
 	{ID: InterpCp1eNonBcd, Question: "What happens when a field of S1 or S2 is not BCD (a nibble above 9)?", Default: Cp1eNonBcdError, Alternatives: []string{Cp1eNonBcdError, Cp1eNonBcdRawBytes}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpCp1eOutOfRange, Question: "Is a BCD field outside its range (minute 75, month 13, day 00) an error, or compared as it is?", Default: Cp1eOutOfRangeCompared, Alternatives: []string{Cp1eOutOfRangeCompared, Cp1eOutOfRangeError}, Families: []string{"cp1e-time-compare"}},
-	{ID: InterpCp1eAllMasked, Question: "What is the result when C masks all six fields?", Default: Cp1eAllMaskedError, Alternatives: []string{Cp1eAllMaskedError, Cp1eAllMaskedEqual}, Families: []string{"cp1e-time-compare"}},
+	{ID: InterpCp1eAllMasked, Question: "What is the result when C masks all six fields?", Default: Cp1eAllMaskedError, Alternatives: []string{Cp1eAllMaskedError, Cp1eAllMaskedEqual, Cp1eAllMaskedNotCompared}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpCp1eCHighBits, Question: "What do bits 06 to 15 of C do?", Default: Cp1eCHighBitsIgnored, Alternatives: []string{Cp1eCHighBitsIgnored, Cp1eCHighBitsError}, Families: []string{"cp1e-time-compare"}},
-	{ID: InterpCp1eAndOrWhenOff, Question: "Does an AND form execute, and update the flags, while its execution condition is OFF?", Default: Cp1eAndOrWhenOffAlwaysExecuted, Alternatives: []string{Cp1eAndOrWhenOffAlwaysExecuted, Cp1eAndOrWhenOffAndSkipped}, Families: []string{"cp1e-time-compare"}},
+	{ID: InterpCp1eAndOrWhenOff, Question: "Does an AND form execute, and update the flags, while its execution condition is OFF?", Default: Cp1eAndOrWhenOffAlwaysExecuted, Alternatives: []string{Cp1eAndOrWhenOffAlwaysExecuted, Cp1eAndOrWhenOffAndSkipped, Cp1eAndOrWhenOffShortCircuit}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpCp1eErFlag, Question: "Once the Error Flag is on, does the next execution that ends without error turn it off again?", Default: Cp1eErFlagReflectsEachExecution, Alternatives: []string{Cp1eErFlagReflectsEachExecution, Cp1eErFlagHeld}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpHourOutputOff, Question: "What turns D2 off, other than an invalid preset?", Default: HourOutputOffLatched, Alternatives: []string{HourOutputOffLatched, HourOutputOffRecompared}, Families: []string{"fc6a-hour-meter"}},
-	{ID: InterpHourInputOff, Question: "Does D1 hold its value while the input is off, or is it cleared?", Default: HourInputOffHold, Alternatives: []string{HourInputOffHold, HourInputOffReset}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourInputOff, Question: "Does D1 hold its value while the input is off, or is it cleared?", Default: HourInputOffHold, Alternatives: []string{HourInputOffHold, HourInputOffReset, HourInputOffHoldDropFraction}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourPresetZero, Question: "Does a preset of 0:00:00 turn D2 on?", Default: HourPresetZeroImmediate, Alternatives: []string{HourPresetZeroImmediate, HourPresetZeroNever}, Families: []string{"fc6a-hour-meter"}},
-	{ID: InterpFx5Sm709Scope, Question: "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?", Default: Fx5Sm709ScopeSelectedFields, Alternatives: []string{Fx5Sm709ScopeSelectedFields, Fx5Sm709ScopeAllWords}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
+	{ID: InterpFx5Sm709Scope, Question: "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?", Default: Fx5Sm709ScopeSelectedFields, Alternatives: []string{Fx5Sm709ScopeSelectedFields, Fx5Sm709ScopeAllWords, Fx5Sm709ScopeComparedOperands}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5AndOrWhenOff, Question: "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on?", Default: Fx5AndOrWhenOffAndSkipped, Alternatives: []string{Fx5AndOrWhenOffAndSkipped, Fx5AndOrWhenOffAlwaysExecuted, Fx5AndOrWhenOffShortCircuit}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5ClockS2DeviceRange, Question: "In current-date mode (s2) is dummy data; is its device range still checked?", Default: Fx5ClockS2DeviceRangeIgnored, Alternatives: []string{Fx5ClockS2DeviceRangeIgnored, Fx5ClockS2DeviceRangeChecked}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpTaddFlagsOff, Question: "Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?", Default: TaddFlagsOffWrittenEachExecution, Alternatives: []string{TaddFlagsOffWrittenEachExecution, TaddFlagsOffSetOnly}, Families: []string{"fx5-time-add"}},
