@@ -5,6 +5,8 @@ tests/adapters/faulty.py answers correctly except on one target vector, and buff
 per batch as most real adapters do; the runner has to find the culprit itself.
 """
 import json
+import os
+import signal
 import subprocess
 import sys
 import time
@@ -19,6 +21,21 @@ from conftest import REPO
 FAULTY = Path(__file__).parent / "adapters" / "faulty.py"
 FAMILY = Selection(families=("fx5-time-add",))
 TIMEOUT = 1.0
+BOUND_S = 60     # no test here may take longer, whatever the runner does
+
+
+@pytest.fixture(autouse=True)
+def bounded():
+    """Fail a test whose run hangs, rather than hang the suite: the runner's waits are under test."""
+    def expired(signum, frame):
+        raise TimeoutError(f"the test did not finish within {BOUND_S} s")
+    previous = signal.signal(signal.SIGALRM, expired)
+    signal.alarm(BOUND_S)
+    try:
+        yield
+    finally:
+        signal.alarm(0)
+        signal.signal(signal.SIGALRM, previous)
 
 
 @pytest.fixture(scope="module")
@@ -36,15 +53,20 @@ def faulty(mode, target, batch_size=16):
     return StdioAdapter([sys.executable, str(FAULTY), mode, target], timeout=TIMEOUT, batch_size=batch_size)
 
 
-@pytest.mark.parametrize("mode, message", [
+FAULTS = [
     ("crash", "the adapter was killed by SIGABRT"),
     ("hang", f"no answer within {TIMEOUT:g} s (timeout); the adapter was killed"),
     ("garbage", "the adapter wrote a line that is not JSON: 'Segmentation fault in module clock.c'"),
     ("unknown-id", "the adapter answered id 'no-such/vector', which was not sent"),
+    ("no-id", "the adapter wrote a message with no vector id: "),
     ("exit-early", "the adapter exited with status 0 before answering"),
+    ("close-stdout", "the adapter closed its stdout but kept running; it was killed"),
     ("wrong-shape", "the result does not match result.schema.json: at steps/0/devices/D100: 'twelve'"),
     ("duplicate", "answered {target} twice"),
-])
+]
+
+
+@pytest.mark.parametrize("mode, message", FAULTS, ids=[mode for mode, _ in FAULTS])
 def test_fault_is_blamed_on_the_vector_being_run(suite, target, mode, message):
     start = time.monotonic()
     report = run(suite, faulty(mode, target), FAMILY)
@@ -72,13 +94,45 @@ def test_stderr_is_kept_as_a_note_on_the_vector_not_a_failure(suite, target):
     assert {r.id for r in noted} <= set(ids[ids.index(target):ids.index(target) + 2])
 
 
-@pytest.mark.parametrize("mode, message", [
+HANDSHAKE_FAULTS = [
     ("bad-hello", "the handshake answer does not match hello-response.schema.json"),
     ("fatal-hello", "refused the handshake: this adapter needs a license key"),
-])
+    ("hang-hello", f"no handshake: no answer within {TIMEOUT:g} s"),
+    ("garbage-hello", "the handshake answer is not JSON: 'Welcome to EmuPLC 2.1'"),
+    ("two-hellos", "wrote 2 lines for the handshake, expected one"),
+    ("new-protocol", "speaks protocol 2; this runner speaks 1"),
+]
+
+
+@pytest.mark.parametrize("mode, message", HANDSHAKE_FAULTS, ids=[mode for mode, _ in HANDSHAKE_FAULTS])
 def test_handshake_faults_stop_the_run_with_a_message(suite, mode, message):
-    with pytest.raises(VerifyError, match=message):
+    start = time.monotonic()
+    with pytest.raises(VerifyError) as e:
         run(suite, faulty(mode, ""), FAMILY)
+    assert message in str(e.value)
+    assert time.monotonic() - start < TIMEOUT + 10
+
+
+def test_a_fatal_message_mid_run_stops_the_run_and_keeps_the_results(suite, target):
+    """`fatal` means the adapter cannot go on (PROTOCOL.md): no restart, exit 2, verdicts kept."""
+    report = run(suite, faulty("fatal-run", target), FAMILY)
+    assert report.exit_code == 2
+    assert f"the adapter gave up while running {target}: emulator licence expired" in report.aborted
+    statuses = {r.id: r.status for r in report.results}
+    ids = [v["id"] for v in FAMILY.apply(suite.vectors)]
+    # Answered before the target: judged; from the target on: not run.
+    assert {statuses[i] for i in ids[:ids.index(target)]} == {"pass"}
+    assert {statuses[i] for i in ids[ids.index(target):]} == {"not-run"}
+
+
+def test_an_adapter_that_ignores_bye_is_killed_after_the_grace(suite):
+    from plcvec_verify.stdio import EXIT_GRACE_S
+
+    start = time.monotonic()
+    report = run(suite, faulty("ignore-bye", ""), Selection(ids=(FAMILY.apply(suite.vectors)[0]["id"],)))
+    assert report.exit_code == 0
+    assert f"adapter did not exit within {EXIT_GRACE_S:.0f} s of `bye`; killed" in report.notes
+    assert time.monotonic() - start < EXIT_GRACE_S + 10
 
 
 def test_an_adapter_that_crashes_on_everything_is_given_up_and_results_are_kept(suite, tmp_path):
@@ -121,3 +175,102 @@ def test_a_fault_on_the_last_vector_leaves_the_adapter_usable(suite, target):
     (answer,) = list(adapter.answers([request_of(other)]))
     assert answer.fault is None and answer.id == other["id"] and "steps" in answer.message
     adapter.close()
+
+
+def test_a_line_that_never_ends_is_a_fault_not_a_memory_leak(suite, target, monkeypatch):
+    from plcvec_verify import stdio
+
+    monkeypatch.setattr(stdio, "MAX_LINE_BYTES", 1 << 20)
+    report = run(suite, faulty("endless-line", target), FAMILY)
+    bad = {r.id: r for r in report.results if r.status != "pass"}
+    assert list(bad) == [target], {k: r.message for k, r in bad.items()}
+    assert "the adapter wrote a line longer than 1 MiB without a newline: 'xxxx" in bad[target].message
+    assert f"(while running {target})" in bad[target].message
+
+
+# -- the runner itself stopped -----------------------------------------------------------------
+
+SPAWNER = Path(__file__).parent / "adapters" / "spawner.py"
+
+
+def _alive(pid: int) -> bool:
+    """Running (a zombie waiting to be reaped counts as ended)."""
+    try:
+        stat = Path(f"/proc/{pid}/stat").read_text()
+    except (FileNotFoundError, ProcessLookupError):
+        return False
+    return stat.rsplit(")", 1)[1].split()[0] != "Z"
+
+
+def _wait_for(predicate, seconds: float) -> bool:
+    end = time.monotonic() + seconds
+    while time.monotonic() < end:
+        if predicate():
+            return True
+        time.sleep(0.05)
+    return predicate()
+
+
+def _spawned(pidfile: Path, seconds: float = 60):
+    """The adapter's and its child's pids, once the spawner has written them."""
+    assert _wait_for(lambda: pidfile.exists() and len(pidfile.read_text().split()) >= 2, seconds), \
+        "the adapter did not start"
+    return [int(x) for x in pidfile.read_text().split()[:2]]
+
+
+def _reap(pids):
+    """Leave nothing behind when a test fails half-way (only the processes this test started)."""
+    for pid in pids:
+        if _alive(pid):
+            os.kill(pid, signal.SIGKILL)
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT], ids=lambda s: s.name)
+def test_stopping_verify_ends_the_adapter_and_its_child_and_writes_the_reports(tmp_path, signum):
+    pidfile, jsonl, junit = tmp_path / "pids", tmp_path / "r.jsonl", tmp_path / "r.xml"
+    proc = subprocess.Popen([sys.executable, "-m", "plcvec", "verify", "--adapter",
+                             f"{sys.executable} {SPAWNER} {pidfile}", "--family", "fx5-time-add",
+                             "--timeout", "300", "--jsonl", str(jsonl), "--junit", str(junit)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    pids = []
+    try:
+        pids = _spawned(pidfile)
+        assert _wait_for(lambda: "answered" in pidfile.read_text(), 60)
+        assert all(_alive(p) for p in pids)
+        proc.send_signal(signum)
+        out, err = proc.communicate(timeout=30)
+        # Ended by the runner, not by a timeout (300 s) nor by the end of its stdin.
+        assert _wait_for(lambda: not any(_alive(p) for p in pids), 10), "an adapter process was left running"
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate(timeout=30)
+        _reap(pids)
+    assert proc.returncode == 128 + signum, err
+    assert f"stopped by {signum.name}" in err and "Traceback" not in err
+    lines = [json.loads(x) for x in jsonl.read_text().splitlines()]
+    statuses = [x["status"] for x in lines if x["type"] == "vector"]
+    assert len(statuses) == len(FAMILY.apply(Suite.load(REPO / "vectors").vectors))
+    assert set(statuses) <= {"pass", "not-run"} and "not-run" in statuses
+    assert lines[-1]["exit_code"] == 128 + signum and signum.name in lines[-1]["aborted"]
+    assert junit.read_text().rstrip().endswith("</testsuites>")
+
+
+def test_an_adapter_left_running_is_ended_when_the_interpreter_exits(tmp_path):
+    """A library caller that never calls close(): atexit still ends the adapter and its child."""
+    pidfile = tmp_path / "pids"
+    script = (
+        "import sys\n"
+        "from plcvec_verify import StdioAdapter, Suite\n"
+        "from plcvec_verify.protocol import hello_request\n"
+        f"suite = Suite.load({str(REPO / 'vectors')!r})\n"
+        f"adapter = StdioAdapter([sys.executable, {str(SPAWNER)!r}, {str(pidfile)!r}])\n"
+        "adapter.hello(hello_request(suite, ['fx5-time-add']))\n"
+        "sys.exit(0)\n")
+    pids = []
+    try:
+        subprocess.run([sys.executable, "-c", script], timeout=60, check=True)
+        pids = _spawned(pidfile, 1)
+        assert _wait_for(lambda: not any(_alive(p) for p in pids), 10), "an adapter process was left running"
+    finally:
+        _reap(pids)

@@ -74,6 +74,19 @@ def make_adapter(args):
 
 
 def main_args(args) -> int:
+    from .stdio import end_all
+    from .stopping import Stopped, stop_on_signals
+
+    try:
+        with stop_on_signals():
+            return _verify(args)
+    except Stopped as exc:   # stopped outside the run itself (loading, writing reports)
+        end_all()
+        print(f"plcvec verify: {exc}", file=sys.stderr)
+        return exc.exit_code
+
+
+def _verify(args) -> int:
     from . import reports
     from .known import KnownFailures, write_expectations
     from .progress import Progress

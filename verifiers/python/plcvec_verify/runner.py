@@ -16,6 +16,7 @@ from .errors import VerifyError
 from .expect import expected_of, request_of
 from .known import KnownFailures
 from .protocol import hello_request, result_errors, result_shape_ok
+from .stopping import Stopped
 from .suite import Selection, Suite
 
 # Result statuses. Only the first three let a run pass.
@@ -47,6 +48,7 @@ class RunReport:
     aborted: str = ""
     notes: list = field(default_factory=list)   # adapter notes not tied to a vector
     selection: Selection = field(default_factory=Selection)
+    stopped: int = 0                            # the signal that stopped the run, if one did
 
     def count(self, status):
         return sum(1 for r in self.results if r.status == status)
@@ -61,6 +63,8 @@ class RunReport:
 
     @property
     def exit_code(self):
+        if self.stopped:
+            return 128 + self.stopped
         if self.aborted:
             return 2
         return 1 if self.failed else 0
@@ -163,10 +167,20 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
                 progress(done, total, failed)
     except AdapterAbort as exc:
         report.aborted = str(exc)
-    finally:
+    except Stopped as exc:
+        report.aborted, report.stopped = str(exc), exc.signum
+    except BaseException:
+        # KeyboardInterrupt in a library caller, or a bug: the adapter must not outlive the run.
+        _end(adapter)
+        raise
+    if report.stopped:
+        _end(adapter)
+    elif not keep_open or report.aborted:
         try:
-            if not keep_open or report.aborted:
-                adapter.close()
+            adapter.close()
+        except Stopped as exc:
+            report.aborted, report.stopped = str(exc), exc.signum
+            _end(adapter)
         except Exception as exc:  # closing must never lose the results
             report.notes.append(f"closing the adapter: {type(exc).__name__}: {exc}")
     for v in runnable:
@@ -183,6 +197,15 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
         known.apply(report.results, suite)
     report.seconds = time.perf_counter() - started
     return report
+
+
+def _end(adapter):
+    """End the adapter at once: a process is killed with its children, an object is closed."""
+    end = getattr(adapter, "terminate", None) or adapter.close
+    try:
+        end()
+    except Exception:   # ending is best effort; the exception being handled matters more
+        pass
 
 
 __all__ = ["run", "Plan", "RunReport", "VectorResult", "Problem", "STATUSES", "FAILING",

@@ -6,15 +6,22 @@ runner between batches. One single-threaded loop on non-blocking pipes does the 
 reading of stdout and stderr, and the timeouts, so a stuck adapter can never block the runner
 (a blocking write into a full pipe while the adapter blocks writing to us would deadlock).
 
-Faults (the process crashing or exiting, hanging past the per-batch timeout, a line that is not
-JSON, an id that was not sent or answered twice) are blamed on the vector being run: the first one
+Faults (the process crashing or exiting, closing its stdout, hanging past the per-batch timeout,
+a line that is not JSON or that never ends, an id that was not sent or answered twice) are blamed on the vector being run: the first one
 sent and not yet answered, which is exact for adapters that answer in order and flush each line
 (serve.py does). The process is then killed and restarted, and the rest of the batch is sent again,
 so one crash costs one vector, not the run. A result of the wrong shape is blamed on its own id and
 needs no restart. Anything written to stderr is kept as a note on the vector being run.
+
+Every wait here has a bound: the per-batch timeout while vectors are out, EXIT_GRACE_S after
+`bye`, KILL_WAIT_S for a killed process to be reaped. The adapter runs in its own process group
+(its own session), so killing the group ends the children it started too; every adapter process
+still running when the runner's interpreter exits is killed then (atexit), and `plcvec verify`
+turns SIGTERM and SIGINT into a normal exit through that path (command.py).
 """
 from __future__ import annotations
 
+import atexit
 import json
 import os
 import selectors
@@ -31,6 +38,28 @@ from .protocol import encode
 READ_CHUNK = 1 << 16
 STDERR_KEEP = 2000          # characters of stderr kept per note
 EXIT_GRACE_S = 2.0          # after `bye`, how long the adapter has to exit before it is killed
+EOF_GRACE_S = 1.0           # after its stdout closes, how long the adapter has to exit before it is killed
+KILL_WAIT_S = 5.0           # after SIGKILL, how long to wait for the process to be reaped
+MAX_LINE_BYTES = 64 << 20   # a stdout line longer than this is a fault, not something to keep buffering
+STDERR_BUF_MAX = 1 << 20    # stderr kept while waiting for a newline (notes keep STDERR_KEEP of it)
+
+# Adapter processes started and not yet ended, for the exit path (atexit, signals). Strong
+# references: an adapter object dropped without close() still has its process ended at exit.
+_LIVE: "set[StdioAdapter]" = set()
+
+
+def end_all() -> None:
+    """Kill every adapter process group this interpreter started and has not ended.
+
+    Called at interpreter exit and when `plcvec verify` is stopped by a signal: an adapter runs in
+    its own session, so a Ctrl-C in the terminal or a CI job's SIGTERM to the runner's process
+    group does not reach it, and nothing else would end it.
+    """
+    for adapter in list(_LIVE):
+        adapter.terminate()
+
+
+atexit.register(end_all)
 
 
 class _Fault(Exception):
@@ -66,6 +95,7 @@ class StdioAdapter:
                                          start_new_session=True)
         except OSError as exc:
             raise AdapterAbort(f"--adapter {self.command}: cannot start it: {exc.strerror or exc}")
+        _LIVE.add(self)
         for f in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
             os.set_blocking(f.fileno(), False)
         self._out = b""
@@ -80,11 +110,17 @@ class StdioAdapter:
     def _kill(self, current=None):
         if self.proc is None:
             return
+        # The whole group: the adapter and any children it started (a shell wrapper, an emulator).
         try:
             os.killpg(self.proc.pid, signal.SIGKILL)
         except (ProcessLookupError, PermissionError):
             pass
-        self.proc.wait()
+        try:
+            self.proc.wait(timeout=KILL_WAIT_S)
+        except subprocess.TimeoutExpired:   # stuck in the kernel; nothing more can be done from here
+            self.notes.append((None, f"adapter process {self.proc.pid} did not end within "
+                                     f"{KILL_WAIT_S:g} s of SIGKILL"))
+        _LIVE.discard(self)
         self._drain_stderr_now()
         self._settle_stderr(current, everything=True)
         self._sel.close()
@@ -94,6 +130,10 @@ class StdioAdapter:
             except OSError:
                 pass
         self.proc = None
+
+    def terminate(self):
+        """End the adapter now, without `bye` (the runner is being stopped)."""
+        self._kill()
 
     def hello(self, request: dict) -> dict:
         # A process still running from an earlier run with the same handshake is reused (the
@@ -196,18 +236,36 @@ class StdioAdapter:
                         self._sel.unregister(key.fileobj)
                     else:
                         self._stderr_buf += chunk
+                        if len(self._stderr_buf) > STDERR_BUF_MAX and b"\n" not in chunk:
+                            self._stderr_buf = self._stderr_buf[:STDERR_KEEP] + b"...\n"
                 else:
                     chunk = os.read(key.fileobj.fileno(), READ_CHUNK)
                     if not chunk:
                         self._sel.unregister(key.fileobj)
                         self._stdout_open = False
-                        raise _Fault(_exit_text(self.proc.wait()))
+                        raise _Fault(self._stdout_closed_text(deadline))
                     self._in += chunk
                     if b"\n" in chunk:
                         *lines, self._in = self._in.split(b"\n")
+                    if len(self._in) > MAX_LINE_BYTES:
+                        raise _Fault(f"the adapter wrote a line longer than {MAX_LINE_BYTES >> 20} MiB "
+                                     f"without a newline: {_clip(self._in)}")
             lines = [line for line in lines if line.strip()]
             if lines:
                 return lines
+
+    def _stdout_closed_text(self, deadline: float) -> str:
+        """Why stdout ended: the process exited (how), or it closed stdout and is still running.
+
+        A process that exits closes its stdout a moment before it can be reaped, so it gets a
+        short grace, never past the batch's deadline; one still running after that will not
+        answer again and is killed like a crash.
+        """
+        try:
+            status = self.proc.wait(timeout=max(0.0, min(EOF_GRACE_S, deadline - time.monotonic())))
+        except subprocess.TimeoutExpired:
+            return "the adapter closed its stdout but kept running; it was killed"
+        return _exit_text(status)
 
     def _settle_stderr(self, current, everything=False):
         """Note the complete stderr lines read so far against `current`.
@@ -225,8 +283,10 @@ class StdioAdapter:
         self._note_stderr(text, current)
 
     def _drain_stderr_now(self):
+        # Non-blocking reads until the pipe is empty; bounded in size, since a child that escaped
+        # the process group could keep writing.
         try:
-            while True:
+            while len(self._stderr_buf) < STDERR_BUF_MAX:
                 chunk = os.read(self.proc.stderr.fileno(), READ_CHUNK)
                 if not chunk:
                     break
@@ -307,7 +367,11 @@ class StdioAdapter:
                 for msg in self._messages(self._pump(deadline)):
                     vid = msg.get("id") if isinstance(msg, dict) else None
                     if isinstance(msg, dict) and msg.get("type") == "fatal":
-                        raise _Fault(f"the adapter gave up: {msg.get('message')}")
+                        # It says it cannot go on (PROTOCOL.md): restarting would only hear it again.
+                        blamed = next(iter(sent))
+                        self._kill(blamed)
+                        raise AdapterAbort(f"--adapter {self.command}: the adapter gave up while running "
+                                           f"{blamed}: {msg.get('message')}")
                     if vid not in sent:
                         if vid in self._answered:
                             # The stream is still in step; the vector answered twice is the culprit.
