@@ -1,0 +1,326 @@
+/* plcvec: conformance test vectors for PLC clock and calendar instructions, for C and C++.
+ *
+ * The golden vectors are compiled into the library (no files, no JSON at run time). An
+ * implementation (an emulator, a soft-PLC, a ladder translator) is described by a plcvec_impl, a
+ * struct of function pointers at the level of verifiers/CONTRACT.md; the runner gives it each
+ * vector's initial state and inputs, and judges what it reports after every step, field by field.
+ * Emulators that would rather only "execute this instruction on my memory" fill a plcvec_machine
+ * instead and wrap it with plcvec_machine_impl(). */
+#ifndef PLCVEC_H
+#define PLCVEC_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+
+#include "plcvec/generated/names.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- the vectors ------------------------------------------------------------------------- */
+
+/* What a device holds. A word is the raw 16 bits (0..65535); a bit is 0 or 1, and is a
+ * different thing from a word holding 1: the runner compares the type too. */
+typedef enum plcvec_type { PLCVEC_WORD = 0, PLCVEC_BIT = 1 } plcvec_type;
+
+/* One device and its value. `device` is a plcvec_device_id (plcvec_devices[device].name). */
+typedef struct plcvec_cell {
+    uint16_t device;
+    uint16_t value;
+    uint8_t type;               /* plcvec_type */
+} plcvec_cell;
+
+/* An operand: a device ("D100"; a multi-word operand occupies D100, D101, ...) or a K/H constant. */
+typedef struct plcvec_operand {
+    const char *name;           /* the manual's name: "s1", "d", "S1", "C", ... */
+    uint16_t device;            /* plcvec_device_id, when !is_constant */
+    uint8_t is_constant;
+    int32_t constant;
+} plcvec_operand;
+
+/* assumes.device_sizes: the number of points of a device type ({"D", 8000}: D0 to D7999). */
+typedef struct plcvec_size {
+    const char *kind;
+    uint32_t points;
+} plcvec_size;
+
+/* The injected current clock of a step; `fields` says which are given (PLCVEC_CLOCK_*). */
+enum {
+    PLCVEC_CLOCK_YEAR = 1, PLCVEC_CLOCK_MONTH = 2, PLCVEC_CLOCK_DAY = 4,
+    PLCVEC_CLOCK_HOUR = 8, PLCVEC_CLOCK_MINUTE = 16, PLCVEC_CLOCK_SECOND = 32
+};
+typedef struct plcvec_clock {
+    uint8_t fields;
+    int32_t year, month, day, hour, minute, second;
+} plcvec_clock;
+
+/* No contact result: the instruction is not a contact (TADD, HOUR), or an input is absent. */
+#define PLCVEC_NONE (-1)
+
+/* What one step expects: the devices whose value changes in it, and the contact result. */
+typedef struct plcvec_expect {
+    const plcvec_cell *devices;
+    uint16_t n_devices;
+    int8_t result;              /* 0, 1, or PLCVEC_NONE */
+} plcvec_expect;
+
+/* One execution of the instruction (one scan): the outside world's writes, then the inputs. */
+typedef struct plcvec_step {
+    int8_t rlo_in;              /* the logic state before an AND/OR form: 0, 1 or PLCVEC_NONE */
+    int8_t en;                  /* TADD/TADDP's execution condition: 0, 1 or PLCVEC_NONE */
+    int8_t input;               /* HOUR's input this scan: 0, 1 or PLCVEC_NONE */
+    int64_t elapsed_ms;         /* HOUR: ms since the previous execution, or PLCVEC_NONE */
+    const plcvec_clock *clock;  /* the current clock, or NULL */
+    const plcvec_cell *set;     /* written before the execution (the program, an HMI) */
+    uint16_t n_set;
+    plcvec_expect expect;       /* under the default alternatives; see plcvec_expected() */
+} plcvec_step;
+
+typedef enum plcvec_category {
+    PLCVEC_OUTCOME_VALUE, PLCVEC_OUTCOME_ERROR, PLCVEC_OUTCOME_IMPLEMENTATION_DEFINED
+} plcvec_category;
+
+/* A declared alternative: interpretation (plcvec_interpretation) and its alternative's number. */
+typedef struct plcvec_choice {
+    uint8_t interpretation;
+    uint8_t alternative;
+} plcvec_choice;
+
+/* The expectation of a vector under one combination of alternatives other than the defaults. */
+typedef struct plcvec_alternative {
+    const plcvec_choice *choices;
+    uint16_t n_choices;
+    uint8_t category;           /* plcvec_category */
+    const plcvec_expect *expect;    /* one per step */
+    uint16_t n_expect;
+} plcvec_alternative;
+
+typedef struct plcvec_vector {
+    const char *id;             /* stable: safe in skip lists and test filters */
+    const char *description;
+    plcvec_instruction instruction;
+    plcvec_family family;
+    uint64_t tags;              /* bit (1 << plcvec_tag) */
+    const uint8_t *clauses;     /* indexes into the family's clauses: see plcvec_clause() */
+    uint16_t n_clauses;
+    const plcvec_size *sizes;
+    uint16_t n_sizes;
+    const plcvec_cell *devices; /* initial.devices: every device read or possibly written */
+    uint16_t n_devices;
+    const uint16_t *scratch;    /* work-area words: the implementation's own, never compared */
+    uint16_t n_scratch;
+    const plcvec_operand *operands;
+    uint16_t n_operands;
+    const plcvec_step *steps;
+    uint16_t n_steps;
+    uint8_t category;           /* plcvec_category under the default alternatives */
+    const uint8_t *interpretations; /* the interpretations the outcome depends on */
+    uint16_t n_interpretations;
+    const plcvec_alternative *alternatives;
+    uint16_t n_alternatives;
+} plcvec_vector;
+
+/* Names of the generated enums (indexed by the enum). */
+extern const char *const plcvec_family_names[PLCVEC_FAMILY_COUNT];
+extern const char *const plcvec_instruction_names[PLCVEC_INSTRUCTION_COUNT];
+extern const plcvec_family plcvec_instruction_family[PLCVEC_INSTRUCTION_COUNT];
+extern const char *const plcvec_tag_names[PLCVEC_TAG_COUNT];
+
+typedef struct plcvec_interpretation_info {
+    const char *id;             /* "FX5-SM709-SCOPE" */
+    const char *question;
+    const char *const *alternatives;    /* their ids, numbered as the generated enums */
+    uint8_t n_alternatives;
+    uint8_t default_alternative;
+    uint32_t families;          /* bit (1 << plcvec_family) for each family it belongs to */
+} plcvec_interpretation_info;
+extern const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_COUNT];
+
+typedef struct plcvec_device_info {
+    const char *name;           /* "D100", "SM709", "P_EQ" */
+    const char *kind;           /* "D", "SM", "P_EQ" */
+    int32_t number;             /* 100, 709, -1 for a device without a number */
+} plcvec_device_info;
+extern const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT];
+
+size_t plcvec_count(void);                              /* every vector of the suite */
+const plcvec_vector *plcvec_at(size_t index);           /* in family order, then by id */
+const plcvec_vector *plcvec_find(const char *id);       /* NULL if the suite has no such vector */
+const char *plcvec_clause(const plcvec_vector *v, size_t i);    /* "fx5-time-add#carry" */
+const char *plcvec_operand_device_name(const plcvec_operand *op);
+const plcvec_operand *plcvec_operand_named(const plcvec_vector *v, const char *name);
+int plcvec_device_named(const char *name);              /* the plcvec_device_id, or -1 */
+long plcvec_size_of(const plcvec_vector *v, const char *kind);  /* points, or -1 if not stated */
+/* "FX5-SM709-SCOPE" -> its plcvec_interpretation, and an alternative's number; -1 if unknown. */
+int plcvec_interpretation_named(const char *id);
+int plcvec_alternative_named(int interpretation, const char *alternative);
+
+/* ---- selection ---------------------------------------------------------------------------- */
+
+/* Filters: OR within one list, AND between lists; an empty list does not filter. The lists hold
+ * spec names ("fx5-time-add", "TADDP", "boundary", "FX5-SM709-SCOPE"); `ids` holds glob patterns
+ * (*, ?, [abc], [!abc]) matched against the whole id. shard_k/shard_n (1 <= k <= n, or 0/0)
+ * keep the vectors with crc32(id) % n + 1 == k, the rule of every plcvec runner, so shards agree
+ * across languages and adding a vector moves no other. */
+typedef struct plcvec_selection {
+    const char *const *families; size_t n_families;
+    const char *const *instructions; size_t n_instructions;
+    const char *const *tags; size_t n_tags;
+    const char *const *ids; size_t n_ids;
+    const char *const *interpretations; size_t n_interpretations;
+    unsigned shard_k, shard_n;
+} plcvec_selection;
+
+/* The selected vectors, in suite order, into a malloc'd array (free it with free()). Returns
+ * the number selected, or -1 with a message in err (an unknown name, a bad shard). Selecting
+ * nothing is not an error here; plcvec_run() treats it as one. */
+long plcvec_select(const plcvec_selection *sel, const plcvec_vector ***out, char *err, size_t errlen);
+int plcvec_selected(const plcvec_selection *sel, const plcvec_vector *v);  /* after validation */
+uint32_t plcvec_crc32(const char *text);                /* zlib's CRC-32 of the bytes */
+int plcvec_glob(const char *pattern, const char *text); /* fnmatchcase: 1 if it matches */
+
+/* ---- the implementation --------------------------------------------------------------------- */
+
+/* Where an implementation reports what it did with one vector (owned by the runner). */
+typedef struct plcvec_out plcvec_out;
+
+/* After executing step `step` (0, 1, ...): the contact result (0/1, or PLCVEC_NONE for TADD and
+ * HOUR), then every device of the vector (v->devices; scratch may be left out) and any other
+ * device the step wrote, each once. Devices are plcvec_device_ids; one outside the table of
+ * names is reported by name with plcvec_out_named(). */
+void plcvec_out_step(plcvec_out *out, int result);
+void plcvec_out_device(plcvec_out *out, int device, plcvec_type type, unsigned value);
+void plcvec_out_named(plcvec_out *out, const char *device, plcvec_type type, unsigned value);
+/* Instead of steps: cannot run this vector (a reason: "no R devices"), or failed on it. Both
+ * return the value run() returns. */
+int plcvec_out_skip(plcvec_out *out, const char *reason);
+int plcvec_out_error(plcvec_out *out, const char *message);
+
+/* An implementation, at the level of the contract. */
+typedef struct plcvec_impl {
+    const char *name;
+    void *ctx;                  /* passed back to every function */
+    /* The alternative it follows for some interpretations; the others take their default. */
+    const plcvec_choice *choices;
+    size_t n_choices;
+    /* 1 if it implements the instruction; NULL: every instruction. Others are skipped. */
+    int (*supports)(void *ctx, plcvec_instruction instruction);
+    /* Run one vector from its own initial state (nothing carries over from another vector):
+     * for each step apply `set`, execute with the step's inputs, then report with plcvec_out_*.
+     * Return 0, or what plcvec_out_skip()/plcvec_out_error() return. */
+    int (*run)(void *ctx, const plcvec_vector *v, plcvec_out *out);
+} plcvec_impl;
+
+/* The thin helper: "execute this instruction on my memory". The runner writes the vector's
+ * devices into your memory, runs each step, and reads the devices back. */
+typedef struct plcvec_machine {
+    const char *name;
+    void *ctx;
+    const plcvec_choice *choices;
+    size_t n_choices;
+    int (*supports)(void *ctx, plcvec_instruction instruction);    /* NULL: every one */
+    /* Power on: forget every device value and all internal state (TADDP's edge, HOUR's work
+     * area); the vector's device sizes are given. Return nonzero to skip the vector. */
+    int (*reset)(void *ctx, const plcvec_vector *v);
+    void (*write)(void *ctx, const char *device, plcvec_type type, unsigned value);
+    unsigned (*read)(void *ctx, const char *device);
+    /* One scan: execute v->instruction with v->operands and the step's inputs; return the
+     * contact result (0/1) or PLCVEC_NONE. Return -2 to report an error instead. */
+    int (*execute)(void *ctx, const plcvec_vector *v, const plcvec_step *step);
+    /* Optional: call `seen` for each device written since reset() (so writes outside the vector
+     * are caught). NULL: only the vector's own devices are read back. */
+    void (*written)(void *ctx, void (*seen)(void *arg, const char *device, plcvec_type type, unsigned value), void *arg);
+} plcvec_machine;
+
+/* An impl running `m` (which must outlive it). */
+plcvec_impl plcvec_machine_impl(const plcvec_machine *m);
+
+/* ---- judging -------------------------------------------------------------------------------- */
+
+typedef enum plcvec_status {
+    PLCVEC_PASS, PLCVEC_FAIL, PLCVEC_ERROR, PLCVEC_SKIP, PLCVEC_XFAIL, PLCVEC_STALE
+} plcvec_status;
+extern const char *const plcvec_status_names[];
+
+/* One field that differs. `device` is a plcvec_device_id, or -1 for the contact result, or -2
+ * for the number of steps; `name` is set for a device outside the table. has_* are 0 when the
+ * value is absent (not reported, or not in the vector). */
+typedef struct plcvec_problem {
+    int step;
+    int device;
+    char name[24];
+    uint8_t has_expected, expected_type, has_actual, actual_type, has_before, before_type;
+    uint32_t expected, actual, before;
+} plcvec_problem;
+
+/* A known failure: listed vectors that fail are XFAIL; listed vectors that pass are STALE (a
+ * failure), and so is an id the suite does not have. Ids are exact, never patterns. */
+typedef struct plcvec_known_failure {
+    const char *id;
+    const char *reason;
+} plcvec_known_failure;
+
+/* The verdict on one vector. */
+typedef struct plcvec_verdict {
+    const plcvec_vector *vector;
+    plcvec_status status;
+    char message[512];          /* skip/error/xfail/stale reason */
+    const plcvec_problem *problems;
+    size_t n_problems;
+    plcvec_choice choices[PLCVEC_INTERPRETATION_COUNT];   /* the alternatives it was judged by (those it depends on) */
+    size_t n_choices;
+} plcvec_verdict;
+
+/* A judge: an implementation and its resolved alternatives, with the buffers a run needs. */
+typedef struct plcvec_judge plcvec_judge;
+
+/* NULL with a message in err when the implementation declares an unknown interpretation or
+ * alternative. Not thread-safe: use one judge per thread. */
+plcvec_judge *plcvec_judge_new(const plcvec_impl *impl, char *err, size_t errlen);
+void plcvec_judge_free(plcvec_judge *j);
+/* The alternative the judge follows for an interpretation (declared, or the default). */
+int plcvec_judge_alternative(const plcvec_judge *j, int interpretation);
+/* Run one vector and judge it. The verdict's problems live until the next call. */
+const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *v);
+/* Apply a known-failure list to a verdict (PASS -> STALE, FAIL/ERROR -> XFAIL). */
+void plcvec_apply_known(plcvec_verdict *verdict, const plcvec_known_failure *known, size_t n_known);
+/* The expectation of v for step i under the judge's alternatives. */
+const plcvec_expect *plcvec_expected(const plcvec_judge *j, const plcvec_vector *v, size_t step);
+
+/* The verdict as people read it: status and id, description, the alternatives it was judged
+ * by, one line per field (step, device, expected, actual), the message, the spec clauses. */
+void plcvec_print_verdict(FILE *f, const plcvec_verdict *verdict);
+/* The same into a buffer (truncated to size); returns the length it needed. */
+size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *verdict);
+
+/* ---- running a selection ---------------------------------------------------------------------- */
+
+typedef struct plcvec_options {
+    plcvec_selection selection;
+    const plcvec_known_failure *known;
+    size_t n_known;
+    FILE *log;                  /* where failures and the summary go; NULL: stdout */
+    int verbose;                /* also print skipped and xfail verdicts */
+} plcvec_options;
+
+typedef struct plcvec_summary {
+    size_t selected, passed, failed, errors, skipped, xfail, stale;
+} plcvec_summary;
+
+/* Judge every selected vector, print each failure as a field-level diff, then the suite, the
+ * alternatives followed and the closing "N passed, N failed" line. Returns 0 if everything
+ * passed (or is a known failure, or was skipped), 1 on any failure, error or stale entry, 2 on a
+ * usage error (unknown name, bad shard, nothing selected, every vector skipped). */
+int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summary *summary);
+
+/* A test program's main(): parses --family, --instruction, --tag, --id GLOB, --interpretation,
+ * --shard K/N, --list, --verbose (repeatable filters), then plcvec_run(). */
+int plcvec_main(const plcvec_impl *impl, const plcvec_known_failure *known, size_t n_known,
+                int argc, char **argv);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,123 @@
+/* Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT (time comparison).
+ * From cp1e-time-compare-DT.txt (W483 p. 2-93). */
+#include <string.h>
+
+#include "reference.h"
+
+/* "A351.00 to A351.07 Second (00 to 59, BCD)  A351.08 to A351.15 Minute ... A352 Hour, Day of
+ * month; A353 Month, Year"; "Bits 00 to 05 of C mask the seconds, minutes, hours, day, month,
+ * and year, respectively." (word offset, byte, lo, hi, C bit), the year first. */
+static const cp1e_field fields[6] = {
+    {2, 1, 0, 99, 5}, {2, 0, 1, 12, 4}, {1, 1, 1, 31, 3}, {1, 0, 0, 23, 2}, {0, 1, 0, 59, 1}, {0, 0, 0, 59, 0},
+};
+
+static int is_bcd(unsigned b)
+{
+    return (b >> 4) <= 9 && (b & 0xF) <= 9;
+}
+
+static int and_form(int rlo, int contact)
+{
+    return rlo && contact;
+}
+
+const cp1e_rules cp1e_reference_rules = {fields, is_bcd, and_form, 1};
+
+/* The flag table: rows S1 = S2, S1 > S2, S1 < S2; columns =, <>, <, <=, >, >=. */
+static const char *const symbols[6] = {"=", "<>", "<", "<=", ">", ">="};
+static const int flag_devices[6] = {PLCVEC_DEV_P_EQ, PLCVEC_DEV_P_NE, PLCVEC_DEV_P_LT,
+                                    PLCVEC_DEV_P_LE, PLCVEC_DEV_P_GT, PLCVEC_DEV_P_GE};
+
+static int holds(int symbol, int order)
+{
+    switch (symbol) {
+    case 0: return order == 0;
+    case 1: return order != 0;
+    case 2: return order < 0;
+    case 3: return order <= 0;
+    case 4: return order > 0;
+    default: return order >= 0;
+    }
+}
+
+/* Error: P_ER on, the execution condition OFF, the six arithmetic flags untouched. */
+static int error(memory *m)
+{
+    memory_write_named(m, PLCVEC_DEV_P_ER, PLCVEC_BIT, 1);
+    return 0;
+}
+
+static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
+{
+    const cp1e_rules *r = &ref->cp1e;
+    memory *m = &ref->mem;
+    address s1 = memory_device(plcvec_operand_named(v, "S1")->device);
+    address s2 = memory_device(plcvec_operand_named(v, "S2")->device);
+    const plcvec_operand *cop = plcvec_operand_named(v, "C");
+    unsigned c = (cop->is_constant ? (unsigned)cop->constant : memory_read(m, memory_device(cop->device))) & 0xFFFF;
+    uint16_t a[3], b[3];
+    for (int i = 0; i < 3; i++) {
+        a[i] = memory_read(m, memory_offset(s1, i));
+        b[i] = memory_read(m, memory_offset(s2, i));
+    }
+    /* Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS). */
+    if ((c & 0xFFC0) && ref->follows[PLCVEC_INTERP_CP1E_C_HIGH_BITS] == PLCVEC_CP1E_C_HIGH_BITS_ERROR)
+        return error(m);
+    /* "To mask a time value, set the corresponding bit in the control word (C) to 1." */
+    int unmasked = 0;
+    for (int f = 0; f < 6; f++)
+        unmasked += !(c >> r->fields[f].bit & 1);
+    if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_ERROR)
+        return error(m);
+    int order = 0;
+    for (int f = 0; f < 6; f++) {
+        const cp1e_field *fd = &r->fields[f];
+        if (c >> fd->bit & 1)
+            continue;
+        unsigned x = (unsigned)(a[fd->offset] >> (8 * fd->byte)) & 0xFF, y = (unsigned)(b[fd->offset] >> (8 * fd->byte)) & 0xFF;
+        unsigned raw[2] = {x, y};
+        for (int k = 0; k < 2; k++) {
+            if (!r->is_bcd(raw[k])) {
+                /* "Second (00 to 59, BCD)" ...: CP1E-NON-BCD */
+                if (ref->follows[PLCVEC_INTERP_CP1E_NON_BCD] == PLCVEC_CP1E_NON_BCD_ERROR)
+                    return error(m);
+            } else {
+                int value = (int)(raw[k] >> 4) * 10 + (int)(raw[k] & 0xF);
+                if ((value < fd->lo || value > fd->hi) &&
+                    ref->follows[PLCVEC_INTERP_CP1E_OUT_OF_RANGE] == PLCVEC_CP1E_OUT_OF_RANGE_ERROR)
+                    return error(m);
+            }
+        }
+        /* "limited to comparing 8-bit time values": for BCD the byte order is the numeric order. */
+        if (order == 0 && x != y)
+            order = x < y ? -1 : 1;
+    }
+    /* "the result of a time comparison instruction is reflected in the arithmetic flags" */
+    if (r->reflect_flags)
+        for (int s = 0; s < 6; s++)
+            memory_write_named(m, flag_devices[s], PLCVEC_BIT, (uint16_t)holds(s, order));
+    /* P_ER is a condition flag reflecting the instruction just executed: CP1E-ER-FLAG. */
+    if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
+        memory_write_named(m, PLCVEC_DEV_P_ER, PLCVEC_BIT, 0);
+    return holds(symbol, order);
+}
+
+int cp1e_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step)
+{
+    const char *name = plcvec_instruction_names[v->instruction];      /* "AND <=DT" */
+    const char *sym = strchr(name, ' ');
+    int symbol = 0;
+    for (int s = 0; s < 6 && sym; s++)
+        if (strncmp(sym + 1, symbols[s], strlen(symbols[s])) == 0 && sym[1 + strlen(symbols[s])] == 'D')
+            symbol = s;
+    /* "treated just like the LD, AND, and OR instructions" */
+    if (name[0] == 'L')
+        return evaluate(ref, v, symbol);
+    int rlo = step->rlo_in == 1;
+    if (name[0] == 'A') {
+        if (!rlo && ref->follows[PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF] == PLCVEC_CP1E_AND_OR_WHEN_OFF_AND_SKIPPED)
+            return 0;
+        return ref->cp1e.and_form(rlo, evaluate(ref, v, symbol));
+    }
+    return evaluate(ref, v, symbol) || rlo;
+}

@@ -1,0 +1,157 @@
+/* Mitsubishi MELSEC iQ-F FX5: LDTM/ANDTM/ORTM (time) and LDDT/ANDDT/ORDT (date) comparison.
+ * Written from fx5-time-compare-LDTM.txt and fx5-date-compare-LDDT.txt; the two pages are the
+ * same text with hour/minute/second replaced by year/month/day, so one machine serves both. */
+#include <string.h>
+
+#include "reference.h"
+
+/* 'Set the "hour" data ... within the range 0 to 23.' ... '(1) Set "second" as comparison
+ * target. (2) ... "minute" ... (3) ... "hour"': (word offset, lo, hi, (s3) bit), most
+ * significant first. */
+static const fx5_field time_fields[3] = {{0, 0, 23, 2}, {1, 0, 59, 1}, {2, 0, 59, 0}};
+/* 'Set the 4 digit "year" data ... within the range 1980 to 2079.' month 1 to 12, "date" 1 to 31. */
+static const fx5_field date_fields[3] = {{0, 1980, 2079, 2}, {1, 1, 12, 1}, {2, 1, 31, 0}};
+
+static int order(const fx5_field *fields, const uint16_t *s1, const uint16_t *s2, unsigned s3)
+{
+    for (int i = 0; i < 3; i++) {
+        if (!(s3 >> fields[i].bit & 1))
+            continue;
+        int a = to_signed16(s1[fields[i].offset]), b = to_signed16(s2[fields[i].offset]);   /* "16-bit signed binary" */
+        if (a != b)
+            return a < b ? -1 : 1;
+    }
+    return 0;
+}
+
+/* "(4) Set 0. If a value other than 0 is set, the operation result will be non-continuity."
+ * (bits 3 to 14); "Other than 0001H to 0007H, 8001H to 8007H: None". */
+static int selector_valid(unsigned s3)
+{
+    return (s3 & 0x7FF8) == 0 && (s3 & 0x0007) != 0;
+}
+
+/* "Once SM709 turns on, the on state is held until the CPU module is powered off or reset":
+ * only ever turned on here. */
+static void sm709(memory *m, int error)
+{
+    if (error)
+        memory_write_named(m, PLCVEC_DEV_SM709, PLCVEC_BIT, 1);
+}
+
+const fx5_rules fx5_reference_rules = {time_fields, date_fields, order, 0x8000, selector_valid, memory_in_range, sm709};
+
+static int out_of_range(const fx5_field *fields, const uint16_t *w, int all, unsigned s3)
+{
+    for (int i = 0; i < 3; i++) {
+        if (!all && !(s3 >> fields[i].bit & 1))
+            continue;
+        int x = to_signed16(w[fields[i].offset]);
+        if (x < fields[i].lo || x > fields[i].hi)
+            return 1;
+    }
+    return 0;
+}
+
+static int condition_holds(const char *symbol, int c)
+{
+    if (strcmp(symbol, "=") == 0)
+        return c == 0;
+    if (strcmp(symbol, "<>") == 0)
+        return c != 0;
+    if (strcmp(symbol, ">") == 0)
+        return c > 0;
+    if (strcmp(symbol, "<=") == 0)
+        return c <= 0;
+    if (strcmp(symbol, "<") == 0)
+        return c < 0;
+    return c >= 0;      /* ">=" */
+}
+
+static void read_block(const memory *m, address base, uint16_t *w)
+{
+    for (int i = 0; i < 3; i++)
+        w[i] = memory_read(m, memory_offset(base, i));
+}
+
+/* The comparison itself (the "contact"). */
+static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step, int date, const char *symbol)
+{
+    const fx5_rules *r = &ref->fx5;
+    memory *m = &ref->mem;
+    const fx5_field *fields = date ? r->date_fields : r->time_fields;
+    const plcvec_operand *op1 = plcvec_operand_named(v, "s1"), *op2 = plcvec_operand_named(v, "s2"),
+                         *op3 = plcvec_operand_named(v, "s3");
+    address s1_dev = memory_device(op1->device), s2_dev = memory_device(op2->device);
+    unsigned s3 = (op3->is_constant ? (unsigned)op3->constant : memory_read(m, memory_device(op3->device))) & 0xFFFF;
+    /* "(5) When 1 is set to the 15 bit, the data in the device specified by (s1) is compared
+     * with the current time ... (s2) is regarded as dummy data and ignored." */
+    int use_clock = r->clock_bit && (s3 & r->clock_bit);
+
+    /* "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the
+     * corresponding device range, SM709 turns on ... non-continuity." Whether (s2) is checked
+     * while it is ignored: FX5-CLOCK-S2-DEVICE-RANGE. */
+    int s2_checked = !use_clock ||
+                     ref->follows[PLCVEC_INTERP_FX5_CLOCK_S2_DEVICE_RANGE] == PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_CHECKED;
+    if (!r->in_range(m, s1_dev, 3) || (s2_checked && !r->in_range(m, s2_dev, 3))) {
+        r->sm709(m, 1);
+        return 0;
+    }
+    uint16_t s1[3], s2[3];
+    read_block(m, s1_dev, s1);
+    if (use_clock) {
+        const plcvec_clock *c = step->clock;
+        s2[0] = (uint16_t)(c ? (date ? c->year : c->hour) : 0);
+        s2[1] = (uint16_t)(c ? (date ? c->month : c->minute) : 0);
+        s2[2] = (uint16_t)(c ? (date ? c->day : c->second) : 0);
+    } else
+        read_block(m, s2_dev, s2);
+
+    int valid = r->selector_valid(s3), error;
+    /* "If the comparison target data in the device are not recognized as time data, SM709
+     * turns on ... non-continuity." Which words are comparison target data: FX5-SM709-SCOPE. */
+    if (ref->follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_ALL_WORDS) {
+        error = out_of_range(fields, s1, 1, s3) || (!use_clock && out_of_range(fields, s2, 1, s3));
+        if (error || !valid) {
+            r->sm709(m, error);
+            return 0;
+        }
+    } else {
+        if (!valid) {
+            r->sm709(m, 0);
+            return 0;
+        }
+        error = out_of_range(fields, s1, 0, s3) || (!use_clock && out_of_range(fields, s2, 0, s3));
+        if (error) {
+            r->sm709(m, 1);
+            return 0;
+        }
+    }
+    /* Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
+     * the data are within the setting range." So 02/30 is compared as it is. */
+    r->sm709(m, 0);
+    return condition_holds(symbol, r->order(fields, s1, s2, s3));
+}
+
+int fx5_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step)
+{
+    const char *name = plcvec_instruction_names[v->instruction];
+    int date = v->family == PLCVEC_FAMILY_FX5_DATE_COMPARE;
+    const char *kind = date ? "DT" : "TM";
+    size_t form = strncmp(name, "LD", 2) == 0 ? 2 : strncmp(name, "AND", 3) == 0 ? 3 : 2;   /* LD, AND, OR */
+    const char *symbol = name + form + strlen(kind);
+    if (name[0] == 'L')
+        return evaluate(ref, v, step, date, symbol);
+    int rlo = step->rlo_in == 1;
+    int logic = ref->follows[PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF];
+    /* "(Devices are used as a normally open contact.)"; NOTES.md (iQ-R processing times): an
+     * AND/OR comparison is not executed while the preceding logic is off: FX5-AND-OR-WHEN-OFF. */
+    if (name[0] == 'A') {
+        if (!rlo && logic != PLCVEC_FX5_AND_OR_WHEN_OFF_ALWAYS_EXECUTED)
+            return 0;
+        return evaluate(ref, v, step, date, symbol) && rlo;
+    }
+    if (rlo && logic == PLCVEC_FX5_AND_OR_WHEN_OFF_SHORT_CIRCUIT)
+        return 1;
+    return evaluate(ref, v, step, date, symbol) || rlo;
+}

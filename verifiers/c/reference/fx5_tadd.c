@@ -1,0 +1,84 @@
+/* Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data). From fx5-time-add-TADD.txt. */
+#include "reference.h"
+
+#define DAY (24L * 3600)
+#define ERR_DEVICE_RANGE 0x2820     /* "2820H The device range ... exceeds the corresponding device range." */
+#define ERR_VALUE_RANGE 0x3405      /* "3405H Any of values specified by (s1) and (s2) is outside ..." */
+
+static const char *const carry_flags[] = {"SM700", "SM8022"};     /* "SM700 Carry ... SM8022 Carry" */
+
+static int pulse(int en, int previous_en, plcvec_instruction instruction)
+{
+    /* TADD: every scan while EN is on; TADDP: its rising edge only. */
+    return instruction == PLCVEC_INSTR_TADDP ? en && !previous_en : en;
+}
+
+const tadd_rules tadd_reference_rules = {carry_flags, 2, 23, memory_in_range, pulse, 1};
+
+static void error_code(memory *m, uint16_t code)
+{
+    /* "Error code (SD0/SD8067)" */
+    memory_write_named(m, PLCVEC_DEV_SD0, PLCVEC_WORD, code);
+    memory_write_named(m, PLCVEC_DEV_SD8067, PLCVEC_WORD, code);
+}
+
+static void flag(memory *m, const char *name, int on, int set_only)
+{
+    int device = plcvec_device_named(name);
+    if (device < 0 || (set_only && !on))
+        return;
+    memory_write_named(m, device, PLCVEC_BIT, (uint16_t)on);
+}
+
+static void add(plcvec_reference *ref, const plcvec_vector *v)
+{
+    const tadd_rules *r = &ref->tadd;
+    memory *m = &ref->mem;
+    address s1 = memory_device(plcvec_operand_named(v, "s1")->device);
+    address s2 = memory_device(plcvec_operand_named(v, "s2")->device);
+    address d = memory_device(plcvec_operand_named(v, "d")->device);
+    /* "These instructions occupy three points for each of three devices"; out of range: 2820H,
+     * nothing read or written. */
+    if (!r->in_range(m, s1, 3) || !r->in_range(m, s2, 3) || !r->in_range(m, d, 3)) {
+        error_code(m, ERR_DEVICE_RANGE);
+        return;
+    }
+    int a[3], b[3], bad = 0;
+    for (int i = 0; i < 3; i++) {
+        a[i] = to_signed16(memory_read(m, memory_offset(s1, i)));
+        b[i] = to_signed16(memory_read(m, memory_offset(s2, i)));
+        int hi = i == 0 ? r->hour_max : 59;     /* hour 0 to 23; minute, second 0 to 59 */
+        bad |= a[i] < 0 || a[i] > hi || b[i] < 0 || b[i] > hi;
+    }
+    if (bad) {
+        error_code(m, ERR_VALUE_RANGE);
+        if (ref->follows[PLCVEC_INTERP_TADD_ON_ERROR] == PLCVEC_TADD_ON_ERROR_NOT_EXECUTED)
+            return;
+    }
+    long total = (long)(a[0] + b[0]) * 3600 + (long)(a[1] + b[1]) * 60 + (a[2] + b[2]);
+    /* "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result will be
+     * the sum minus 24:00:00", but "If 1 second is added to 23:59:59, the result will be
+     * 0:00:00. This turns on both the carry flag and the zero flag.": TADD-EXACT-24. */
+    int carry = ref->follows[PLCVEC_INTERP_TADD_EXACT_24] == PLCVEC_TADD_EXACT_24_CARRY_AT_24 ? total >= DAY
+                                                                                               : total > DAY;
+    long result = ((total % DAY) + DAY) % DAY;
+    long hms[3] = {result / 3600, result / 60 % 60, result % 60};
+    for (int i = 0; i < 3; i++)
+        memory_write(m, memory_offset(d, i), PLCVEC_WORD, (uint16_t)hms[i]);
+    if (!r->flags_written)
+        return;
+    int set_only = ref->follows[PLCVEC_INTERP_TADD_FLAGS_OFF] == PLCVEC_TADD_FLAGS_OFF_SET_ONLY;
+    for (int i = 0; i < r->n_carry_flags; i++)
+        flag(m, r->carry_flags[i], carry, set_only);
+    flag(m, "SM8020", result == 0, set_only);       /* "If the result is 0 (0:00:00), the zero flag turns on." */
+}
+
+int tadd_execute(plcvec_reference *ref, tadd_state *st, const plcvec_vector *v, const plcvec_step *step)
+{
+    int en = step->en == 1;
+    int run = ref->tadd.pulse(en, st->previous_en, v->instruction);
+    st->previous_en = en;       /* TADDP: the state before the first scan is off */
+    if (run)
+        add(ref, v);
+    return PLCVEC_NONE;
+}

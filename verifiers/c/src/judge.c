@@ -1,0 +1,530 @@
+/* Running one vector through an implementation and judging what it reports (CONTRACT.md,
+ * "Comparing"): the contact result and every listed device after every step, with its type;
+ * listed devices a step must leave alone; no write outside the vector. */
+#include <stdarg.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "table.h"
+
+const char *const plcvec_status_names[] = {"pass", "fail", "error", "skip", "xfail", "stale"};
+
+enum { RAN = 0, SKIPPED = 1, FAILED = 2 };
+
+typedef struct reported {
+    int device;                 /* plcvec_device_id, or -1: see name */
+    uint8_t type;
+    uint32_t value;
+    char name[24];
+} reported;
+
+struct plcvec_out {
+    int *results;               /* per reported step */
+    size_t *first;              /* per reported step: index of its first cell */
+    size_t n_steps, cap_steps;
+    reported *cells;
+    size_t n_cells, cap_cells;
+    int status;
+    int overflow;               /* out of memory while recording: reported as an error */
+    char message[256];
+};
+
+struct plcvec_judge {
+    plcvec_impl impl;
+    uint8_t alternative[PLCVEC_INTERPRETATION_COUNT];
+    plcvec_out out;
+    plcvec_problem *problems;
+    size_t n_problems, cap_problems;
+    plcvec_cell *state, *before;
+    size_t cap_state;
+    plcvec_verdict verdict;
+};
+
+/* ---- what the implementation reports ------------------------------------------------------ */
+
+static int grow(void **p, size_t *cap, size_t need, size_t size)
+{
+    if (need <= *cap)
+        return 1;
+    size_t n = *cap ? *cap * 2 : 64;
+    while (n < need)
+        n *= 2;
+    void *q = realloc(*p, n * size);
+    if (!q)
+        return 0;
+    *p = q;
+    *cap = n;
+    return 1;
+}
+
+void plcvec_out_step(plcvec_out *out, int result)
+{
+    size_t cap = out->cap_steps;
+    if (!grow((void **)&out->results, &cap, out->n_steps + 1, sizeof *out->results) ||
+        !grow((void **)&out->first, &out->cap_steps, out->n_steps + 1, sizeof *out->first)) {
+        out->overflow = 1;
+        return;
+    }
+    out->results[out->n_steps] = result == 0 || result == 1 ? result : PLCVEC_NONE;
+    out->first[out->n_steps++] = out->n_cells;
+}
+
+static reported *add_cell(plcvec_out *out, plcvec_type type, unsigned value)
+{
+    if (out->n_steps == 0 || !grow((void **)&out->cells, &out->cap_cells, out->n_cells + 1, sizeof *out->cells)) {
+        out->overflow = 1;      /* a device before any plcvec_out_step(), or out of memory */
+        return NULL;
+    }
+    reported *c = &out->cells[out->n_cells++];
+    c->type = (uint8_t)type;
+    c->value = value;
+    c->name[0] = '\0';
+    return c;
+}
+
+void plcvec_out_device(plcvec_out *out, int device, plcvec_type type, unsigned value)
+{
+    if (device < 0 || device >= PLCVEC_DEVICE_COUNT) {
+        out->overflow = 1;
+        return;
+    }
+    reported *c = add_cell(out, type, value);
+    if (c)
+        c->device = device;
+}
+
+void plcvec_out_named(plcvec_out *out, const char *device, plcvec_type type, unsigned value)
+{
+    int id = plcvec_device_named(device);
+    if (id >= 0) {
+        plcvec_out_device(out, id, type, value);
+        return;
+    }
+    reported *c = add_cell(out, type, value);
+    if (c) {
+        c->device = -1;
+        snprintf(c->name, sizeof c->name, "%s", device);
+    }
+}
+
+int plcvec_out_skip(plcvec_out *out, const char *reason)
+{
+    out->status = SKIPPED;
+    snprintf(out->message, sizeof out->message, "%s", reason ? reason : "skipped");
+    return SKIPPED;
+}
+
+int plcvec_out_error(plcvec_out *out, const char *message)
+{
+    out->status = FAILED;
+    snprintf(out->message, sizeof out->message, "%s", message ? message : "error");
+    return FAILED;
+}
+
+/* ---- the judge ---------------------------------------------------------------------------- */
+
+plcvec_judge *plcvec_judge_new(const plcvec_impl *impl, char *err, size_t errlen)
+{
+    if (!impl || !impl->run) {
+        snprintf(err, errlen, "the implementation has no run function");
+        return NULL;
+    }
+    plcvec_judge *j = calloc(1, sizeof *j);
+    if (!j) {
+        snprintf(err, errlen, "out of memory");
+        return NULL;
+    }
+    j->impl = *impl;
+    for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
+        j->alternative[i] = plcvec_interpretations[i].default_alternative;
+    for (size_t c = 0; c < impl->n_choices; c++) {
+        const plcvec_choice *ch = &impl->choices[c];
+        if (ch->interpretation >= PLCVEC_INTERPRETATION_COUNT ||
+            ch->alternative >= plcvec_interpretations[ch->interpretation].n_alternatives) {
+            snprintf(err, errlen, "%s declares interpretation %u alternative %u, which the suite does not have",
+                     impl->name ? impl->name : "the implementation", ch->interpretation, ch->alternative);
+            free(j);
+            return NULL;
+        }
+        j->alternative[ch->interpretation] = ch->alternative;
+    }
+    return j;
+}
+
+void plcvec_judge_free(plcvec_judge *j)
+{
+    if (!j)
+        return;
+    free(j->out.results);
+    free(j->out.first);
+    free(j->out.cells);
+    free(j->problems);
+    free(j->state);
+    free(j->before);
+    free(j);
+}
+
+int plcvec_judge_alternative(const plcvec_judge *j, int interpretation)
+{
+    return interpretation >= 0 && interpretation < PLCVEC_INTERPRETATION_COUNT ? j->alternative[interpretation] : -1;
+}
+
+/* The alternatives entry that applies, NULL for the vector's own expectations, or `missing`. */
+static const plcvec_alternative missing;
+
+static const plcvec_alternative *applicable(const plcvec_judge *j, const plcvec_vector *v)
+{
+    int all_default = 1;
+    for (size_t i = 0; i < v->n_interpretations; i++) {
+        uint8_t interp = v->interpretations[i];
+        if (j->alternative[interp] != plcvec_interpretations[interp].default_alternative)
+            all_default = 0;
+    }
+    if (all_default)
+        return NULL;
+    for (size_t a = 0; a < v->n_alternatives; a++) {
+        const plcvec_alternative *alt = &v->alternatives[a];
+        int match = 1;
+        for (size_t i = 0; i < v->n_interpretations && match; i++) {
+            uint8_t interp = v->interpretations[i];
+            int found = 0;
+            for (size_t c = 0; c < alt->n_choices; c++)
+                if (alt->choices[c].interpretation == interp)
+                    found = alt->choices[c].alternative == j->alternative[interp];
+            match = found;
+        }
+        if (match)
+            return alt;
+    }
+    return &missing;
+}
+
+const plcvec_expect *plcvec_expected(const plcvec_judge *j, const plcvec_vector *v, size_t step)
+{
+    if (step >= v->n_steps)
+        return NULL;
+    const plcvec_alternative *alt = applicable(j, v);
+    if (alt == &missing || (alt && step >= alt->n_expect))
+        return NULL;
+    return alt ? &alt->expect[step] : &v->steps[step].expect;
+}
+
+static int is_scratch(const plcvec_vector *v, int device)
+{
+    for (size_t i = 0; i < v->n_scratch; i++)
+        if (v->scratch[i] == device)
+            return 1;
+    return 0;
+}
+
+static plcvec_problem *problem(plcvec_judge *j, int step, int device)
+{
+    if (!grow((void **)&j->problems, &j->cap_problems, j->n_problems + 1, sizeof *j->problems))
+        return NULL;
+    plcvec_problem *p = &j->problems[j->n_problems++];
+    memset(p, 0, sizeof *p);
+    p->step = step;
+    p->device = device;
+    return p;
+}
+
+static void put(plcvec_cell *state, size_t *n, const plcvec_cell *c)
+{
+    for (size_t i = 0; i < *n; i++)
+        if (state[i].device == c->device) {
+            state[i] = *c;
+            return;
+        }
+    state[(*n)++] = *c;
+}
+
+static const plcvec_cell *cell_of(const plcvec_cell *state, size_t n, int device)
+{
+    for (size_t i = 0; i < n; i++)
+        if (state[i].device == device)
+            return &state[i];
+    return NULL;
+}
+
+/* Compare step `s`: what was reported (cells [lo, hi)) with the expected state. */
+static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const plcvec_cell *state, size_t n_state,
+                         const plcvec_cell *before, size_t n_before)
+{
+    const reported *r = j->out.cells;
+    size_t lo = j->out.first[s], hi = s + 1 < (int)j->out.n_steps ? j->out.first[s + 1] : j->out.n_cells;
+    /* Fast path: the same devices in the same order with the same values and types. */
+    size_t k = lo, i = 0;
+    for (; k < hi; k++) {
+        if (r[k].device >= 0 && is_scratch(v, r[k].device))
+            continue;
+        if (i >= n_state || r[k].device != state[i].device || r[k].type != state[i].type || r[k].value != state[i].value)
+            break;
+        i++;
+    }
+    if (k == hi && i == n_state)
+        return;
+    for (i = 0; i < n_state; i++) {
+        const reported *got = NULL;
+        for (k = lo; k < hi && !got; k++)
+            if (r[k].device == state[i].device)
+                got = &r[k];
+        if (got && got->type == state[i].type && got->value == state[i].value)
+            continue;
+        plcvec_problem *p = problem(j, s, state[i].device);
+        if (!p)
+            return;
+        p->has_expected = 1;
+        p->expected_type = state[i].type;
+        p->expected = state[i].value;
+        if (got) {
+            p->has_actual = 1;
+            p->actual_type = got->type;
+            p->actual = got->value;
+        }
+        const plcvec_cell *b = cell_of(before, n_before, state[i].device);
+        if (b) {
+            p->has_before = 1;
+            p->before_type = b->type;
+            p->before = b->value;
+        }
+    }
+    for (k = lo; k < hi; k++) {     /* a write outside the vector */
+        if (r[k].device >= 0 && (is_scratch(v, r[k].device) || cell_of(state, n_state, r[k].device)))
+            continue;
+        plcvec_problem *p = problem(j, s, r[k].device);
+        if (!p)
+            return;
+        snprintf(p->name, sizeof p->name, "%s", r[k].device >= 0 ? plcvec_devices[r[k].device].name : r[k].name);
+        p->has_actual = 1;
+        p->actual_type = r[k].type;
+        p->actual = r[k].value;
+    }
+}
+
+static void judged_by(plcvec_judge *j, const plcvec_vector *v)
+{
+    plcvec_verdict *vd = &j->verdict;
+    vd->n_choices = 0;
+    for (size_t i = 0; i < v->n_interpretations && vd->n_choices < PLCVEC_INTERPRETATION_COUNT; i++) {
+        vd->choices[vd->n_choices].interpretation = v->interpretations[i];
+        vd->choices[vd->n_choices++].alternative = j->alternative[v->interpretations[i]];
+    }
+}
+
+const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *v)
+{
+    plcvec_verdict *vd = &j->verdict;
+    plcvec_out *out = &j->out;
+    vd->vector = v;
+    vd->message[0] = '\0';
+    vd->problems = NULL;
+    vd->n_problems = 0;
+    j->n_problems = 0;
+    judged_by(j, v);
+    if (j->impl.supports && !j->impl.supports(j->impl.ctx, v->instruction)) {
+        vd->status = PLCVEC_SKIP;
+        snprintf(vd->message, sizeof vd->message, "the implementation does not support %s",
+                 plcvec_instruction_names[v->instruction]);
+        return vd;
+    }
+    const plcvec_alternative *alt = applicable(j, v);
+    if (alt == &missing || (alt && alt->n_expect != v->n_steps)) {
+        vd->status = PLCVEC_ERROR;
+        snprintf(vd->message, sizeof vd->message,
+                 "the vector lists no expectation for the alternatives it was judged by (is the suite damaged?)");
+        return vd;
+    }
+    out->n_steps = out->n_cells = 0;
+    out->status = RAN;
+    out->overflow = 0;
+    out->message[0] = '\0';
+    int rc = j->impl.run(j->impl.ctx, v, out);
+    if (out->status == SKIPPED || rc == SKIPPED) {
+        vd->status = PLCVEC_SKIP;
+        snprintf(vd->message, sizeof vd->message, "%.300s", out->message[0] ? out->message : "skipped");
+        return vd;
+    }
+    if (out->status == FAILED || rc != RAN || out->overflow) {
+        vd->status = PLCVEC_ERROR;
+        snprintf(vd->message, sizeof vd->message, "the implementation reported an error: %.300s",
+                 out->message[0] ? out->message
+                 : out->overflow ? "a device reported before plcvec_out_step(), an unknown device id, or out of memory"
+                                 : "run() returned nonzero");
+        return vd;
+    }
+    if (out->n_steps != v->n_steps) {
+        plcvec_problem *p = problem(j, -1, -2);
+        if (p) {
+            p->has_expected = p->has_actual = 1;
+            p->expected = v->n_steps;
+            p->actual = (uint32_t)out->n_steps;
+        }
+    } else {
+        size_t need = (size_t)v->n_devices + 1;
+        for (size_t s = 0; s < v->n_steps; s++)
+            need += v->steps[s].n_set + (alt ? alt->expect[s].n_devices : v->steps[s].expect.n_devices);
+        size_t cap = j->cap_state;
+        if (!grow((void **)&j->state, &cap, need, sizeof *j->state) ||
+            !grow((void **)&j->before, &j->cap_state, need, sizeof *j->before)) {
+            vd->status = PLCVEC_ERROR;
+            snprintf(vd->message, sizeof vd->message, "out of memory");
+            return vd;
+        }
+        size_t n = 0;
+        for (size_t i = 0; i < v->n_devices; i++)
+            if (!is_scratch(v, v->devices[i].device))
+                j->state[n++] = v->devices[i];
+        for (size_t s = 0; s < v->n_steps; s++) {
+            const plcvec_step *st = &v->steps[s];
+            const plcvec_expect *x = alt ? &alt->expect[s] : &st->expect;
+            for (size_t i = 0; i < st->n_set; i++)
+                if (!is_scratch(v, st->set[i].device))
+                    put(j->state, &n, &st->set[i]);
+            memcpy(j->before, j->state, n * sizeof *j->state);
+            size_t n_before = n;
+            for (size_t i = 0; i < x->n_devices; i++)
+                if (!is_scratch(v, x->devices[i].device))
+                    put(j->state, &n, &x->devices[i]);
+            if (x->result != PLCVEC_NONE && out->results[s] != x->result) {
+                plcvec_problem *p = problem(j, (int)s, -1);
+                if (p) {
+                    p->has_expected = 1;
+                    p->expected_type = PLCVEC_BIT;
+                    p->expected = (uint32_t)x->result;
+                    p->has_actual = out->results[s] != PLCVEC_NONE;
+                    p->actual_type = PLCVEC_BIT;
+                    p->actual = (uint32_t)(out->results[s] == 1);
+                }
+            }
+            compare_step(j, v, (int)s, j->state, n, j->before, n_before);
+        }
+    }
+    vd->problems = j->problems;
+    vd->n_problems = j->n_problems;
+    vd->status = j->n_problems ? PLCVEC_FAIL : PLCVEC_PASS;
+    return vd;
+}
+
+void plcvec_apply_known(plcvec_verdict *vd, const plcvec_known_failure *known, size_t n_known)
+{
+    for (size_t i = 0; i < n_known; i++) {
+        if (!known[i].id || !vd->vector || strcmp(known[i].id, vd->vector->id) != 0)
+            continue;
+        if (vd->status == PLCVEC_FAIL || vd->status == PLCVEC_ERROR) {
+            char was[sizeof vd->message];
+            snprintf(was, sizeof was, "%s", vd->message);
+            vd->status = PLCVEC_XFAIL;
+            snprintf(vd->message, sizeof vd->message, "known failure: %.200s%s%.280s", known[i].reason ? known[i].reason : "",
+                     was[0] ? "; " : "", was);
+        } else if (vd->status == PLCVEC_PASS) {
+            vd->status = PLCVEC_STALE;
+            snprintf(vd->message, sizeof vd->message,
+                     "listed as a known failure (%.300s) but it passes; remove it from the list",
+                     known[i].reason ? known[i].reason : "");
+        }
+        return;
+    }
+}
+
+/* ---- the verdict as text ------------------------------------------------------------------ */
+
+typedef struct text {
+    char *buf;
+    size_t size, len;
+} text;
+
+static void add(text *t, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    size_t room = t->len < t->size ? t->size - t->len : 0;
+    int n = vsnprintf(room ? t->buf + t->len : NULL, room, fmt, ap);
+    va_end(ap);
+    if (n > 0)
+        t->len += (size_t)n;
+}
+
+static void value(text *t, int has, uint8_t type, uint32_t v, const char *absent)
+{
+    if (!has)
+        add(t, "%s", absent);
+    else if (type == PLCVEC_BIT)
+        add(t, "%s", v ? "true" : "false");
+    else
+        add(t, "%u", (unsigned)v);
+}
+
+#define SHOW_PROBLEMS 12    /* field lines shown per failing vector, as the Python runner */
+
+size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *vd)
+{
+    text t = {buf, size, 0};
+    if (size)
+        buf[0] = '\0';
+    const plcvec_vector *v = vd->vector;
+    static const char *const upper[] = {"PASS", "FAIL", "ERROR", "SKIP", "XFAIL", "STALE"};
+    add(&t, "%s %s\n", vd->status <= PLCVEC_STALE ? upper[vd->status] : "?", v ? v->id : "?");
+    if (v && v->description[0])
+        add(&t, "    %s: %s\n", plcvec_instruction_names[v->instruction], v->description);
+    if (vd->n_choices) {
+        add(&t, "    judged by:");
+        for (size_t i = 0; i < vd->n_choices; i++) {
+            const plcvec_interpretation_info *info = &plcvec_interpretations[vd->choices[i].interpretation];
+            add(&t, "%s %s=%s", i ? "," : "", info->id, info->alternatives[vd->choices[i].alternative]);
+        }
+        add(&t, "\n");
+    }
+    for (size_t i = 0; i < vd->n_problems && i < SHOW_PROBLEMS; i++) {
+        const plcvec_problem *p = &vd->problems[i];
+        add(&t, "    ");
+        if (p->step >= 0)
+            add(&t, "step %d ", p->step);
+        if (p->device == -2) {
+            add(&t, "steps: expected %u steps, got %u steps\n", (unsigned)p->expected, (unsigned)p->actual);
+            continue;
+        }
+        add(&t, "%s: expected ", p->name[0] ? p->name : p->device == -1 ? "result" : plcvec_devices[p->device].name);
+        value(&t, p->has_expected, p->expected_type, p->expected, "<not in the vector>");
+        add(&t, ", got ");
+        value(&t, p->has_actual, p->actual_type, p->actual, "<not reported>");
+        if (!p->has_expected)
+            add(&t, " (a write outside the vector)");
+        else if (p->has_before && p->before_type == p->expected_type && p->before == p->expected)
+            add(&t, " (the step must leave it unchanged)");
+        else if (p->has_before) {
+            add(&t, " (before the step: ");
+            value(&t, 1, p->before_type, p->before, "");
+            add(&t, ")");
+        }
+        add(&t, "\n");
+    }
+    if (vd->n_problems > SHOW_PROBLEMS)
+        add(&t, "    ... and %zu more differences\n", vd->n_problems - SHOW_PROBLEMS);
+    if (vd->message[0])
+        add(&t, "    %s\n", vd->message);
+    if (v && v->n_clauses) {
+        add(&t, "    spec clauses:");
+        for (size_t i = 0; i < v->n_clauses; i++)
+            add(&t, "%s %s", i ? "," : "", plcvec_clause(v, i));
+        add(&t, "\n");
+    }
+    return t.len;
+}
+
+void plcvec_print_verdict(FILE *f, const plcvec_verdict *vd)
+{
+    char small[4096];
+    size_t n = plcvec_format_verdict(small, sizeof small, vd);
+    if (n < sizeof small) {
+        fputs(small, f);
+        return;
+    }
+    char *big = malloc(n + 1);
+    if (!big) {
+        fputs(small, f);
+        return;
+    }
+    plcvec_format_verdict(big, n + 1, vd);
+    fputs(big, f);
+    free(big);
+}

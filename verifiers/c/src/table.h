@@ -1,0 +1,37 @@
+/* What the generated tables (src/generated/, rendered by `plcvec export --lang c`) are made of.
+ *
+ * A vector is one initializer of plcvec_vector; its lists are compound literals, so a vector
+ * stays one block of a few lines and a changed vector changes only those lines. The macros keep
+ * those lines short: W(D100, 11) is the word D100 = 11, B(SM709, 0) the bit SM709 = false. */
+#ifndef PLCVEC_TABLE_H
+#define PLCVEC_TABLE_H
+
+#include "plcvec/plcvec.h"
+
+typedef struct plcvec_family_table {
+    const plcvec_vector *vectors;
+    size_t count;
+    const char *const *clauses;
+    size_t n_clauses;
+} plcvec_family_table;
+
+extern const plcvec_family_table *const plcvec_tables[PLCVEC_FAMILY_COUNT];
+
+_Static_assert(PLCVEC_TAG_COUNT <= 64, "a vector's tags are a 64-bit set");
+
+/* A list and its length (the export counts); NONE is the empty list. */
+#define L(type, n, ...) (const type[]){__VA_ARGS__}, n
+#define NONE NULL, 0
+#define W(dev, v) {PLCVEC_DEV_##dev, v, PLCVEC_WORD}
+#define B(dev, v) {PLCVEC_DEV_##dev, v, PLCVEC_BIT}
+#define T(tag) (UINT64_C(1) << PLCVEC_TAG_##tag)
+#define OPD(name, dev) {name, PLCVEC_DEV_##dev, 0, 0}
+#define K(name, value) {name, 0, 1, value}
+#define CLK(fields, y, mo, d, h, mi, s) &(const plcvec_clock){fields, y, mo, d, h, mi, s}
+#define X(devices, result) {devices, result}
+#define S(rlo, en, input, elapsed, clock, set, expect) {rlo, en, input, elapsed, clock, set, expect}
+#define O(category) PLCVEC_OUTCOME_##category
+#define CH(interp, alt) {PLCVEC_INTERP_##interp, PLCVEC_##interp##_##alt}
+#define A(choices, category, expect) {choices, category, expect}
+
+#endif

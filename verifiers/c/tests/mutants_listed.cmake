@@ -1,0 +1,10 @@
+# The mutants the library holds are exactly those tests/CMakeLists.txt registers.
+execute_process(COMMAND ${EXE} --list OUTPUT_VARIABLE out RESULT_VARIABLE rc TIMEOUT 60)
+string(STRIP "${out}" out)
+string(REPLACE "\n" ";" held "${out}")
+list(SORT held)
+set(expected ${EXPECTED})
+list(SORT expected)
+if(NOT rc EQUAL 0 OR NOT held STREQUAL expected)
+    message(FATAL_ERROR "mutants held: ${held}\nmutants tested: ${expected}")
+endif()
