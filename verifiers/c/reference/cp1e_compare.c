@@ -69,6 +69,12 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
         unmasked += !(c >> r->fields[f].bit & 1);
     if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_ERROR)
         return error(m);
+    if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_NOT_COMPARED) {
+        /* Nothing compared, no result: OFF, the flags untouched, no error. */
+        if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
+            memory_write_named(m, PLCVEC_DEV_P_ER, PLCVEC_BIT, 0);
+        return 0;
+    }
     int order = 0;
     for (int f = 0; f < 6; f++) {
         const cp1e_field *fd = &r->fields[f];
@@ -114,10 +120,13 @@ int cp1e_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_ste
     if (name[0] == 'L')
         return evaluate(ref, v, symbol);
     int rlo = step->rlo_in == 1;
+    int logic = ref->follows[PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF];
     if (name[0] == 'A') {
-        if (!rlo && ref->follows[PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF] == PLCVEC_CP1E_AND_OR_WHEN_OFF_AND_SKIPPED)
+        if (!rlo && logic != PLCVEC_CP1E_AND_OR_WHEN_OFF_ALWAYS_EXECUTED)   /* and-skipped, short-circuit */
             return 0;
         return ref->cp1e.and_form(rlo, evaluate(ref, v, symbol));
     }
+    if (rlo && logic == PLCVEC_CP1E_AND_OR_WHEN_OFF_SHORT_CIRCUIT)
+        return 1;
     return evaluate(ref, v, symbol) || rlo;
 }

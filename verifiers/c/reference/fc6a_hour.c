@@ -38,7 +38,8 @@ int hour_execute(plcvec_reference *ref, hour_state *st, const plcvec_vector *v, 
         if (ref->follows[PLCVEC_INTERP_HOUR_INPUT_OFF] == PLCVEC_HOUR_INPUT_OFF_RESET) {
             write_hms(m, d1, 0);
             st->fraction_ms = 0;
-        }
+        } else if (ref->follows[PLCVEC_INTERP_HOUR_INPUT_OFF] == PLCVEC_HOUR_INPUT_OFF_HOLD_DROP_FRACTION)
+            st->fraction_ms = 0;        /* D1 kept; the part of a second is lost */
         return PLCVEC_NONE;
     }
     /* The whole elapsed time since the previous execution is ON time. */

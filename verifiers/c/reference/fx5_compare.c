@@ -121,7 +121,10 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
             r->sm709(m, 0);
             return 0;
         }
-        error = out_of_range(fields, s1, 0, s3) || (!use_clock && out_of_range(fields, s2, 0, s3));
+        /* selected-fields: a masked word is not comparison target data; compared-operands: the
+         * operands are, as a whole, but only when a comparison is made at all. */
+        int all = ref->follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_COMPARED_OPERANDS;
+        error = out_of_range(fields, s1, all, s3) || (!use_clock && out_of_range(fields, s2, all, s3));
         if (error) {
             r->sm709(m, 1);
             return 0;

@@ -168,6 +168,7 @@ static const char *const alternatives_cp1e_out_of_range[] = {
 static const char *const alternatives_cp1e_all_masked[] = {
     "error",
     "equal",
+    "not-compared",
 };
 static const char *const alternatives_cp1e_c_high_bits[] = {
     "ignored",
@@ -176,6 +177,7 @@ static const char *const alternatives_cp1e_c_high_bits[] = {
 static const char *const alternatives_cp1e_and_or_when_off[] = {
     "always-executed",
     "and-skipped",
+    "short-circuit",
 };
 static const char *const alternatives_cp1e_er_flag[] = {
     "reflects-each-execution",
@@ -188,6 +190,7 @@ static const char *const alternatives_hour_output_off[] = {
 static const char *const alternatives_hour_input_off[] = {
     "hold",
     "reset",
+    "hold-drop-fraction",
 };
 static const char *const alternatives_hour_preset_zero[] = {
     "immediate",
@@ -196,6 +199,7 @@ static const char *const alternatives_hour_preset_zero[] = {
 static const char *const alternatives_fx5_sm709_scope[] = {
     "selected-fields",
     "all-words",
+    "compared-operands",
 };
 static const char *const alternatives_fx5_and_or_when_off[] = {
     "and-skipped",
@@ -224,21 +228,21 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"CP1E-OUT-OF-RANGE", "Is a BCD field outside its range (minute 75, month 13, day 00) an error, or compared as it is\?", alternatives_cp1e_out_of_range, 2, PLCVEC_CP1E_OUT_OF_RANGE_COMPARED,
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
-    {"CP1E-ALL-MASKED", "What is the result when C masks all six fields\?", alternatives_cp1e_all_masked, 2, PLCVEC_CP1E_ALL_MASKED_ERROR,
+    {"CP1E-ALL-MASKED", "What is the result when C masks all six fields\?", alternatives_cp1e_all_masked, 3, PLCVEC_CP1E_ALL_MASKED_ERROR,
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"CP1E-C-HIGH-BITS", "What do bits 06 to 15 of C do\?", alternatives_cp1e_c_high_bits, 2, PLCVEC_CP1E_C_HIGH_BITS_IGNORED,
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
-    {"CP1E-AND-OR-WHEN-OFF", "Does an AND form execute, and update the flags, while its execution condition is OFF\?", alternatives_cp1e_and_or_when_off, 2, PLCVEC_CP1E_AND_OR_WHEN_OFF_ALWAYS_EXECUTED,
+    {"CP1E-AND-OR-WHEN-OFF", "Does an AND form execute, and update the flags, while its execution condition is OFF\?", alternatives_cp1e_and_or_when_off, 3, PLCVEC_CP1E_AND_OR_WHEN_OFF_ALWAYS_EXECUTED,
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"CP1E-ER-FLAG", "Once the Error Flag is on, does the next execution that ends without error turn it off again\?", alternatives_cp1e_er_flag, 2, PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION,
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"HOUR-OUTPUT-OFF", "What turns D2 off, other than an invalid preset\?", alternatives_hour_output_off, 2, PLCVEC_HOUR_OUTPUT_OFF_LATCHED,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
-    {"HOUR-INPUT-OFF", "Does D1 hold its value while the input is off, or is it cleared\?", alternatives_hour_input_off, 2, PLCVEC_HOUR_INPUT_OFF_HOLD,
+    {"HOUR-INPUT-OFF", "Does D1 hold its value while the input is off, or is it cleared\?", alternatives_hour_input_off, 3, PLCVEC_HOUR_INPUT_OFF_HOLD,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-PRESET-ZERO", "Does a preset of 0:00:00 turn D2 on\?", alternatives_hour_preset_zero, 2, PLCVEC_HOUR_PRESET_ZERO_IMMEDIATE,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
-    {"FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects\?", alternatives_fx5_sm709_scope, 2, PLCVEC_FX5_SM709_SCOPE_SELECTED_FIELDS,
+    {"FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects\?", alternatives_fx5_sm709_scope, 3, PLCVEC_FX5_SM709_SCOPE_SELECTED_FIELDS,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
     {"FX5-AND-OR-WHEN-OFF", "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on\?", alternatives_fx5_and_or_when_off, 3, PLCVEC_FX5_AND_OR_WHEN_OFF_AND_SKIPPED,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},

@@ -7,7 +7,7 @@
 
 #define PLCVEC_SUITE_VERSION "0.1.0"
 #define PLCVEC_SCHEMA_VERSION "1.0.0"
-#define PLCVEC_SPEC_SHA256 "16e04a093d32a18911a4d612d43f0be0055f67c54c6d46f8804222ff37135a24"
+#define PLCVEC_SPEC_SHA256 "90c2e2a0e8b4a5d89805b7e473f0bd4ec243612a5aa1faeca464e99c0de22e12"
 #define PLCVEC_TOTAL_VECTORS 2899
 
 /* Instruction families, in the order of the manifest. */
@@ -143,6 +143,7 @@ enum {
 enum {
     PLCVEC_CP1E_ALL_MASKED_ERROR = 0,  /* default */
     PLCVEC_CP1E_ALL_MASKED_EQUAL = 1,
+    PLCVEC_CP1E_ALL_MASKED_NOT_COMPARED = 2,
 };
 enum {
     PLCVEC_CP1E_C_HIGH_BITS_IGNORED = 0,  /* default */
@@ -151,6 +152,7 @@ enum {
 enum {
     PLCVEC_CP1E_AND_OR_WHEN_OFF_ALWAYS_EXECUTED = 0,  /* default */
     PLCVEC_CP1E_AND_OR_WHEN_OFF_AND_SKIPPED = 1,
+    PLCVEC_CP1E_AND_OR_WHEN_OFF_SHORT_CIRCUIT = 2,
 };
 enum {
     PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION = 0,  /* default */
@@ -163,6 +165,7 @@ enum {
 enum {
     PLCVEC_HOUR_INPUT_OFF_HOLD = 0,  /* default */
     PLCVEC_HOUR_INPUT_OFF_RESET = 1,
+    PLCVEC_HOUR_INPUT_OFF_HOLD_DROP_FRACTION = 2,
 };
 enum {
     PLCVEC_HOUR_PRESET_ZERO_IMMEDIATE = 0,  /* default */
@@ -171,6 +174,7 @@ enum {
 enum {
     PLCVEC_FX5_SM709_SCOPE_SELECTED_FIELDS = 0,  /* default */
     PLCVEC_FX5_SM709_SCOPE_ALL_WORDS = 1,
+    PLCVEC_FX5_SM709_SCOPE_COMPARED_OPERANDS = 2,
 };
 enum {
     PLCVEC_FX5_AND_OR_WHEN_OFF_AND_SKIPPED = 0,  /* default */
