@@ -1,0 +1,205 @@
+package org.plcvec.verify;
+
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * What one vector expects of an implementation that follows given alternatives, worked out once:
+ * the full device state after every step (a vector stores only the changes), over the vector's
+ * device table, and checked against the vector's own {@code final} so that an inconsistent file
+ * is caught, not trusted.
+ */
+final class Expected {
+    final Vector vector;
+    final Boolean[] results;
+    final int[][] states;       // after each step, per slot (Values encoding; ABSENT: not in the image)
+    final int[][] befores;      // before each step (after `set`), for messages
+    final Map<String, String> judgedBy;   // interpretation -> alternative, for those the vector depends on
+    final String category;
+
+    private Expected(Vector vector, Boolean[] results, int[][] states, int[][] befores, Map<String, String> judgedBy,
+                     String category) {
+        this.vector = vector;
+        this.results = results;
+        this.states = states;
+        this.befores = befores;
+        this.judgedBy = judgedBy;
+        this.category = category;
+    }
+
+    /** {@code choices}: interpretation → alternative for every interpretation (declared or default). */
+    static Expected of(Vector v, Map<String, String> choices, Map<String, String> defaults) {
+        Vector.Expectation e = v.expectation();
+        Map<String, String> applied = new TreeMap<>();
+        boolean other = false;
+        for (String i : v.interpretations()) {
+            String alt = choices.getOrDefault(i, defaults.get(i));
+            applied.put(i, alt);
+            other |= alt != null && !alt.equals(defaults.get(i));
+        }
+        if (other) {
+            e = null;
+            for (Vector.Variant variant : v.variants()) {
+                boolean all = true;
+                for (Map.Entry<String, String> a : applied.entrySet()) {
+                    all &= a.getValue().equals(variant.choices().get(a.getKey()));
+                }
+                if (all) {
+                    e = variant.expectation();
+                    break;
+                }
+            }
+            if (e == null) {
+                StringBuilder sb = new StringBuilder();
+                applied.forEach((k, a) -> sb.append(sb.length() == 0 ? "" : ", ").append(k).append('=').append(a));
+                throw new VerifyException("vector " + v.id() + ": no expectation for " + sb
+                        + " (the vector file lists no such alternative)");
+            }
+        }
+        int n = v.steps().size();
+        int[] state = v.initial.clone();
+        Boolean[] results = new Boolean[n];
+        int[][] states = new int[n][];
+        int[][] befores = new int[n][];
+        for (int s = 0; s < n; s++) {
+            Step step = v.steps().get(s);
+            Map<String, Object> set = step.set();
+            for (Map.Entry<String, Object> kv : set.entrySet()) {
+                state[slot(v, Address.of(kv.getKey()))] = Values.encode(kv.getValue());
+            }
+            befores[s] = state.clone();
+            Vector.StepExpect se = e.steps().get(s);
+            for (int d = 0; d < se.devices().length; d++) {
+                state[slot(v, se.devices()[d])] = se.values()[d];
+            }
+            states[s] = state.clone();
+            results[s] = se.result();
+        }
+        int[] fin = new int[v.slots.length];
+        java.util.Arrays.fill(fin, Values.ABSENT);
+        for (int d = 0; d < e.finalDevices().length; d++) {
+            fin[slot(v, e.finalDevices()[d])] = e.finalValues()[d];
+        }
+        int[] last = states[n - 1];
+        for (int j = 0; j < fin.length; j++) {
+            if (v.compared[j] && fin[j] != last[j]) {
+                throw new VerifyException("vector " + v.id() + ": the per-step changes do not add up to `final` at "
+                        + v.slots[j] + " (the vector file is inconsistent; regenerate it)");
+            }
+        }
+        return new Expected(v, results, states, befores, Collections.unmodifiableMap(applied), e.category());
+    }
+
+    static int slot(VectorRequest v, Address a) {
+        long key = a.key();
+        Address[] slots = v.slots;
+        for (int j = 0; j < slots.length; j++) {
+            if (slots[j].key() == key) {
+                return j;
+            }
+        }
+        throw new IllegalStateException("vector " + v.id() + ": " + a + " is not in its device table");
+    }
+
+    /** Fast check of the memory after step {@code s}: true when every compared device and the result match. */
+    boolean matches(int s, Memory m, Boolean result) {
+        Boolean want = results[s];
+        if (want != null && !want.equals(result)) {
+            return false;
+        }
+        int[] expect = states[s];
+        boolean[] compared = vector.compared;
+        for (int j = 0; j < expect.length; j++) {
+            if (m.valueAt(j) != expect[j] && compared[j]) {
+                return false;
+            }
+        }
+        for (int j = expect.length, n = m.size(); j < n; j++) {
+            if (m.valueAt(j) != Values.ABSENT) {
+                return false;      // a write outside the vector
+            }
+        }
+        return true;
+    }
+
+    /** The field-level differences after step {@code s}, memory form. */
+    List<Problem> problems(int s, Memory m, Boolean result) {
+        int n = m.size();
+        Address[] a = new Address[n];
+        String[] shown = new String[n];
+        int[] values = new int[n];
+        for (int j = 0; j < n; j++) {
+            a[j] = m.address(j);
+            values[j] = m.valueAt(j);
+            shown[j] = Values.show(values[j]);
+        }
+        return problems(s, a, values, shown, result, true);
+    }
+
+    /** The field-level differences after step {@code s}, as a contract-level implementation reported it. */
+    List<Problem> problems(int s, DeviceImage image, Boolean result) {
+        int n = image.size();
+        Address[] a = new Address[n];
+        String[] shown = new String[n];
+        int[] values = new int[n];
+        for (int j = 0; j < n; j++) {
+            a[j] = image.address(j);
+            values[j] = image.value(j);
+            shown[j] = image.show(j);
+        }
+        return problems(s, a, values, shown, result, false);
+    }
+
+    private List<Problem> problems(int s, Address[] reported, int[] values, String[] shown, Boolean result,
+                                   boolean memory) {
+        List<Problem> out = new ArrayList<>();
+        Boolean want = results[s];
+        if (want != null && !want.equals(result)) {
+            out.add(new Problem(s, "result", want.toString(), result == null ? Problem.NOT_REPORTED : result.toString(),
+                    null));
+        }
+        Address[] slots = vector.slots;
+        int[] actual = new int[slots.length];
+        String[] actualShown = new String[slots.length];
+        java.util.Arrays.fill(actual, Values.ABSENT);
+        List<Problem> outside = new ArrayList<>();
+        for (int r = 0; r < reported.length; r++) {
+            int j = find(slots, reported[r]);
+            if (j >= 0) {
+                actual[j] = values[r];
+                actualShown[j] = shown[r];
+            } else if (values[r] != Values.ABSENT) {
+                outside.add(new Problem(s, reported[r].name(), Problem.NOT_IN_VECTOR, shown[r]
+                        + (memory ? " (written, but the instruction must not write outside the vector)" : ""), null));
+            }
+        }
+        int[] expect = states[s];
+        int[] before = befores[s];
+        List<Problem> fields = new ArrayList<>();
+        for (int j = 0; j < slots.length; j++) {
+            if (!vector.compared[j] || actual[j] == expect[j]) {
+                continue;
+            }
+            String want2 = expect[j] == Values.ABSENT ? Problem.NOT_IN_VECTOR : Values.show(expect[j]);
+            String got = actual[j] == Values.ABSENT ? Problem.NOT_REPORTED : actualShown[j];
+            String was = before[j] == Values.ABSENT ? null : Values.show(before[j]);
+            fields.add(new Problem(s, slots[j].name(), want2, got, was));
+        }
+        fields.addAll(outside);
+        fields.sort((x, y) -> x.field().compareTo(y.field()));
+        out.addAll(fields);
+        return out;
+    }
+
+    private static int find(Address[] slots, Address a) {
+        for (int j = 0; j < slots.length; j++) {
+            if (slots[j].key() == a.key()) {
+                return j;
+            }
+        }
+        return -1;
+    }
+}

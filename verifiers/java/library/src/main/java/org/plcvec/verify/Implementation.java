@@ -1,0 +1,43 @@
+package org.plcvec.verify;
+
+import java.util.List;
+
+/**
+ * An implementation under test, at the level of the contract (CONTRACT.md): one vector's initial
+ * state and its steps' inputs in, and after each step the device image and, for contacts, the
+ * result. Each call starts from the vector's own initial state: nothing carries over between
+ * vectors.
+ *
+ * <p>An emulator that only wants to "execute this instruction on my memory" implements
+ * {@link Emulator} instead, which does the bookkeeping.
+ */
+public interface Implementation {
+    /** The name reports show. */
+    default String name() {
+        return getClass().getSimpleName();
+    }
+
+    default String version() {
+        return "";
+    }
+
+    /** The interpretation alternatives this implementation follows; undeclared ones take the default. */
+    default Choices choices() {
+        return Choices.defaults();
+    }
+
+    /**
+     * Whether it runs this instruction at all ({@code LDTM<=}, {@code TADDP}, {@code LD <=DT}).
+     * Vectors of other instructions are skipped; a selection in which nothing is supported fails.
+     */
+    default boolean supports(String instruction) {
+        return true;
+    }
+
+    /**
+     * Run every step of {@code vector} from its initial state and report the state after each.
+     * Throw {@link SkipVector} to skip this vector; any other exception is reported as an error
+     * of this vector.
+     */
+    List<StepState> run(VectorRequest vector) throws Exception;
+}

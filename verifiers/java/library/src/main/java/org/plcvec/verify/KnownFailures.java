@@ -1,0 +1,167 @@
+package org.plcvec.verify;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import tools.jackson.core.JacksonException;
+import tools.jackson.databind.JsonNode;
+import tools.jackson.dataformat.toml.TomlMapper;
+
+/**
+ * The expectations file: vectors an implementation is known to fail, each with a reason (the
+ * same TOML file {@code plcvec verify --expectations} reads).
+ *
+ * <pre>
+ * [[known-failure]]
+ * id = "fx5-date-compare/LDDT&lt;/nonexistent/2024-2-30/s1/vs-previous"
+ * reason = "our calendar check rejects 2008/02/31"
+ * </pre>
+ *
+ * <p>A listed vector that fails is XFAIL and does not fail the run; a listed vector that passes
+ * is STALE and fails it, and so does an id the suite does not have: the list can only shrink.
+ * Ids are exact, never patterns: a pattern would hide tomorrow's new failures.
+ */
+public final class KnownFailures {
+    static final String SECTION = "known-failure";
+    private static final TomlMapper TOML = TomlMapper.builder().build();
+
+    /** One entry, with the line its {@code [[known-failure]]} header is on. */
+    public record Entry(String id, String reason, int line) {
+    }
+
+    private static final KnownFailures NONE = new KnownFailures("(none)", Map.of());
+    private final String path;
+    private final Map<String, Entry> entries;
+
+    private KnownFailures(String path, Map<String, Entry> entries) {
+        this.path = path;
+        this.entries = Collections.unmodifiableMap(entries);
+    }
+
+    public static KnownFailures none() {
+        return NONE;
+    }
+
+    public static KnownFailures load(Path file) {
+        String text;
+        try {
+            text = Files.readString(file, StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new VerifyException(file + ": cannot read the expectations file: no such file");
+        } catch (IOException e) {
+            throw new VerifyException(file + ": cannot read the expectations file: " + e.getMessage());
+        }
+        return parse(text, file.toString());
+    }
+
+    public static KnownFailures parse(String text, String path) {
+        JsonNode data;
+        try {
+            data = TOML.readTree(text);
+        } catch (JacksonException e) {
+            String line = e.getLocation() != null && e.getLocation().getLineNr() > 0 ? ":" + e.getLocation().getLineNr() : "";
+            throw new VerifyException(path + line + ": not valid TOML: " + e.getOriginalMessage());
+        }
+        String[] lines = text.split("\n", -1);
+        for (String key : data.propertyNames()) {
+            if (!key.equals(SECTION)) {
+                throw new VerifyException(path + ":" + lineOf(lines, key) + ": unknown key '" + key
+                        + "'; an expectations file holds only [[" + SECTION + "]] entries");
+            }
+        }
+        List<Integer> headers = new ArrayList<>();
+        for (int i = 0; i < lines.length; i++) {
+            if (lines[i].strip().startsWith("[[" + SECTION + "]]")) {
+                headers.add(i + 1);
+            }
+        }
+        Map<String, Entry> entries = new LinkedHashMap<>();
+        JsonNode list = data.path(SECTION);
+        if (!list.isMissingNode() && !list.isArray()) {
+            throw new VerifyException(path + ":" + lineOf(lines, SECTION) + ": " + SECTION
+                    + " must be an array of tables ([[" + SECTION + "]])");
+        }
+        int n = 0;
+        for (JsonNode entry : list) {
+            int line = n < headers.size() ? headers.get(n) : 0;
+            n++;
+            if (!entry.isObject()) {
+                throw new VerifyException(path + ":" + line + ": [[" + SECTION + "]] must be a table");
+            }
+            for (String key : entry.propertyNames()) {
+                if (!key.equals("id") && !key.equals("reason")) {
+                    throw new VerifyException(path + ":" + line + ": unknown key '" + key + "' (an entry has `id` and `reason`)");
+                }
+            }
+            JsonNode id = entry.path("id");
+            JsonNode reason = entry.path("reason");
+            if (!id.isString() || id.stringValue().isEmpty()) {
+                throw new VerifyException(path + ":" + line + ": entry without an `id`");
+            }
+            if (!reason.isString() || reason.stringValue().isBlank()) {
+                throw new VerifyException(path + ":" + line + ": " + id.stringValue() + ": every known failure needs a `reason`");
+            }
+            Entry first = entries.get(id.stringValue());
+            if (first != null) {
+                throw new VerifyException(path + ":" + line + ": " + id.stringValue() + " is listed twice (first at line "
+                        + first.line() + ")");
+            }
+            entries.put(id.stringValue(), new Entry(id.stringValue(), reason.stringValue().strip(), line));
+        }
+        return new KnownFailures(path, entries);
+    }
+
+    private static int lineOf(String[] lines, String key) {
+        for (int i = 0; i < lines.length; i++) {
+            String l = lines[i].strip();
+            if (l.startsWith(key) || l.startsWith("[" + key) || l.startsWith("[[" + key)) {
+                return i + 1;
+            }
+        }
+        return 1;
+    }
+
+    public Map<String, Entry> entries() {
+        return entries;
+    }
+
+    public String path() {
+        return path;
+    }
+
+    /** Turn a listed failure into XFAIL and a listed pass into STALE (in place). */
+    void apply(Result r) {
+        Entry e = entries.get(r.id());
+        if (e == null) {
+            return;
+        }
+        String where = path + ":" + e.line();
+        if (r.status() == Status.FAIL || r.status() == Status.ERROR) {
+            r.mark(Status.XFAIL, "known failure (" + where + "): " + e.reason()
+                    + (r.message().isEmpty() ? "" : "; " + r.message()));
+        } else if (r.status() == Status.PASS) {
+            r.mark(Status.STALE, "listed as a known failure (" + where + ": " + e.reason()
+                    + ") but it passes; remove it from the expectations file");
+        }
+    }
+
+    /** Entries naming a vector the suite does not have: each is a STALE result. */
+    List<Result> unknownIds(Suite suite) {
+        List<Result> out = new ArrayList<>();
+        for (Entry e : entries.values()) {
+            if (suite.byId(e.id()) == null) {
+                out.add(new Result(e.id(), null, Status.STALE, List.of(), "listed as a known failure (" + path + ":"
+                        + e.line() + ") but the suite has no such vector; remove it from the expectations file", null));
+            }
+        }
+        return out;
+    }
+}

@@ -1,0 +1,105 @@
+package org.plcvec.verify;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+
+/** The verdict on one vector, with everything a person needs to read it. */
+public final class Result {
+    /** Field lines shown per failing vector in a report. */
+    static final int SHOW_PROBLEMS = 12;
+
+    private final String id;
+    private final Vector vector;          // null for an expectations entry the suite does not have
+    private Status status;
+    private final List<Problem> problems;
+    private String message;
+    private final Map<String, String> judgedBy;
+
+    Result(String id, Vector vector, Status status, List<Problem> problems, String message, Map<String, String> judgedBy) {
+        this.id = id;
+        this.vector = vector;
+        this.status = status;
+        this.problems = List.copyOf(problems);
+        this.message = message == null ? "" : message;
+        this.judgedBy = judgedBy == null ? Map.of() : judgedBy;
+    }
+
+    public String id() {
+        return id;
+    }
+
+    /** The vector (null for an expectations-file entry the suite does not have). */
+    public Vector vector() {
+        return vector;
+    }
+
+    public Status status() {
+        return status;
+    }
+
+    public boolean failing() {
+        return status.failing();
+    }
+
+    /** The fields that differ (for FAIL). */
+    public List<Problem> problems() {
+        return problems;
+    }
+
+    /** Why it errored, was skipped, is a known failure or is stale. */
+    public String message() {
+        return message;
+    }
+
+    /** interpretation → the alternative the vector was judged by (only those it depends on). */
+    public Map<String, String> judgedBy() {
+        return judgedBy;
+    }
+
+    void mark(Status status, String message) {
+        this.status = status;
+        this.message = message;
+    }
+
+    /**
+     * The report block of this vector, as {@code plcvec verify} prints it:
+     * <pre>
+     * FAIL fx5-time-add/TADD/carry/exact-wrap/flags-off-before
+     *     TADD: 23:59:59 + 00:00:01 ...
+     *     judged by: TADD-EXACT-24=carry-at-24
+     *     step 0 D300: expected 0, got 24 (before the step: 65535)
+     *     spec clauses: fx5-time-add#sm700, ...
+     * </pre>
+     */
+    public String report() {
+        List<String> lines = new ArrayList<>();
+        lines.add(status.name() + " " + id);
+        if (vector != null && !vector.description().isEmpty()) {
+            lines.add("    " + vector.instruction() + ": " + vector.description());
+        }
+        if (!judgedBy.isEmpty()) {
+            StringBuilder sb = new StringBuilder();
+            judgedBy.forEach((k, v) -> sb.append(sb.length() == 0 ? "" : ", ").append(k).append('=').append(v));
+            lines.add("    judged by: " + sb);
+        }
+        for (Problem p : problems.subList(0, Math.min(problems.size(), SHOW_PROBLEMS))) {
+            lines.add("    " + p.line());
+        }
+        if (problems.size() > SHOW_PROBLEMS) {
+            lines.add("    ... and " + (problems.size() - SHOW_PROBLEMS) + " more differences");
+        }
+        if (!message.isEmpty()) {
+            lines.add("    " + message);
+        }
+        if (vector != null && !vector.clauses().isEmpty()) {
+            lines.add("    spec clauses: " + String.join(", ", vector.clauses()));
+        }
+        return String.join("\n", lines);
+    }
+
+    @Override
+    public String toString() {
+        return status.label() + " " + id;
+    }
+}

@@ -1,0 +1,308 @@
+package org.plcvec.verify;
+
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Collections;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.regex.Pattern;
+import java.util.zip.CRC32;
+
+import org.plcvec.spec.Family;
+import org.plcvec.spec.Instruction;
+import org.plcvec.spec.Interpretation;
+import org.plcvec.spec.Tag;
+
+/**
+ * Which vectors to run. Each filter is OR within itself; the filters are AND together; an empty
+ * filter lets everything through. Immutable: every method returns a new selection.
+ *
+ * <pre>{@code
+ * Selection.all().families(Family.FX5_TIME_ADD).tags(Tag.BOUNDARY).shard(2, 4)
+ * }</pre>
+ *
+ * <p>{@link #fromSystemProperties()} reads {@code -Dplcvec.family=...}, {@code plcvec.instruction},
+ * {@code plcvec.tag}, {@code plcvec.id} (globs), {@code plcvec.interpretation} (each a
+ * comma-separated list) and {@code plcvec.shard=K/N}, so one Maven run can narrow any factory:
+ * {@code mvn test -Dtest=MyConformanceTest -Dplcvec.id='fx5-time-add/TADDP/*'}.
+ */
+public final class Selection {
+    private static final Selection ALL = new Selection(Set.of(), Set.of(), Set.of(), List.of(), Set.of(), 0, 0);
+
+    private final Set<String> families;
+    private final Set<String> instructions;
+    private final Set<String> tags;
+    private final List<String> ids;
+    private final List<Pattern> idPatterns;
+    private final Set<String> interpretations;
+    private final int shardK;
+    private final int shardN;
+
+    private Selection(Set<String> families, Set<String> instructions, Set<String> tags, List<String> ids,
+                      Set<String> interpretations, int shardK, int shardN) {
+        this.families = Collections.unmodifiableSet(new LinkedHashSet<>(families));
+        this.instructions = Collections.unmodifiableSet(new LinkedHashSet<>(instructions));
+        this.tags = Collections.unmodifiableSet(new LinkedHashSet<>(tags));
+        this.ids = List.copyOf(ids);
+        this.idPatterns = ids.stream().map(Selection::glob).toList();
+        this.interpretations = Collections.unmodifiableSet(new LinkedHashSet<>(interpretations));
+        this.shardK = shardK;
+        this.shardN = shardN;
+        this.and = null;
+    }
+
+    /** Every vector. */
+    public static Selection all() {
+        return ALL;
+    }
+
+    public Selection families(Family... names) {
+        return families(Arrays.stream(names).map(Family::id).toArray(String[]::new));
+    }
+
+    /** Families as the vectors spell them ({@code fx5-time-add}). */
+    public Selection families(String... names) {
+        return new Selection(union(families, names), instructions, tags, ids, interpretations, shardK, shardN);
+    }
+
+    public Selection instructions(Instruction... names) {
+        return instructions(Arrays.stream(names).map(Instruction::mnemonic).toArray(String[]::new));
+    }
+
+    /** Instructions as the vectors spell them ({@code LDTM<=}, {@code LD <=DT}). */
+    public Selection instructions(String... names) {
+        return new Selection(families, union(instructions, names), tags, ids, interpretations, shardK, shardN);
+    }
+
+    public Selection tags(Tag... names) {
+        return tags(Arrays.stream(names).map(Tag::id).toArray(String[]::new));
+    }
+
+    public Selection tags(String... names) {
+        return new Selection(families, instructions, union(tags, names), ids, interpretations, shardK, shardN);
+    }
+
+    /** Id globs: {@code *} any run of characters (slashes too), {@code ?} one, {@code [abc]}, {@code [!abc]}. */
+    public Selection ids(String... globs) {
+        List<String> all = new ArrayList<>(ids);
+        all.addAll(Arrays.asList(globs));
+        return new Selection(families, instructions, tags, all, interpretations, shardK, shardN);
+    }
+
+    /** Vectors whose outcome depends on one of these interpretations. */
+    public Selection interpretations(Interpretation... names) {
+        return interpretations(Arrays.stream(names).map(Interpretation::id).toArray(String[]::new));
+    }
+
+    public Selection interpretations(String... names) {
+        return new Selection(families, instructions, tags, ids, union(interpretations, names), shardK, shardN);
+    }
+
+    /** Shard {@code k} of {@code n} (1 ≤ k ≤ n), chosen as the Python runner does: crc32(id) % n + 1 == k. */
+    public Selection shard(int k, int n) {
+        if (n < 1 || k < 1 || k > n) {
+            throw new VerifyException("shard " + k + "/" + n + ": K must be between 1 and N");
+        }
+        return new Selection(families, instructions, tags, ids, interpretations, k, n);
+    }
+
+    /** {@code K/N}. */
+    public Selection shard(String text) {
+        String[] parts = text.trim().split("/");
+        try {
+            if (parts.length == 2) {
+                return shard(Integer.parseInt(parts[0].trim()), Integer.parseInt(parts[1].trim()));
+            }
+        } catch (NumberFormatException e) {
+            // fall through to the message below
+        }
+        throw new VerifyException("shard takes K/N (e.g. 2/4), got '" + text + "'");
+    }
+
+    /** The shard (1..n) a vector belongs to: a hash of the id, so adding vectors moves no other vector. */
+    public static int shardOf(String id, int n) {
+        CRC32 crc = new CRC32();
+        crc.update(id.getBytes(java.nio.charset.StandardCharsets.UTF_8));
+        return (int) (crc.getValue() % n) + 1;
+    }
+
+    /**
+     * This selection narrowed by the {@code plcvec.*} system properties (AND: a property can only
+     * narrow what the code selects, never widen it).
+     */
+    public Selection withSystemProperties() {
+        Selection p = all();
+        String v;
+        if ((v = property("plcvec.family")) != null) {
+            p = p.families(split(v));
+        }
+        if ((v = property("plcvec.instruction")) != null) {
+            p = p.instructions(split(v));
+        }
+        if ((v = property("plcvec.tag")) != null) {
+            p = p.tags(split(v));
+        }
+        if ((v = property("plcvec.id")) != null) {
+            p = p.ids(split(v));
+        }
+        if ((v = property("plcvec.interpretation")) != null) {
+            p = p.interpretations(split(v));
+        }
+        if ((v = property("plcvec.shard")) != null) {
+            p = p.shard(v);
+        }
+        return p == ALL ? this : new Selection(this, p);
+    }
+
+    /** Every vector, narrowed by the {@code plcvec.*} system properties. */
+    public static Selection fromSystemProperties() {
+        return all().withSystemProperties();
+    }
+
+    // Another selection this one is ANDed with ("family A" AND "family B" is not "A or B").
+    private final Selection and;
+
+    private Selection(Selection base, Selection and) {
+        this.families = base.families;
+        this.instructions = base.instructions;
+        this.tags = base.tags;
+        this.ids = base.ids;
+        this.idPatterns = base.idPatterns;
+        this.interpretations = base.interpretations;
+        this.shardK = base.shardK;
+        this.shardN = base.shardN;
+        this.and = base.and == null ? and : new Selection(base.and, and);
+    }
+
+    private static String property(String name) {
+        String v = System.getProperty(name);
+        return v == null || v.isBlank() ? null : v;
+    }
+
+    private static String[] split(String v) {
+        return Arrays.stream(v.split(",")).map(String::trim).filter(x -> !x.isEmpty()).toArray(String[]::new);
+    }
+
+    public boolean matches(Vector v) {
+        if (!families.isEmpty() && !families.contains(v.family())) {
+            return false;
+        }
+        if (!instructions.isEmpty() && !instructions.contains(v.instruction())) {
+            return false;
+        }
+        if (!tags.isEmpty() && v.tags().stream().noneMatch(tags::contains)) {
+            return false;
+        }
+        if (!idPatterns.isEmpty() && idPatterns.stream().noneMatch(p -> p.matcher(v.id()).matches())) {
+            return false;
+        }
+        if (!interpretations.isEmpty() && v.interpretations().stream().noneMatch(interpretations::contains)) {
+            return false;
+        }
+        if (shardN > 0 && shardOf(v.id(), shardN) != shardK) {
+            return false;
+        }
+        return and == null || and.matches(v);
+    }
+
+    /** The selected vectors of {@code suite}, in the suite's order; an unknown name is an error. */
+    public List<Vector> apply(Suite suite) {
+        check(suite);
+        List<Vector> out = new ArrayList<>();
+        for (Vector v : suite.vectors()) {
+            if (matches(v)) {
+                out.add(v);
+            }
+        }
+        return out;
+    }
+
+    /** A family, instruction, tag or interpretation the suite does not have is a mistake, not an empty run. */
+    void check(Suite suite) {
+        Set<String> knownFamilies = new LinkedHashSet<>(suite.families());
+        Set<String> knownInstructions = new LinkedHashSet<>();
+        Set<String> knownTags = new LinkedHashSet<>();
+        for (Vector v : suite.vectors()) {
+            knownInstructions.add(v.instruction());
+            knownTags.addAll(v.tags());
+        }
+        for (String f : suite.families()) {
+            knownInstructions.addAll(suite.instructions(f));
+        }
+        unknown("family", families, knownFamilies);
+        unknown("instruction", instructions, knownInstructions);
+        unknown("tag", tags, knownTags);
+        unknown("interpretation", interpretations, suite.interpretations().keySet());
+        if (and != null) {
+            and.check(suite);
+        }
+    }
+
+    private static void unknown(String what, Set<String> asked, Set<String> known) {
+        for (String name : asked) {
+            if (!known.contains(name)) {
+                throw new VerifyException("no " + what + " '" + name + "' in the suite (known: " + String.join(", ", known) + ")");
+            }
+        }
+    }
+
+    private static Set<String> union(Set<String> a, String[] b) {
+        Set<String> out = new LinkedHashSet<>(a);
+        out.addAll(Arrays.asList(b));
+        return out;
+    }
+
+    /** fnmatch, as the Python runner's {@code --id} reads it. */
+    static Pattern glob(String glob) {
+        StringBuilder re = new StringBuilder();
+        for (int i = 0; i < glob.length(); i++) {
+            char c = glob.charAt(i);
+            if (c == '*') {
+                re.append(".*");
+            } else if (c == '?') {
+                re.append('.');
+            } else if (c == '[' && glob.indexOf(']', i + 2) > 0) {
+                int end = glob.indexOf(']', i + 2);
+                String body = glob.substring(i + 1, end);
+                re.append('[');
+                if (body.startsWith("!")) {
+                    re.append('^');
+                    body = body.substring(1);
+                }
+                re.append(body.replace("\\", "\\\\").replace("[", "\\[")).append(']');
+                i = end;
+            } else {
+                re.append(Pattern.quote(String.valueOf(c)));
+            }
+        }
+        return Pattern.compile(re.toString(), Pattern.DOTALL);
+    }
+
+    @Override
+    public String toString() {
+        List<String> parts = new ArrayList<>();
+        if (!families.isEmpty()) {
+            parts.add("family " + String.join("|", families));
+        }
+        if (!instructions.isEmpty()) {
+            parts.add("instruction " + String.join("|", instructions));
+        }
+        if (!tags.isEmpty()) {
+            parts.add("tag " + String.join("|", tags));
+        }
+        if (!ids.isEmpty()) {
+            parts.add("id " + String.join("|", ids));
+        }
+        if (!interpretations.isEmpty()) {
+            parts.add("interpretation " + String.join("|", interpretations));
+        }
+        if (shardN > 0) {
+            parts.add("shard " + shardK + "/" + shardN);
+        }
+        if (and != null) {
+            parts.add(and.toString());
+        }
+        return parts.isEmpty() ? "all vectors" : String.join(", ", parts);
+    }
+}

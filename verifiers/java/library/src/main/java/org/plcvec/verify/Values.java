@@ -1,0 +1,73 @@
+package org.plcvec.verify;
+
+/**
+ * Device values as one {@code int} each, with their JSON type folded in.
+ *
+ * <p>A word is its raw 16 bits, 0..65535. A bit is {@link #FALSE} or {@link #TRUE}, outside the
+ * word range, so a bit reported as the word 1 never equals {@code true} (CONTRACT.md: "a bit is
+ * never 1") and one int comparison checks value and type together. {@link #ABSENT} marks a
+ * device that is not in the image (not listed yet, or never written).
+ */
+public final class Values {
+    /** The bit {@code false}. */
+    public static final int FALSE = 0x1_0000;
+    /** The bit {@code true}. */
+    public static final int TRUE = 0x1_0001;
+    /** Not in the device image. */
+    public static final int ABSENT = -1;
+    /** A value that is neither a word nor a bit (reported by a contract-level implementation). */
+    public static final int OTHER = -2;
+
+    private Values() {
+    }
+
+    public static int bit(boolean on) {
+        return on ? TRUE : FALSE;
+    }
+
+    /** A word from any integer: the low 16 bits, as the CPU stores it. */
+    public static int word(int value) {
+        return value & 0xFFFF;
+    }
+
+    public static boolean isBit(int value) {
+        return value == TRUE || value == FALSE;
+    }
+
+    public static boolean isWord(int value) {
+        return value >= 0 && value <= 0xFFFF;
+    }
+
+    /** The encoded value of a JSON-ish Java value: Boolean, or an integer 0..65535; else OTHER. */
+    public static int encode(Object value) {
+        if (value instanceof Boolean) {
+            return bit((Boolean) value);
+        }
+        if (value instanceof Integer || value instanceof Long || value instanceof Short) {
+            long v = ((Number) value).longValue();
+            if (v >= 0 && v <= 0xFFFF) {
+                return (int) v;
+            }
+        }
+        return OTHER;
+    }
+
+    /** The JSON value: Boolean for a bit, Integer for a word, null when absent. */
+    public static Object decode(int value) {
+        if (isBit(value)) {
+            return value == TRUE;
+        }
+        return value == ABSENT || value == OTHER ? null : Integer.valueOf(value);
+    }
+
+    /** As a report shows it: {@code true}, {@code 13317}, {@code <not reported>}. */
+    public static String show(int value) {
+        if (value == TRUE) {
+            return "true";
+        }
+        if (value == FALSE) {
+            return "false";
+        }
+        return Integer.toString(value);
+    }
+}

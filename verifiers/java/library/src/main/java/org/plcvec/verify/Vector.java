@@ -1,0 +1,68 @@
+package org.plcvec.verify;
+
+import java.util.List;
+import java.util.Map;
+
+/** A golden vector: the request, what it expects (under every alternative), and why it exists. */
+public final class Vector extends VectorRequest {
+    /** What one step must give: the contact result (or null) and the devices that change. */
+    record StepExpect(Boolean result, Address[] devices, int[] values) {
+    }
+
+    /** The expectation under one combination of alternatives. */
+    record Expectation(List<StepExpect> steps, Address[] finalDevices, int[] finalValues, String category) {
+    }
+
+    /** An entry of {@code alternatives}: the choices it holds for, and its expectation. */
+    record Variant(Map<String, String> choices, Expectation expectation) {
+    }
+
+    private final String description;
+    private final List<String> tags;
+    private final List<String> clauses;
+    private final List<String> interpretations;
+    private final Expectation expectation;
+    private final List<Variant> variants;
+
+    Vector(VectorRequest request, String description, List<String> tags, List<String> clauses,
+           List<String> interpretations, Expectation expectation, List<Variant> variants) {
+        super(request);
+        this.description = description;
+        this.tags = List.copyOf(tags);
+        this.clauses = List.copyOf(clauses);
+        this.interpretations = List.copyOf(interpretations);
+        this.expectation = expectation;
+        this.variants = List.copyOf(variants);
+    }
+
+    public String description() {
+        return description;
+    }
+
+    public List<String> tags() {
+        return tags;
+    }
+
+    /** The spec clauses the vector exercises, for reports. */
+    public List<String> clauses() {
+        return clauses;
+    }
+
+    /** The interpretations the vector's outcome depends on (empty for most). */
+    public List<String> interpretations() {
+        return interpretations;
+    }
+
+    /** The outcome category under the defaults: {@code value}, {@code error} or {@code implementation-defined}. */
+    public String category() {
+        return interpretations.isEmpty() ? expectation.category() : "implementation-defined";
+    }
+
+    Expectation expectation() {
+        return expectation;
+    }
+
+    List<Variant> variants() {
+        return variants;
+    }
+}

@@ -1,0 +1,120 @@
+package org.plcvec.verify;
+
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.plcvec.spec.Family;
+import org.plcvec.spec.Instruction;
+
+/**
+ * What an implementation receives of a vector: everything needed to run it, no expectation
+ * (the protocol's run request, CONTRACT.md "Setting up the initial state" and "Executing").
+ */
+public class VectorRequest {
+    private final String id;
+    private final String family;
+    private final String instruction;
+    private final DeviceSizes sizes;
+    private final Map<String, Operand> operands;
+    private final Set<String> scratch;
+    private final List<Step> steps;
+    // The device table: initial.devices first (listed), then any other device the vector names.
+    final Address[] slots;
+    final int[] initial;          // Values encoding; ABSENT where initial.devices has no entry
+    final boolean[] compared;     // false for scratch
+    final int listed;             // initial.devices.size()
+
+    VectorRequest(String id, String family, String instruction, DeviceSizes sizes, Map<String, Operand> operands,
+                  Set<String> scratch, List<Step> steps, Address[] slots, int[] initial, boolean[] compared, int listed) {
+        this.id = id;
+        this.family = family;
+        this.instruction = instruction;
+        this.sizes = sizes;
+        this.operands = Collections.unmodifiableMap(operands);
+        this.scratch = Collections.unmodifiableSet(scratch);
+        this.steps = List.copyOf(steps);
+        this.slots = slots;
+        this.initial = initial;
+        this.compared = compared;
+        this.listed = listed;
+    }
+
+    VectorRequest(VectorRequest r) {
+        this(r.id, r.family, r.instruction, r.sizes, r.operands, r.scratch, r.steps, r.slots, r.initial, r.compared,
+                r.listed);
+    }
+
+    /** The vector's stable id ({@code fx5-time-add/TADD/manual-example/program}). */
+    public String id() {
+        return id;
+    }
+
+    /** The family as the vectors spell it. */
+    public String family() {
+        return family;
+    }
+
+    /** The family, or null if this verifier's generated names do not know it (a newer suite). */
+    public Family familyName() {
+        return Family.byId(family);
+    }
+
+    /** The instruction as the manual spells it ({@code LDTM<=}, {@code LD <=DT}, {@code TADDP}). */
+    public String instruction() {
+        return instruction;
+    }
+
+    /** The instruction, or null if this verifier's generated names do not know it. */
+    public Instruction instructionName() {
+        return Instruction.byMnemonic(instruction);
+    }
+
+    /** {@code assumes.device_sizes}. */
+    public DeviceSizes deviceSizes() {
+        return sizes;
+    }
+
+    public Map<String, Operand> operands() {
+        return operands;
+    }
+
+    /** The operand named {@code name} as the manual names it ({@code s1}, {@code D1}, {@code C}). */
+    public Operand operand(String name) {
+        Operand o = operands.get(name);
+        if (o == null) {
+            throw new IllegalStateException("vector " + id + " has no operand " + name + " (has " + operands.keySet() + ")");
+        }
+        return o;
+    }
+
+    /** Work-area words: the implementation's own, never compared. */
+    public Set<String> scratch() {
+        return scratch;
+    }
+
+    public List<Step> steps() {
+        return steps;
+    }
+
+    /** {@code initial.devices}, JSON-ready (words as Integer, bits as Boolean). */
+    public Map<String, Object> initialDevices() {
+        Map<String, Object> out = new LinkedHashMap<>();
+        for (int i = 0; i < listed; i++) {
+            out.put(slots[i].name(), Values.decode(initial[i]));
+        }
+        return out;
+    }
+
+    /** A fresh device image holding {@code initial.devices}. */
+    public Memory newMemory() {
+        return new Memory(sizes, slots, initial);
+    }
+
+    @Override
+    public String toString() {
+        return id;
+    }
+}

@@ -1,0 +1,268 @@
+package org.plcvec.verify;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+
+/**
+ * Runs a selection of vectors through an {@link Implementation} and judges every answer, exactly
+ * as CONTRACT.md says: the contact result and every listed device after every step, with its type,
+ * listed devices that must stay unchanged, and no write outside the vector.
+ *
+ * <pre>{@code
+ * Report report = Verifier.of(new MyEmulator()).selection(Selection.all().tags(Tag.BOUNDARY)).run();
+ * System.out.print(report.summary());
+ * }</pre>
+ *
+ * <p>Immutable; the plan (the selected vectors and what each expects under the implementation's
+ * alternatives) is built once, on first use.
+ */
+public final class Verifier {
+    /** One interpretation as a run follows it. */
+    public record Followed(String alternative, boolean declared, List<String> families) {
+    }
+
+    private final Suite suite;
+    private final Implementation implementation;
+    private final Selection selection;
+    private final KnownFailures known;
+    private volatile Plan plan;
+
+    private Verifier(Suite suite, Implementation implementation, Selection selection, KnownFailures known) {
+        this.suite = suite;
+        this.implementation = implementation;
+        this.selection = selection;
+        this.known = known;
+    }
+
+    /** A verifier of {@code implementation} against the golden set, every vector selected. */
+    public static Verifier of(Implementation implementation) {
+        return new Verifier(null, implementation, Selection.all(), KnownFailures.none());
+    }
+
+    public Verifier suite(Suite suite) {
+        return new Verifier(suite, implementation, selection, known);
+    }
+
+    public Verifier selection(Selection selection) {
+        return new Verifier(suite, implementation, selection, known);
+    }
+
+    public Verifier expectations(KnownFailures known) {
+        return new Verifier(suite, implementation, selection, known);
+    }
+
+    /** The expectations file (known failures) to apply. */
+    public Verifier expectations(Path file) {
+        return expectations(KnownFailures.load(file));
+    }
+
+    public Suite suite() {
+        return suite != null ? suite : Suite.golden();
+    }
+
+    public Implementation implementation() {
+        return implementation;
+    }
+
+    public Selection selection() {
+        return selection;
+    }
+
+    public KnownFailures knownFailures() {
+        return known;
+    }
+
+    /** What the run is: the selected vectors, their expectations, the alternatives followed. */
+    static final class Plan {
+        final List<Vector> vectors;
+        final Map<String, Expected> expected = new LinkedHashMap<>();
+        final Map<String, Followed> followed;
+        final Memory[] memories;            // one per vector, reused by run()
+
+        Plan(Suite suite, Implementation impl, Selection selection) {
+            this.vectors = selection.apply(suite);
+            if (vectors.isEmpty()) {
+                throw new VerifyException("the selection (" + selection + ") matches no vector of " + suite.source()
+                        + "; a run of nothing proves nothing");
+            }
+            Choices choices = impl.choices();
+            choices.validate(suite, impl.name());
+            Map<String, String> defaults = new TreeMap<>();
+            Map<String, String> all = new TreeMap<>();
+            Map<String, Followed> followed = new TreeMap<>();
+            java.util.Set<String> families = new java.util.TreeSet<>();
+            vectors.forEach(v -> families.add(v.family()));
+            for (Suite.InterpretationInfo i : suite.interpretations().values()) {
+                defaults.put(i.id(), i.defaultAlternative());
+                String declared = choices.get(i.id());
+                all.put(i.id(), declared != null ? declared : i.defaultAlternative());
+                if (i.families().stream().anyMatch(families::contains)) {
+                    followed.put(i.id(), new Followed(all.get(i.id()), declared != null, i.families()));
+                }
+            }
+            this.followed = Collections.unmodifiableMap(followed);
+            for (Vector v : vectors) {
+                expected.put(v.id(), Expected.of(v, all, defaults));
+            }
+            this.memories = new Memory[vectors.size()];
+        }
+    }
+
+    Plan plan() {
+        Plan p = plan;
+        if (p == null) {
+            synchronized (this) {
+                p = plan;
+                if (p == null) {
+                    p = new Plan(suite(), implementation, selection);
+                    plan = p;
+                }
+            }
+        }
+        return p;
+    }
+
+    /** The selected vectors, in the suite's order. */
+    public List<Vector> vectors() {
+        return plan().vectors;
+    }
+
+    /** interpretation → the alternative followed, for every interpretation of the selected families. */
+    public Map<String, Followed> followed() {
+        return plan().followed;
+    }
+
+    /** Run one vector and judge it, known failures applied. */
+    public Result check(Vector v) {
+        Expected e = plan().expected.get(v.id());
+        if (e == null) {
+            throw new VerifyException("vector " + v.id() + " is not in the selection (" + selection + ")");
+        }
+        Result r = judge(v, e, null);
+        known.apply(r);
+        return r;
+    }
+
+    /** Run every selected vector; the report holds every result, known failures applied. */
+    public Report run() {
+        long start = System.nanoTime();
+        Plan p = plan();
+        List<Result> results = new ArrayList<>(p.vectors.size());
+        int i = 0;
+        for (Vector v : p.vectors) {
+            Memory m = p.memories[i];
+            if (m == null && implementation instanceof Emulator) {
+                m = p.memories[i] = v.newMemory();
+            }
+            Result r = judge(v, p.expected.get(v.id()), m);
+            known.apply(r);
+            results.add(r);
+            i++;
+        }
+        results.addAll(known.unknownIds(suite()));
+        return new Report(this, results, (System.nanoTime() - start) / 1e9);
+    }
+
+    /**
+     * Run and judge the selected vectors without keeping results, for the benchmark: the number
+     * of vectors that did not pass (0 for a conforming implementation).
+     */
+    public int countFailures() {
+        Plan p = plan();
+        int failures = 0;
+        int i = 0;
+        for (Vector v : p.vectors) {
+            Memory m = p.memories[i];
+            if (m == null && implementation instanceof Emulator) {
+                m = p.memories[i] = v.newMemory();
+            }
+            if (judge(v, p.expected.get(v.id()), m).status() != Status.PASS) {
+                failures++;
+            }
+            i++;
+        }
+        return failures;
+    }
+
+    private static final List<Problem> NONE = List.of();
+
+    private Result judge(Vector v, Expected e, Memory reuse) {
+        if (!implementation.supports(v.instruction())) {
+            return new Result(v.id(), v, Status.SKIP, NONE, implementation.name() + " does not support "
+                    + v.instruction(), e.judgedBy);
+        }
+        try {
+            List<Problem> problems = implementation instanceof Emulator
+                    ? runEmulator((Emulator) implementation, v, e, reuse)
+                    : runContract(v, e);
+            return new Result(v.id(), v, problems.isEmpty() ? Status.PASS : Status.FAIL, problems, null, e.judgedBy);
+        } catch (SkipVector s) {
+            return new Result(v.id(), v, Status.SKIP, NONE, s.getMessage(), e.judgedBy);
+        } catch (VirtualMachineError fatal) {
+            throw fatal;
+        } catch (Throwable t) {   // the implementation's failure on this vector, not the run's
+            return new Result(v.id(), v, Status.ERROR, NONE, describe(t), e.judgedBy);
+        }
+    }
+
+    /** The memory path: compare in place after each step; build problems only on a mismatch. */
+    private static List<Problem> runEmulator(Emulator emulator, Vector v, Expected e, Memory reuse) throws Exception {
+        Memory m = reuse;
+        if (m == null) {
+            m = v.newMemory();
+        } else {
+            m.reset(v.slots.length, v.initial);
+        }
+        Emulator.Scan scan = emulator.load(v, m);
+        List<Problem> problems = NONE;
+        List<Step> steps = v.steps();
+        for (int s = 0, n = steps.size(); s < n; s++) {
+            Step step = steps.get(s);
+            step.applySet(m);
+            Boolean result = scan.execute(step);
+            if (!e.matches(s, m, result)) {
+                if (problems == NONE) {
+                    problems = new ArrayList<>();
+                }
+                problems.addAll(e.problems(s, m, result));
+            }
+        }
+        return problems;
+    }
+
+    private List<Problem> runContract(Vector v, Expected e) throws Exception {
+        List<StepState> states = implementation.run(v);
+        if (states == null || states.size() != v.steps().size()) {
+            return List.of(new Problem(Problem.WHOLE, "steps", v.steps().size() + " steps",
+                    (states == null ? 0 : states.size()) + " steps", null));
+        }
+        List<Problem> problems = NONE;
+        for (int s = 0; s < states.size(); s++) {
+            StepState st = states.get(s);
+            if (st == null || st.devices() == null) {
+                throw new IllegalStateException("step " + s + ": the implementation reported no devices");
+            }
+            List<Problem> p = e.problems(s, st.devices(), st.result());
+            if (!p.isEmpty()) {
+                if (problems == NONE) {
+                    problems = new ArrayList<>();
+                }
+                problems.addAll(p);
+            }
+        }
+        return problems;
+    }
+
+    /** {@code IllegalStateException: step 0 has no en (MyCpu.java:42)}. */
+    static String describe(Throwable t) {
+        StackTraceElement[] trace = t.getStackTrace();
+        String where = trace.length > 0 && trace[0].getFileName() != null
+                ? " (" + trace[0].getFileName() + ":" + trace[0].getLineNumber() + ")" : "";
+        return t.getClass().getSimpleName() + ": " + t.getMessage() + where;
+    }
+}

@@ -1,0 +1,217 @@
+package org.plcvec.reference;
+
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+import org.plcvec.verify.Address;
+import org.plcvec.verify.Emulator;
+import org.plcvec.verify.Memory;
+import org.plcvec.verify.Operand;
+import org.plcvec.verify.Step;
+import org.plcvec.verify.VectorRequest;
+
+/**
+ * Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT, from cp1e-time-compare-DT.txt
+ * (W483 p. 2-93).
+ *
+ * <p>P_ER is a condition flag: it reflects the result of the instruction just executed, so an
+ * execution that ends without error turns it off (CP1E-ER-FLAG=reflects-each-execution; the other
+ * reading, that only an error writes it, is the alternative "held").
+ */
+public class Cp1eTimeCompare implements Emulator.Scan {
+    /**
+     * One byte field: word offset, byte (0: bits 00-07, 1: bits 08-15), range, and the C mask bit.
+     * "A351.00 to A351.07 Second (00 to 59, BCD)  A351.08 to A351.15 Minute ... A352.00 Hour ...
+     * A352.08 Day of month ... A353.00 Month ... A353.08 Year (00 to 99, BCD)"; "Bits 00 to 05 of C
+     * mask the seconds, minutes, hours, day, month, and year, respectively."
+     */
+    public record Field(int offset, int shift, String name, int min, int max, int maskBit) {
+    }
+
+    /** Most significant first. */
+    public static final Field[] FIELDS = {
+        new Field(2, 8, "year", 0, 99, 5), new Field(2, 0, "month", 1, 12, 4), new Field(1, 8, "day", 1, 31, 3),
+        new Field(1, 0, "hour", 0, 23, 2), new Field(0, 8, "minute", 0, 59, 1), new Field(0, 0, "second", 0, 59, 0),
+    };
+
+    static final Address P_ER = Address.of("P_ER");
+    /** The arithmetic flags, in the order of the flag table's columns. */
+    static final Address[] FLAGS = {
+        Address.of("P_EQ"), Address.of("P_NE"), Address.of("P_LT"), Address.of("P_LE"), Address.of("P_GT"), Address.of("P_GE"),
+    };
+
+    enum Form { LD, AND, OR }
+
+    /** The flag table: for S1 = S2, S1 > S2, S1 < S2, which of =, <>, <, <=, >, >= are on. */
+    enum Condition {
+        EQ("=", 0), NE("<>", 1), LT("<", 2), LE("<=", 3), GT(">", 4), GE(">=", 5);
+
+        final String symbol;
+        final int flag;
+
+        Condition(String symbol, int flag) {
+            this.symbol = symbol;
+            this.flag = flag;
+        }
+
+        boolean holds(int order) {
+            switch (this) {
+                case EQ: return order == 0;
+                case NE: return order != 0;
+                case LT: return order < 0;
+                case LE: return order <= 0;
+                case GT: return order > 0;
+                default: return order >= 0;
+            }
+        }
+    }
+
+    /** {@code AND <=DT} is (AND, <=). */
+    record Mnemonic(Form form, Condition condition) {
+        private static final Map<String, Mnemonic> CACHE = new ConcurrentHashMap<>();
+
+        static Mnemonic parse(String instruction) {
+            Mnemonic m = CACHE.get(instruction);
+            if (m == null) {
+                m = read(instruction);
+                if (m != null) {
+                    CACHE.put(instruction, m);
+                }
+            }
+            return m;
+        }
+
+        private static Mnemonic read(String instruction) {
+            int space = instruction.indexOf(' ');
+            if (space < 0 || !instruction.endsWith("DT")) {
+                return null;
+            }
+            String form = instruction.substring(0, space);
+            String symbol = instruction.substring(space + 1, instruction.length() - 2);
+            for (Form f : Form.values()) {
+                for (Condition c : Condition.values()) {
+                    if (f.name().equals(form) && c.symbol.equals(symbol)) {
+                        return new Mnemonic(f, c);
+                    }
+                }
+            }
+            return null;
+        }
+    }
+
+    protected final Memory mem;
+    protected final Settings settings;
+    protected final Form form;
+    protected final Condition condition;
+    protected final Address s1;
+    protected final Address s2;
+    protected final Operand c;
+
+    public Cp1eTimeCompare(VectorRequest vector, Memory memory, Settings settings) {
+        Mnemonic m = Mnemonic.parse(vector.instruction());
+        if (m == null) {
+            throw new IllegalArgumentException("not a CP1E time comparison: " + vector.instruction());
+        }
+        this.mem = memory;
+        this.settings = settings;
+        this.form = m.form();
+        this.condition = m.condition();
+        this.s1 = vector.operand("S1").device();
+        this.s2 = vector.operand("S2").device();
+        this.c = vector.operand("C");
+    }
+
+    /**
+     * "The time comparison instructions are treated just like the LD, AND, and OR instructions to
+     * control the execution of subsequent instructions."
+     */
+    @Override
+    public Boolean execute(Step step) {
+        if (form == Form.LD) {
+            return evaluate();
+        }
+        boolean rlo = step.rloIn();
+        if (form == Form.AND) {
+            if (!rlo && settings.cp1eAndSkipped) {
+                return false;
+            }
+            boolean contact = evaluate();
+            return rlo && contact;
+        }
+        boolean contact = evaluate();
+        return rlo || contact;
+    }
+
+    protected boolean evaluate() {
+        int mask = c.word(mem);
+        // Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS).
+        if ((mask & 0xFFC0) != 0 && settings.cp1eHighBitsError) {
+            return error();
+        }
+        // "To mask a time value, set the corresponding bit in the control word (C) to 1."
+        // "compares the unmasked values (corresponding bit of C set to 0)"
+        boolean any = false;
+        int order = 0;
+        for (Field f : fields()) {
+            if (masked(mask, f)) {
+                continue;
+            }
+            any = true;
+            int a = (mem.word(s1, f.offset()) >> f.shift()) & 0xFF;
+            int b = (mem.word(s2, f.offset()) >> f.shift()) & 0xFF;
+            for (int raw : new int[] {a, b}) {
+                if (!isBcd(raw)) {
+                    if (settings.cp1eNonBcdError) {       // "Second (00 to 59, BCD)" (CP1E-NON-BCD)
+                        return error();
+                    }
+                } else if (bcd(raw) < f.min() || bcd(raw) > f.max()) {
+                    if (settings.cp1eOutOfRangeError) {   // (CP1E-OUT-OF-RANGE)
+                        return error();
+                    }
+                }
+            }
+            // "The time comparison instructions are limited to comparing 8-bit time values." For
+            // valid BCD the byte order is the numeric order.
+            if (order == 0 && a != b) {
+                order = a < b ? -1 : 1;
+            }
+        }
+        if (!any && settings.cp1eAllMaskedError) {
+            return error();
+        }
+        reflectFlags(order);
+        if (!settings.cp1eErHeld) {
+            mem.setBit(P_ER, false);      // executed without error
+        }
+        return condition.holds(order);
+    }
+
+    protected Field[] fields() {
+        return FIELDS;
+    }
+
+    protected boolean masked(int mask, Field f) {
+        return ((mask >> f.maskBit()) & 1) != 0;
+    }
+
+    /** "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <, <=, >, >=)." */
+    protected void reflectFlags(int order) {
+        for (Condition k : Condition.values()) {
+            mem.setBit(FLAGS[k.flag], k.holds(order));
+        }
+    }
+
+    /** Error: P_ER on, execution condition OFF, the six arithmetic flags untouched. */
+    protected boolean error() {
+        mem.setBit(P_ER, true);
+        return false;
+    }
+
+    protected boolean isBcd(int b) {
+        return (b >> 4) <= 9 && (b & 0xF) <= 9;
+    }
+
+    static int bcd(int b) {
+        return (b >> 4) * 10 + (b & 0xF);
+    }
+}

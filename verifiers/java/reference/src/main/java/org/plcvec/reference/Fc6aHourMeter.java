@@ -1,0 +1,131 @@
+package org.plcvec.reference;
+
+import org.plcvec.verify.Address;
+import org.plcvec.verify.Emulator;
+import org.plcvec.verify.Memory;
+import org.plcvec.verify.Operand;
+import org.plcvec.verify.Step;
+import org.plcvec.verify.VectorRequest;
+
+/**
+ * IDEC FC6A MICROSmart: HOUR (hour meter), from fc6a-hour-meter-HOUR.txt. The fraction of a
+ * second already measured lives in this object (on the CPU it is in the work area D3, D3+1,
+ * whose contents the vectors never compare).
+ */
+public class Fc6aHourMeter implements Emulator.Scan {
+    static final Address M8004 = Address.of("M8004");
+    /** "the value returns to 0 hours 0 minutes 0 seconds" after "65,535 hours 59 minutes 59 seconds". */
+    static final long CYCLE = 65536L * 3600;
+
+    protected final Memory mem;
+    protected final Settings settings;
+    protected final Address d1;
+    protected final Address d2;
+    protected final Operand s1;
+    protected long fractionMs;
+    /** For HOUR-OUTPUT-OFF=recompared: D2 stays on across a wrap. */
+    protected boolean wrapped;
+
+    public Fc6aHourMeter(VectorRequest vector, Memory memory, Settings settings) {
+        if (!vector.instruction().equals("HOUR")) {
+            throw new IllegalArgumentException("not HOUR: " + vector.instruction());
+        }
+        this.mem = memory;
+        this.settings = settings;
+        this.d1 = vector.operand("D1").device();
+        this.d2 = vector.operand("D2").device();
+        this.s1 = vector.operand("S1");
+    }
+
+    @Override
+    public Boolean execute(Step step) {
+        if (!step.input()) {
+            // "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF.
+            if (settings.hourResetWhenOff) {
+                store(0);
+                fractionMs = 0;
+            }
+            return null;
+        }
+        // The whole elapsed time since the previous execution is ON time.
+        fractionMs += step.elapsedMs();
+        long whole = fractionMs / 1000;
+        fractionMs %= 1000;
+        long total = measured() + whole;
+        boolean wrappedNow = total >= cycle();
+        // "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds, the
+        // value returns to 0 hours 0 minutes 0 seconds to repeat another measuring cycle, with the
+        // comparison output remaining on."
+        total %= cycle();
+        store(total);
+
+        int[] p = preset();
+        if (!presetValid(p)) {
+            // "... a user program execution error will result, turning on special internal relay
+            // M8004 ... but the input ON duration is measured." "... is changed to an invalid value
+            // after the comparison output has turned on, the comparison output is turned off."
+            mem.setBit(M8004, true);
+            mem.setBit(d2, false);
+            return null;
+        }
+        long preset = p[0] * 3600L + p[1] * 60L + p[2];
+        boolean reached = reached(total, preset);
+        if (preset == 0 && settings.hourZeroPresetNever) {
+            reached = false;
+        }
+        // "When the D1 value reaches the S1 value, an output or internal relay assigned by
+        // destination device D2 is turned on."
+        if (!settings.hourRecompared) {
+            if (reached) {
+                mem.setBit(d2, true);
+            }
+        } else {
+            if (wrappedNow && mem.bit(d2)) {
+                wrapped = true;
+            }
+            if (reached) {
+                wrapped = false;
+            }
+            mem.setBit(d2, reached || (wrapped && mem.bit(d2)));
+        }
+        return null;
+    }
+
+    protected long cycle() {
+        return CYCLE;
+    }
+
+    /** "When the measured input ON duration value in D1 reaches the preset value" */
+    protected boolean reached(long total, long preset) {
+        return total >= preset;
+    }
+
+    /** D1, D1+1, D1+2: hours, minutes, seconds. */
+    protected long measured() {
+        return mem.word(d1, 0) * 3600L + mem.word(d1, 1) * 60L + mem.word(d1, 2);
+    }
+
+    protected void store(long total) {
+        mem.setWord(d1, 0, (int) (total / 3600));
+        mem.setWord(d1, 1, (int) (total / 60 % 60));
+        mem.setWord(d1, 2, (int) (total % 60));
+    }
+
+    /**
+     * "When source device S1 is designated by a constant, the preset value can be 0 through 65,535
+     * in hours, then minutes and seconds are set to 0." "... when designated by a data register,
+     * ... occupy 3 consecutive data registers ... to store hour, minute, and second data."
+     */
+    protected int[] preset() {
+        if (s1.isConstant()) {
+            return new int[] {(int) (s1.constant() & 0xFFFF), 0, 0};
+        }
+        Address a = s1.device();
+        return new int[] {mem.word(a, 0), mem.word(a, 1), mem.word(a, 2)};
+    }
+
+    /** "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59." */
+    protected boolean presetValid(int[] p) {
+        return p[0] >= 0 && p[0] <= 65535 && p[1] >= 0 && p[1] <= 59 && p[2] >= 0 && p[2] <= 59;
+    }
+}

@@ -1,0 +1,240 @@
+package org.plcvec.reference;
+
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
+
+import org.plcvec.spec.Alternatives.Fx5AndOrWhenOff;
+import org.plcvec.verify.Address;
+import org.plcvec.verify.Emulator;
+import org.plcvec.verify.Memory;
+import org.plcvec.verify.Operand;
+import org.plcvec.verify.Step;
+import org.plcvec.verify.VectorRequest;
+
+/**
+ * Mitsubishi MELSEC iQ-F FX5: LDTM□/ANDTM□/ORTM□ (time) and LDDT□/ANDDT□/ORDT□ (date), from the
+ * manual pages fx5-time-compare-LDTM.txt and fx5-date-compare-LDDT.txt. The two pages are the
+ * same text with hour/minute/second replaced by year/month/day, so one class serves both.
+ */
+public class Fx5Compare implements Emulator.Scan {
+    /** One field of the 3-word data: its word offset, name, range and (s3) selector bit. */
+    public record Field(int offset, String name, int min, int max, int bit) {
+    }
+
+    // 'Set the "hour" data ... within the range 0 to 23.' '"minute" ... (s1)+1 ... 0 to 59.'
+    // '"second" ... (s1)+2 ... 0 to 59.' '(1) Set "second" as comparison target. (2) ... "minute"
+    // ... (3) ... "hour"': b0 second, b1 minute, b2 hour. Most significant first.
+    public static final Field[] TIME = {
+        new Field(0, "hour", 0, 23, 2), new Field(1, "minute", 0, 59, 1), new Field(2, "second", 0, 59, 0),
+    };
+    // 'Set the 4 digit "year" data ... 1980 to 2079.' '"month" ... 1 to 12.' '"date" ... 1 to 31.'
+    public static final Field[] DATE = {
+        new Field(0, "year", 1980, 2079, 2), new Field(1, "month", 1, 12, 1), new Field(2, "day", 1, 31, 0),
+    };
+
+    static final Address SM709 = Address.of("SM709");
+
+    enum Form { LD, AND, OR }
+
+    /** "The following table lists the comparison operation results of each instruction." */
+    enum Condition {
+        EQ("="), NE("<>"), GT(">"), LE("<="), LT("<"), GE(">=");
+
+        final String symbol;
+
+        Condition(String symbol) {
+            this.symbol = symbol;
+        }
+
+        /** {@code order}: the sign of (s1) compared with (s2). */
+        boolean holds(int order) {
+            switch (this) {
+                case EQ: return order == 0;
+                case NE: return order != 0;
+                case GT: return order > 0;
+                case LE: return order <= 0;
+                case LT: return order < 0;
+                default: return order >= 0;
+            }
+        }
+    }
+
+    /** {@code ANDTM<=} is (AND, TM, <=). */
+    record Mnemonic(Form form, String kind, Condition condition) {
+        private static final Map<String, Mnemonic> CACHE = new ConcurrentHashMap<>();
+
+        static Mnemonic parse(String instruction) {
+            Mnemonic m = CACHE.get(instruction);
+            if (m == null) {
+                m = read(instruction);
+                if (m != null) {
+                    CACHE.put(instruction, m);
+                }
+            }
+            return m;
+        }
+
+        private static Mnemonic read(String instruction) {
+            for (Form form : Form.values()) {
+                for (String kind : new String[] {"TM", "DT"}) {
+                    String prefix = form.name() + kind;
+                    if (instruction.startsWith(prefix)) {
+                        for (Condition c : Condition.values()) {
+                            if (instruction.substring(prefix.length()).equals(c.symbol)) {
+                                return new Mnemonic(form, kind, c);
+                            }
+                        }
+                    }
+                }
+            }
+            return null;
+        }
+    }
+
+    protected final Memory mem;
+    protected final Field[] fields;
+    protected final Settings settings;
+    protected final Form form;
+    protected final Condition condition;
+    protected final Operand s1;
+    protected final Operand s2;
+    protected final Operand s3;
+
+    public Fx5Compare(VectorRequest vector, Memory memory, Field[] fields, Settings settings) {
+        Mnemonic m = Mnemonic.parse(vector.instruction());
+        if (m == null || !m.kind().equals(fields == TIME ? "TM" : "DT")) {
+            throw new IllegalArgumentException("not an FX5 " + (fields == TIME ? "time" : "date") + " comparison: "
+                    + vector.instruction());
+        }
+        this.mem = memory;
+        this.fields = fields;
+        this.settings = settings;
+        this.form = m.form();
+        this.condition = m.condition();
+        this.s1 = vector.operand("s1");
+        this.s2 = vector.operand("s2");
+        this.s3 = vector.operand("s3");
+    }
+
+    /** One scan of one LD/AND/OR contact; returns the logic state after it. */
+    @Override
+    public Boolean execute(Step step) {
+        if (form == Form.LD) {
+            return evaluate(step);
+        }
+        boolean rlo = step.rloIn();
+        Fx5AndOrWhenOff logic = settings.fx5Logic;
+        // "(Devices are used as a normally open contact.)" NOTES.md (iQ-R processing times): "an
+        // AND/OR comparison is not executed while the preceding logic is off" (FX5-AND-OR-WHEN-OFF).
+        if (form == Form.AND) {
+            if (!rlo && logic != Fx5AndOrWhenOff.ALWAYS_EXECUTED) {
+                return false;
+            }
+            boolean contact = evaluate(step);    // executed: may set SM709
+            return rlo && contact;
+        }
+        if (rlo && logic == Fx5AndOrWhenOff.SHORT_CIRCUIT) {
+            return true;
+        }
+        boolean contact = evaluate(step);
+        return rlo || contact;
+    }
+
+    /** The comparison itself (the "contact"). */
+    protected boolean evaluate(Step step) {
+        int s3word = s3.word(mem);
+        // "(5) When 1 is set to the 15 bit, the data in the device specified by (s1) is compared
+        // with the current time ... The time data in the device specified by (s2) is regarded as
+        // dummy data and ignored."
+        boolean useClock = (s3word & 0x8000) != 0;
+
+        // "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the
+        // corresponding device range, SM709 turns on ... and the operation result will be
+        // non-continuity as well."
+        if (!mem.inRange(s1.device(), 3)) {
+            return error();
+        }
+        boolean s2Checked = !useClock || settings.clockS2RangeChecked;
+        if (s2Checked && !mem.inRange(s2.device(), 3)) {
+            return error();
+        }
+        int[] a = read(s1.device());
+        int[] b = useClock ? clock(step) : read(s2.device());
+
+        // "(4) Set 0. If a value other than 0 is set, the operation result will be
+        // non-continuity." (bits 3 to 14). "When 0 is set to the 0 to 2 bits, the time data ...
+        // are not compared." Table: "Other than 0001H to 0007H, 8001H to 8007H  None".
+        boolean selectorValid = (s3word & 0x7FF8) == 0 && (s3word & 0x0007) != 0;
+
+        // "If the comparison target data in the device are not recognized as time data, SM709
+        // turns on ... and the operation result will be non-continuity." Which words are
+        // "comparison target data" is FX5-SM709-SCOPE.
+        if (settings.sm709AllWords) {
+            if (outOfRange(a, -1) || (!useClock && outOfRange(b, -1))) {
+                return error();
+            }
+            if (!selectorValid) {
+                return false;
+            }
+        } else {
+            if (!selectorValid) {
+                return false;
+            }
+            if (outOfRange(a, s3word) || (!useClock && outOfRange(b, s3word))) {
+                return error();
+            }
+        }
+        // Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
+        // the data are within the setting range": 02/30 is compared as it is.
+        return condition.holds(compare(a, b, s3word));
+    }
+
+    /** SM709 on and non-continuity. "Once SM709 turns on, the on state is held": never cleared here. */
+    protected boolean error() {
+        mem.setBit(SM709, true);
+        return false;
+    }
+
+    /** (s1), (s2): "16-bit signed binary", three words. */
+    protected int[] read(Address base) {
+        return new int[] {(short) mem.word(base, 0), (short) mem.word(base, 1), (short) mem.word(base, 2)};
+    }
+
+    /** The injected current time (or date), in the fields' order. */
+    protected int[] clock(Step step) {
+        int[] out = new int[3];
+        for (Field f : fields) {
+            out[f.offset()] = step.clock(f.name());
+        }
+        return out;
+    }
+
+    /** Whether a field (every field when {@code selected} is -1, else those it selects) is outside its range. */
+    protected boolean outOfRange(int[] words, int selected) {
+        for (Field f : fields) {
+            if (selected != -1 && ((selected >> f.bit()) & 1) == 0) {
+                continue;
+            }
+            int v = words[f.offset()];
+            if (v < f.min() || v > f.max()) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** -1/0/1: field by field, most significant selected field first. */
+    protected int compare(int[] a, int[] b, int selected) {
+        for (Field f : fields) {
+            if (((selected >> f.bit()) & 1) == 0) {
+                continue;
+            }
+            int x = a[f.offset()];
+            int y = b[f.offset()];
+            if (x != y) {
+                return x < y ? -1 : 1;
+            }
+        }
+        return 0;
+    }
+}

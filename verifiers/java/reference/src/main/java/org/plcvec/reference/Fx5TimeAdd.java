@@ -1,0 +1,130 @@
+package org.plcvec.reference;
+
+import org.plcvec.verify.Address;
+import org.plcvec.verify.Emulator;
+import org.plcvec.verify.Memory;
+import org.plcvec.verify.Step;
+import org.plcvec.verify.VectorRequest;
+
+/** Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data), from fx5-time-add-TADD.txt. */
+public class Fx5TimeAdd implements Emulator.Scan {
+    static final int DAY = 24 * 3600;
+    // "SM700 Carry ... SM8020 Zero ... SM8022 Carry"
+    static final Address SM700 = Address.of("SM700");
+    static final Address SM8022 = Address.of("SM8022");
+    static final Address ZERO = Address.of("SM8020");
+    // "Error code (SD0/SD8067)"
+    static final Address SD0 = Address.of("SD0");
+    static final Address SD8067 = Address.of("SD8067");
+    /** "2820H The device range specified by (s1), (s2), and (d) exceeds the corresponding device range." */
+    static final int ERR_DEVICE_RANGE = 0x2820;
+    /** "3405H Any of values specified by (s1) and (s2) is outside the following range." */
+    static final int ERR_VALUE_RANGE = 0x3405;
+    /** "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)". */
+    static final int[] MAX = {23, 59, 59};
+
+    protected final Memory mem;
+    protected final Settings settings;
+    protected final boolean pulse;
+    protected final Address s1;
+    protected final Address s2;
+    protected final Address d;
+    /** TADDP: the state of EN before the first step is off. */
+    protected boolean previousEn;
+
+    public Fx5TimeAdd(VectorRequest vector, Memory memory, Settings settings) {
+        String instruction = vector.instruction();
+        if (!instruction.equals("TADD") && !instruction.equals("TADDP")) {
+            throw new IllegalArgumentException("not TADD/TADDP: " + instruction);
+        }
+        this.mem = memory;
+        this.settings = settings;
+        this.pulse = instruction.equals("TADDP");
+        this.s1 = vector.operand("s1").device();
+        this.s2 = vector.operand("s2").device();
+        this.d = vector.operand("d").device();
+    }
+
+    @Override
+    public Boolean execute(Step step) {
+        boolean en = step.en();
+        // TADD: every scan while EN is on; TADDP: on the rising edge of EN only.
+        boolean run = pulse ? en && !previousEn : en;
+        previousEn = en;
+        if (run) {
+            add();
+        }
+        return null;
+    }
+
+    /** One execution of the addition. */
+    protected void add() {
+        // "These instructions occupy three points for each of three devices"; out of range:
+        // error 2820H, nothing read or written.
+        if (!mem.inRange(s1, 3) || !mem.inRange(s2, 3) || !mem.inRange(d, 3)) {
+            error(ERR_DEVICE_RANGE);
+            return;
+        }
+        int[] a = read(s1);
+        int[] b = read(s2);
+        if (!valid(a) || !valid(b)) {
+            error(ERR_VALUE_RANGE);
+            if (!settings.taddComputedOnError) {
+                return;      // TADD-ON-ERROR=not-executed: (d) and the flags keep their values
+            }
+        }
+        int total = (a[0] + b[0]) * 3600 + (a[1] + b[1]) * 60 + (a[2] + b[2]);
+        boolean carry = carries(total);
+        int result = Math.floorMod(total, DAY);
+        mem.setWord(d, 0, result / 3600);
+        mem.setWord(d, 1, result / 60 % 60);
+        mem.setWord(d, 2, result % 60);
+        // "If the result is 0 (0:00:00), the zero flag turns on."
+        setFlags(carry, result == 0);
+    }
+
+    /**
+     * "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result will be
+     * the sum minus 24:00:00." But "If 1 second is added to 23:59:59, the result will be 0:00:00.
+     * This turns on both the carry flag and the zero flag." (TADD-EXACT-24)
+     */
+    protected boolean carries(int total) {
+        return settings.taddCarryAbove24 ? total > DAY : total >= DAY;
+    }
+
+    protected boolean valid(int[] hms) {
+        for (int i = 0; i < 3; i++) {
+            if (hms[i] < 0 || hms[i] > MAX[i]) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Three words, "16-bit signed binary". */
+    protected int[] read(Address base) {
+        return new int[] {(short) mem.word(base, 0), (short) mem.word(base, 1), (short) mem.word(base, 2)};
+    }
+
+    protected void error(int code) {
+        mem.setWord(SD0, code);
+        mem.setWord(SD8067, code);
+    }
+
+    protected void setFlags(boolean carry, boolean zero) {
+        if (settings.taddFlagsSetOnly) {
+            // TADD-FLAGS-OFF=set-only: an execution only ever turns a flag on.
+            if (carry) {
+                mem.setBit(SM700, true);
+                mem.setBit(SM8022, true);
+            }
+            if (zero) {
+                mem.setBit(ZERO, true);
+            }
+            return;
+        }
+        mem.setBit(SM700, carry);
+        mem.setBit(SM8022, carry);
+        mem.setBit(ZERO, zero);
+    }
+}
