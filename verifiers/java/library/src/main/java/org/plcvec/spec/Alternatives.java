@@ -83,7 +83,9 @@ public final class Alternatives {
         /** Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were. (the default) */
         ERROR("error", "Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were."),
         /** Nothing is compared, so the data are equal: =, <=, >= on. */
-        EQUAL("equal", "Nothing is compared, so the data are equal: =, <=, >= on.");
+        EQUAL("equal", "Nothing is compared, so the data are equal: =, <=, >= on."),
+        /** Nothing is compared, so no comparison condition holds: the execution condition is OFF, the six flags are left as they were, and it is no error (P_ER is written off like any execution without error). */
+        NOT_COMPARED("not-compared", "Nothing is compared, so no comparison condition holds: the execution condition is OFF, the six flags are left as they were, and it is no error (P_ER is written off like any execution without error).");
 
         private final String id;
         private final String says;
@@ -155,7 +157,9 @@ public final class Alternatives {
         /** The comparison always executes and writes the flags; only the execution condition it passes on is combined. (the default) */
         ALWAYS_EXECUTED("always-executed", "The comparison always executes and writes the flags; only the execution condition it passes on is combined."),
         /** An AND form with its execution condition OFF is not executed and leaves the flags as they were. */
-        AND_SKIPPED("and-skipped", "An AND form with its execution condition OFF is not executed and leaves the flags as they were.");
+        AND_SKIPPED("and-skipped", "An AND form with its execution condition OFF is not executed and leaves the flags as they were."),
+        /** An AND form with its execution condition OFF and an OR form with it ON are not executed (their result is already decided) and leave the flags as they were. */
+        SHORT_CIRCUIT("short-circuit", "An AND form with its execution condition OFF and an OR form with it ON are not executed (their result is already decided) and leave the flags as they were.");
 
         private final String id;
         private final String says;
@@ -263,7 +267,9 @@ public final class Alternatives {
         /** While the input is off nothing changes: D1, D2 and the fraction of a second already counted are kept. (the default) */
         HOLD("hold", "While the input is off nothing changes: D1, D2 and the fraction of a second already counted are kept."),
         /** While the input is off D1 returns to 0:00:00 and the fraction is dropped; D2 is kept. */
-        RESET("reset", "While the input is off D1 returns to 0:00:00 and the fraction is dropped; D2 is kept.");
+        RESET("reset", "While the input is off D1 returns to 0:00:00 and the fraction is dropped; D2 is kept."),
+        /** While the input is off D1 and D2 are kept, but the fraction of a second counted in the work area is dropped: each ON period counts whole seconds from its own start. */
+        HOLD_DROP_FRACTION("hold-drop-fraction", "While the input is off D1 and D2 are kept, but the fraction of a second counted in the work area is dropped: each ON period counts whole seconds from its own start.");
 
         private final String id;
         private final String says;
@@ -335,7 +341,9 @@ public final class Alternatives {
         /** Only the fields (s3) selects are checked; an unselected word may hold anything, and nothing is checked when (s3) selects nothing. (the default) */
         SELECTED_FIELDS("selected-fields", "Only the fields (s3) selects are checked; an unselected word may hold anything, and nothing is checked when (s3) selects nothing."),
         /** All three words of (s1) and, unless (s2) is ignored, of (s2) are checked whenever the instruction executes. */
-        ALL_WORDS("all-words", "All three words of (s1) and, unless (s2) is ignored, of (s2) are checked whenever the instruction executes.");
+        ALL_WORDS("all-words", "All three words of (s1) and, unless (s2) is ignored, of (s2) are checked whenever the instruction executes."),
+        /** All three words of each compared operand ((s1) and, unless (s2) is ignored, (s2)) are checked, but only when a comparison is made: (s3) has no reserved bit set and selects at least one field. A selector that compares nothing checks nothing. */
+        COMPARED_OPERANDS("compared-operands", "All three words of each compared operand ((s1) and, unless (s2) is ignored, (s2)) are checked, but only when a comparison is made: (s3) has no reserved bit set and selects at least one field. A selector that compares nothing checks nothing.");
 
         private final String id;
         private final String says;

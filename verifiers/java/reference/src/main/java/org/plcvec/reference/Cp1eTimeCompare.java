@@ -3,6 +3,7 @@ package org.plcvec.reference;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 
+import org.plcvec.spec.Alternatives.Cp1eAndOrWhenOff;
 import org.plcvec.verify.Address;
 import org.plcvec.verify.Emulator;
 import org.plcvec.verify.Memory;
@@ -132,11 +133,14 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         }
         boolean rlo = step.rloIn();
         if (form == Form.AND) {
-            if (!rlo && settings.cp1eAndSkipped) {
+            if (!rlo && settings.cp1eLogic != Cp1eAndOrWhenOff.ALWAYS_EXECUTED) {
                 return false;
             }
             boolean contact = evaluate();
             return rlo && contact;
+        }
+        if (rlo && settings.cp1eLogic == Cp1eAndOrWhenOff.SHORT_CIRCUIT) {
+            return true;
         }
         boolean contact = evaluate();
         return rlo || contact;
@@ -176,8 +180,18 @@ public class Cp1eTimeCompare implements Emulator.Scan {
                 order = a < b ? -1 : 1;
             }
         }
-        if (!any && settings.cp1eAllMaskedError) {
-            return error();
+        if (!any) {
+            switch (settings.cp1eAllMasked) {
+                case ERROR:
+                    return error();
+                case NOT_COMPARED:
+                    // Nothing compared, no result: OFF, flags untouched, no error.
+                    if (!settings.cp1eErHeld) {
+                        mem.setBit(P_ER, false);
+                    }
+                    return false;
+                default:   // EQUAL: nothing differs
+            }
         }
         reflectFlags(order);
         if (!settings.cp1eErHeld) {

@@ -41,9 +41,15 @@ public class Fc6aHourMeter implements Emulator.Scan {
     public Boolean execute(Step step) {
         if (!step.input()) {
             // "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF.
-            if (settings.hourResetWhenOff) {
-                store(0);
-                fractionMs = 0;
+            switch (settings.hourInputOff) {
+                case RESET:
+                    store(0);
+                    fractionMs = 0;
+                    break;
+                case HOLD_DROP_FRACTION:
+                    fractionMs = 0;     // D1 kept; the part of a second is lost
+                    break;
+                default:                // HOLD: nothing changes
             }
             return null;
         }

@@ -169,20 +169,32 @@ public class Fx5Compare implements Emulator.Scan {
         // "If the comparison target data in the device are not recognized as time data, SM709
         // turns on ... and the operation result will be non-continuity." Which words are
         // "comparison target data" is FX5-SM709-SCOPE.
-        if (settings.sm709AllWords) {
-            if (outOfRange(a, -1) || (!useClock && outOfRange(b, -1))) {
-                return error();
-            }
-            if (!selectorValid) {
-                return false;
-            }
-        } else {
-            if (!selectorValid) {
-                return false;
-            }
-            if (outOfRange(a, s3word) || (!useClock && outOfRange(b, s3word))) {
-                return error();
-            }
+        switch (settings.sm709Scope) {
+            case ALL_WORDS:
+                if (outOfRange(a, -1) || (!useClock && outOfRange(b, -1))) {
+                    return error();
+                }
+                if (!selectorValid) {
+                    return false;
+                }
+                break;
+            case COMPARED_OPERANDS:
+                // The operands are "comparison target data" as a whole, but only when the table
+                // says they "are compared": not for a selector that compares nothing.
+                if (!selectorValid) {
+                    return false;
+                }
+                if (outOfRange(a, -1) || (!useClock && outOfRange(b, -1))) {
+                    return error();
+                }
+                break;
+            default:   // SELECTED_FIELDS: a masked word is not comparison target data
+                if (!selectorValid) {
+                    return false;
+                }
+                if (outOfRange(a, s3word) || (!useClock && outOfRange(b, s3word))) {
+                    return error();
+                }
         }
         // Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
         // the data are within the setting range": 02/30 is compared as it is.

@@ -24,7 +24,7 @@ import org.plcvec.verify.Choices;
  */
 public final class Settings {
     // FX5 time/date comparison
-    final boolean sm709AllWords;
+    final Fx5Sm709Scope sm709Scope;
     final Fx5AndOrWhenOff fx5Logic;
     final boolean clockS2RangeChecked;
     // FX5 TADD
@@ -33,31 +33,31 @@ public final class Settings {
     final boolean taddComputedOnError;
     // FC6A HOUR
     final boolean hourRecompared;
-    final boolean hourResetWhenOff;
+    final HourInputOff hourInputOff;
     final boolean hourZeroPresetNever;
     // CP1E
     final boolean cp1eNonBcdError;
     final boolean cp1eOutOfRangeError;
-    final boolean cp1eAllMaskedError;
+    final Cp1eAllMasked cp1eAllMasked;
     final boolean cp1eHighBitsError;
-    final boolean cp1eAndSkipped;
+    final Cp1eAndOrWhenOff cp1eLogic;
     final boolean cp1eErHeld;
 
     public Settings(Choices c) {
-        sm709AllWords = c.follows(Fx5Sm709Scope.ALL_WORDS);
+        sm709Scope = follows(c, Fx5Sm709Scope.values());
         fx5Logic = follows(c, Fx5AndOrWhenOff.values());
         clockS2RangeChecked = c.follows(Fx5ClockS2DeviceRange.CHECKED);
         taddFlagsSetOnly = c.follows(TaddFlagsOff.SET_ONLY);
         taddCarryAbove24 = c.follows(TaddExact24.CARRY_ABOVE_24);
         taddComputedOnError = c.follows(TaddOnError.COMPUTED);
         hourRecompared = c.follows(HourOutputOff.RECOMPARED);
-        hourResetWhenOff = c.follows(HourInputOff.RESET);
+        hourInputOff = follows(c, HourInputOff.values());
         hourZeroPresetNever = c.follows(HourPresetZero.NEVER);
         cp1eNonBcdError = c.follows(Cp1eNonBcd.ERROR);
         cp1eOutOfRangeError = c.follows(Cp1eOutOfRange.ERROR);
-        cp1eAllMaskedError = c.follows(Cp1eAllMasked.ERROR);
+        cp1eAllMasked = follows(c, Cp1eAllMasked.values());
         cp1eHighBitsError = c.follows(Cp1eCHighBits.ERROR);
-        cp1eAndSkipped = c.follows(Cp1eAndOrWhenOff.AND_SKIPPED);
+        cp1eLogic = follows(c, Cp1eAndOrWhenOff.values());
         cp1eErHeld = c.follows(Cp1eErFlag.HELD);
     }
 
