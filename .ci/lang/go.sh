@@ -17,4 +17,11 @@ if [ -n "$unformatted" ]; then
 fi
 (cd "$GO_DIR" && go vet ./...)
 (cd "$GO_DIR" && go test -race -count=1 ./...)
-echo "go: built, vetted and tested in $((SECONDS - start)) s"
+# The Go reference over the stdio protocol passes the suite's own gate; a mutant does not.
+python3 -m plcvec verify --adapter verifiers/go/reference-adapter -q
+if python3 -m plcvec verify --adapter "verifiers/go/reference-adapter --mutant cp1e-and-as-or" \
+        --family cp1e-time-compare -q >/dev/null; then
+    echo "plcvec verify passed a mutant of the Go reference (cp1e-and-as-or)" >&2
+    exit 1
+fi
+echo "go: built, vetted, tested and verified in $((SECONDS - start)) s"

@@ -28,8 +28,10 @@ func NewMemory(req *Request) *Memory {
 }
 
 func (m *Memory) index(a Addr) int {
-	for i := range m.req.addrs {
-		if m.req.addrs[i] == a {
+	addrs := m.req.addrs
+	for i := range addrs {
+		// The number first: it differs for almost every other device, and costs no string compare.
+		if addrs[i].N == a.N && addrs[i].Kind == a.Kind {
 			return i
 		}
 	}

@@ -43,7 +43,7 @@ var cp1eFields = [6]cp1eField{
 }
 
 type cp1e struct {
-	parts                   Parts
+	parts                   *Parts
 	form, condition         string
 	s1, s2                  plcvec.Addr
 	c                       plcvec.Operand
@@ -53,7 +53,11 @@ type cp1e struct {
 }
 
 func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
-	c := &cp1e{parts: r.parts}
+	base, err := r.cp1e.get(func() (cp1e, error) { return configureCP1E(r) })
+	if err != nil {
+		return nil, err
+	}
+	c := &base
 	form, symbol, _ := strings.Cut(req.Instruction, " ")
 	if (form != "LD" && form != "AND" && form != "OR") || !strings.HasSuffix(symbol, "DT") ||
 		!knownCondition(strings.TrimSuffix(symbol, "DT")) {
@@ -72,6 +76,12 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 		return nil, err
 	}
 	c.s1, c.s2 = s1.Addr(), s2.Addr()
+	return c, nil
+}
+
+// configureCP1E: the CPU as the alternatives of the CP1E comparisons configure it.
+func configureCP1E(r *Reference) (c cp1e, err error) {
+	c.parts = &r.parts
 	for _, q := range []struct {
 		id, when, other string
 		flag            *bool
@@ -83,17 +93,17 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	} {
 		alt, err := r.choice(q.id, q.when, q.other)
 		if err != nil {
-			return nil, err
+			return c, err
 		}
 		*q.flag = alt == q.when
 	}
 	if c.allMasked, err = r.choice(spec.InterpCp1eAllMasked, spec.Cp1eAllMaskedError, spec.Cp1eAllMaskedEqual,
 		spec.Cp1eAllMaskedNotCompared); err != nil {
-		return nil, err
+		return c, err
 	}
 	if c.andOrWhenOff, err = r.choice(spec.InterpCp1eAndOrWhenOff, spec.Cp1eAndOrWhenOffAlwaysExecuted,
 		spec.Cp1eAndOrWhenOffAndSkipped, spec.Cp1eAndOrWhenOffShortCircuit); err != nil {
-		return nil, err
+		return c, err
 	}
 	return c, nil
 }

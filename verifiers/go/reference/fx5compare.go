@@ -31,8 +31,8 @@ var timeFields = [3]field{{"hour", 0, 23, 2}, {"minute", 0, 59, 1}, {"second", 0
 var dateFields = [3]field{{"year", 1980, 2079, 2}, {"month", 1, 12, 1}, {"day", 1, 31, 0}}
 
 type fx5Compare struct {
-	parts        Parts
-	fields       [3]field
+	parts        *Parts
+	fields       *[3]field
 	date         bool
 	form         string // LD, AND, OR
 	condition    string // =, <>, >, <=, <, >=
@@ -43,12 +43,17 @@ type fx5Compare struct {
 	checkClockS2 bool   // FX5-CLOCK-S2-DEVICE-RANGE
 }
 
-func newFX5Compare(r *Reference, req *plcvec.Request, fields [3]field) (plcvec.CPU, error) {
+func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.CPU, error) {
 	kind := "TM"
-	if fields == dateFields {
+	if fields == &dateFields {
 		kind = "DT"
 	}
-	c := &fx5Compare{parts: r.parts, fields: fields, date: kind == "DT"}
+	base, err := r.fx5.get(func() (fx5Compare, error) { return configureFX5(r) })
+	if err != nil {
+		return nil, err
+	}
+	c := &base
+	c.fields, c.date = fields, kind == "DT"
 	for _, form := range []string{"LD", "AND", "OR"} {
 		if strings.HasPrefix(req.Instruction, form+kind) {
 			c.form, c.condition = form, req.Instruction[len(form+kind):]
@@ -70,17 +75,23 @@ func newFX5Compare(r *Reference, req *plcvec.Request, fields [3]field) (plcvec.C
 		return nil, err
 	}
 	c.s1, c.s2 = s1.Addr(), s2.Addr()
+	return c, nil
+}
+
+// configureFX5: the CPU as the alternatives of the FX5 comparisons configure it.
+func configureFX5(r *Reference) (c fx5Compare, err error) {
+	c.parts = &r.parts
 	if c.scope, err = r.choice(spec.InterpFx5Sm709Scope, spec.Fx5Sm709ScopeSelectedFields,
 		spec.Fx5Sm709ScopeAllWords, spec.Fx5Sm709ScopeComparedOperands); err != nil {
-		return nil, err
+		return c, err
 	}
 	if c.andOrWhenOff, err = r.choice(spec.InterpFx5AndOrWhenOff, spec.Fx5AndOrWhenOffAndSkipped,
 		spec.Fx5AndOrWhenOffAlwaysExecuted, spec.Fx5AndOrWhenOffShortCircuit); err != nil {
-		return nil, err
+		return c, err
 	}
 	s2range, err := r.choice(spec.InterpFx5ClockS2DeviceRange, spec.Fx5ClockS2DeviceRangeIgnored, spec.Fx5ClockS2DeviceRangeChecked)
 	if err != nil {
-		return nil, err
+		return c, err
 	}
 	c.checkClockS2 = s2range == spec.Fx5ClockS2DeviceRangeChecked
 	return c, nil

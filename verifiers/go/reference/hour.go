@@ -16,7 +16,7 @@ const hourCycle = 65536 * 3600
 // already measured lives here (on the CPU it is in the system work area D3, D3+1, whose
 // contents vectors never compare).
 type hourMeter struct {
-	parts      Parts
+	parts      *Parts
 	s1         plcvec.Operand
 	d1, d2, d3 plcvec.Addr
 	recompared bool   // HOUR-OUTPUT-OFF
@@ -30,8 +30,11 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if req.Instruction != spec.InstrHour {
 		return nil, plcvec.Skip("not HOUR: " + req.Instruction)
 	}
-	h := &hourMeter{parts: r.parts}
-	var err error
+	base, err := r.hour.get(func() (hourMeter, error) { return configureHour(r) })
+	if err != nil {
+		return nil, err
+	}
+	h := &base
 	if h.s1, err = operand(req, "S1"); err != nil {
 		return nil, err
 	}
@@ -48,17 +51,23 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 		}
 		*o.addr = op.Addr()
 	}
+	return h, nil
+}
+
+// configureHour: the CPU as the alternatives of HOUR configure it.
+func configureHour(r *Reference) (h hourMeter, err error) {
+	h.parts = &r.parts
 	output, err := r.choice(spec.InterpHourOutputOff, spec.HourOutputOffLatched, spec.HourOutputOffRecompared)
 	if err != nil {
-		return nil, err
+		return h, err
 	}
 	if h.inputOff, err = r.choice(spec.InterpHourInputOff, spec.HourInputOffHold, spec.HourInputOffReset,
 		spec.HourInputOffHoldDropFraction); err != nil {
-		return nil, err
+		return h, err
 	}
 	zero, err := r.choice(spec.InterpHourPresetZero, spec.HourPresetZeroImmediate, spec.HourPresetZeroNever)
 	if err != nil {
-		return nil, err
+		return h, err
 	}
 	h.recompared = output == spec.HourOutputOffRecompared
 	h.zeroNever = zero == spec.HourPresetZeroNever

@@ -8,6 +8,7 @@ import (
 	"fmt"
 	"sort"
 	"strings"
+	"sync"
 
 	"plcvec"
 	"plcvec/spec"
@@ -24,6 +25,23 @@ type Reference struct {
 	name    string
 	choices map[string]string // every interpretation: declared or default
 	parts   Parts
+	// Each family's CPU as configured by the alternatives, worked out once: a vector's CPU is a
+	// copy of it with the vector's operands.
+	fx5  configured[fx5Compare]
+	tadd configured[tadd]
+	hour configured[hourMeter]
+	cp1e configured[cp1e]
+}
+
+type configured[T any] struct {
+	once sync.Once
+	cpu  T
+	err  error
+}
+
+func (c *configured[T]) get(configure func() (T, error)) (T, error) {
+	c.once.Do(func() { c.cpu, c.err = configure() })
+	return c.cpu, c.err
 }
 
 // New is the reference following the given alternatives (interpretation id -> alternative);
@@ -89,9 +107,9 @@ func (r *Reference) Choices() map[string]string { return r.choices }
 func (r *Reference) NewCPU(req *plcvec.Request) (plcvec.CPU, error) {
 	switch req.Family {
 	case spec.FamilyFx5TimeCompare:
-		return newFX5Compare(r, req, timeFields)
+		return newFX5Compare(r, req, &timeFields)
 	case spec.FamilyFx5DateCompare:
-		return newFX5Compare(r, req, dateFields)
+		return newFX5Compare(r, req, &dateFields)
 	case spec.FamilyFx5TimeAdd:
 		return newTADD(r, req)
 	case spec.FamilyFc6aHourMeter:

@@ -26,7 +26,7 @@ const (
 )
 
 type tadd struct {
-	parts        Parts
+	parts        *Parts
 	pulse        bool
 	s1, s2, d    plcvec.Addr
 	flagsEach    bool // TADD-FLAGS-OFF: written-each-execution
@@ -36,7 +36,11 @@ type tadd struct {
 }
 
 func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
-	t := &tadd{parts: r.parts}
+	base, err := r.tadd.get(func() (tadd, error) { return configureTADD(r) })
+	if err != nil {
+		return nil, err
+	}
+	t := &base
 	switch req.Instruction {
 	case spec.InstrTadd:
 	case spec.InstrTaddp:
@@ -54,17 +58,23 @@ func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 		}
 		*o.addr = op.Addr()
 	}
+	return t, nil
+}
+
+// configureTADD: the CPU as the alternatives of TADD configure it.
+func configureTADD(r *Reference) (t tadd, err error) {
+	t.parts = &r.parts
 	flags, err := r.choice(spec.InterpTaddFlagsOff, spec.TaddFlagsOffWrittenEachExecution, spec.TaddFlagsOffSetOnly)
 	if err != nil {
-		return nil, err
+		return t, err
 	}
 	exact, err := r.choice(spec.InterpTaddExact24, spec.TaddExact24CarryAt24, spec.TaddExact24CarryAbove24)
 	if err != nil {
-		return nil, err
+		return t, err
 	}
 	onError, err := r.choice(spec.InterpTaddOnError, spec.TaddOnErrorNotExecuted, spec.TaddOnErrorComputed)
 	if err != nil {
-		return nil, err
+		return t, err
 	}
 	if r.parts.TADDOnError != "" {
 		onError = r.parts.TADDOnError

@@ -1,0 +1,42 @@
+package reference_test
+
+import (
+	"testing"
+	"time"
+
+	"plcvec"
+)
+
+// BenchmarkJudgeGolden judges the whole golden set with the Go reference in process, after
+// loading (loading and preparing the expectations are timed apart, as load_s and prepare_s):
+// one op is one pass over every vector. verifiers/go/bench runs it and prints the figure
+// beside Python's (python3 -m plcvec bench-native --lang go).
+func BenchmarkJudgeGolden(b *testing.B) {
+	start := time.Now()
+	suite, err := plcvec.Embedded()
+	if err != nil {
+		b.Fatal(err)
+	}
+	load := time.Since(start)
+	impl := mustNew(b, nil)
+	start = time.Now()
+	plan, err := plcvec.Prepare(impl, plcvec.Options{Suite: suite})
+	if err != nil {
+		b.Fatal(err)
+	}
+	prepare := time.Since(start)
+	if report := plan.Verify(impl); !report.OK() || len(report.Failed()) > 0 {
+		b.Fatalf("the reference does not pass the golden set: %v", report.Counts())
+	}
+	b.ReportAllocs()
+	b.ResetTimer()
+	for i := 0; i < b.N; i++ {
+		plan.Verify(impl)
+	}
+	b.StopTimer()
+	n := float64(len(plan.Cases))
+	b.ReportMetric(n, "vectors")
+	b.ReportMetric(n*float64(b.N)/b.Elapsed().Seconds(), "vectors/s")
+	b.ReportMetric(load.Seconds(), "load_s")
+	b.ReportMetric(prepare.Seconds(), "prepare_s")
+}
