@@ -30,3 +30,16 @@ cmake --build "$C/build-sanitize" -j 2
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir "$C/build-sanitize" -j 2 --output-on-failure --timeout 600
 echo "c: sanitized build and tests in $((SECONDS - start)) s"
+
+# The reference over the stdio protocol passes the Python gate; a mutant served the same way is
+# rejected (exit 1), so the gate is not passing by accident.
+python3 -m plcvec verify --adapter verifiers/c/reference-adapter -q
+set +e
+python3 -m plcvec verify --adapter "verifiers/c/reference-adapter --mutant cp1e-and-as-or" -q >/dev/null
+rc=$?
+set -e
+if [ "$rc" -ne 1 ]; then
+    echo "c: the gate did not reject the mutant cp1e-and-as-or over stdio (exit $rc)" >&2
+    exit 1
+fi
+echo "c: the gate rejects a mutant served over stdio"

@@ -79,7 +79,7 @@ void memory_load(memory *m, const plcvec_vector *v)
 {
     m->vector = v;
     m->n = 0;
-    m->overflow = 0;
+    m->overflow = v->n_devices > MEMORY_CELLS;
     for (size_t i = 0; i < v->n_devices && i < MEMORY_CELLS; i++) {
         const plcvec_cell *src = &v->devices[i];
         mem_cell *c = &m->cells[m->n++];

@@ -1,5 +1,6 @@
 /* The reference as a plcvec implementation: each vector from its own initial state, one family
  * machine per vector, the whole device image reported after every step. */
+#include <stdio.h>
 #include <string.h>
 
 #include "reference.h"
@@ -26,10 +27,28 @@ int plcvec_reference_choose(plcvec_reference *ref, const char *interpretation, c
     return 0;
 }
 
+/* The operands each family reads: "d" must name a device, "k" may be a constant too. */
+static const char *const operands[PLCVEC_FAMILY_COUNT][4][2] = {
+    [PLCVEC_FAMILY_FX5_TIME_COMPARE] = {{"s1", "d"}, {"s2", "d"}, {"s3", "k"}},
+    [PLCVEC_FAMILY_FX5_DATE_COMPARE] = {{"s1", "d"}, {"s2", "d"}, {"s3", "k"}},
+    [PLCVEC_FAMILY_FX5_TIME_ADD] = {{"s1", "d"}, {"s2", "d"}, {"d", "d"}},
+    [PLCVEC_FAMILY_FC6A_HOUR_METER] = {{"D1", "d"}, {"D2", "d"}, {"S1", "k"}},
+    [PLCVEC_FAMILY_CP1E_TIME_COMPARE] = {{"S1", "d"}, {"S2", "d"}, {"C", "k"}},
+};
+
 static int run(void *ctx, const plcvec_vector *v, plcvec_out *out)
 {
     plcvec_reference *ref = ctx;
     memory *m = &ref->mem;
+    for (int i = 0; i < 4 && operands[v->family][i][0]; i++) {
+        const plcvec_operand *op = plcvec_operand_named(v, operands[v->family][i][0]);
+        if (!op || (op->is_constant && operands[v->family][i][1][0] == 'd')) {
+            char message[96];
+            snprintf(message, sizeof message, "%s needs the operand %s as a %s", plcvec_instruction_names[v->instruction],
+                     operands[v->family][i][0], operands[v->family][i][1][0] == 'd' ? "device" : "device or constant");
+            return plcvec_out_error(out, message);
+        }
+    }
     memory_load(m, v);
     tadd_state tadd = {0};
     hour_state hour = {0};

@@ -11,12 +11,7 @@ const char *const plcvec_status_names[] = {"pass", "fail", "error", "skip", "xfa
 
 enum { RAN = 0, SKIPPED = 1, FAILED = 2 };
 
-typedef struct reported {
-    int device;                 /* plcvec_device_id, or -1: see name */
-    uint8_t type;
-    uint32_t value;
-    char name[24];
-} reported;
+typedef plcvec_reported reported;
 
 struct plcvec_out {
     int *results;               /* per reported step */
@@ -119,6 +114,59 @@ int plcvec_out_error(plcvec_out *out, const char *message)
     out->status = FAILED;
     snprintf(out->message, sizeof out->message, "%s", message ? message : "error");
     return FAILED;
+}
+
+plcvec_out *plcvec_out_new(void)
+{
+    return calloc(1, sizeof(plcvec_out));
+}
+
+void plcvec_out_free(plcvec_out *out)
+{
+    if (!out)
+        return;
+    free(out->results);
+    free(out->first);
+    free(out->cells);
+    free(out);
+}
+
+void plcvec_out_reset(plcvec_out *out)
+{
+    out->n_steps = out->n_cells = 0;
+    out->status = RAN;
+    out->overflow = 0;
+    out->message[0] = '\0';
+}
+
+int plcvec_out_status(const plcvec_out *out, const char **message)
+{
+    if (message)
+        *message = out->message[0] ? out->message
+                   : out->overflow ? "a device reported before plcvec_out_step(), an unknown device id, or out of memory"
+                                   : "";
+    return out->overflow && out->status == RAN ? FAILED : out->status;
+}
+
+size_t plcvec_out_step_count(const plcvec_out *out)
+{
+    return out->n_steps;
+}
+
+int plcvec_out_result(const plcvec_out *out, size_t step)
+{
+    return step < out->n_steps ? out->results[step] : PLCVEC_NONE;
+}
+
+const plcvec_reported *plcvec_out_cells(const plcvec_out *out, size_t step, size_t *n)
+{
+    if (step >= out->n_steps) {
+        *n = 0;
+        return NULL;
+    }
+    size_t hi = step + 1 < out->n_steps ? out->first[step + 1] : out->n_cells;
+    *n = hi - out->first[step];
+    return out->cells + out->first[step];
 }
 
 /* ---- the judge ---------------------------------------------------------------------------- */
@@ -334,10 +382,7 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
                  "the vector lists no expectation for the alternatives it was judged by (is the suite damaged?)");
         return vd;
     }
-    out->n_steps = out->n_cells = 0;
-    out->status = RAN;
-    out->overflow = 0;
-    out->message[0] = '\0';
+    plcvec_out_reset(out);
     int rc = j->impl.run(j->impl.ctx, v, out);
     if (out->status == SKIPPED || rc == SKIPPED) {
         vd->status = PLCVEC_SKIP;

@@ -198,6 +198,22 @@ void plcvec_out_named(plcvec_out *out, const char *device, plcvec_type type, uns
 int plcvec_out_skip(plcvec_out *out, const char *reason);
 int plcvec_out_error(plcvec_out *out, const char *message);
 
+/* Reading back what was reported, for runners of your own (the stdio adapter is one). */
+typedef struct plcvec_reported {
+    int device;                 /* plcvec_device_id, or -1: see name */
+    uint8_t type;               /* plcvec_type */
+    uint32_t value;
+    char name[24];              /* set when device is -1 */
+} plcvec_reported;
+plcvec_out *plcvec_out_new(void);
+void plcvec_out_free(plcvec_out *out);
+void plcvec_out_reset(plcvec_out *out);
+/* 0: ran (read the steps), 1: skipped, 2: error; *message says why. */
+int plcvec_out_status(const plcvec_out *out, const char **message);
+size_t plcvec_out_step_count(const plcvec_out *out);
+int plcvec_out_result(const plcvec_out *out, size_t step);  /* 0, 1 or PLCVEC_NONE */
+const plcvec_reported *plcvec_out_cells(const plcvec_out *out, size_t step, size_t *n);
+
 /* An implementation, at the level of the contract. */
 typedef struct plcvec_impl {
     const char *name;
