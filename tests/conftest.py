@@ -30,3 +30,14 @@ def golden():
 @pytest.fixture(scope="session")
 def all_vectors(golden):
     return [v for f in golden.values() for v in f["vectors"]]
+
+
+@pytest.fixture(scope="session")
+def generated(families):
+    """The golden set generated once per test session from spec/: ({file name: text}, {family: vectors}).
+
+    Tests only read it; a test that needs the vectors of an edited spec generates those itself.
+    """
+    from plcvec.output.golden import build_golden
+
+    return build_golden(list(families.values()))

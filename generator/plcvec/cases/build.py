@@ -1,10 +1,12 @@
 """Turn a case (instruction, initial state, steps) into a vector with its expectations.
 
-The engine runs the case under the default reading of every interpretation, then under each other
-alternative; an interpretation whose alternatives give different expectations "touches" the vector,
-and the vector then carries the expectation of every combination of the touched ones.
+The engine runs the case under the default reading of every interpretation, then under the other
+alternatives of each interpretation an execution consulted (see plcvec.engine); an interpretation
+whose alternatives give different expectations "touches" the vector, and the vector then carries
+the expectation of every combination of the touched ones.
 """
 import itertools
+from typing import NamedTuple
 
 from plcvec.engine import make_engine
 from plcvec.spec.knobs import resolve
@@ -35,12 +37,23 @@ def instruction_list(fam):
     return [dict(i, name=i["mnemonic"]) for i in doc["instructions"]]
 
 
+class Run(NamedTuple):
+    """One execution of a case under one set of choices."""
+    expects: list      # per step: {"result"?, "devices": changed devices}
+    final: dict        # every device but the scratch ones, after the last step
+    outcome: dict      # {"category": "value"} or {"category": "error", "errors": [...]}
+    trace: set         # clause ids the engine cited
+    consulted: frozenset  # interpretation ids whose chosen value the execution read
+
+
 class VectorBuilder:
     def __init__(self, fam):
         self.fam = fam
         self.sizes = {k: v for k, v in fam.doc["assumptions"]["device_sizes"].items() if k != "why"}
         self.instructions = {i["name"]: i for i in instruction_list(fam)}
         self._engines = {}
+        self._consulting = {}
+        self.executions = 0   # runs of a case under one set of choices, for the benchmark and its tests
         self.ids = set()
         self.defaults = fam.default_choices()
         coverage = fam.doc.get("coverage", {})
@@ -50,13 +63,32 @@ class VectorBuilder:
         self.by_tag = coverage.get("by_tag", {})
 
     def engine(self, choices):
+        """The engine under `choices` (interpretation id -> alternative id), as plain as it can be."""
         key = tuple(sorted(choices.items()))
         if key not in self._engines:
             self._engines[key] = make_engine(resolve(self.fam.doc, dict(choices)))
         return self._engines[key]
 
+    def _consulting_engine(self, choices):
+        """(engine, sink, interpretations read while it was built) for `choices`: the engine reads its
+        parameters from a document that records each chosen value read into `sink`."""
+        key = tuple(sorted(choices.items()))
+        entry = self._consulting.get(key)
+        if entry is None:
+            sink = set()
+            engine = make_engine(resolve(self.fam.doc, dict(choices), consulted=sink))
+            entry = self._consulting[key] = (engine, sink, frozenset(sink))
+        return entry
+
     def run(self, instr, operands, devices, steps, scratch, choices):
-        engine = self.engine(choices)
+        """(expects, final, outcome, trace) of the case under `choices`."""
+        return self.execute(instr, operands, devices, steps, scratch, choices)[:4]
+
+    def execute(self, instr, operands, devices, steps, scratch, choices):
+        """The Run of the case under `choices`, with the interpretations it consulted."""
+        engine, sink, at_build = self._consulting_engine(choices)
+        sink.clear()
+        self.executions += 1
         state = dict(devices)
         ctx = {"device_sizes": self.sizes}
         trace, expects, errors = set(), [], []
@@ -64,7 +96,7 @@ class VectorBuilder:
             state.update(step.get("set", {}))
             before = dict(state)
             result = engine.execute(instr, operands, state, step, ctx, trace)
-            if set(state) != set(before):
+            if len(state) != len(before):
                 raise GeneratorBug(f"engine wrote {sorted(set(state) - set(before))} not in the initial state")
             expect = {}
             if result is not None:
@@ -76,7 +108,31 @@ class VectorBuilder:
         final = {k: state[k] for k in sorted(state) if k not in scratch}
         outcome = {"category": "error", "errors": errors} if errors else {"category": "value"}
         trace.discard(None)
-        return expects, final, outcome, trace
+        return Run(expects, final, outcome, trace, frozenset(sink) | at_build)
+
+    def runs(self, instr, operands, devices, steps, scratch):
+        """[(choices, Run)]: the case under every combination of alternatives, in as few runs as it takes.
+
+        Each entry's choices name some interpretations; its Run is the result under every combination
+        that agrees with them, and the entries' choices split the set of all combinations between them.
+        A run that consulted an interpretation not yet fixed is split into one entry per combination of
+        those interpretations' alternatives (the one that keeps the defaults is the run itself).
+        """
+        fam, defaults = self.fam, self.defaults
+        order = list(fam.interpretations)
+        options = {i: [a["id"] for a in fam.interpretations[i]["alternatives"]] for i in order}
+        done, pending = [], [{}]
+        while pending:
+            fixed = pending.pop()
+            run = self.execute(instr, operands, devices, steps, scratch, dict(defaults, **fixed))
+            open_ = [i for i in order if i in run.consulted and i not in fixed]
+            for combo in itertools.product(*(options[i] for i in open_)):
+                choice = dict(fixed, **dict(zip(open_, combo)))
+                if all(c == defaults[i] for i, c in zip(open_, combo)):
+                    done.append((choice, run))  # the choices just run: nothing unfixed was read
+                else:
+                    pending.append(choice)
+        return done
 
     def vector(self, instruction, key, *, tags, description, operands, devices, steps,
                scratch=(), clauses=(), printed=None):
@@ -87,30 +143,8 @@ class VectorBuilder:
         self.ids.add(vid)
         for error in _errors_in_code(operands):
             raise GeneratorBug(f"{vid}: {error}")
-        # Run the vector under every combination of the family's alternatives (at most a few dozen):
-        # checking one interpretation at a time would miss a result that changes only when two
-        # non-default alternatives are taken together.
-        names = list(self.fam.interpretations)
-        options = [[a["id"] for a in self.fam.interpretations[i]["alternatives"]] for i in names]
-        results = {combo: self.run(instr, operands, devices, steps, scratch, dict(zip(names, combo)))
-                   for combo in itertools.product(*options)}
-        expects, final, outcome, trace = results[tuple(self.defaults[i] for i in names)]
-        # An interpretation touches the vector when changing it alone, anywhere in the grid,
-        # changes the result; the result is then a function of the touched ones only.
-        touched = [iid for k, iid in enumerate(names)
-                   if any(results[c][:3] != results[c[:k] + (alt,) + c[k + 1:]][:3]
-                          for c in results for alt in options[k] if alt != c[k])]
-        alternatives = []
+        expects, final, outcome, trace, touched, alternatives = self.expectations(instr, operands, devices, steps, scratch)
         if touched:
-            for combo in itertools.product(*(options[names.index(i)] for i in touched)):
-                choice = dict(zip(touched, combo))
-                if all(choice[i] == self.defaults[i] for i in touched):
-                    continue
-                key = tuple(choice.get(i, self.defaults[i]) for i in names)
-                a_expects, a_final, a_outcome, a_trace = results[key]
-                trace |= a_trace
-                alternatives.append({"choices": choice, "expect": a_expects, "final": {"devices": a_final},
-                                     "outcome": a_outcome})
             outcome = {"category": "implementation-defined", "interpretations": touched,
                        "default": outcome,
                        "reason": " ".join(self.fam.interpretations[i]["question"] for i in touched)}
@@ -136,6 +170,48 @@ class VectorBuilder:
             vector["printed"] = printed
         return vector
 
+    def expectations(self, instr, operands, devices, steps, scratch):
+        """(expects, final, outcome, trace, touched, alternatives) of a case over every combination of
+        the family's alternatives: checking one interpretation at a time would miss a result that
+        changes only when two non-default alternatives are taken together.
+
+        An interpretation touches the case when changing it alone, anywhere in the grid of combinations,
+        changes the result; the result is then a function of the touched ones only. Only the
+        interpretations some run consulted can touch it, so the grid is that of the consulted ones.
+        """
+        fam, defaults = self.fam, self.defaults
+        runs = self.runs(instr, operands, devices, steps, scratch)
+        consulted = [i for i in fam.interpretations if any(i in choice for choice, _ in runs)]
+        options = [[a["id"] for a in fam.interpretations[i]["alternatives"]] for i in consulted]
+        # Runs with equal results share a class, so the grid compares small integers.
+        classes, distinct = [], []
+        for _, run in runs:
+            same = next((k for k, other in enumerate(distinct) if other[:3] == run[:3]), None)
+            if same is None:
+                same = len(distinct)
+                distinct.append(run)
+            classes.append(same)
+        grid = {}
+        for (choice, run), cls in zip(runs, classes):
+            free = [k for k, i in enumerate(consulted) if i not in choice]
+            for combo in itertools.product(*(options[k] for k in free)):
+                full = dict(choice, **{consulted[k]: alt for k, alt in zip(free, combo)})
+                grid[tuple(full[i] for i in consulted)] = (cls, run)
+        touched = [iid for k, iid in enumerate(consulted)
+                   if any(grid[c][0] != grid[c[:k] + (alt,) + c[k + 1:]][0]
+                          for c in grid for alt in options[k] if alt != c[k])]
+        root = grid[tuple(defaults[i] for i in consulted)][1]
+        trace = set(root.trace)
+        alternatives = []
+        for combo in itertools.product(*(options[consulted.index(i)] for i in touched)):
+            choice = dict(zip(touched, combo))
+            if all(choice[i] == defaults[i] for i in touched):
+                continue
+            run = grid[tuple(choice.get(i, defaults[i]) for i in consulted)][1]
+            trace |= run.trace
+            alternatives.append({"choices": choice, "expect": run.expects, "final": {"devices": run.final},
+                                 "outcome": run.outcome})
+        return root.expects, root.final, root.outcome, trace, touched, alternatives
 
     def _cited(self, instr, operands, tags):
         """Clauses a vector exercises by what it is, whatever the engine does with it: the clause of each

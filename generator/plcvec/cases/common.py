@@ -13,7 +13,7 @@ def signed_boundaries(field):
         return sorted({lo, hi} | ({lo - 1} if lo > 0 else set()) | ({hi + 1} if hi + 1 < 10 ** (field["width"] // 4) else set()))
     span = 1 << field["width"]
     word_lo, word_hi = (-(span // 2), span // 2 - 1) if field["encoding"] == "signed16" else (0, span - 1)
-    return sorted({lo, hi, lo - 1, hi + 1, -1, 0, word_lo, word_hi} & set(range(word_lo, word_hi + 1)))
+    return sorted(v for v in {lo, hi, lo - 1, hi + 1, -1, 0, word_lo, word_hi} if word_lo <= v <= word_hi)
 
 
 class Operands:

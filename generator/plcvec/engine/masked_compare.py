@@ -4,7 +4,7 @@ Covers the FX5 LDTM/LDDT families (select bits, current-clock bit, SM709) and th
 (mask bits, BCD bytes, arithmetic flags), each entirely described by its spec.
 """
 from plcvec.engine import logic
-from plcvec.engine.words import FieldCodec, encode, in_device_range, operand_words
+from plcvec.engine.words import FieldCodec, encode, in_device_range, word_addresses
 
 ORDERINGS = ("lt", "eq", "gt")
 ERROR = "error"
@@ -59,8 +59,10 @@ class MaskedCompare:
             ctx["error"] = {"device": err["device"]}
             return ERROR
         err = self.validity["error"]
-        if not err.get("latch", True):
-            state[err["device"]] = False  # an error flag that reports each execution, not a latch
+        # An error flag that reports each execution, not a latch, is turned off; whether it latches is
+        # only asked when there is something to turn off.
+        if state[err["device"]] is not False and not err.get("latch", True):
+            state[err["device"]] = False
         if ordering is not None and self.flags:
             trace.add(self.flags["clause"])
             trace.add(self.flags.get("written_clause"))
@@ -98,7 +100,8 @@ class MaskedCompare:
         if clock_mode:
             values[second] = {f["name"]: step["clock"][f["name"]] for f in self.fields}
 
-        if self.validity["scope"] == "all":
+        # The check's scope decides something only when some value is invalid.
+        if self._invalid(values, compared_ops, self.fields) and self.validity["scope"] == "all":
             self._check(values, compared_ops, self.fields, trace)
 
         if sel & self.reserved_mask:
@@ -127,9 +130,12 @@ class MaskedCompare:
         if len(selected) < len(self.fields):
             trace.add(self.sel.get("unselected_clause"))
         # Checked only now that a comparison is made: the selected fields, or every field of each
-        # compared operand (scope "compared"); scope "all" was checked before the selector.
-        if self.validity["scope"] in ("selected", "compared"):
-            self._check(values, compared_ops, selected if self.validity["scope"] == "selected" else self.fields, trace)
+        # compared operand (scope "compared"); scope "all" was checked before the selector. The scope
+        # decides something only when some value is invalid, so only then is it asked.
+        if self._invalid(values, compared_ops, self.fields):
+            scope = self.validity["scope"]
+            if scope in ("selected", "compared"):
+                self._check(values, compared_ops, selected if scope == "selected" else self.fields, trace)
         trace.add(self.doc["data"]["order_clause"])
         for f in selected:
             trace.add(f["clause"])
@@ -141,6 +147,11 @@ class MaskedCompare:
             if a != b:
                 return "lt" if a < b else "gt"
         return "eq"
+
+    def _invalid(self, values, compared_ops, fields):
+        """Whether any of `fields` of the compared operands is out of range or not a valid encoding."""
+        in_range = self.codec.in_range
+        return any(not in_range(f, values[op][f["name"]]) for op in compared_ops for f in fields)
 
     def _check(self, values, compared_ops, fields, trace):
         for op in compared_ops:
@@ -155,7 +166,7 @@ class MaskedCompare:
                     raise _Error
 
     def _raw(self, state, operand, f):
-        words = [state[a] for a in operand_words(operand["device"], 1 + max(x["word"] for x in self.fields))]
+        words = [state[a] for a in word_addresses(operand["device"], self.codec.count)]
         return self.codec.raw(words, f)
 
     def _raw_of(self, value, f):

@@ -1,5 +1,11 @@
-"""Device addresses, operand words, and the field encodings a spec can name."""
+"""Device addresses, operand words, and the field encodings a spec can name.
+
+Addresses are parsed once per distinct (head, words) and field layouts once per codec: an engine
+executes a vector many times over (every step, every combination of alternatives), and what an
+address or a layout means does not change between executions.
+"""
 import re
+from functools import lru_cache
 
 _ADDRESS = re.compile(r"^([A-Za-z_]+)(\d+)$")
 
@@ -8,6 +14,7 @@ class DeviceRangeError(Exception):
     """An operand's words run past the end of its device range."""
 
 
+@lru_cache(maxsize=4096)
 def split_address(address):
     m = _ADDRESS.match(address)
     if not m:
@@ -27,8 +34,14 @@ def in_device_range(head, words, device_sizes):
     return size is None or number is None or number + words <= size
 
 
+@lru_cache(maxsize=4096)
+def word_addresses(head, words):
+    """The addresses of an operand's words, as a tuple (parsed once per head and length)."""
+    return tuple(word_address(head, k) for k in range(words))
+
+
 def operand_words(head, words):
-    return [word_address(head, k) for k in range(words)]
+    return list(word_addresses(head, words))
 
 
 def decode(raw, encoding, width):
@@ -64,27 +77,34 @@ class FieldCodec:
     def __init__(self, fields):
         self.fields = fields
         self.names = [f["name"] for f in fields]
+        self.count = 1 + max(f["word"] for f in fields)
+        # (name, word, lsb, mask, encoding, width) per field: the layout, read once.
+        self._layout = [(f["name"], f["word"], f["lsb"], (1 << f["width"]) - 1, f["encoding"], f["width"])
+                        for f in fields]
+        self._radices = [f["max"] + 1 for f in fields]
+        self._modulus = 1
+        for r in self._radices:
+            self._modulus *= r
 
     def raw(self, words, field):
         return (words[field["word"]] >> field["lsb"]) & ((1 << field["width"]) - 1)
 
     def read(self, state, head):
         """{field name: decoded value or None}."""
-        count = 1 + max(f["word"] for f in self.fields)
-        words = [state[a] for a in operand_words(head, count)]
-        return {f["name"]: decode(self.raw(words, f), f["encoding"], f["width"]) for f in self.fields}
+        words = [state[a] for a in word_addresses(head, self.count)]
+        return {name: decode((words[word] >> lsb) & mask, encoding, width)
+                for name, word, lsb, mask, encoding, width in self._layout}
 
     def pack(self, values):
         """The words that hold `values` (field name -> value); fields not given are 0."""
-        count = 1 + max(f["word"] for f in self.fields)
-        words = [0] * count
-        for f in self.fields:
-            raw = encode(values.get(f["name"], 0), f["encoding"], f["width"])
-            words[f["word"]] |= raw << f["lsb"]
+        words = [0] * self.count
+        for name, word, lsb, _, encoding, width in self._layout:
+            words[word] |= encode(values.get(name, 0), encoding, width) << lsb
         return words
 
     def write(self, state, head, values):
-        for address, word in zip(operand_words(head, len(self.pack(values))), self.pack(values)):
+        words = self.pack(values)
+        for address, word in zip(word_addresses(head, len(words)), words):
             state[address] = word
 
     def in_range(self, field, value):
@@ -92,22 +112,19 @@ class FieldCodec:
 
     def radices(self):
         """Mixed radix of the fields, least significant last: each field counts max + 1 units of the next."""
-        return [f["max"] + 1 for f in self.fields]
+        return list(self._radices)
 
     def to_units(self, values):
         total = 0
-        for f, radix in zip(self.fields, self.radices()):
-            total = total * radix + values[f["name"]]
+        for name, radix in zip(self.names, self._radices):
+            total = total * radix + values[name]
         return total
 
     def from_units(self, total):
         out = {}
-        for f, radix in reversed(list(zip(self.fields, self.radices()))):
-            total, out[f["name"]] = divmod(total, radix)
+        for name, radix in zip(reversed(self.names), reversed(self._radices)):
+            total, out[name] = divmod(total, radix)
         return out
 
     def modulus(self):
-        m = 1
-        for r in self.radices():
-            m *= r
-        return m
+        return self._modulus

@@ -1,0 +1,198 @@
+"""A vector runs only under the combinations of the interpretations its executions consulted.
+
+The result must be exactly what running it under every combination of the family's alternatives
+gives (the plain way, computed here with engines that record nothing), and an interpretation few
+vectors consult must not multiply the number of executions.
+"""
+import itertools
+import shutil
+
+import pytest
+
+from conftest import REPO
+from plcvec.cases.build import VectorBuilder
+from plcvec.output import golden
+from plcvec.spec.loader import load_spec
+
+TC_FILE = "fx5-time-compare.yaml"
+
+
+def plain_run(builder, instr, operands, devices, steps, scratch, choices):
+    """One run of a case with an engine resolved without recording: (expects, final, outcome, trace)."""
+    engine = builder.engine(choices)
+    state, ctx = dict(devices), {"device_sizes": builder.sizes}
+    trace, expects, errors = set(), [], []
+    for index, step in enumerate(steps):
+        state.update(step.get("set", {}))
+        before = dict(state)
+        result = engine.execute(instr, operands, state, step, ctx, trace)
+        expect = {} if result is None else {"result": result}
+        expect["devices"] = {k: state[k] for k in sorted(state) if state[k] != before[k] and k not in scratch}
+        expects.append(expect)
+        if "error" in ctx:
+            errors.append(dict(step=index, **ctx.pop("error")))
+    final = {k: state[k] for k in sorted(state) if k not in scratch}
+    trace.discard(None)
+    return expects, final, ({"category": "error", "errors": errors} if errors else {"category": "value"}), trace
+
+
+def every_combination(builder, instr, operands, devices, steps, scratch):
+    """expectations() the plain way: the case under every combination of every interpretation."""
+    fam, defaults = builder.fam, builder.defaults
+    names = list(fam.interpretations)
+    options = [[a["id"] for a in fam.interpretations[i]["alternatives"]] for i in names]
+    results = {combo: plain_run(builder, instr, operands, devices, steps, scratch, dict(zip(names, combo)))
+               for combo in itertools.product(*options)}
+    expects, final, outcome, trace = results[tuple(defaults[i] for i in names)]
+    touched = [iid for k, iid in enumerate(names)
+               if any(results[c][:3] != results[c[:k] + (alt,) + c[k + 1:]][:3]
+                      for c in results for alt in options[k] if alt != c[k])]
+    trace, alternatives = set(trace), []
+    for combo in itertools.product(*(options[names.index(i)] for i in touched)):
+        choice = dict(zip(touched, combo))
+        if all(choice[i] == defaults[i] for i in touched):
+            continue
+        a_expects, a_final, a_outcome, a_trace = results[tuple(choice.get(i, defaults[i]) for i in names)]
+        trace |= a_trace
+        alternatives.append({"choices": choice, "expect": a_expects, "final": {"devices": a_final}, "outcome": a_outcome})
+    return expects, final, outcome, trace, touched, alternatives
+
+
+class CheckedBuilder(VectorBuilder):
+    """Builds each vector both ways and keeps every case where they differ."""
+    differences = []
+    checked = 0
+
+    def expectations(self, instr, operands, devices, steps, scratch):
+        fast = super().expectations(instr, operands, devices, steps, scratch)
+        slow = every_combination(self, instr, operands, devices, steps, scratch)
+        CheckedBuilder.checked += 1
+        if fast != slow:
+            CheckedBuilder.differences.append((self.fam.name, instr["name"], operands, devices, steps))
+        return fast
+
+
+class CountingBuilder(VectorBuilder):
+    """Keeps every builder made and, per case in order, (executions, whether one consulted TEST-NO-FIELD)."""
+    made = []
+
+    def __init__(self, fam):
+        super().__init__(fam)
+        self.cases = []
+        CountingBuilder.made.append(self)
+
+    def runs(self, *args):
+        before = self.executions
+        runs = super().runs(*args)
+        self.cases.append((self.executions - before, any("TEST-NO-FIELD" in choice for choice, _ in runs)))
+        return runs
+
+
+def build(fam, monkeypatch, builder_class):
+    monkeypatch.setattr(golden, "VectorBuilder", builder_class)
+    builder_class.made = []
+    vectors = golden.family_vectors(fam)
+    monkeypatch.undo()
+    return vectors
+
+
+def test_same_vectors_as_every_combination_on_the_whole_set(families, generated, monkeypatch):
+    CheckedBuilder.differences, CheckedBuilder.checked = [], 0
+    for name, fam in families.items():
+        vectors = build(fam, monkeypatch, CheckedBuilder)
+        assert vectors == generated[1][name], name
+    assert CheckedBuilder.checked == sum(len(v) for v in generated[1].values())
+    assert not CheckedBuilder.differences, CheckedBuilder.differences[:3]
+
+
+def family_copy(tmp_path, edit=None):
+    """A spec folder with a copy of fx5-time-compare only, `edit` applied to its text."""
+    folder = tmp_path / "spec"
+    folder.mkdir(parents=True)
+    text = (REPO / "spec" / TC_FILE).read_text(encoding="utf-8")
+    (folder / TC_FILE).write_text(edit(text) if edit else text, encoding="utf-8")
+    (folder / "regressions").mkdir()
+    if (REPO / "spec" / "regressions" / TC_FILE).exists():
+        shutil.copy(REPO / "spec" / "regressions" / TC_FILE, folder / "regressions" / TC_FILE)
+    (fam,) = load_spec(folder)
+    return fam
+
+
+# Four readings of what an FX5 selector that selects no field gives: only a few selector vectors
+# reach the parameter (with a reserved bit set, that bit decides first).
+EXTRA = """\
+  - id: TEST-NO-FIELD
+    question: What does a selector that selects no field give?
+    quotes:
+      - {section: Processing details, quote: "test"}
+    alternatives:
+      - {id: non-continuity, says: "non-continuity", sets: {on_no_field: non_continuity}}
+      - {id: equal, says: "the data are equal", sets: {on_no_field: equal}}
+      - {id: error, says: "an error", sets: {on_no_field: error}}
+      - {id: equal-too, says: "the data are equal, said another way", sets: {on_no_field: equal}}
+    default: non-continuity
+    why: A test of the generator, not a reading of the manual.
+"""
+
+
+def with_extra_interpretation(text):
+    for old, new in (("  on_no_field: non_continuity\n", "  on_no_field: {interpretation: TEST-NO-FIELD}\n"),
+                     ("\ninterpretations:\n", "\ninterpretations:\n" + EXTRA)):
+        assert text.count(old) == 1, old
+        text = text.replace(old, new)
+    return text
+
+
+def test_an_interpretation_few_vectors_consult_does_not_multiply_the_executions(tmp_path, monkeypatch):
+    base_fam = family_copy(tmp_path / "base")
+    extra_fam = family_copy(tmp_path / "extra", with_extra_interpretation)
+    assert len(extra_fam.interpretations) == len(base_fam.interpretations) + 1
+    base = build(base_fam, monkeypatch, CountingBuilder)
+    (base_builder,) = CountingBuilder.made
+    extra = build(extra_fam, monkeypatch, CountingBuilder)
+    (extra_builder,) = CountingBuilder.made
+
+    touched = [v for v in extra if "TEST-NO-FIELD" in v["outcome"].get("interpretations", [])]
+    reading = sum(reads for _, reads in extra_builder.cases)
+    assert touched and len(touched) <= reading < len(extra) // 20  # the reading decides a few vectors
+    # Every other vector is the one the spec without the extra reading gives.
+    by_id = {v["id"]: v for v in base}
+    assert len(base) == len(extra)
+    for v in extra:
+        if v not in touched:
+            assert v == by_id[v["id"]], v["id"]
+    # Running every case under every combination would take 4 times the executions. A case that does
+    # not read the new parameter runs as often as before; one that does, at most 4 times as often.
+    assert len(base_builder.cases) == len(extra_builder.cases)
+    for (before, _), (after, reads) in zip(base_builder.cases, extra_builder.cases):
+        assert after <= 4 * before if reads else after == before
+    assert base_builder.executions < extra_builder.executions < 1.1 * base_builder.executions
+
+
+def test_consulted_names_only_what_the_execution_read(families):
+    """An LD comparison of valid data reads none of the FX5 interpretations; the same comparison under
+    an AND form with the preceding logic off reads the AND/OR one; invalid data reads the check's scope."""
+    fam = families["fx5-time-compare"]
+    builder = VectorBuilder(fam)
+    devices = {"D100": 12, "D101": 30, "D102": 0, "D200": 12, "D201": 30, "D202": 0, "D300": 7, "SM709": False}
+    operands = {"s1": {"device": "D100"}, "s2": {"device": "D200"}, "s3": {"device": "D300"}}
+    run = builder.execute(builder.instructions["LDTM="], operands, devices, [{}], (), fam.default_choices())
+    assert run.consulted == frozenset() and run.expects[0]["result"] is True
+    run = builder.execute(builder.instructions["ANDTM="], operands, devices, [{"rlo_in": False}], (), fam.default_choices())
+    assert run.consulted == {"FX5-AND-OR-WHEN-OFF"}
+    bad = dict(devices, D100=24)  # hour 24 is out of range: the scope of the check now decides
+    run = builder.execute(builder.instructions["LDTM="], operands, bad, [{}], (), fam.default_choices())
+    assert run.consulted == {"FX5-SM709-SCOPE"}
+
+
+@pytest.mark.parametrize("choice", ["all-words", "selected-fields"])
+def test_an_unselected_invalid_field_consults_the_scope_under_either_reading(families, choice):
+    fam = families["fx5-time-compare"]
+    builder = VectorBuilder(fam)
+    devices = {"D100": 24, "D101": 30, "D102": 0, "D200": 12, "D201": 30, "D202": 0, "D300": 3, "SM709": False}
+    operands = {"s1": {"device": "D100"}, "s2": {"device": "D200"}, "s3": {"device": "D300"}}
+    choices = dict(fam.default_choices(), **{"FX5-SM709-SCOPE": choice})
+    run = builder.execute(builder.instructions["LDTM="], operands, devices, [{}], (), choices)
+    assert run.consulted == {"FX5-SM709-SCOPE"}
+    # Hour 24 is not selected (s3 = 3: second and minute): only the all-words reading reports it.
+    assert (run.outcome["category"] == "error") is (choice == "all-words")
