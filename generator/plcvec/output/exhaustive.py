@@ -26,7 +26,11 @@ def _check_choices(families, choices):
             raise PlcvecError(f"--choose: {iid} has no alternative {alt!r} (it has: {', '.join(alts)})")
 
 
-def stream_exhaustive(families, out_dir, only=None, choices=None):
+def stream_exhaustive(families, out_dir, only=None, choices=None, selectors=None):
+    """Write `<family>.exhaustive.jsonl` for each chosen family; (lines written, seconds).
+
+    `selectors` limits the selector values written (all 65,536 by default), in the order given.
+    """
     choices = choices or {}
     _check_choices(families, choices)
     chosen = [f for f in families if f.kind == "masked_compare" and (not only or f.name in only)]
@@ -40,11 +44,18 @@ def stream_exhaustive(families, out_dir, only=None, choices=None):
     count, start = 0, time.perf_counter()
     for fam in chosen:
         count += _write_family(fam, out_dir / f"{fam.name}.exhaustive.jsonl",
-                               {k: v for k, v in choices.items() if k in fam.interpretations})
+                               {k: v for k, v in choices.items() if k in fam.interpretations},
+                               range(WORD_VALUES) if selectors is None else selectors)
     return count, time.perf_counter() - start
 
 
-def _write_family(fam, path, choices):
+# Stand-ins for the selector value in a line's text: the decimal value (a device value no operand
+# holds, so it occurs once in a dumped state) and the hex form of the id and description.
+_MARKER = -12345
+_HEX = "\x00"   # json.dumps escapes control characters, so this never occurs in dumped JSON
+
+
+def _write_family(fam, path, choices, selectors):
     builder = VectorBuilder(fam)
     cases = CompareCases(fam, builder)
     full_choices = dict(fam.default_choices(), **choices)
@@ -65,54 +76,79 @@ def _write_family(fam, path, choices):
     header = {"exhaustive": fam.name, "schema_version": SCHEMA_VERSION, "choices": full_choices,
               "spec_sha256": fam.sha256, "instructions": [name for name, _ in loads],
               "note": "One vector per line after this one: the LD form, every selector value, every condition."}
-    # Every line is built from constant pieces around the few values that vary: the selector value,
-    # what the comparison wrote, and the result. The selector device is set to a marker and split on.
-    marker = -12345
-    state0 = dict(devices)
-    state0[sel_head] = marker
-    common = (f'"tags": ["exhaustive"], "assumes": {{"device_sizes": {dumps_value(sizes)}}}, '
-              f'"initial": {{"operands": {dumps_value(operands)}, "devices": ')
-    pre_init, post_init = dumps_value(dict(sorted(state0.items()))).split(str(marker))
-    clock_part = f'"clock": {dumps_value(b)}, '
     conditions = {c["symbol"]: c for c in fam.doc["instructions"]["conditions"]}
-    names = [(json.dumps(f"{fam.name}/{name}/exhaustive/"), json.dumps(name), json.dumps(instr["st"]), instr["symbol"],
-              {instr["form"]["clause"], conditions[instr["symbol"]]["clause"]})
-             for name, instr in loads]
-    selop = cases.selop
-    clause_cache = {}
     source_bit = cases.clock_bit["bit"] if cases.clock_bit else None
+    devices[sel_head] = _MARKER
+    block = _Blocks(fam, engine, loads, conditions, devices, sel_head, operands, sizes, cases.selop, b)
+    clock_step = {"clock": b}
     tmp = path.with_name(f".{path.name}.partial")
     n = 0
     with open(tmp, "w", encoding="utf-8") as out:
         out.write(json.dumps(header, sort_keys=True) + "\n")
-        for sel in range(WORD_VALUES):
+        lines = []
+        for sel in selectors:
+            # Only the engine's answer depends on the line; the text around it is built once per
+            # distinct answer (a few dozen) and filled in with the selector value.
             state = dict(devices)
             state[sel_head] = sel
-            step = {"clock": b} if source_bit is not None and sel >> source_bit & 1 else {}
+            step = clock_step if source_bit is not None and sel >> source_bit & 1 else {}
             ctx = {"device_sizes": sizes}
-            before = dict(state)
             trace = set()
             outcome = engine.evaluate(operands, state, step, ctx, trace)
-            trace.discard(None)
-            traced = frozenset(trace)
-            changed = dumps_value({k: v for k, v in sorted(state.items()) if before[k] != v})
+            state[sel_head] = _MARKER
+            changed = tuple((k, v) for k, v in state.items() if devices[k] != v)
             error = ctx.get("error")
-            result_outcome = ('{"category": "error", "errors": [%s]}' % dumps_value(dict(step=0, **error))) if error else '{"category": "value"}'
-            tail_state = dumps_value(dict(sorted(state.items())))
-            initial = f"{pre_init}{sel}{post_init}"
-            clock = clock_part if step else ""
-            sel_id = f"{sel:04X}H"
-            description = f'"description": "{selop} = {sel_id}", '
-            for vid, name, st, symbol, own in names:
-                result = "true" if engine.contact(symbol, outcome) else "false"
-                key = (traced, symbol)
-                clauses = clause_cache.get(key)
-                if clauses is None:  # few distinct clause sets: format each once
-                    clauses = clause_cache[key] = json.dumps(sorted(fam.clause_ref(c) for c in trace | own))
-                out.write(f'{{"id": {vid[:-1]}{sel_id}", "family": "{fam.name}", "instruction": {name}, "st": {st}, '
-                          f'{description}"clauses": {clauses}, {common}{initial}}}, '
-                          f'"steps": [{{{clock}"expect": {{"devices": {changed}, "result": {result}}}}}], '
-                          f'"final": {{"devices": {tail_state}}}, "outcome": {result_outcome}}}\n')
-                n += 1
+            key = (outcome, frozenset(trace), changed, bool(step), None if error is None else tuple(sorted(error.items())))
+            template = block.templates.get(key)
+            if template is None:
+                template = block.make(key, trace, state, error, step)
+            lines.append(template % {"d": sel, "h": f"{sel:04X}H"})
+            n += len(loads)
+            if len(lines) >= 1024:
+                out.write("".join(lines))
+                lines.clear()
+        out.write("".join(lines))
     tmp.replace(path)
     return n
+
+
+class _Blocks:
+    """The lines of one selector value, for each distinct answer of the engine, as a %-template."""
+
+    def __init__(self, fam, engine, loads, conditions, devices, sel_head, operands, sizes, selop, clock):
+        self.fam, self.engine, self.templates, self.sel_head = fam, engine, {}, sel_head
+        pre, post = _escape(dumps_value(dict(sorted(devices.items())))).split(str(_MARKER))
+        self.common = (f'"tags": ["exhaustive"], "assumes": {{"device_sizes": {_escape(dumps_value(sizes))}}}, '
+                       f'"initial": {{"operands": {_escape(dumps_value(operands))}, "devices": {pre}%(d)s{post}}}, ')
+        self.clock = f'"clock": {_escape(dumps_value(clock))}, '
+        self.description = f'"description": "{_escape(selop)} = %(h)s", '
+        self.names = [(_escape(json.dumps(f"{fam.name}/{name}/exhaustive/"))[:-1], _escape(json.dumps(name)),
+                       _escape(json.dumps(instr["st"])), instr["symbol"],
+                       {instr["form"]["clause"], conditions[instr["symbol"]]["clause"]})
+                      for name, instr in loads]
+        self.family = _escape(fam.name)
+
+    def make(self, key, trace, state, error, step):
+        outcome = key[0]
+        trace.discard(None)
+        changed = _escape(dumps_value(dict(sorted(key[2]))))
+        result_outcome = ('{"category": "error", "errors": [%s]}' % dumps_value(dict(step=0, **error))) if error \
+            else '{"category": "value"}'
+        pre, post = _escape(dumps_value(dict(sorted(state.items())))).split(str(_MARKER))
+        final = f"{pre}%(d)s{post}"
+        clock = self.clock if step else ""
+        lines = []
+        for vid, name, st, symbol, own in self.names:
+            result = "true" if self.engine.contact(symbol, outcome) else "false"
+            clauses = _escape(json.dumps(sorted(self.fam.clause_ref(c) for c in trace | own)))
+            lines.append(f'{{"id": {vid}%(h)s", "family": "{self.family}", "instruction": {name}, "st": {st}, '
+                         f'{self.description}"clauses": {clauses}, {self.common}'
+                         f'"steps": [{{{clock}"expect": {{"devices": {changed}, "result": {result}}}}}], '
+                         f'"final": {{"devices": {final}}}, "outcome": {_escape(result_outcome)}}}\n')
+        template = self.templates[key] = "".join(lines)
+        return template
+
+
+def _escape(text):
+    """Text to be placed in a %-template as it is."""
+    return text.replace("%", "%%")
