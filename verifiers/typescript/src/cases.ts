@@ -1,0 +1,55 @@
+/**
+ * The suite as a plain list of test cases, for any test runner: `test.each` in Vitest or Jest,
+ * or a loop of your own. Each case is named by its vector id; `check()` throws an AssertionError
+ * carrying the field-level diff when the implementation disagrees.
+ *
+ *     import { cases } from "plcvec";
+ *     test.each(cases(myImplementation))("$id", (c) => c.check());
+ */
+import { AssertionError } from "node:assert";
+
+import { PlcvecError } from "./errors.js";
+import type { KnownFailures } from "./known.js";
+import { loadSuite, type Suite } from "./load.js";
+import { applyKnown, describeResult, judge, prepare, resolveChoices, type Implementation, type VectorResult } from "./run.js";
+import { select, type Selection } from "./select.js";
+
+export interface CaseOptions {
+  readonly suite?: Suite;
+  readonly selection?: Selection;
+  readonly known?: KnownFailures;
+  /** A selection of no vector throws unless this is set. */
+  readonly allowEmpty?: boolean;
+}
+
+export interface Case {
+  readonly id: string;
+  readonly family: string;
+  readonly instruction: string;
+  readonly tags: readonly string[];
+  /** Run the vector and throw an AssertionError with the diff unless it passes (or is a known failure that still fails). */
+  check(): VectorResult;
+}
+
+/** One case per selected vector; expectations are worked out lazily, when a case runs. */
+export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
+  const suite = options.suite ?? loadSuite();
+  const vectors = select(suite, options.selection);
+  if (vectors.length === 0 && !options.allowEmpty) {
+    throw new PlcvecError("the selection holds no vector: a gate that runs nothing would pass by accident (allowEmpty to accept that)");
+  }
+  const { choices, defaults } = resolveChoices(suite, impl.choices);
+  return vectors.map((vector) => ({
+    id: vector.id,
+    family: vector.family,
+    instruction: vector.instruction,
+    tags: vector.tags,
+    check(): VectorResult {
+      const result = applyKnown(judge(prepare(vector, choices, defaults), impl), options.known);
+      if (result.status === "fail" || result.status === "error" || result.status === "stale") {
+        throw new AssertionError({ message: describeResult(result) });
+      }
+      return result;
+    },
+  }));
+}

@@ -1,0 +1,63 @@
+/**
+ * Field-by-field comparison of what an implementation reported with what a vector expects.
+ * Everything must match exactly, including the JSON type: `===` never takes 1 for true.
+ */
+import type { Expected } from "./expect.js";
+import { sameDevices } from "./expect.js";
+import type { StepResult, Value } from "./types.js";
+
+export const NOT_REPORTED = "<not reported>";
+export const NOT_IN_VECTOR = "<not in the vector>";
+
+export interface Problem {
+  /** The step, or undefined for the vector as a whole (the number of steps). */
+  readonly step: number | undefined;
+  /** "result", a device address, or "steps". */
+  readonly field: string;
+  readonly expected: Value | string;
+  readonly actual: Value | string;
+  /** The device's value before the step, when the field is a device. */
+  readonly before?: Value | undefined;
+}
+
+export function show(value: unknown): string {
+  if (typeof value === "string" && value.startsWith("<")) return value;
+  return JSON.stringify(value) ?? String(value);
+}
+
+export function problemLine(p: Problem): string {
+  const where = p.step === undefined ? "" : `step ${p.step} `;
+  let text = `${where}${p.field}: expected ${show(p.expected)}, got ${show(p.actual)}`;
+  if (p.before !== undefined && p.expected === p.before) text += " (the step must leave it unchanged)";
+  else if (p.before !== undefined) text += ` (before the step: ${show(p.before)})`;
+  return text;
+}
+
+/** The problems of one vector's reported steps; an empty list means it passed. */
+export function compare(expected: Expected, steps: readonly StepResult[]): Problem[] {
+  if (steps.length !== expected.states.length) {
+    return [{ step: undefined, field: "steps", expected: `${expected.states.length} steps`, actual: `${steps.length} steps` }];
+  }
+  const problems: Problem[] = [];
+  steps.forEach((step, i) => {
+    const wantResult = expected.results[i];
+    if (wantResult !== undefined && step.result !== wantResult) {
+      problems.push({ step: i, field: "result", expected: wantResult, actual: step.result ?? NOT_REPORTED });
+    }
+    const want = expected.states[i]!;
+    let got = step.devices;
+    if (expected.scratch.size) {
+      got = Object.fromEntries(Object.entries(got).filter(([k]) => !expected.scratch.has(k)));
+    }
+    // Most vectors pass: one pass of strict equality first, the field-by-field diff only on a mismatch.
+    if (sameDevices(want, got)) return;
+    const before = expected.befores[i]!;
+    const names = [...new Set([...Object.keys(want), ...Object.keys(got)])].sort();
+    for (const dev of names) {
+      const w = Object.prototype.hasOwnProperty.call(want, dev) ? want[dev]! : NOT_IN_VECTOR;
+      const g = Object.prototype.hasOwnProperty.call(got, dev) ? got[dev]! : NOT_REPORTED;
+      if (w !== g) problems.push({ step: i, field: dev, expected: w, actual: g, before: before[dev] });
+    }
+  });
+  return problems;
+}

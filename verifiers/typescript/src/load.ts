@@ -1,0 +1,224 @@
+/**
+ * Loading a vector set: the copy this package carries, or the folder `PLCVEC_VECTORS` names.
+ *
+ * A set is a folder with `index.json` and one `<family>.jsonl` per family (what
+ * `plcvec export` writes), or the repository's `vectors/` folder (`manifest.json` and one
+ * `<family>.json` each), or one such family file. Every vector is checked for what the
+ * contract needs before anything runs, so a damaged file is named with its line and vector id
+ * instead of failing half-way through a run.
+ */
+import { createHash } from "node:crypto";
+import { existsSync, readFileSync, statSync } from "node:fs";
+import { join } from "node:path";
+import { fileURLToPath } from "node:url";
+
+import { PlcvecError } from "./errors.js";
+import type { FamilyHeader, InterpretationHeader, Vector } from "./types.js";
+import { vectorProblem } from "./validate.js";
+
+/** The major schema version this runner reads (CONTRACT.md, "Versioning"): a 2.x file is refused, not misread. */
+export const SCHEMA_MAJOR = 1;
+
+/** The folder of vectors inside this package (dist/src/load.js -> ../../vectors). */
+export const PACKAGED_VECTORS = fileURLToPath(new URL("../../vectors/", import.meta.url));
+
+export interface Suite {
+  readonly vectors: readonly Vector[];
+  readonly headers: ReadonlyMap<string, FamilyHeader>;
+  readonly byId: ReadonlyMap<string, Vector>;
+  readonly source: string;
+  readonly suiteVersion: string;
+  readonly schemaVersion: string;
+  readonly specSha256: string;
+}
+
+export interface Interpretation {
+  readonly id: string;
+  readonly default: string;
+  readonly alternatives: readonly string[];
+  readonly families: readonly string[];
+}
+
+/** Where vectors come from when nothing is said: `PLCVEC_VECTORS`, else the packaged copy. */
+export function defaultVectorsPath(): string {
+  const env = process.env["PLCVEC_VECTORS"];
+  return env !== undefined && env !== "" ? env : PACKAGED_VECTORS;
+}
+
+const cache = new Map<string, Suite>();
+
+/** Load (once per path and process) the vector set at `path` (default: see defaultVectorsPath). */
+export function loadSuite(path: string = defaultVectorsPath()): Suite {
+  let suite = cache.get(path);
+  if (suite === undefined) {
+    suite = readSuite(path);
+    cache.set(path, suite);
+  }
+  return suite;
+}
+
+function readSuite(path: string): Suite {
+  if (!existsSync(path)) throw new PlcvecError(`${path}: no such vector folder or file`);
+  let files: string[];
+  let suiteVersion = "";
+  let setHash = "";
+  const sums = new Map<string, string>();
+  if (statSync(path).isDirectory()) {
+    const index = join(path, "index.json");
+    const manifest = join(path, "manifest.json");
+    const listing = existsSync(index) ? index : manifest;
+    const data = readJson(listing) as {
+      families?: Record<string, { file?: string; sha256?: string }>;
+      suite_version?: string;
+      generator_version?: string;
+      spec_sha256?: string;
+    };
+    if (typeof data.families !== "object" || data.families === null) {
+      throw new PlcvecError(`${listing}: no \`families\`; is this a plcvec vector folder?`);
+    }
+    files = [];
+    for (const [family, entry] of Object.entries(data.families)) {
+      if (typeof entry?.file !== "string") throw new PlcvecError(`${listing}: family ${family} names no \`file\``);
+      const file = join(path, entry.file);
+      files.push(file);
+      if (listing === index && typeof entry.sha256 === "string") sums.set(file, entry.sha256);
+    }
+    suiteVersion = String(data.suite_version ?? data.generator_version ?? "");
+    setHash = String(data.spec_sha256 ?? "");
+  } else {
+    files = [path];
+  }
+  const headers = new Map<string, FamilyHeader>();
+  const vectors: Vector[] = [];
+  const byId = new Map<string, Vector>();
+  const schemaVersions = new Set<string>();
+  for (const file of files) {
+    const { header, entries } = file.endsWith(".jsonl") ? readJsonl(file, sums.get(file)) : readFamilyJson(file);
+    const version = String(header.schema_version ?? "");
+    if (version.split(".")[0] !== String(SCHEMA_MAJOR)) {
+      throw new PlcvecError(
+        `${file}: schema_version ${version || "(none)"} is not ${SCHEMA_MAJOR}.x; this runner reads ${SCHEMA_MAJOR}.x ` +
+          "files only (see CONTRACT.md, Versioning)",
+      );
+    }
+    schemaVersions.add(version);
+    headers.set(header.family, header);
+    for (const { value, where } of entries) {
+      const problem = vectorProblem(value, header.family);
+      if (problem !== undefined) {
+        const id = typeof (value as { id?: unknown })?.id === "string" ? (value as { id: string }).id : "(no id)";
+        throw new PlcvecError(`${where}: vector ${id}: ${problem}`);
+      }
+      const vector = value as Vector;
+      if (byId.has(vector.id)) throw new PlcvecError(`${where}: vector id ${vector.id} appears twice`);
+      byId.set(vector.id, vector);
+      vectors.push(vector);
+    }
+  }
+  const hashes = [...headers.values()].map((h) => h.spec_sha256);
+  return {
+    vectors,
+    headers,
+    byId,
+    source: path,
+    suiteVersion,
+    schemaVersion: [...schemaVersions].sort().join(", "),
+    specSha256: setHash || [...new Set(hashes)].sort().join(", "),
+  };
+}
+
+interface Entry {
+  readonly value: unknown;
+  readonly where: string;
+}
+
+function readText(file: string): string {
+  try {
+    return readFileSync(file, "utf8");
+  } catch (err) {
+    throw new PlcvecError(`${file}: cannot read: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
+  }
+}
+
+function readJson(file: string): unknown {
+  const text = readText(file);
+  try {
+    return JSON.parse(text);
+  } catch (err) {
+    throw new PlcvecError(`${file}: not valid JSON (${(err as Error).message})`);
+  }
+}
+
+function checkHeader(value: unknown, where: string): FamilyHeader {
+  const h = value as Partial<FamilyHeader> | null;
+  if (typeof h !== "object" || h === null || typeof h.family !== "string" || "id" in h) {
+    throw new PlcvecError(`${where}: not a plcvec family header (no \`family\`)`);
+  }
+  if (!Array.isArray(h.interpretations) || !Array.isArray(h.instructions) || typeof h.tags !== "object") {
+    throw new PlcvecError(`${where}: the header of ${h.family} needs \`instructions\`, \`tags\` and \`interpretations\``);
+  }
+  return h as FamilyHeader;
+}
+
+function readJsonl(file: string, sha256: string | undefined): { header: FamilyHeader; entries: Entry[] } {
+  const text = readText(file);
+  if (sha256 !== undefined) {
+    const actual = createHash("sha256").update(text, "utf8").digest("hex");
+    if (actual !== sha256) {
+      throw new PlcvecError(`${file}: sha256 ${actual} is not the ${sha256} its index.json gives (damaged or edited copy)`);
+    }
+  }
+  const lines = text.split("\n");
+  if (lines[lines.length - 1] === "") lines.pop();
+  const entries: Entry[] = [];
+  let header: FamilyHeader | undefined;
+  lines.forEach((line, i) => {
+    const where = `${file}:${i + 1}`;
+    let value: unknown;
+    try {
+      value = JSON.parse(line);
+    } catch (err) {
+      throw new PlcvecError(`${where}: not valid JSON (${(err as Error).message})`);
+    }
+    if (i === 0) header = checkHeader(value, where);
+    else entries.push({ value, where });
+  });
+  if (header === undefined) throw new PlcvecError(`${file}: empty file (no header line)`);
+  return { header, entries };
+}
+
+function readFamilyJson(file: string): { header: FamilyHeader; entries: Entry[] } {
+  const data = readJson(file) as Record<string, unknown> | null;
+  if (typeof data !== "object" || data === null || !Array.isArray(data["vectors"])) {
+    throw new PlcvecError(`${file}: not a plcvec vector file (no \`family\` and \`vectors\`)`);
+  }
+  const { vectors, ...rest } = data;
+  const header = checkHeader(rest, file);
+  return { header, entries: (vectors as unknown[]).map((value, i) => ({ value, where: `${file} (vector #${i})` })) };
+}
+
+/**
+ * The interpretations of the given families (all by default), each once: the FX5 time and date
+ * comparisons share theirs, and an implementation declares it once for both.
+ */
+export function interpretationsOf(suite: Suite, families?: Iterable<string>): Map<string, Interpretation> {
+  const wanted = families === undefined ? undefined : new Set(families);
+  const out = new Map<string, { id: string; default: string; alternatives: string[]; families: string[] }>();
+  for (const [family, header] of [...suite.headers.entries()].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
+    if (wanted !== undefined && !wanted.has(family)) continue;
+    for (const interp of header.interpretations as readonly InterpretationHeader[]) {
+      const alternatives = interp.alternatives.map((a) => a.id);
+      const seen = out.get(interp.id);
+      if (seen === undefined) {
+        out.set(interp.id, { id: interp.id, default: interp.default, alternatives, families: [family] });
+      } else if (seen.default !== interp.default || seen.alternatives.join() !== alternatives.join()) {
+        throw new PlcvecError(
+          `${suite.source}: interpretation ${interp.id} has other alternatives or another default in ${family} than in ${seen.families[0]}`,
+        );
+      } else {
+        seen.families.push(family);
+      }
+    }
+  }
+  return out;
+}

@@ -1,0 +1,101 @@
+/** Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT, from cp1e-time-compare-DT.txt. */
+import type { StepInputs } from "../types.js";
+import { BaseMachine, deviceOf, type Operands } from "./machine.js";
+
+const ERROR_FLAG = "P_ER";
+const FLAGS: Readonly<Record<string, string>> = { "=": "P_EQ", "<>": "P_NE", "<": "P_LT", "<=": "P_LE", ">": "P_GT", ">=": "P_GE" };
+
+export interface BcdField {
+  readonly offset: number;
+  /** 0: bits 00-07, 1: bits 08-15. */
+  readonly byte: number;
+  readonly name: string;
+  readonly min: number;
+  readonly max: number;
+  /** The bit of C that masks it. */
+  readonly mask: number;
+}
+
+// "A351.00-07 Second, A351.08-15 Minute, A352.00-07 Hour, A352.08-15 Day of month, A353.00-07 Month,
+// A353.08-15 Year"; "Bits 00 to 05 of C mask the seconds, minutes, hours, day, month, and year".
+export const FIELDS: readonly BcdField[] = [
+  { offset: 2, byte: 1, name: "year", min: 0, max: 99, mask: 5 },
+  { offset: 2, byte: 0, name: "month", min: 1, max: 12, mask: 4 },
+  { offset: 1, byte: 1, name: "day", min: 1, max: 31, mask: 3 },
+  { offset: 1, byte: 0, name: "hour", min: 0, max: 23, mask: 2 },
+  { offset: 0, byte: 1, name: "minute", min: 0, max: 59, mask: 1 },
+  { offset: 0, byte: 0, name: "second", min: 0, max: 59, mask: 0 },
+];
+
+/** The flag table: rows S1 = S2, S1 > S2, S1 < S2. */
+const FLAG_TABLE: Readonly<Record<number, Readonly<Record<string, boolean>>>> = {
+  0: { "=": true, "<>": false, "<": false, "<=": true, ">": false, ">=": true },
+  1: { "=": false, "<>": true, "<": false, "<=": false, ">": true, ">=": true },
+  [-1]: { "=": false, "<>": true, "<": true, "<=": true, ">": false, ">=": false },
+};
+
+export function isBcd(b: number): boolean {
+  return b >> 4 <= 9 && (b & 0xf) <= 9;
+}
+
+const bcdValue = (b: number): number => (b >> 4) * 10 + (b & 0xf);
+
+export class Cp1eTimeCompare extends BaseMachine {
+  readonly contact = true;
+  protected fields = FIELDS;
+  protected isBcd = isBcd;
+
+  /** Error: P_ER on, the result off, the six arithmetic flags untouched. */
+  protected error(): boolean {
+    this.mem.write(ERROR_FLAG, true);
+    return false;
+  }
+
+  /** "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <, <=, >, >=)". */
+  protected reflectFlags(order: number): void {
+    for (const [symbol, flag] of Object.entries(FLAGS)) this.mem.write(flag, FLAG_TABLE[order]![symbol]!);
+  }
+
+  protected evaluate(condition: string, operands: Operands): boolean {
+    const mem = this.mem;
+    const s1 = mem.words(deviceOf(operands["S1"], "S1"), 3);
+    const s2 = mem.words(deviceOf(operands["S2"], "S2"), 3);
+    const c = mem.operand(operands["C"]!);
+    if (c & 0xffc0 && this.choice("CP1E-C-HIGH-BITS") === "error") return this.error();
+    // "To mask a time value, set the corresponding bit in the control word (C) to 1."
+    const unmasked = this.fields.filter((f) => ((c >> f.mask) & 1) === 0);
+    if (unmasked.length === 0 && this.choice("CP1E-ALL-MASKED") === "error") return this.error();
+    let order = 0;
+    for (const f of unmasked) {
+      const a = (s1[f.offset]! >> (8 * f.byte)) & 0xff;
+      const b = (s2[f.offset]! >> (8 * f.byte)) & 0xff;
+      for (const raw of [a, b]) {
+        if (!this.isBcd(raw)) {
+          if (this.choice("CP1E-NON-BCD") === "error") return this.error();
+        } else if (bcdValue(raw) < f.min || bcdValue(raw) > f.max) {
+          if (this.choice("CP1E-OUT-OF-RANGE") === "error") return this.error();
+        }
+      }
+      // "limited to comparing 8-bit time values": valid BCD bytes order as their numbers do.
+      if (order === 0 && a !== b) order = a < b ? -1 : 1;
+    }
+    this.reflectFlags(order);
+    if (this.choice("CP1E-ER-FLAG") === "reflects-each-execution") mem.write(ERROR_FLAG, false);
+    return FLAG_TABLE[order]![condition]!;
+  }
+
+  execute(instruction: string, operands: Operands, step: StepInputs): boolean {
+    const m = /^(LD|AND|OR) (=|<>|<|<=|>|>=)DT$/.exec(instruction);
+    if (m === null) throw new Error(`not a CP1E time comparison: ${instruction}`);
+    const [, form, condition] = m as unknown as [string, string, string];
+    if (form === "LD") return this.evaluate(condition, operands);
+    const rlo = step.rlo_in === true;
+    if (form === "AND") {
+      if (!rlo && this.choice("CP1E-AND-OR-WHEN-OFF") === "and-skipped") return false;
+      const contact = this.evaluate(condition, operands);
+      return rlo && contact;
+    }
+    const contact = this.evaluate(condition, operands);
+    return rlo || contact;
+  }
+}

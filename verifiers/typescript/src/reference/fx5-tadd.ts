@@ -1,0 +1,78 @@
+/** Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data), from fx5-time-add-TADD.txt. */
+import type { StepInputs } from "../types.js";
+import { BaseMachine, deviceOf, signed16, type Operands } from "./machine.js";
+
+const DAY = 24 * 3600;
+// "SM700 Carry ... SM8020 Zero ... SM8022 Carry"; "Error code (SD0/SD8067)".
+export const CARRY_FLAGS: readonly string[] = ["SM700", "SM8022"];
+const ZERO_FLAG = "SM8020";
+const ERROR_REGISTERS = ["SD0", "SD8067"];
+// "2820H The device range ... exceeds", "3405H Any of values ... is outside the following range".
+const ERR_DEVICE_RANGE = 0x2820;
+const ERR_VALUE_RANGE = 0x3405;
+// hour 0 to 23, minute 0 to 59, second 0 to 59.
+export const RANGES: readonly (readonly [number, number])[] = [
+  [0, 23],
+  [0, 59],
+  [0, 59],
+];
+
+export class TaddMachine extends BaseMachine {
+  readonly contact = false;
+  protected carryFlags = CARRY_FLAGS;
+  protected ranges = RANGES;
+  /** TADDP: the state of EN before the first scan is off. */
+  private previousEn = false;
+
+  protected error(code: number): void {
+    for (const reg of ERROR_REGISTERS) this.mem.write(reg, code);
+  }
+
+  protected setFlags(carry: boolean, zero: boolean): void {
+    if (this.choice("TADD-FLAGS-OFF") === "written-each-execution") {
+      for (const f of this.carryFlags) this.mem.write(f, carry);
+      this.mem.write(ZERO_FLAG, zero);
+    } else {
+      if (carry) for (const f of this.carryFlags) this.mem.write(f, true);
+      if (zero) this.mem.write(ZERO_FLAG, true);
+    }
+  }
+
+  /** The sum in seconds -> the result in seconds and the carry (TADD-EXACT-24 for exactly 24:00:00). */
+  protected wrap(total: number): { result: number; carry: boolean } {
+    const carry = this.choice("TADD-EXACT-24") === "carry-at-24" ? total >= DAY : total > DAY;
+    return { result: total % DAY, carry };
+  }
+
+  protected add(operands: Operands): void {
+    const mem = this.mem;
+    const devs = ["s1", "s2", "d"].map((k) => deviceOf(operands[k], k));
+    // "These instructions occupy three points for each of three devices": nothing read or written past the range.
+    if (devs.some((d) => !mem.inRange(d, 3))) return this.error(ERR_DEVICE_RANGE);
+    const [s1Dev, s2Dev, dDev] = devs as [string, string, string];
+    const s1 = mem.words(s1Dev, 3).map(signed16);
+    const s2 = mem.words(s2Dev, 3).map(signed16);
+    const bad = [s1, s2].some((data) => data.some((v, i) => v < this.ranges[i]![0] || v > this.ranges[i]![1]));
+    if (bad) {
+      this.error(ERR_VALUE_RANGE);
+      if (this.choice("TADD-ON-ERROR") === "not-executed") return;
+    }
+    const total = (s1[0]! + s2[0]!) * 3600 + (s1[1]! + s2[1]!) * 60 + (s1[2]! + s2[2]!);
+    const { result, carry } = this.wrap(total);
+    const r = ((result % DAY) + DAY) % DAY;
+    mem.writeWords(dDev, [Math.floor(r / 3600), Math.floor((r % 3600) / 60), r % 60]);
+    // "If the result is 0 (0:00:00), the zero flag turns on."
+    this.setFlags(carry, r === 0);
+  }
+
+  execute(instruction: string, operands: Operands, step: StepInputs): undefined {
+    const en = step.en === true;
+    let run: boolean;
+    if (instruction === "TADD") run = en;
+    else if (instruction === "TADDP") run = en && !this.previousEn;
+    else throw new Error(`not TADD/TADDP: ${instruction}`);
+    this.previousEn = en;
+    if (run) this.add(operands);
+    return undefined;
+  }
+}

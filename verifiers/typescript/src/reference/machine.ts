@@ -1,0 +1,43 @@
+/**
+ * What every family's reference machine shares: the device image, the declared alternatives
+ * (each interpretation's default from the generated names, unless declared), and the words
+ * read as "16-bit signed binary".
+ */
+import { INTERPRETATIONS, type Alternative, type InterpretationId } from "../generated/names.js";
+import type { Memory } from "../memory.js";
+import type { Operand, StepInputs } from "../types.js";
+
+export type Operands = Readonly<Record<string, Operand>>;
+
+export interface Machine {
+  /** LD/AND/OR forms give a contact result; TADD and HOUR do not. */
+  readonly contact: boolean;
+  execute(instruction: string, operands: Operands, step: StepInputs): boolean | undefined;
+}
+
+export abstract class BaseMachine implements Machine {
+  abstract readonly contact: boolean;
+
+  constructor(
+    protected readonly mem: Memory,
+    private readonly declared: Readonly<Record<string, string>>,
+  ) {}
+
+  /** The alternative followed for `id`: the declared one, or the suite's default. */
+  protected choice<I extends InterpretationId>(id: I): Alternative<I> {
+    return (this.declared[id] ?? INTERPRETATIONS[id].default) as Alternative<I>;
+  }
+
+  abstract execute(instruction: string, operands: Operands, step: StepInputs): boolean | undefined;
+}
+
+/** A word read as "16-bit signed binary". */
+export function signed16(word: number): number {
+  const w = word & 0xffff;
+  return w & 0x8000 ? w - 0x10000 : w;
+}
+
+export function deviceOf(op: Operand | undefined, name: string): string {
+  if (op === undefined || !("device" in op)) throw new Error(`operand ${name} must be a device`);
+  return op.device;
+}
