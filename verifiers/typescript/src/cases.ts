@@ -1,18 +1,25 @@
 /**
  * The suite as a plain list of test cases, for any test runner: `test.each` in Vitest or Jest,
- * or a loop of your own. Each case is named by its vector id; `check()` throws an AssertionError
+ * or a loop of your own. Each case is named by its vector id; `check()` throws a VectorFailure
  * carrying the field-level diff when the implementation disagrees.
  *
  *     import { cases } from "plcvec";
  *     test.each(cases(myImplementation))("$id", (c) => c.check());
  */
-import { AssertionError } from "node:assert";
-
 import { PlcvecError } from "./errors.js";
 import type { KnownFailures } from "./known.js";
 import { loadSuite, type Suite } from "./load.js";
 import { applyKnown, describeResult, judge, prepare, resolveChoices, type Implementation, type VectorResult } from "./run.js";
 import { select, type Selection } from "./select.js";
+
+/** A vector the implementation does not pass; its message is the whole field-level diff, with no stack to read past. */
+export class VectorFailure extends Error {
+  override readonly name = "VectorFailure";
+  constructor(message: string) {
+    super(message);
+    this.stack = `${this.name}: ${message}`;
+  }
+}
 
 export interface CaseOptions {
   readonly suite?: Suite;
@@ -27,7 +34,7 @@ export interface Case {
   readonly family: string;
   readonly instruction: string;
   readonly tags: readonly string[];
-  /** Run the vector and throw an AssertionError with the diff unless it passes (or is a known failure that still fails). */
+  /** Run the vector and throw a VectorFailure with the diff unless it passes (or is a known failure that still fails). */
   check(): VectorResult;
 }
 
@@ -47,7 +54,7 @@ export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
     check(): VectorResult {
       const result = applyKnown(judge(prepare(vector, choices, defaults), impl), options.known);
       if (result.status === "fail" || result.status === "error" || result.status === "stale") {
-        throw new AssertionError({ message: describeResult(result) });
+        throw new VectorFailure(describeResult(result));
       }
       return result;
     },

@@ -27,6 +27,7 @@ export function show(value: unknown): string {
 
 export function problemLine(p: Problem): string {
   const where = p.step === undefined ? "" : `step ${p.step} `;
+  if (p.step === undefined) return `${p.field}: expected ${String(p.expected)}, got ${String(p.actual)}`;
   let text = `${where}${p.field}: expected ${show(p.expected)}, got ${show(p.actual)}`;
   if (p.before !== undefined && p.expected === p.before) text += " (the step must leave it unchanged)";
   else if (p.before !== undefined) text += ` (before the step: ${show(p.before)})`;
@@ -39,7 +40,8 @@ export function compare(expected: Expected, steps: readonly StepResult[]): Probl
     return [{ step: undefined, field: "steps", expected: `${expected.states.length} steps`, actual: `${steps.length} steps` }];
   }
   const problems: Problem[] = [];
-  steps.forEach((step, i) => {
+  for (let i = 0; i < steps.length; i++) {
+    const step = steps[i]!;
     const wantResult = expected.results[i];
     if (wantResult !== undefined && step.result !== wantResult) {
       problems.push({ step: i, field: "result", expected: wantResult, actual: step.result ?? NOT_REPORTED });
@@ -50,7 +52,7 @@ export function compare(expected: Expected, steps: readonly StepResult[]): Probl
       got = Object.fromEntries(Object.entries(got).filter(([k]) => !expected.scratch.has(k)));
     }
     // Most vectors pass: one pass of strict equality first, the field-by-field diff only on a mismatch.
-    if (sameDevices(want, got)) return;
+    if (sameDevices(want, got)) continue;
     const before = expected.befores[i]!;
     const names = [...new Set([...Object.keys(want), ...Object.keys(got)])].sort();
     for (const dev of names) {
@@ -58,6 +60,6 @@ export function compare(expected: Expected, steps: readonly StepResult[]): Probl
       const g = Object.prototype.hasOwnProperty.call(got, dev) ? got[dev]! : NOT_REPORTED;
       if (w !== g) problems.push({ step: i, field: dev, expected: w, actual: g, before: before[dev] });
     }
-  });
+  }
   return problems;
 }

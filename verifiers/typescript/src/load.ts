@@ -168,6 +168,7 @@ function readJsonl(file: string, sha256: string | undefined): { header: FamilyHe
       throw new PlcvecError(`${file}: sha256 ${actual} is not the ${sha256} its index.json gives (damaged or edited copy)`);
     }
   }
+  if (text.trim() === "") throw new PlcvecError(`${file}: empty file (no header line)`);
   const lines = text.split("\n");
   if (lines[lines.length - 1] === "") lines.pop();
   const entries: Entry[] = [];

@@ -8,14 +8,29 @@ import type { Devices, Operand, RunOutcome, StepInputs, Value, VectorRequest } f
 
 const ADDRESS = /^([A-Za-z_]+?)(\d+)$/;
 
+/** Parsed device addresses, `D100` -> ["D", 100]: a program names few devices, so each is parsed once. */
+const parsed = new Map<string, readonly [string, number] | null>();
+
+function parse(address: string): readonly [string, number] | null {
+  let p = parsed.get(address);
+  if (p === undefined) {
+    const m = ADDRESS.exec(address);
+    p = m === null ? null : [m[1] as string, Number(m[2])];
+    parsed.set(address, p);
+  }
+  return p;
+}
+
 /** A device image: word devices hold 0..65535, bit devices true/false. */
 export class Memory {
+  /** Device address -> value. A Map: every vector names other devices, and objects of ever-new shapes would make every access megamorphic. */
   readonly values: Map<string, Value>;
   /** Points of each device type, e.g. {D: 8000} means D0..D7999. */
   readonly sizes: Readonly<Record<string, number>>;
 
   constructor(devices: Devices, sizes: Readonly<Record<string, number>> = {}) {
-    this.values = new Map(Object.entries(devices));
+    this.values = new Map();
+    for (const k in devices) this.values.set(k, devices[k]!);
     this.sizes = sizes;
   }
 
@@ -35,27 +50,34 @@ export class Memory {
     this.values.set(address, typeof value === "number" ? value & 0xffff : value);
   }
 
+  /** Apply values written by the outside world (a step's `set`). */
+  set(values: Devices | undefined): void {
+    if (values !== undefined) for (const k in values) this.values.set(k, values[k]!);
+  }
+
   /** `D100`, 2 -> `D102`. */
   static offset(base: string, offset: number): string {
-    const m = ADDRESS.exec(base);
-    if (m === null) throw new Error(`${base} is not a numbered device`);
-    return `${m[1]}${Number(m[2]) + offset}`;
+    const p = parse(base);
+    if (p === null) throw new Error(`${base} is not a numbered device`);
+    return `${p[0]}${p[1] + offset}`;
   }
 
   words(base: string, count: number): number[] {
-    return Array.from({ length: count }, (_, i) => this.word(Memory.offset(base, i)));
+    const out: number[] = [];
+    for (let i = 0; i < count; i++) out.push(this.word(i === 0 ? base : Memory.offset(base, i)));
+    return out;
   }
 
   writeWords(base: string, words: readonly number[]): void {
-    words.forEach((w, i) => this.write(Memory.offset(base, i), w));
+    words.forEach((w, i) => this.write(i === 0 ? base : Memory.offset(base, i), w));
   }
 
   /** True when base .. base+count-1 all exist (a device type of unstated size is assumed to). */
   inRange(base: string, count: number): boolean {
-    const m = ADDRESS.exec(base);
-    if (m === null) return false;
-    const size = this.sizes[m[1] as string];
-    return size === undefined || Number(m[2]) + count <= size;
+    const p = parse(base);
+    if (p === null) return false;
+    const size = this.sizes[p[0]];
+    return size === undefined || p[1] + count <= size;
   }
 
   /** A one-word operand: a constant (K/H) or the word in its device. */
@@ -64,7 +86,9 @@ export class Memory {
   }
 
   snapshot(): Devices {
-    return Object.fromEntries(this.values);
+    const out: Record<string, Value> = {};
+    for (const [k, v] of this.values) out[k] = v;
+    return out;
   }
 }
 
@@ -95,7 +119,7 @@ export function executeOnMemory(impl: MemoryImplementation): Implementation {
       const memory = new Memory(request.initial.devices, request.assumes.device_sizes);
       const state: Record<string, unknown> = {};
       const steps = request.steps.map((step) => {
-        for (const [k, v] of Object.entries(step.set ?? {})) memory.values.set(k, v);
+        memory.set(step.set);
         const result = impl.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state });
         return result === undefined ? { devices: memory.snapshot() } : { result, devices: memory.snapshot() };
       });

@@ -7,7 +7,7 @@ import { expectedOf, type Expected } from "./expect.js";
 import type { KnownFailures } from "./known.js";
 import { interpretationsOf, loadSuite, type Suite } from "./load.js";
 import { select, type Selection } from "./select.js";
-import type { RunOutcome, StepResult, Vector, VectorRequest } from "./types.js";
+import type { RunOutcome, Vector, VectorRequest } from "./types.js";
 
 /** An implementation at the level of the contract: one vector's initial state in, the state after each step out. */
 export interface Implementation {
@@ -91,21 +91,28 @@ export function prepare(vector: Vector, choices: Readonly<Record<string, string>
 /** Run one prepared vector through `impl` and judge it (known failures not yet applied). */
 export function judge(p: Prepared, impl: Implementation): VectorResult {
   const { vector, expected } = p;
-  const base = { id: vector.id, applied: expected.applied, clauses: vector.clauses };
+  const verdict = (status: Status, problems: readonly Problem[], message?: string): VectorResult =>
+    message === undefined
+      ? { id: vector.id, status, problems, applied: expected.applied, clauses: vector.clauses }
+      : { id: vector.id, status, problems, message, applied: expected.applied, clauses: vector.clauses };
   if (impl.instructions !== undefined && !impl.instructions.includes(vector.instruction)) {
-    return { ...base, status: SKIP, problems: [], message: `${vector.instruction} is not implemented` };
+    return verdict(SKIP, NONE, `${vector.instruction} is not implemented`);
   }
   let outcome: RunOutcome;
   try {
     outcome = impl.run(p.request);
   } catch (err) {
-    return { ...base, status: ERROR, problems: [], message: `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}` };
+    return verdict(ERROR, NONE, `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}`);
   }
-  if ("skip" in outcome) return { ...base, status: SKIP, problems: [], message: outcome.skip };
-  if ("error" in outcome) return { ...base, status: ERROR, problems: [], message: outcome.error };
-  const problems = compare(expected, outcome.steps as readonly StepResult[]);
-  return { ...base, status: problems.length ? FAIL : PASS, problems };
+  if ("steps" in outcome) {
+    const problems = compare(expected, outcome.steps);
+    return verdict(problems.length ? FAIL : PASS, problems);
+  }
+  if ("skip" in outcome) return verdict(SKIP, NONE, outcome.skip);
+  return verdict(ERROR, NONE, outcome.error);
 }
+
+const NONE: readonly Problem[] = Object.freeze([]);
 
 /** Turn a listed failure into xfail and a listed pass into stale. */
 export function applyKnown(result: VectorResult, known: KnownFailures | undefined): VectorResult {

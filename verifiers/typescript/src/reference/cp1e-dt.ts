@@ -3,7 +3,14 @@ import type { StepInputs } from "../types.js";
 import { BaseMachine, deviceOf, type Operands } from "./machine.js";
 
 const ERROR_FLAG = "P_ER";
-const FLAGS: Readonly<Record<string, string>> = { "=": "P_EQ", "<>": "P_NE", "<": "P_LT", "<=": "P_LE", ">": "P_GT", ">=": "P_GE" };
+const FLAGS: readonly (readonly [string, string])[] = [
+  ["=", "P_EQ"],
+  ["<>", "P_NE"],
+  ["<", "P_LT"],
+  ["<=", "P_LE"],
+  [">", "P_GT"],
+  [">=", "P_GE"],
+];
 
 export interface BcdField {
   readonly offset: number;
@@ -40,6 +47,20 @@ export function isBcd(b: number): boolean {
 
 const bcdValue = (b: number): number => (b >> 4) * 10 + (b & 0xf);
 
+const mnemonics = new Map<string, readonly [string, string]>();
+
+/** "AND <=DT" -> ["AND", "<="] (parsed once per mnemonic). */
+function parseMnemonic(instruction: string): readonly [string, string] {
+  let parsed = mnemonics.get(instruction);
+  if (parsed === undefined) {
+    const m = /^(LD|AND|OR) (=|<>|<|<=|>|>=)DT$/.exec(instruction);
+    if (m === null) throw new Error(`not a CP1E time comparison: ${instruction}`);
+    parsed = [m[1] as string, m[2] as string];
+    mnemonics.set(instruction, parsed);
+  }
+  return parsed;
+}
+
 export class Cp1eTimeCompare extends BaseMachine {
   readonly contact = true;
   protected fields = FIELDS;
@@ -53,7 +74,8 @@ export class Cp1eTimeCompare extends BaseMachine {
 
   /** "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <, <=, >, >=)". */
   protected reflectFlags(order: number): void {
-    for (const [symbol, flag] of Object.entries(FLAGS)) this.mem.write(flag, FLAG_TABLE[order]![symbol]!);
+    const row = FLAG_TABLE[order]!;
+    for (const [symbol, flag] of FLAGS) this.mem.write(flag, row[symbol]!);
   }
 
   protected evaluate(condition: string, operands: Operands): boolean {
@@ -63,10 +85,11 @@ export class Cp1eTimeCompare extends BaseMachine {
     const c = mem.operand(operands["C"]!);
     if (c & 0xffc0 && this.choice("CP1E-C-HIGH-BITS") === "error") return this.error();
     // "To mask a time value, set the corresponding bit in the control word (C) to 1."
-    const unmasked = this.fields.filter((f) => ((c >> f.mask) & 1) === 0);
-    if (unmasked.length === 0 && this.choice("CP1E-ALL-MASKED") === "error") return this.error();
+    const allMasked = this.fields.every((f) => ((c >> f.mask) & 1) === 1);
+    if (allMasked && this.choice("CP1E-ALL-MASKED") === "error") return this.error();
     let order = 0;
-    for (const f of unmasked) {
+    for (const f of this.fields) {
+      if ((c >> f.mask) & 1) continue;
       const a = (s1[f.offset]! >> (8 * f.byte)) & 0xff;
       const b = (s2[f.offset]! >> (8 * f.byte)) & 0xff;
       for (const raw of [a, b]) {
@@ -85,9 +108,7 @@ export class Cp1eTimeCompare extends BaseMachine {
   }
 
   execute(instruction: string, operands: Operands, step: StepInputs): boolean {
-    const m = /^(LD|AND|OR) (=|<>|<|<=|>|>=)DT$/.exec(instruction);
-    if (m === null) throw new Error(`not a CP1E time comparison: ${instruction}`);
-    const [, form, condition] = m as unknown as [string, string, string];
+    const [form, condition] = parseMnemonic(instruction);
     if (form === "LD") return this.evaluate(condition, operands);
     const rlo = step.rlo_in === true;
     if (form === "AND") {

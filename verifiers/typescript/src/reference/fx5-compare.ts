@@ -41,6 +41,8 @@ export const CONDITIONS: Readonly<Record<string, (order: number) => boolean>> = 
   ">=": (c) => c >= 0,
 };
 
+const mnemonics = new Map<string, { form: string; condition: string }>();
+
 export class Fx5CompareMachine extends BaseMachine {
   readonly contact = true;
   protected fields: readonly Field[] = TIME_FIELDS;
@@ -126,13 +128,22 @@ export class Fx5CompareMachine extends BaseMachine {
     return rlo || contact;
   }
 
+  /** "ANDTM<=" -> {form: "AND", condition: "<="} (parsed once per mnemonic). */
   protected parse(instruction: string): { form: string; condition: string } {
-    for (const form of ["LD", "AND", "OR"]) {
-      const prefix = form + this.kind;
-      if (instruction.startsWith(prefix) && Object.prototype.hasOwnProperty.call(CONDITIONS, instruction.slice(prefix.length))) {
-        return { form, condition: instruction.slice(prefix.length) };
+    const key = `${this.kind} ${instruction}`;
+    let parsed = mnemonics.get(key);
+    if (parsed === undefined) {
+      for (const form of ["LD", "AND", "OR"]) {
+        const prefix = form + this.kind;
+        const condition = instruction.slice(prefix.length);
+        if (instruction.startsWith(prefix) && Object.prototype.hasOwnProperty.call(CONDITIONS, condition)) {
+          parsed = { form, condition };
+          mnemonics.set(key, parsed);
+          return parsed;
+        }
       }
+      throw new Error(`not an FX5 ${this.kind} comparison: ${instruction}`);
     }
-    throw new Error(`not an FX5 ${this.kind} comparison: ${instruction}`);
+    return parsed;
   }
 }

@@ -41,15 +41,16 @@ export class TaddMachine extends BaseMachine {
   /** The sum in seconds -> the result in seconds and the carry (TADD-EXACT-24 for exactly 24:00:00). */
   protected wrap(total: number): { result: number; carry: boolean } {
     const carry = this.choice("TADD-EXACT-24") === "carry-at-24" ? total >= DAY : total > DAY;
-    return { result: total % DAY, carry };
+    return { result: ((total % DAY) + DAY) % DAY, carry };   // a sum of negative words, too, lands in 0..23:59:59
   }
 
   protected add(operands: Operands): void {
     const mem = this.mem;
-    const devs = ["s1", "s2", "d"].map((k) => deviceOf(operands[k], k));
+    const s1Dev = deviceOf(operands["s1"], "s1");
+    const s2Dev = deviceOf(operands["s2"], "s2");
+    const dDev = deviceOf(operands["d"], "d");
     // "These instructions occupy three points for each of three devices": nothing read or written past the range.
-    if (devs.some((d) => !mem.inRange(d, 3))) return this.error(ERR_DEVICE_RANGE);
-    const [s1Dev, s2Dev, dDev] = devs as [string, string, string];
+    if (!mem.inRange(s1Dev, 3) || !mem.inRange(s2Dev, 3) || !mem.inRange(dDev, 3)) return this.error(ERR_DEVICE_RANGE);
     const s1 = mem.words(s1Dev, 3).map(signed16);
     const s2 = mem.words(s2Dev, 3).map(signed16);
     const bad = [s1, s2].some((data) => data.some((v, i) => v < this.ranges[i]![0] || v > this.ranges[i]![1]));
@@ -59,10 +60,9 @@ export class TaddMachine extends BaseMachine {
     }
     const total = (s1[0]! + s2[0]!) * 3600 + (s1[1]! + s2[1]!) * 60 + (s1[2]! + s2[2]!);
     const { result, carry } = this.wrap(total);
-    const r = ((result % DAY) + DAY) % DAY;
-    mem.writeWords(dDev, [Math.floor(r / 3600), Math.floor((r % 3600) / 60), r % 60]);
+    mem.writeWords(dDev, [Math.floor(result / 3600), Math.floor((result % 3600) / 60), result % 60]);
     // "If the result is 0 (0:00:00), the zero flag turns on."
-    this.setFlags(carry, r === 0);
+    this.setFlags(carry, result === 0);
   }
 
   execute(instruction: string, operands: Operands, step: StepInputs): undefined {

@@ -40,7 +40,7 @@ export function machineImplementation(
       const machine = factory(mem, choices);
       const steps: StepResult[] = [];
       for (const step of request.steps) {
-        for (const [k, v] of Object.entries(step.set ?? {})) mem.values.set(k, v);
+        mem.set(step.set);
         const result = machine.execute(request.instruction, request.initial.operands, step);
         steps.push(machine.contact ? { result: result === true, devices: mem.snapshot() } : { devices: mem.snapshot() });
       }

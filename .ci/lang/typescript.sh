@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The TypeScript verifier: install, type-check, lint, build, test under node:test, the README's
+# examples under node:test and Vitest, and the reference adapter through `plcvec verify`.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+root=$PWD
+(
+    cd verifiers/typescript
+    # `npm install` with the committed lock file, not `npm ci`: the lock written here records the
+    # platform packages of optional dependencies (rollup, esbuild) for this platform only, which
+    # `npm ci` refuses as out of sync.
+    npm install --no-audit --no-fund --loglevel=error
+    npm run --silent typecheck
+    npm run --silent lint
+    npm run --silent build
+    npm test
+    npm run --silent example:node-test
+    npm run --silent example:vitest
+)
+cd "$root"
+python3 -m plcvec verify --adapter verifiers/typescript/reference-adapter -q

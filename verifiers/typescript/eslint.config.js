@@ -1,0 +1,17 @@
+// ESLint (flat config) with typescript-eslint's strict rules over the sources, tests and examples.
+import eslint from "@eslint/js";
+import tseslint from "typescript-eslint";
+
+export default tseslint.config(
+  { ignores: ["dist/", "node_modules/", "vectors/"] },
+  eslint.configs.recommended,
+  ...tseslint.configs.strict,
+  {
+    rules: {
+      // `_`-prefixed names are deliberately unused (a destructured field left out of a copy).
+      "@typescript-eslint/no-unused-vars": ["error", { argsIgnorePattern: "^_", varsIgnorePattern: "^_" }],
+      // Indexing is checked by noUncheckedIndexedAccess; `!` after such a check is the idiom.
+      "@typescript-eslint/no-non-null-assertion": "off",
+    },
+  },
+);

@@ -1,0 +1,50 @@
+#!/usr/bin/env node
+/**
+ * How fast this runner judges the golden set with the TypeScript reference, in process, after
+ * loading: loading and preparing are timed apart; then WARMUP passes let the JIT settle, and the
+ * figure is the median of PASSES timed passes. The last line is the JSON object that
+ * `plcvec bench-native` reads.
+ */
+import { loadSuite } from "../load.js";
+import { reference } from "../reference/index.js";
+import { judge, prepare, resolveChoices } from "../run.js";
+
+const WARMUP = 5;
+const PASSES = 25;
+
+let start = performance.now();
+const suite = loadSuite();
+const loadSeconds = (performance.now() - start) / 1000;
+start = performance.now();
+const impl = reference();
+const { choices, defaults } = resolveChoices(suite, impl.choices);
+const prepared = suite.vectors.map((v) => prepare(v, choices, defaults));
+const prepareSeconds = (performance.now() - start) / 1000;
+
+const seconds: number[] = [];
+for (let pass = 0; pass < WARMUP + PASSES; pass++) {
+  const t0 = performance.now();
+  let failed = 0;
+  for (const p of prepared) if (judge(p, impl).status !== "pass") failed++;
+  const t = (performance.now() - t0) / 1000;
+  if (failed) {
+    process.stderr.write(`the reference failed ${failed} vectors: the benchmark means nothing\n`);
+    process.exit(1);
+  }
+  if (pass >= WARMUP) seconds.push(t);
+}
+seconds.sort((a, b) => a - b);
+const median = seconds[Math.floor(seconds.length / 2)] as number;
+const n = prepared.length;
+console.log(`typescript: ${n} vectors, load ${loadSeconds.toFixed(3)} s, prepare ${prepareSeconds.toFixed(3)} s, judge ${(median * 1000).toFixed(2)} ms a pass`);
+console.log(
+  JSON.stringify({
+    lang: "typescript",
+    vectors: n,
+    passes: PASSES,
+    load_seconds: Number(loadSeconds.toFixed(4)),
+    seconds: Number(median.toFixed(6)),
+    vectors_per_s: Math.round(n / median),
+    note: `node ${process.version}, median of ${PASSES} passes after ${WARMUP} warm-up`,
+  }),
+);

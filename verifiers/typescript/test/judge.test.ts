@@ -1,0 +1,143 @@
+/** Judging: exact values and JSON types, listed devices unchanged, no writes outside, known failures, the gate. */
+import assert from "node:assert/strict";
+import { writeFileSync, mkdtempSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { test } from "node:test";
+
+import {
+  describeResult,
+  formatReport,
+  loadKnownFailures,
+  loadSuite,
+  parseKnownFailures,
+  PlcvecError,
+  runVectors,
+  type Implementation,
+  type VectorRequest,
+} from "../src/index.js";
+import { reference } from "../src/reference/index.js";
+
+const suite = loadSuite();
+const ref = reference();
+const MANUAL_TADD = "fx5-time-add/TADD/manual-example/program";
+
+/** The reference with its answer to one vector edited. */
+function edited(id: string, edit: (steps: { result?: boolean; devices: Record<string, unknown> }[]) => void): Implementation {
+  return {
+    name: "edited reference",
+    run(request: VectorRequest) {
+      const answer = ref.run(request);
+      if (request.id !== id || !("steps" in answer)) return answer;
+      const steps = structuredClone(answer.steps) as { result?: boolean; devices: Record<string, unknown> }[];
+      edit(steps);
+      return { steps } as ReturnType<Implementation["run"]>;
+    },
+  };
+}
+
+const only = (id: string) => ({ suite, selection: { ids: [id] } });
+
+test("the manual's TADD example passes: 10:30:10 + 3:10:05 = 13:40:15", () => {
+  const report = runVectors(ref, only(MANUAL_TADD));
+  assert.equal(report.counts.pass, 1);
+  const v = suite.byId.get(MANUAL_TADD)!;
+  assert.deepEqual([v.final.devices["D30"], v.final.devices["D31"], v.final.devices["D32"]], [13, 40, 15]);
+});
+
+test("a changed word is a field-level diff naming step, device, expected and actual", () => {
+  const report = runVectors(edited(MANUAL_TADD, (s) => { s[0]!.devices["D31"] = 41; }), only(MANUAL_TADD));
+  assert.equal(report.passed, false);
+  const text = describeResult(report.results[0]!);
+  assert.match(text, /^FAIL fx5-time-add\/TADD\/manual-example\/program/);
+  assert.match(text, /step 0 D31: expected 40, got 41 \(before the step: 65535\)/);
+  assert.match(text, /clauses: fx5-time-add#/);
+});
+
+test("a bit reported as 1 fails, though 1 == true", () => {
+  const report = runVectors(edited(MANUAL_TADD, (s) => { s[0]!.devices["SM700"] = 0; }), only(MANUAL_TADD));
+  assert.match(describeResult(report.results[0]!), /SM700: expected false, got 0/);
+});
+
+test("a device left out, and a device written outside the vector, are failures", () => {
+  const missing = runVectors(edited(MANUAL_TADD, (s) => { delete s[0]!.devices["SD0"]; }), only(MANUAL_TADD));
+  assert.match(describeResult(missing.results[0]!), /SD0: expected 0, got <not reported>/);
+  const outside = runVectors(edited(MANUAL_TADD, (s) => { s[0]!.devices["D33"] = 0; }), only(MANUAL_TADD));
+  assert.match(describeResult(outside.results[0]!), /D33: expected <not in the vector>, got 0/);
+});
+
+test("a device that must stay unchanged is said so", () => {
+  const report = runVectors(edited(MANUAL_TADD, (s) => { s[0]!.devices["D10"] = 11; }), only(MANUAL_TADD));
+  assert.match(describeResult(report.results[0]!), /D10: expected 10, got 11 \(the step must leave it unchanged\)/);
+});
+
+test("a contact result is compared after every step, and the number of steps", () => {
+  const id = suite.vectors.find((v) => v.family === "cp1e-time-compare" && v.instruction.startsWith("LD"))!.id;
+  const flipped = runVectors(edited(id, (s) => { s[0]!.result = !s[0]!.result; }), only(id));
+  assert.match(describeResult(flipped.results[0]!), /step 0 result: expected (true|false), got (true|false)/);
+  const short = runVectors(edited(id, (s) => { s.pop(); }), only(id));
+  assert.match(describeResult(short.results[0]!), /steps: expected 1 steps, got 0 steps/);
+});
+
+test("an implementation that throws errors that vector; one that skips is skipped", () => {
+  const thrower: Implementation = { name: "thrower", run: () => { throw new RangeError("no R devices"); } };
+  const report = runVectors(thrower, only(MANUAL_TADD));
+  assert.equal(report.counts.error, 1);
+  assert.match(describeResult(report.results[0]!), /thrower threw RangeError: no R devices/);
+});
+
+test("the gate never passes by accident: empty selection, all skipped, too many skipped", () => {
+  const empty = runVectors(ref, { suite, selection: { ids: ["zzz*"] } });
+  assert.equal(empty.passed, false);
+  assert.match(formatReport(empty), /RUN FAILS: the selection holds no vector/);
+  assert.equal(runVectors(ref, { suite, selection: { ids: ["zzz*"] }, allowEmpty: true }).passed, true);
+
+  const skipper: Implementation = { name: "skipper", run: () => ({ skip: "not yet" }) };
+  const skipped = runVectors(skipper, { suite, selection: { families: ["fx5-time-add"] } });
+  assert.equal(skipped.passed, false);
+  assert.match(formatReport(skipped), /nothing passed: all \d+ selected vectors were skipped/);
+
+  const tadOnly: Implementation = { ...ref, name: "TADD only", instructions: ["TADD"] };
+  const some = runVectors(tadOnly, { suite, selection: { families: ["fx5-time-add"] } });
+  assert.equal(some.passed, true);
+  assert.ok(some.counts.skip > 0);
+  assert.equal(runVectors(tadOnly, { suite, selection: { families: ["fx5-time-add"] }, maxSkipped: 0 }).passed, false);
+  assert.equal(runVectors(tadOnly, { suite, selection: { families: ["fx5-time-add"] }, maxSkipped: "100%" }).passed, true);
+});
+
+test("known failures: a listed failure is xfail, a listed pass is stale, an unknown id is stale", () => {
+  const broken = edited(MANUAL_TADD, (s) => { s[0]!.devices["D31"] = 41; });
+  const known = parseKnownFailures(`[[known-failure]]\nid = "${MANUAL_TADD}"\nreason = "minutes off by one (#7)"\n`, "known.toml");
+  const xfail = runVectors(broken, { ...only(MANUAL_TADD), known });
+  assert.equal(xfail.counts.xfail, 1);
+  assert.equal(xfail.passed, true);
+  const stale = runVectors(ref, { ...only(MANUAL_TADD), known });
+  assert.equal(stale.counts.stale, 1);
+  assert.equal(stale.passed, false);
+  const ghost = parseKnownFailures(`[[known-failure]]\nid = "fx5-time-add/no/such"\nreason = "x"\n`, "k.toml");
+  const r = runVectors(ref, { ...only(MANUAL_TADD), known: ghost });
+  assert.equal(r.passed, false);
+  assert.match(formatReport(r), /STALE fx5-time-add\/no\/such\n {2}listed at k\.toml:1, but the suite has no such vector/);
+});
+
+test("a bad expectations file is named with its line", () => {
+  const dir = mkdtempSync(join(tmpdir(), "plcvec-ts-known-"));
+  const cases: [string, RegExp][] = [
+    ['[[known-failure]]\nid = "a"\n', /k\.toml:1: a: every known failure needs a `reason`/],
+    ['[[known-failure]]\nid = "a"\nreason = "r"\n[[known-failure]]\nid = "a"\nreason = "r"\n', /k\.toml:4: a is listed twice \(first at .*k\.toml:1\)/],
+    ['[[known-failure]]\nid = "a"\nreason = "r"\npattern = "x"\n', /unknown key "pattern"/],
+    ['skip = ["a"]\n', /k\.toml:1: unknown key "skip"/],
+    ['[[known-failure]\n', /k\.toml:1: not valid TOML/],
+  ];
+  for (const [text, pattern] of cases) {
+    const file = join(dir, "k.toml");
+    writeFileSync(file, text);
+    assert.throws(() => loadKnownFailures(file), (err: unknown) => err instanceof PlcvecError && pattern.test(err.message), text);
+  }
+  assert.throws(() => loadKnownFailures(join(dir, "missing.toml")), /cannot read the expectations file: ENOENT/);
+});
+
+test("declared alternatives are checked against the suite", () => {
+  assert.throws(() => runVectors(reference({ "NO-SUCH": "x" }), only(MANUAL_TADD)), /declared interpretation "NO-SUCH" is not in the suite/);
+  assert.throws(() => runVectors(reference({ "TADD-EXACT-24": "maybe" }), only(MANUAL_TADD)), /TADD-EXACT-24=maybe: no such alternative \(known: carry-at-24, carry-above-24\)/);
+});

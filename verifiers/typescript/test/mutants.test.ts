@@ -1,0 +1,51 @@
+/** Every mutant is rejected by this runner, by name: a verifier that cannot fail proves nothing. */
+import assert from "node:assert/strict";
+import { describe, test } from "node:test";
+
+import { FAMILIES, loadSuite, runVectors } from "../src/index.js";
+import { MUTANTS, mutant, type Aspect } from "../src/mutants/index.js";
+
+const suite = loadSuite();
+
+describe("each mutant is rejected", () => {
+  for (const [name, m] of Object.entries(MUTANTS)) {
+    test(name, () => {
+      const report = runVectors(mutant(name), { suite });
+      assert.equal(report.passed, false, `${name} (${m.bug}) passed the whole suite`);
+      const failing = report.results.filter((r) => r.status === "fail");
+      assert.ok(failing.length > 0, `${name} failed without a failing vector`);
+      // A single-bug mutant of one family is caught by that family's vectors, and only fails there.
+      const families = new Set(failing.map((r) => r.id.split("/")[0]));
+      assert.ok(families.has(m.family), `${name} is not caught by any ${m.family} vector (caught in ${[...families].join(", ")})`);
+    });
+  }
+});
+
+test("the mutants cover every family and every comparison aspect", () => {
+  const aspects: readonly Aspect[] = [
+    "contact result",
+    "changed word",
+    "flag",
+    "device that must stay unchanged",
+    "write outside the vector",
+    "interpretation alternative",
+  ];
+  const all = Object.values(MUTANTS);
+  assert.ok(all.length >= 10);
+  for (const family of FAMILIES) assert.ok(all.some((m) => m.family === family), `no mutant of ${family}`);
+  for (const aspect of aspects) assert.ok(all.some((m) => m.aspect === aspect), `no mutant breaks the ${aspect}`);
+});
+
+test("a mutant that breaks an interpretation passes once it declares that reading", () => {
+  // cp1e-er-held holds P_ER: exactly the "held" alternative of CP1E-ER-FLAG. Declared, it passes
+  // the CP1E vectors; undeclared, it fails them. The runner judges by the declared alternative.
+  const selection = { families: ["cp1e-time-compare"] };
+  assert.equal(runVectors(mutant("cp1e-er-held"), { suite, selection }).passed, false);
+  assert.equal(runVectors(mutant("cp1e-er-held", { "CP1E-ER-FLAG": "held" }), { suite, selection }).passed, true);
+});
+
+test("a write outside the vector is reported as such", () => {
+  const report = runVectors(mutant("tadd-writes-past-range"), { suite, selection: { families: ["fx5-time-add"] } });
+  const problems = report.results.flatMap((r) => r.problems);
+  assert.ok(problems.some((p) => p.expected === "<not in the vector>"), JSON.stringify(problems.slice(0, 3)));
+});
