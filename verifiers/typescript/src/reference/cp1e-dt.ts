@@ -87,6 +87,11 @@ export class Cp1eTimeCompare extends BaseMachine {
     // "To mask a time value, set the corresponding bit in the control word (C) to 1."
     const allMasked = this.fields.every((f) => ((c >> f.mask) & 1) === 1);
     if (allMasked && this.choice("CP1E-ALL-MASKED") === "error") return this.error();
+    if (allMasked && this.choice("CP1E-ALL-MASKED") === "not-compared") {
+      // Nothing compared, no result: OFF, the flags untouched, no error.
+      if (this.choice("CP1E-ER-FLAG") === "reflects-each-execution") mem.write(ERROR_FLAG, false);
+      return false;
+    }
     let order = 0;
     for (const f of this.fields) {
       if ((c >> f.mask) & 1) continue;
@@ -111,11 +116,13 @@ export class Cp1eTimeCompare extends BaseMachine {
     const [form, condition] = parseMnemonic(instruction);
     if (form === "LD") return this.evaluate(condition, operands);
     const rlo = step.rlo_in === true;
+    const logic = this.choice("CP1E-AND-OR-WHEN-OFF");
     if (form === "AND") {
-      if (!rlo && this.choice("CP1E-AND-OR-WHEN-OFF") === "and-skipped") return false;
+      if (!rlo && (logic === "and-skipped" || logic === "short-circuit")) return false;
       const contact = this.evaluate(condition, operands);
       return rlo && contact;
     }
+    if (rlo && logic === "short-circuit") return true;
     const contact = this.evaluate(condition, operands);
     return rlo || contact;
   }

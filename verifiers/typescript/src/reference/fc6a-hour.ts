@@ -34,9 +34,12 @@ export class HourMeter extends BaseMachine {
     const d1 = deviceOf(operands["D1"], "D1");
     const d2 = deviceOf(operands["D2"], "D2");
     if (step.input !== true) {
-      if (this.choice("HOUR-INPUT-OFF") === "reset") {
+      const off = this.choice("HOUR-INPUT-OFF");
+      if (off === "reset") {
         mem.writeWords(d1, [0, 0, 0]);
         this.fractionMs = 0;
+      } else if (off === "hold-drop-fraction") {
+        this.fractionMs = 0; // D1 kept; the part of a second already measured is lost
       }
       return undefined;
     }

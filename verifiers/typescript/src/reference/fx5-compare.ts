@@ -104,6 +104,10 @@ export class Fx5CompareMachine extends BaseMachine {
     if (scope === "all-words") {
       if (this.outOfRange(s1, undefined) || (!useClock && this.outOfRange(s2, undefined))) return this.error();
       if (!valid) return false;
+    } else if (scope === "compared-operands") {
+      // The operands as a whole are comparison target data, but only when a comparison is made.
+      if (!valid) return false;
+      if (this.outOfRange(s1, undefined) || (!useClock && this.outOfRange(s2, undefined))) return this.error();
     } else {
       if (!valid) return false;
       if (this.outOfRange(s1, s3) || (!useClock && this.outOfRange(s2, s3))) return this.error();
