@@ -17,6 +17,10 @@ if [ -n "$unformatted" ]; then
 fi
 (cd "$GO_DIR" && go vet ./...)
 (cd "$GO_DIR" && go test -race -count=1 ./...)
+# The README's example: its own module, pointed at this one by a `replace` line.
+unformatted=$(cd "$GO_DIR/examples/minimal" && gofmt -l .)
+[ -z "$unformatted" ] || { echo "gofmt: $unformatted" >&2; exit 1; }
+(cd "$GO_DIR/examples/minimal" && go vet ./... && go test -race -count=1 ./...)
 # The Go reference over the stdio protocol passes the suite's own gate; a mutant does not.
 python3 -m plcvec verify --adapter verifiers/go/reference-adapter -q
 if python3 -m plcvec verify --adapter "verifiers/go/reference-adapter --mutant cp1e-and-as-or" \

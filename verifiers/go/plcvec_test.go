@@ -1,0 +1,369 @@
+package plcvec_test
+
+import (
+	"os"
+	"os/exec"
+	"path/filepath"
+	"regexp"
+	"strings"
+	"testing"
+
+	"plcvec"
+	"plcvec/reference"
+	"plcvec/spec"
+)
+
+// The manual's TADD example (fx5-time-add-TADD.txt): 10:30:10 + 3:10:05 = 13:40:15, in D30..D32.
+const manualTADD = "fx5-time-add/TADD/manual-example/program"
+
+// manualAnswer answers that vector as the manual prints it, with one change applied.
+type manualAnswer struct {
+	change func(devices []plcvec.Device) []plcvec.Device
+}
+
+func (manualAnswer) Hello() plcvec.Hello {
+	return plcvec.Hello{Name: "manual", Instructions: []string{spec.InstrTadd}}
+}
+
+func (m manualAnswer) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
+	if req.ID != manualTADD {
+		return nil, plcvec.Skip("only the manual's example")
+	}
+	out := append([]plcvec.Device(nil), req.Devices...)
+	for i := range out {
+		switch out[i].Name {
+		case "D30":
+			out[i].Value = plcvec.Word(13)
+		case "D31":
+			out[i].Value = plcvec.Word(40)
+		case "D32":
+			out[i].Value = plcvec.Word(15)
+		}
+	}
+	if m.change != nil {
+		out = m.change(out)
+	}
+	return []plcvec.StepResult{{Devices: out}}, nil
+}
+
+func set(name string, v plcvec.Value) func([]plcvec.Device) []plcvec.Device {
+	return func(ds []plcvec.Device) []plcvec.Device {
+		for i := range ds {
+			if ds[i].Name == name {
+				ds[i].Value = v
+				return ds
+			}
+		}
+		return append(ds, plcvec.Device{Name: name, Value: v})
+	}
+}
+
+func judge(t *testing.T, impl plcvec.Implementation) plcvec.Verdict {
+	t.Helper()
+	report, err := plcvec.Verify(impl, plcvec.Options{Selection: plcvec.Selection{IDs: []string{manualTADD}}})
+	if err != nil {
+		t.Fatal(err)
+	}
+	if len(report.Verdicts) != 1 {
+		t.Fatalf("%d verdicts for one id", len(report.Verdicts))
+	}
+	return report.Verdicts[0]
+}
+
+func TestComparison(t *testing.T) {
+	if v := judge(t, manualAnswer{}); v.Status != plcvec.StatusPass {
+		t.Fatalf("the manual's own answer does not pass:\n%s", v.Text())
+	}
+	cases := []struct {
+		name   string
+		change func([]plcvec.Device) []plcvec.Device
+		want   string
+	}{
+		{"changed word", set("D31", plcvec.Word(41)), "step 0 D31: expected 40, got 41"},
+		{"bit reported as a word", set("SM700", plcvec.Word(0)), "step 0 SM700: expected false, got 0 (the step must leave it unchanged)"},
+		{"device that must stay unchanged", set("D10", plcvec.Word(0)), "step 0 D10: expected 10, got 0 (the step must leave it unchanged)"},
+		{"write outside the vector", set("D33", plcvec.Word(0)), "step 0 D33: expected <not in the vector>, got 0"},
+		{"device not reported", func(ds []plcvec.Device) []plcvec.Device { return ds[1:] }, "step 0 D10: expected 10, got <not reported>"},
+	}
+	for _, c := range cases {
+		t.Run(c.name, func(t *testing.T) {
+			v := judge(t, manualAnswer{change: c.change})
+			if v.Status != plcvec.StatusFail || len(v.Problems) != 1 || !strings.HasPrefix(v.Problems[0].String(), c.want) {
+				t.Errorf("want one problem %q, got %s:\n%s", c.want, v.Status, v.Text())
+			}
+			if !strings.Contains(v.Text(), "spec clauses: fx5-time-add#") {
+				t.Errorf("the report does not name the clauses:\n%s", v.Text())
+			}
+		})
+	}
+}
+
+// contactTamper runs the reference and then changes the contact result of step 0.
+type contactTamper struct {
+	plcvec.Implementation
+	result plcvec.Result
+}
+
+func (c contactTamper) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
+	steps, err := c.Implementation.Run(req)
+	if err == nil {
+		steps[0].Result = c.result
+	}
+	return steps, err
+}
+
+func TestContactResult(t *testing.T) {
+	ref, err := reference.New(nil)
+	if err != nil {
+		t.Fatal(err)
+	}
+	// "AND gives rlo_in AND the comparison": with rlo_in off the result is off.
+	id := "cp1e-time-compare/AND <=DT/logic/rlo-off/eq"
+	for _, c := range []struct {
+		result plcvec.Result
+		want   string
+	}{{plcvec.ResultOn, "step 0 result: expected false, got true"}, {plcvec.NoResult, "step 0 result: expected false, got <not reported>"}} {
+		report, err := plcvec.Verify(contactTamper{ref.Implementation(), c.result},
+			plcvec.Options{Selection: plcvec.Selection{IDs: []string{id}}})
+		if err != nil {
+			t.Fatal(err)
+		}
+		v := report.Verdicts[0]
+		if v.Status != plcvec.StatusFail || v.Problems[0].String() != c.want {
+			t.Errorf("want %q, got:\n%s", c.want, v.Text())
+		}
+	}
+}
+
+func TestShard(t *testing.T) {
+	// crc32 (IEEE) of the UTF-8 id, % N + 1, the rule of every plcvec runner; the values are
+	// Python's zlib.crc32 of the same ids.
+	for _, c := range []struct {
+		id      string
+		n, want int
+	}{{"123456789", 4, 3}, {"123456789", 7, 6}, {manualTADD, 4, 3}, {"cp1e-time-compare/AND <=DT/logic/rlo-off/eq", 7, 5}} {
+		if got := plcvec.ShardOf(c.id, c.n); got != c.want {
+			t.Errorf("ShardOf(%q, %d) = %d, want %d", c.id, c.n, got, c.want)
+		}
+	}
+	suite, err := plcvec.Default()
+	if err != nil {
+		t.Fatal(err)
+	}
+	total := 0
+	for k := 1; k <= 3; k++ {
+		vs, err := suite.Select(plcvec.Selection{Shard: plcvec.Shard{K: k, N: 3}})
+		if err != nil {
+			t.Fatal(err)
+		}
+		total += len(vs)
+	}
+	if total != len(suite.Vectors) {
+		t.Errorf("shards 1..3 of 3 hold %d vectors, the suite %d", total, len(suite.Vectors))
+	}
+	for _, bad := range []string{"0/3", "4/3", "x", "1/"} {
+		if _, err := plcvec.ParseShard(bad); err == nil {
+			t.Errorf("ParseShard(%q) accepted", bad)
+		}
+	}
+}
+
+func TestSelection(t *testing.T) {
+	suite, err := plcvec.Default()
+	if err != nil {
+		t.Fatal(err)
+	}
+	vs, err := suite.Select(plcvec.Selection{IDs: []string{"fx5-time-add/TADD*/manual-example/*"}})
+	if err != nil || len(vs) == 0 {
+		t.Fatalf("glob across '/' selected %d (%v)", len(vs), err)
+	}
+	for _, v := range vs {
+		if !strings.HasPrefix(v.ID, "fx5-time-add/TADD") || !strings.Contains(v.ID, "/manual-example/") {
+			t.Errorf("glob selected %s", v.ID)
+		}
+	}
+	vs, _ = suite.Select(plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}, Instructions: []string{spec.InstrTaddp}, Tags: []string{spec.TagPulse}})
+	for _, v := range vs {
+		if v.Instruction != spec.InstrTaddp {
+			t.Errorf("instruction filter let %s through", v.ID)
+		}
+	}
+	if len(vs) == 0 {
+		t.Error("no TADDP pulse vector selected")
+	}
+	for _, sel := range []plcvec.Selection{{Families: []string{"fx5-time-ad"}}, {Tags: []string{"no-such-tag"}}} {
+		if _, err := suite.Select(sel); err == nil {
+			t.Errorf("%+v: a misspelt name selected silently", sel)
+		}
+	}
+	// An empty selection never passes a gate.
+	if _, err := plcvec.Verify(manualAnswer{}, plcvec.Options{Selection: plcvec.Selection{IDs: []string{"nothing/*"}}}); err == nil ||
+		!strings.Contains(err.Error(), "selects no vector") {
+		t.Errorf("an empty selection was not refused: %v", err)
+	}
+}
+
+func TestDeclaredAlternatives(t *testing.T) {
+	bad := []map[string]string{{"NO-SUCH": "x"}, {spec.InterpTaddExact24: "carry-at-25"}}
+	for _, decl := range bad {
+		impl := declaring{decl}
+		if _, err := plcvec.Verify(impl, plcvec.Options{}); err == nil {
+			t.Errorf("declaration %v accepted", decl)
+		}
+	}
+}
+
+type declaring struct{ interps map[string]string }
+
+func (d declaring) Hello() plcvec.Hello { return plcvec.Hello{Name: "d", Interpretations: d.interps} }
+func (declaring) Run(*plcvec.Request) ([]plcvec.StepResult, error) {
+	return nil, plcvec.Skip("never runs")
+}
+
+func TestKnownFailures(t *testing.T) {
+	dir := t.TempDir()
+	path := filepath.Join(dir, "known.toml")
+	write := func(text string) {
+		if err := os.WriteFile(path, []byte(text), 0o644); err != nil {
+			t.Fatal(err)
+		}
+	}
+	opts := plcvec.Options{Selection: plcvec.Selection{IDs: []string{manualTADD}}, Expectations: path}
+	write("[[known-failure]]\nid = \"" + manualTADD + "\"\nreason = \"our D31 is off by one\"\n")
+	report, err := plcvec.Verify(manualAnswer{change: set("D31", plcvec.Word(41))}, opts)
+	if err != nil {
+		t.Fatal(err)
+	}
+	if v := report.Verdicts[0]; v.Status != plcvec.StatusXFail || !report.OK() {
+		t.Errorf("a listed failure is not xfail: %s", v.Text())
+	}
+	report, _ = plcvec.Verify(manualAnswer{}, opts)
+	if v := report.Verdicts[0]; v.Status != plcvec.StatusStale || report.OK() {
+		t.Errorf("a listed pass is not stale: %s", v.Text())
+	}
+	write("[[known-failure]]\nid = \"no/such/vector\"\nreason = \"gone\"\n")
+	report, _ = plcvec.Verify(manualAnswer{}, opts)
+	if report.OK() || report.Verdicts[len(report.Verdicts)-1].Status != plcvec.StatusStale {
+		t.Errorf("an unknown id is not stale: %+v", report.Verdicts)
+	}
+	for text, want := range map[string]string{
+		"[[known-failure]]\nid = \"x\"\n":                          "known.toml:1: x: every known failure needs a `reason`",
+		"[[known-failure]]\nid = \"x\"\nreason = \"r\"\nwhy = 1\n": "known.toml:1: unknown key \"why\"",
+		"[[known-failure]\n":                                       "not valid TOML: expected end of table array name",
+		"skip = [\"x\"]\n":                                         "known.toml:1: unknown key \"skip\"",
+		"[[known-failure]]\nid = \"x\"\nreason = \"r\"\n\n[[known-failure]]\nid = \"x\"\nreason = \"r\"\n": "known.toml:5: x is listed twice (first at line 1)",
+	} {
+		write(text)
+		_, err := plcvec.Verify(manualAnswer{}, opts)
+		if err == nil || !strings.Contains(err.Error(), want) {
+			t.Errorf("%q: want an error containing %q, got %v", text, want, err)
+		}
+	}
+}
+
+// TestLoadRefusesDamage: a damaged copy is refused by file, line and vector id; a 2.x schema
+// is refused rather than misread.
+func TestLoadRefusesDamage(t *testing.T) {
+	src := "vectors"
+	for _, c := range []struct {
+		name string
+		edit func(lines []string) []string
+		want string
+	}{
+		{"a vector without steps", func(ls []string) []string {
+			ls[2] = regexp.MustCompile(`"steps":\[.*\],"tags"`).ReplaceAllString(ls[2], `"steps":[],"tags"`)
+			return ls
+		}, "fx5-time-add.jsonl:3: vector fx5-time-add/"},
+		{"a bit written as 1", func(ls []string) []string {
+			ls[1] = strings.Replace(ls[1], `"SM700":false`, `"SM700":1.5`, 1)
+			return ls
+		}, "fx5-time-add.jsonl:2: vector fx5-time-add/"},
+		{"schema 2", func(ls []string) []string {
+			ls[0] = strings.Replace(ls[0], `"schema_version":"1.`, `"schema_version":"2.`, 1)
+			return ls
+		}, "schema_version 2."},
+	} {
+		t.Run(c.name, func(t *testing.T) {
+			dir := t.TempDir()
+			entries, _ := os.ReadDir(src)
+			for _, e := range entries {
+				data, _ := os.ReadFile(filepath.Join(src, e.Name()))
+				if e.Name() == "fx5-time-add.jsonl" {
+					data = []byte(strings.Join(c.edit(strings.Split(string(data), "\n")), "\n"))
+				}
+				if e.Name() == "index.json" { // an edited copy fails its hash first: drop the hashes
+					data = regexp.MustCompile(`"sha256": "[0-9a-f]+"`).ReplaceAll(data, []byte(`"sha256": ""`))
+				}
+				_ = os.WriteFile(filepath.Join(dir, e.Name()), data, 0o644)
+			}
+			_, err := plcvec.Load(dir)
+			if err == nil || !strings.Contains(err.Error(), c.want) {
+				t.Errorf("want an error containing %q, got %v", c.want, err)
+			}
+		})
+	}
+	// Untouched except for one byte, the index's hash names the damaged file.
+	dir := t.TempDir()
+	entries, _ := os.ReadDir(src)
+	for _, e := range entries {
+		data, _ := os.ReadFile(filepath.Join(src, e.Name()))
+		if e.Name() == "fc6a-hour-meter.jsonl" {
+			data = append(data, ' ')
+		}
+		_ = os.WriteFile(filepath.Join(dir, e.Name()), data, 0o644)
+	}
+	if _, err := plcvec.Load(dir); err == nil || !strings.Contains(err.Error(), "fc6a-hour-meter.jsonl: its sha256") {
+		t.Errorf("a damaged file was not named: %v", err)
+	}
+}
+
+// TestRepositoryFolder: PLCVEC_VECTORS may name the repository's vectors/ (manifest.json and
+// <family>.json); it holds the same vectors as the embedded copy.
+func TestRepositoryFolder(t *testing.T) {
+	dir := filepath.Join("..", "..", "vectors")
+	if _, err := os.Stat(filepath.Join(dir, "manifest.json")); err != nil {
+		t.Skip("no repository vectors/ beside this module")
+	}
+	repo, err := plcvec.Load(dir)
+	if err != nil {
+		t.Fatal(err)
+	}
+	emb, err := plcvec.Embedded()
+	if err != nil {
+		t.Fatal(err)
+	}
+	if len(repo.Vectors) != len(emb.Vectors) || repo.SpecSHA256 != emb.SpecSHA256 {
+		t.Errorf("repository %d vectors (%s), embedded %d (%s)", len(repo.Vectors), repo.SpecSHA256, len(emb.Vectors), emb.SpecSHA256)
+	}
+	if _, err := plcvec.Load(filepath.Join(dir, "no-such")); err == nil {
+		t.Error("a missing folder loaded")
+	}
+}
+
+// TestRunPatternSelectsID runs this test binary again with -run RunPattern(id): exactly that
+// vector's subtest runs, although its id holds a space, '<', '=' and '/'.
+func TestRunPatternSelectsID(t *testing.T) {
+	id := "cp1e-time-compare/AND <=DT/logic/rlo-off/eq"
+	if os.Getenv("PLCVEC_CHILD") == "1" {
+		t.Skip("the child run")
+	}
+	cmd := exec.Command(os.Args[0], "-test.run", plcvec.RunPattern("TestPlcvecReference", id), "-test.v")
+	cmd.Env = append(os.Environ(), "PLCVEC_CHILD=1")
+	out, err := cmd.CombinedOutput()
+	if err != nil {
+		t.Fatalf("%v\n%s", err, out)
+	}
+	ran := regexp.MustCompile(`--- PASS: TestPlcvecReference/(\S+)`).FindAllStringSubmatch(string(out), -1)
+	if len(ran) != 1 || ran[0][1] != plcvec.SubtestName(id) || plcvec.SubtestName(id) != "cp1e-time-compare/AND_<=DT/logic/rlo-off/eq" {
+		t.Errorf("-run %s ran %v:\n%s", plcvec.RunPattern("TestPlcvecReference", id), ran, out)
+	}
+}
+
+// TestPlcvecReference is plcvec.Run as an implementer writes it, on the reference.
+func TestPlcvecReference(t *testing.T) {
+	ref, err := reference.New(nil)
+	if err != nil {
+		t.Fatal(err)
+	}
+	plcvec.Run(t, ref.Implementation(), plcvec.Options{})
+}
