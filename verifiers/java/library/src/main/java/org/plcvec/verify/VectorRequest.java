@@ -26,6 +26,8 @@ public class VectorRequest {
     final int[] initial;          // Values encoding; ABSENT where initial.devices has no entry
     final boolean[] compared;     // false for scratch
     final int listed;             // initial.devices.size()
+    private final Family familyName;
+    private final Instruction instructionName;
 
     VectorRequest(String id, String family, String instruction, DeviceSizes sizes, Map<String, Operand> operands,
                   Set<String> scratch, List<Step> steps, Address[] slots, int[] initial, boolean[] compared, int listed) {
@@ -40,6 +42,8 @@ public class VectorRequest {
         this.initial = initial;
         this.compared = compared;
         this.listed = listed;
+        this.familyName = Family.byId(family);
+        this.instructionName = Instruction.byMnemonic(instruction);
     }
 
     VectorRequest(VectorRequest r) {
@@ -59,7 +63,7 @@ public class VectorRequest {
 
     /** The family, or null if this verifier's generated names do not know it (a newer suite). */
     public Family familyName() {
-        return Family.byId(family);
+        return familyName;
     }
 
     /** The instruction as the manual spells it ({@code LDTM<=}, {@code LD <=DT}, {@code TADDP}). */
@@ -69,7 +73,7 @@ public class VectorRequest {
 
     /** The instruction, or null if this verifier's generated names do not know it. */
     public Instruction instructionName() {
-        return Instruction.byMnemonic(instruction);
+        return instructionName;
     }
 
     /** {@code assumes.device_sizes}. */

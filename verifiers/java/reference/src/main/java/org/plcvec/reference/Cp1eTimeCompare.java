@@ -67,6 +67,8 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         }
     }
 
+    private static final Condition[] CONDITIONS = Condition.values();
+
     /** {@code AND <=DT} is (AND, <=). */
     record Mnemonic(Form form, Condition condition) {
         private static final Map<String, Mnemonic> CACHE = new ConcurrentHashMap<>();
@@ -163,16 +165,8 @@ public class Cp1eTimeCompare implements Emulator.Scan {
             any = true;
             int a = (mem.word(s1, f.offset()) >> f.shift()) & 0xFF;
             int b = (mem.word(s2, f.offset()) >> f.shift()) & 0xFF;
-            for (int raw : new int[] {a, b}) {
-                if (!isBcd(raw)) {
-                    if (settings.cp1eNonBcdError) {       // "Second (00 to 59, BCD)" (CP1E-NON-BCD)
-                        return error();
-                    }
-                } else if (bcd(raw) < f.min() || bcd(raw) > f.max()) {
-                    if (settings.cp1eOutOfRangeError) {   // (CP1E-OUT-OF-RANGE)
-                        return error();
-                    }
-                }
+            if (invalid(a, f) || invalid(b, f)) {
+                return error();
             }
             // "The time comparison instructions are limited to comparing 8-bit time values." For
             // valid BCD the byte order is the numeric order.
@@ -200,6 +194,15 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         return condition.holds(order);
     }
 
+    /** Whether a field's byte is an error under the alternatives followed. */
+    protected boolean invalid(int raw, Field f) {
+        if (!isBcd(raw)) {
+            return settings.cp1eNonBcdError;          // "Second (00 to 59, BCD)" (CP1E-NON-BCD)
+        }
+        int v = bcd(raw);
+        return (v < f.min() || v > f.max()) && settings.cp1eOutOfRangeError;   // (CP1E-OUT-OF-RANGE)
+    }
+
     protected Field[] fields() {
         return FIELDS;
     }
@@ -210,7 +213,7 @@ public class Cp1eTimeCompare implements Emulator.Scan {
 
     /** "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <, <=, >, >=)." */
     protected void reflectFlags(int order) {
-        for (Condition k : Condition.values()) {
+        for (Condition k : CONDITIONS) {
             mem.setBit(FLAGS[k.flag], k.holds(order));
         }
     }

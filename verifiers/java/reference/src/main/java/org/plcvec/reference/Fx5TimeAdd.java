@@ -75,7 +75,7 @@ public class Fx5TimeAdd implements Emulator.Scan {
         }
         int total = (a[0] + b[0]) * 3600 + (a[1] + b[1]) * 60 + (a[2] + b[2]);
         boolean carry = carries(total);
-        int result = Math.floorMod(total, DAY);
+        int result = wrap(total);
         mem.setWord(d, 0, result / 3600);
         mem.setWord(d, 1, result / 60 % 60);
         mem.setWord(d, 2, result % 60);
@@ -90,6 +90,11 @@ public class Fx5TimeAdd implements Emulator.Scan {
      */
     protected boolean carries(int total) {
         return settings.taddCarryAbove24 ? total > DAY : total >= DAY;
+    }
+
+    /** The sum as stored: "the result will be the sum minus 24:00:00". */
+    protected int wrap(int total) {
+        return Math.floorMod(total, DAY);
     }
 
     protected boolean valid(int[] hms) {
