@@ -17,3 +17,11 @@ started=$SECONDS
 echo "java: mvn verify in $((SECONDS - started)) s"
 
 python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
+# The same gate must reject a mutant served the same way (exit 1, not 0 and not 2).
+status=0
+python3 -m plcvec verify --adapter "verifiers/java/reference-adapter --mutant tadd-sm8022-not-written" \
+    --family fx5-time-add -q >/dev/null || status=$?
+if [ "$status" -ne 1 ]; then
+    echo "java: plcvec verify gave exit $status for the mutant tadd-sm8022-not-written (expected 1)" >&2
+    exit 1
+fi

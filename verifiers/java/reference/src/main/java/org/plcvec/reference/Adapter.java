@@ -23,7 +23,7 @@ public final class Adapter {
      * Parse {@code --choose ID=ALT} (repeatable) and serve; {@code variants} builds another
      * implementation from the choices (the mutants' adapter passes its own).
      */
-    public static int run(String[] args, java.util.function.Function<Choices, org.plcvec.verify.Implementation> variants) {
+    public static int run(String[] args, java.util.function.Function<Choices, ? extends org.plcvec.verify.Implementation> variants) {
         List<String> choose = new ArrayList<>();
         for (int i = 0; i < args.length; i++) {
             if (args[i].equals("--choose") && i + 1 < args.length) {
