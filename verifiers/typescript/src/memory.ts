@@ -21,6 +21,9 @@ function parse(address: string): readonly [string, number] | null {
   return p;
 }
 
+/** `D100` -> ["D100", "D101", ...], filled as they are asked for. */
+const following = new Map<string, string[]>();
+
 /** A device image: word devices hold 0..65535, bit devices true/false. */
 export class Memory {
   /** Device address -> value. A Map: every vector names other devices, and objects of ever-new shapes would make every access megamorphic. */
@@ -55,21 +58,30 @@ export class Memory {
     if (values !== undefined) for (const k in values) this.values.set(k, values[k]!);
   }
 
-  /** `D100`, 2 -> `D102`. */
+  /** `D100`, 2 -> `D102` (each name built once: a new string would be hashed afresh on every lookup). */
   static offset(base: string, offset: number): string {
-    const p = parse(base);
-    if (p === null) throw new Error(`${base} is not a numbered device`);
-    return `${p[0]}${p[1] + offset}`;
+    let names = following.get(base);
+    if (names === undefined) {
+      names = [base];
+      following.set(base, names);
+    }
+    let name = names[offset];
+    if (name === undefined) {
+      const p = parse(base);
+      if (p === null) throw new Error(`${base} is not a numbered device`);
+      name = names[offset] = `${p[0]}${p[1] + offset}`;
+    }
+    return name;
   }
 
   words(base: string, count: number): number[] {
     const out: number[] = [];
-    for (let i = 0; i < count; i++) out.push(this.word(i === 0 ? base : Memory.offset(base, i)));
+    for (let i = 0; i < count; i++) out.push(this.word(Memory.offset(base, i)));
     return out;
   }
 
   writeWords(base: string, words: readonly number[]): void {
-    words.forEach((w, i) => this.write(i === 0 ? base : Memory.offset(base, i), w));
+    for (let i = 0; i < words.length; i++) this.write(Memory.offset(base, i), words[i]!);
   }
 
   /** True when base .. base+count-1 all exist (a device type of unstated size is assumed to). */

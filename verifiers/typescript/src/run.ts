@@ -91,25 +91,26 @@ export function prepare(vector: Vector, choices: Readonly<Record<string, string>
 /** Run one prepared vector through `impl` and judge it (known failures not yet applied). */
 export function judge(p: Prepared, impl: Implementation): VectorResult {
   const { vector, expected } = p;
-  const verdict = (status: Status, problems: readonly Problem[], message?: string): VectorResult =>
-    message === undefined
-      ? { id: vector.id, status, problems, applied: expected.applied, clauses: vector.clauses }
-      : { id: vector.id, status, problems, message, applied: expected.applied, clauses: vector.clauses };
   if (impl.instructions !== undefined && !impl.instructions.includes(vector.instruction)) {
-    return verdict(SKIP, NONE, `${vector.instruction} is not implemented`);
+    return verdict(p, SKIP, NONE, `${vector.instruction} is not implemented`);
   }
   let outcome: RunOutcome;
   try {
     outcome = impl.run(p.request);
   } catch (err) {
-    return verdict(ERROR, NONE, `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}`);
+    return verdict(p, ERROR, NONE, `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}`);
   }
   if ("steps" in outcome) {
     const problems = compare(expected, outcome.steps);
-    return verdict(problems.length ? FAIL : PASS, problems);
+    return verdict(p, problems.length ? FAIL : PASS, problems);
   }
-  if ("skip" in outcome) return verdict(SKIP, NONE, outcome.skip);
-  return verdict(ERROR, NONE, outcome.error);
+  if ("skip" in outcome) return verdict(p, SKIP, NONE, outcome.skip);
+  return verdict(p, ERROR, NONE, outcome.error);
+}
+
+function verdict(p: Prepared, status: Status, problems: readonly Problem[], message?: string): VectorResult {
+  const result = { id: p.vector.id, status, problems, applied: p.expected.applied, clauses: p.vector.clauses };
+  return message === undefined ? result : { ...result, message };
 }
 
 const NONE: readonly Problem[] = Object.freeze([]);
