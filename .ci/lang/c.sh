@@ -18,6 +18,27 @@ if [ ${#need[@]} -gt 0 ]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
 fi
 
+# An emulator's own project uses the library the three ways README.md shows.
+start=$SECONDS
+consumer="$C/examples/consumer"
+out="$C/build-consumer"
+rm -rf "$out"
+cmake -S "$consumer" -B "$out/subdirectory" -G Ninja -DPLCVEC_HOW=subdirectory -DPLCVEC_SOURCE="$PWD" >/dev/null
+cmake --build "$out/subdirectory" -j 2 >/dev/null
+ctest --test-dir "$out/subdirectory" --output-on-failure
+cmake --install "$out/subdirectory" --prefix "$out/prefix" >/dev/null
+cmake -S "$consumer" -B "$out/package" -G Ninja -DPLCVEC_HOW=package -DCMAKE_PREFIX_PATH="$PWD/$out/prefix" >/dev/null
+cmake --build "$out/package" -j 2 >/dev/null
+ctest --test-dir "$out/package" --output-on-failure
+if git rev-parse --verify -q HEAD >/dev/null; then      # FetchContent clones the committed tree
+    cmake -S "$consumer" -B "$out/fetchcontent" -G Ninja -DPLCVEC_HOW=fetchcontent -DPLCVEC_SOURCE="$PWD" \
+        -DPLCVEC_GIT_TAG="$(git rev-parse HEAD)" >/dev/null
+    cmake --build "$out/fetchcontent" -j 2 >/dev/null
+    ctest --test-dir "$out/fetchcontent" --output-on-failure
+fi
+echo "c: add_subdirectory, install + find_package and FetchContent consumers in $((SECONDS - start)) s"
+
+
 start=$SECONDS
 cmake -S "$C" -B "$C/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$C/build" -j 2
@@ -30,6 +51,12 @@ cmake --build "$C/build-sanitize" -j 2
 ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
     ctest --test-dir "$C/build-sanitize" -j 2 --output-on-failure --timeout 600
 echo "c: sanitized build and tests in $((SECONDS - start)) s"
+
+# Shards agree with the Python runner's: the same ids in shard 2 of 3.
+diff <("$C/build/examples/tadd_emulator" --list --shard 2/3) \
+     <(python3 -c 'import sys; from plcvec_verify.suite import Suite, Selection
+for v in Selection(shard=(2, 3)).apply(Suite.load("vectors").vectors): print(v["id"])')
+echo "c: shard 2/3 holds the same vectors as the Python runner's"
 
 # The reference over the stdio protocol passes the Python gate; a mutant served the same way is
 # rejected (exit 1), so the gate is not passing by accident.

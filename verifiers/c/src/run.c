@@ -4,17 +4,23 @@
 
 #include "table.h"
 
-static void header(FILE *log, const plcvec_impl *impl, plcvec_judge *j, size_t selected)
+static void header(FILE *log, const plcvec_impl *impl, plcvec_judge *j, const plcvec_vector **list, size_t selected)
 {
+    uint32_t families = 0;
+    for (size_t i = 0; i < selected; i++)
+        families |= 1u << list[i]->family;
     fprintf(log, "plcvec %s (schema %s, spec %.12s): %zu of %zu vectors selected for %s\n", PLCVEC_SUITE_VERSION,
             PLCVEC_SCHEMA_VERSION, PLCVEC_SPEC_SHA256, selected, plcvec_count(), impl->name ? impl->name : "(unnamed)");
     fprintf(log, "alternatives followed:");
-    for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++) {
+    for (int i = 0, first = 1; i < PLCVEC_INTERPRETATION_COUNT; i++) {
+        if (!(plcvec_interpretations[i].families & families))
+            continue;
         int declared = 0;
         for (size_t c = 0; c < impl->n_choices; c++)
             declared |= impl->choices[c].interpretation == i;
-        fprintf(log, "%s %s=%s%s", i ? "," : "", plcvec_interpretations[i].id,
+        fprintf(log, "%s %s=%s%s", first ? "" : ",", plcvec_interpretations[i].id,
                 plcvec_interpretations[i].alternatives[plcvec_judge_alternative(j, i)], declared ? "" : " (default)");
+        first = 0;
     }
     fprintf(log, "\n");
 }
@@ -44,7 +50,7 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         free(list);
         return 2;
     }
-    header(log, impl, j, (size_t)n);
+    header(log, impl, j, list, (size_t)n);
     sum.selected = (size_t)n;
     for (long i = 0; i < n; i++) {
         plcvec_verdict vd = *plcvec_judge_vector(j, list[i]);

@@ -1,4 +1,5 @@
 /* The compiled-in suite: finding vectors and names, and choosing which vectors to run. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -105,6 +106,37 @@ int plcvec_alternative_named(int interpretation, const char *alternative)
         if (strcmp(info->alternatives[a], alternative) == 0)
             return a;
     return -1;
+}
+
+size_t plcvec_test_name(const plcvec_vector *v, char *buf, size_t size)
+{
+    size_t len = 0;
+    for (const unsigned char *p = (const unsigned char *)v->id; *p; p++) {
+        char piece[8];
+        unsigned char c = *p;
+        if ((c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'))
+            piece[0] = (char)c, piece[1] = '\0';
+        else if (c == '/')
+            strcpy(piece, "__");
+        else if (c == '<')
+            strcpy(piece, "LT");
+        else if (c == '>')
+            strcpy(piece, "GT");
+        else if (c == '=')
+            strcpy(piece, "EQ");
+        else if (c == '+')
+            strcpy(piece, "PLUS");
+        else if (c == '-' || c == ' ' || c == '.')
+            strcpy(piece, "_");
+        else
+            snprintf(piece, sizeof piece, "_x%02X", c);
+        for (const char *q = piece; *q; q++, len++)
+            if (len + 1 < size)
+                buf[len] = *q;
+    }
+    if (size)
+        buf[len < size ? len : size - 1] = '\0';
+    return len;
 }
 
 /* ---- selection ---------------------------------------------------------------------------- */

@@ -157,6 +157,12 @@ long plcvec_size_of(const plcvec_vector *v, const char *kind);  /* points, or -1
 int plcvec_interpretation_named(const char *id);
 int plcvec_alternative_named(int interpretation, const char *alternative);
 
+/* A test name for frameworks that allow only letters, digits and '_' (GoogleTest): the id with
+ * "/" as "__", "<" ">" "=" "+" as LT GT EQ PLUS, "-" " " "." as "_", anything else as _xHH.
+ * fx5-time-add/TADD/carry/below-wrap -> fx5_time_add__TADD__carry__below_wrap. Returns the
+ * length it needed (truncated to size). */
+size_t plcvec_test_name(const plcvec_vector *v, char *buf, size_t size);
+
 /* ---- selection ---------------------------------------------------------------------------- */
 
 /* Filters: OR within one list, AND between lists; an empty list does not filter. The lists hold
