@@ -63,12 +63,29 @@ func (r Result) String() string {
 	return "<not reported>"
 }
 
-// StepResult is the state after one step.
+// StepResult is the state after one step, in either of two forms:
+//
+//   - Devices alone: every device of the request (scratch words may be left out), plus any
+//     other device the step wrote, in any order;
+//   - Values, the value of every device of the request in the order of Request.Devices, with
+//     Devices listing only the devices outside the request that the step wrote (usually none).
+//     This is the fast form, which the Emulator helper gives.
 type StepResult struct {
-	Result Result
-	// Devices: every device of the request (scratch words may be left out), plus any other
-	// device the step wrote. Any order; the request's order is the fastest to compare.
+	Result  Result
+	Values  []Value
 	Devices []Device
+}
+
+// Image is the whole device image of a step result of req, as Devices alone.
+func (s StepResult) Image(req *Request) []Device {
+	if s.Values == nil {
+		return s.Devices
+	}
+	out := make([]Device, 0, len(s.Values)+len(s.Devices))
+	for i, v := range s.Values {
+		out = append(out, Device{req.Devices[i].Name, v})
+	}
+	return append(out, s.Devices...)
 }
 
 // Request is one vector without its expectations: what an implementation needs to run it.
@@ -81,7 +98,64 @@ type Request struct {
 	Operands    map[string]Operand // s1, s2, d, S1, D1, C, ...
 	Scratch     []string           // work-area words: start at 0, never compared
 	Steps       []Inputs
-	addrs       []Addr // parallel to Devices
+	addrs       []Addr         // parallel to Devices
+	operands    []namedOperand // Operands by name, their addresses parsed once
+	sizes       []kindSize     // DeviceSizes as a list: a few entries, read on every range check
+}
+
+type kindSize struct {
+	kind string
+	size int
+}
+
+// DeviceSize is the number of points of a device type the vector assumes, and whether it says.
+func (r *Request) DeviceSize(kind string) (int, bool) {
+	if r.sizes == nil && len(r.DeviceSizes) > 0 {
+		r.prepareSizes()
+	}
+	for _, s := range r.sizes {
+		if s.kind == kind {
+			return s.size, true
+		}
+	}
+	return 0, false
+}
+
+func (r *Request) prepareSizes() {
+	r.sizes = make([]kindSize, 0, len(r.DeviceSizes))
+	for k, n := range r.DeviceSizes {
+		r.sizes = append(r.sizes, kindSize{k, n})
+	}
+}
+
+type namedOperand struct {
+	name string
+	op   Operand
+}
+
+// Operand is the named operand (s1, d, C, ...) and whether the vector has it. It is what
+// Operands[name] holds, with the device address parsed once for the whole run.
+func (r *Request) Operand(name string) (Operand, bool) {
+	if r.operands == nil {
+		r.prepareOperands()
+	}
+	for i := range r.operands {
+		if r.operands[i].name == name {
+			return r.operands[i].op, true
+		}
+	}
+	return Operand{}, false
+}
+
+func (r *Request) prepareOperands() {
+	r.operands = make([]namedOperand, 0, len(r.Operands))
+	for name, op := range r.Operands {
+		if op.Device != "" {
+			a := ParseAddr(op.Device)
+			op.addr = &a
+		}
+		r.operands = append(r.operands, namedOperand{name, op})
+	}
 }
 
 // NewRequest builds the request of a vector (or of a run message received over stdio).
@@ -98,6 +172,8 @@ func NewRequest(id, family, instruction string, sizes map[string]int, devices ma
 	for i, d := range r.Devices {
 		r.addrs[i] = ParseAddr(d.Name)
 	}
+	r.prepareOperands()
+	r.prepareSizes()
 	return r
 }
 

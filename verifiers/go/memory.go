@@ -1,5 +1,7 @@
 package plcvec
 
+import "sync"
+
 // Memory is a vector's device image for the Emulator helper: the devices the vector lists,
 // each by name and address, and the writes to any device it does not list (which the runner
 // reports: an instruction must not write outside the vector).
@@ -8,13 +10,26 @@ package plcvec
 // implementation, and an instruction that depends on it is wrong whatever it reads.
 type Memory struct {
 	req     *Request
-	vals    []Value  // parallel to req.Devices
-	outside []Device // devices written that the vector does not list, in the order first written
+	vals    []Value   // parallel to req.Devices
+	small   [16]Value // vals' storage for a vector of up to 16 devices: one allocation, not two
+	outside []Device  // devices written that the vector does not list, in the order first written
 }
 
 // NewMemory is the initial device image of req.
 func NewMemory(req *Request) *Memory {
-	m := &Memory{req: req, vals: make([]Value, len(req.Devices))}
+	m := &Memory{}
+	m.reset(req)
+	return m
+}
+
+// reset makes m the initial device image of req.
+func (m *Memory) reset(req *Request) {
+	m.req, m.outside = req, m.outside[:0]
+	if len(req.Devices) <= len(m.small) {
+		m.vals = m.small[:len(req.Devices)]
+	} else {
+		m.vals = make([]Value, len(req.Devices))
+	}
 	for i, d := range req.Devices {
 		m.vals[i] = d.Value
 	}
@@ -24,8 +39,11 @@ func NewMemory(req *Request) *Memory {
 			req.addrs[i] = ParseAddr(d.Name)
 		}
 	}
-	return m
 }
+
+// memories recycles the Memory of one vector for the next: Emulate's Memory lives only
+// while its vector runs (a CPU must not keep it).
+var memories = sync.Pool{New: func() any { return new(Memory) }}
 
 func (m *Memory) index(a Addr) int {
 	addrs := m.req.addrs
@@ -110,7 +128,7 @@ func (m *Memory) SetBit(a Addr, b bool) { m.Set(a, Bit(b)) }
 // InRange reports whether a .. a+words-1 all exist on the CPU the vector assumes
 // (assumes.device_sizes). A device type whose size the vector does not state is taken to exist.
 func (m *Memory) InRange(a Addr, words int) bool {
-	size, ok := m.req.DeviceSizes[a.Kind]
+	size, ok := m.req.DeviceSize(a.Kind)
 	if !ok {
 		return true
 	}
@@ -119,7 +137,7 @@ func (m *Memory) InRange(a Addr, words int) bool {
 
 // Operand is the word value of a one-word operand: its constant (K/H) or its device's word.
 func (m *Memory) Operand(name string) uint16 {
-	op := m.req.Operands[name]
+	op, _ := m.req.Operand(name)
 	if op.Constant != nil {
 		return uint16(*op.Constant)
 	}
@@ -136,14 +154,6 @@ func (m *Memory) apply(set map[string]Value) {
 	}
 }
 
-// snapshot appends the whole image to dst: the request's devices in order, then the others.
-func (m *Memory) snapshot(dst []Device) []Device {
-	for i, d := range m.req.Devices {
-		dst = append(dst, Device{d.Name, m.vals[i]})
-	}
-	return append(dst, m.outside...)
-}
-
 // Emulator is the thin helper's interface, for an emulator that only wants to "execute this
 // instruction on my memory": Emulate turns it into an Implementation that sets up each
 // vector's memory, applies each step's `set`, and records the image after every step.
@@ -157,7 +167,8 @@ type Emulator interface {
 // CPU executes one vector's instruction, once per step.
 type CPU interface {
 	// Execute runs the instruction once (one scan) with the step's inputs on mem and returns
-	// the contact result, or NoResult for an instruction that is not a contact.
+	// the contact result, or NoResult for an instruction that is not a contact. mem is the
+	// vector's memory only until the vector ends: a CPU must not keep it.
 	Execute(mem *Memory, step *Inputs) (Result, error)
 }
 
@@ -173,10 +184,12 @@ func (em emulated) Run(req *Request) ([]StepResult, error) {
 	if err != nil {
 		return nil, err
 	}
-	mem := NewMemory(req)
+	mem := memories.Get().(*Memory)
+	mem.reset(req)
+	defer memories.Put(mem)
 	n := len(req.Devices)
-	// One allocation for every step's image; an instruction rarely writes outside the vector.
-	images := make([]Device, 0, n*len(req.Steps))
+	// Every step's values in one allocation without pointers: the collector never scans it.
+	values := make([]Value, n*len(req.Steps))
 	out := make([]StepResult, len(req.Steps))
 	for i := range req.Steps {
 		step := &req.Steps[i]
@@ -187,14 +200,12 @@ func (em emulated) Run(req *Request) ([]StepResult, error) {
 		if err != nil {
 			return nil, err
 		}
-		start := len(images)
+		vals := values[i*n : (i+1)*n : (i+1)*n]
+		copy(vals, mem.vals)
+		out[i] = StepResult{Result: r, Values: vals}
 		if len(mem.outside) > 0 {
-			images = mem.snapshot(nil)
-			start = 0
-		} else {
-			images = mem.snapshot(images)
+			out[i].Devices = append([]Device(nil), mem.outside...)
 		}
-		out[i] = StepResult{Result: r, Devices: images[start:len(images):len(images)]}
 	}
 	return out, nil
 }

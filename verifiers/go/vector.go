@@ -38,13 +38,19 @@ type Initial struct {
 type Operand struct {
 	Device   string `json:"device,omitempty"`
 	Constant *int   `json:"constant,omitempty"`
+	addr     *Addr  // Device parsed, when the operand comes from Request.Operand
 }
 
 // IsConstant reports whether the operand is a K/H constant rather than a device.
 func (o Operand) IsConstant() bool { return o.Constant != nil }
 
 // Addr is the operand's device address (its first word for a multi-word operand).
-func (o Operand) Addr() Addr { return ParseAddr(o.Device) }
+func (o Operand) Addr() Addr {
+	if o.addr != nil {
+		return *o.addr
+	}
+	return ParseAddr(o.Device)
+}
 
 // Inputs are the inputs of one execution (one scan); which ones a step holds depends on the
 // family (CONTRACT.md, "Executing"). Absent inputs are zero.

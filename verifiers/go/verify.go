@@ -128,7 +128,7 @@ func (c *Case) Judge(impl Implementation) (verdict Verdict) {
 		}
 		return verdict
 	}
-	if verdict.Problems = c.expect.compare(steps); verdict.Problems != nil {
+	if verdict.Problems = c.expect.compare(c.Request, steps); verdict.Problems != nil {
 		verdict.Status = StatusFail
 	} else {
 		verdict.Status = StatusPass

@@ -64,18 +64,12 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 		return nil, fmt.Errorf("not a CP1E time comparison: %s", req.Instruction)
 	}
 	c.form, c.condition = form, strings.TrimSuffix(symbol, "DT")
-	s1, err := operand(req, "S1")
-	if err != nil {
-		return nil, err
-	}
-	s2, err := operand(req, "S2")
-	if err != nil {
+	if err := deviceOperands(req, []string{"S1", "S2"}, &c.s1, &c.s2); err != nil {
 		return nil, err
 	}
 	if c.c, err = operand(req, "C"); err != nil {
 		return nil, err
 	}
-	c.s1, c.s2 = s1.Addr(), s2.Addr()
 	return c, nil
 }
 

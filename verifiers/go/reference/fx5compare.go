@@ -54,27 +54,22 @@ func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.
 	}
 	c := &base
 	c.fields, c.date = fields, kind == "DT"
-	for _, form := range []string{"LD", "AND", "OR"} {
-		if strings.HasPrefix(req.Instruction, form+kind) {
-			c.form, c.condition = form, req.Instruction[len(form+kind):]
+	for _, form := range [3]string{"LD", "AND", "OR"} {
+		rest, ok := strings.CutPrefix(req.Instruction, form)
+		if ok && strings.HasPrefix(rest, kind) {
+			c.form, c.condition = form, rest[len(kind):]
 			break
 		}
 	}
 	if c.form == "" || !knownCondition(c.condition) {
 		return nil, fmt.Errorf("not an FX5 %s comparison: %s", kind, req.Instruction)
 	}
-	s1, err := operand(req, "s1")
-	if err != nil {
-		return nil, err
-	}
-	s2, err := operand(req, "s2")
-	if err != nil {
+	if err := deviceOperands(req, []string{"s1", "s2"}, &c.s1, &c.s2); err != nil {
 		return nil, err
 	}
 	if c.s3, err = operand(req, "s3"); err != nil {
 		return nil, err
 	}
-	c.s1, c.s2 = s1.Addr(), s2.Addr()
 	return c, nil
 }
 

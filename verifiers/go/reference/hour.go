@@ -38,18 +38,12 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if h.s1, err = operand(req, "S1"); err != nil {
 		return nil, err
 	}
-	for _, o := range []struct {
-		name string
-		addr *plcvec.Addr
-	}{{"D1", &h.d1}, {"D2", &h.d2}, {"D3", &h.d3}} {
-		op, err := operand(req, o.name)
-		if err != nil {
-			if o.name == "D3" { // the work area is the CPU's own: a vector need not name it
-				continue
-			}
-			return nil, err
-		}
-		*o.addr = op.Addr()
+	if err := deviceOperands(req, []string{"D1", "D2"}, &h.d1, &h.d2); err != nil {
+		return nil, err
+	}
+	// D3, the work area, is the CPU's own: a vector need not name it.
+	if d3, ok := req.Operand("D3"); ok {
+		h.d3 = d3.Addr()
 	}
 	return h, nil
 }

@@ -134,11 +134,23 @@ func (r *Reference) choice(id string, known ...string) (string, error) {
 
 // operand is a named operand of the request, or an error naming the vector.
 func operand(req *plcvec.Request, name string) (plcvec.Operand, error) {
-	op, ok := req.Operands[name]
+	op, ok := req.Operand(name)
 	if !ok {
 		return op, fmt.Errorf("%s: no operand %s", req.Instruction, name)
 	}
 	return op, nil
+}
+
+// deviceOperands sets addrs[i] to the device address of the operand names[i].
+func deviceOperands(req *plcvec.Request, names []string, addrs ...*plcvec.Addr) error {
+	for i, name := range names {
+		op, err := operand(req, name)
+		if err != nil {
+			return err
+		}
+		*addrs[i] = op.Addr()
+	}
+	return nil
 }
 
 // signed16 is a word read as "16-bit signed binary".

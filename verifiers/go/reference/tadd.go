@@ -48,15 +48,8 @@ func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	default:
 		return nil, fmt.Errorf("not TADD/TADDP: %s", req.Instruction)
 	}
-	for _, o := range []struct {
-		name string
-		addr *plcvec.Addr
-	}{{"s1", &t.s1}, {"s2", &t.s2}, {"d", &t.d}} {
-		op, err := operand(req, o.name)
-		if err != nil {
-			return nil, err
-		}
-		*o.addr = op.Addr()
+	if err := deviceOperands(req, []string{"s1", "s2", "d"}, &t.s1, &t.s2, &t.d); err != nil {
+		return nil, err
 	}
 	return t, nil
 }

@@ -208,8 +208,9 @@ func run(impl plcvec.Implementation, raw json.RawMessage) (res result) {
 			res.Steps, res.Error = nil, fmt.Sprintf("the implementation panicked: %v", p)
 		}
 	}()
-	steps, err := impl.Run(plcvec.NewRequest(req.ID, req.Family, req.Instruction, req.Assumes.DeviceSizes,
-		req.Initial.Devices, req.Initial.Operands, req.Initial.Scratch, req.Steps))
+	request := plcvec.NewRequest(req.ID, req.Family, req.Instruction, req.Assumes.DeviceSizes,
+		req.Initial.Devices, req.Initial.Operands, req.Initial.Scratch, req.Steps)
+	steps, err := impl.Run(request)
 	if err != nil {
 		if reason, ok := plcvec.IsSkip(err); ok {
 			res.Skip = reason
@@ -220,8 +221,9 @@ func run(impl plcvec.Implementation, raw json.RawMessage) (res result) {
 	}
 	res.Steps = make([]stepOut, len(steps))
 	for i, st := range steps {
-		devices := make(map[string]plcvec.Value, len(st.Devices))
-		for _, d := range st.Devices {
+		image := st.Image(request)
+		devices := make(map[string]plcvec.Value, len(image))
+		for _, d := range image {
 			devices[d.Name] = d.Value
 		}
 		res.Steps[i].Devices = devices

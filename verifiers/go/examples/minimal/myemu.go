@@ -15,7 +15,10 @@ func (Emulator) Hello() plcvec.Hello {
 }
 
 func (Emulator) NewCPU(req *plcvec.Request) (plcvec.CPU, error) {
-	return &cpu{s1: req.Operands["s1"].Addr(), s2: req.Operands["s2"].Addr(), d: req.Operands["d"].Addr()}, nil
+	s1, _ := req.Operand("s1")
+	s2, _ := req.Operand("s2")
+	d, _ := req.Operand("d")
+	return &cpu{s1: s1.Addr(), s2: s2.Addr(), d: d.Addr()}, nil
 }
 
 type cpu struct{ s1, s2, d plcvec.Addr }
