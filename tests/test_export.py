@@ -39,6 +39,12 @@ def test_identifier_styles():
         names.identifier_words("--")
 
 
+def test_digest_depends_on_the_content_alone():
+    assert names.digest("a|b") == names.digest("a|b") != names.digest("a|c")
+    assert len(names.digest("x")) == 8 and len(names.digest("x", 12)) == 12
+    assert names.digest("abc") == "ba7816bf"          # the first 8 hex digits of SHA-256("abc")
+
+
 def test_every_exported_name_is_distinct_in_every_style(repo):
     """Two spec names that collapse to one identifier would make a generated enum fail to compile."""
     model = load_model(repo / "vectors")

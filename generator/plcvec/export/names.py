@@ -49,3 +49,13 @@ def _words(value):
 def _safe(ident: str) -> str:
     # An identifier cannot start with a digit in any of the five languages.
     return f"_{ident}" if ident[:1].isdigit() else ident
+
+
+def digest(value, length: int = 8) -> str:
+    """A short name that depends only on the content (`digest` filter): a table shared by many
+    vectors (a list of clauses, a set of device sizes) named this way keeps its name when vectors
+    are added or removed, so an export changes only the lines of what changed."""
+    import hashlib
+
+    text = value if isinstance(value, str) else repr(value)
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()[:length]

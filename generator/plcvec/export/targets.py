@@ -63,7 +63,7 @@ def _environment(folder: Path) -> jinja2.Environment:
         keep_trailing_newline=True, trim_blocks=True, lstrip_blocks=True, autoescape=False)
     env.filters.update(literals.FILTERS)
     env.filters.update(upper_snake=names.upper_snake, lower_snake=names.lower_snake,
-                       pascal=names.pascal, camel=names.camel)
+                       pascal=names.pascal, camel=names.camel, digest=names.digest)
     return env
 
 
