@@ -1,0 +1,154 @@
+//! What a vector expects of an implementation that follows given interpretation alternatives.
+//!
+//! A vector stores, per step, only the devices that changed and the full state at the end. The
+//! full expected state after every step is worked out here once (slot-aligned with the vector's
+//! devices), and checked against the vector's own `final`, so an inconsistent file is refused
+//! rather than trusted.
+
+use std::collections::BTreeMap;
+
+use crate::choices::Choices;
+use crate::error::{Error, Result};
+use crate::value::Value;
+use crate::vector::{Expectation, Vector};
+use crate::Suite;
+
+/// The expectation of one vector under one set of alternatives.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Expected {
+    /// Per step: the contact result, for contact instructions.
+    pub results: Vec<Option<bool>>,
+    /// Per step: every slot's value after the step (scratch slots hold their initial value and
+    /// are never compared).
+    pub states: Vec<Vec<Value>>,
+    /// Per step: every slot's value before the execution (after `set`), for the messages.
+    pub befores: Vec<Vec<Value>>,
+    /// The interpretations the vector depends on, with the alternative it is judged by.
+    pub choices: Vec<(String, String)>,
+    /// The outcome category under these alternatives (`value`, `error`, `implementation-defined`).
+    pub category: String,
+}
+
+impl Expected {
+    /// The expectation of `vector` for an implementation declaring `choices` (others: `defaults`).
+    pub fn of(vector: &Vector, choices: &Choices, defaults: &BTreeMap<&str, &str>) -> Result<Expected> {
+        let e = vector.expectations.as_ref().ok_or_else(|| {
+            Error::new(format!("vector {}: has no expectations (a request, not a suite vector)", vector.id()))
+        })?;
+        let mut applied = Vec::with_capacity(e.touched.len());
+        let mut all_default = true;
+        for i in &e.touched {
+            let default = defaults.get(i.as_str()).copied().unwrap_or("");
+            let alt = choices.declared(i).unwrap_or(default);
+            all_default &= alt == default;
+            applied.push((i.clone(), alt.to_owned()));
+        }
+        let chosen: &Expectation = if all_default {
+            &e.own
+        } else {
+            e.alternatives
+                .iter()
+                .find(|alt| applied.iter().all(|(i, a)| alt.choices.iter().any(|(ci, ca)| ci == i && ca == a)))
+                .ok_or_else(|| {
+                    let list: Vec<String> = applied.iter().map(|(i, a)| format!("{i}={a}")).collect();
+                    Error::new(format!(
+                        "vector {}: no expectation for {} (the vector file lists no such alternative)",
+                        vector.id(),
+                        list.join(", ")
+                    ))
+                })?
+        };
+        let mut state = vector.initial().to_vec();
+        let mut states = Vec::with_capacity(chosen.steps.len());
+        let mut befores = Vec::with_capacity(chosen.steps.len());
+        let mut results = Vec::with_capacity(chosen.steps.len());
+        for (step, expect) in vector.steps().iter().zip(&chosen.steps) {
+            for &(slot, v) in step.set() {
+                state[slot] = v;
+            }
+            befores.push(state.clone());
+            for &(slot, v) in &expect.devices {
+                state[slot] = v;
+            }
+            states.push(state.clone());
+            results.push(expect.result);
+        }
+        let last = states.last().expect("a vector has at least one step");
+        let scratch = vector.scratch();
+        let listed = vector.devices().iter().zip(last).zip(scratch).filter(|(_, &s)| !s);
+        let consistent = listed.clone().count() == chosen.final_devices.len()
+            && listed.clone().all(|((a, v), _)| chosen.final_devices.get(a.name()) == Some(v));
+        if !consistent {
+            return Err(Error::new(format!(
+                "vector {}: the per-step changes do not add up to `final` (the vector file is inconsistent; regenerate it)",
+                vector.id()
+            )));
+        }
+        Ok(Expected { results, states, befores, choices: applied, category: chosen.category.clone() })
+    }
+}
+
+/// The expectations of the vectors of one run, worked out once: repeated runs (the benchmark,
+/// one test per vector) do not pay for them again.
+#[derive(Clone, Debug)]
+pub struct Plan<'s> {
+    vectors: Vec<&'s Vector>,
+    expected: Vec<Expected>,
+}
+
+impl<'s> Plan<'s> {
+    /// The expectations of `vectors` (from `suite`) under `choices`, checked against the suite's
+    /// interpretations first: an unknown interpretation or alternative is refused.
+    pub fn new(suite: &'s Suite, vectors: Vec<&'s Vector>, choices: &Choices) -> Result<Plan<'s>> {
+        check_choices(suite, choices)?;
+        let defaults = suite.defaults();
+        let expected = vectors.iter().map(|v| Expected::of(v, choices, &defaults)).collect::<Result<Vec<_>>>()?;
+        Ok(Plan { vectors, expected })
+    }
+
+    /// The vectors, in run order.
+    pub fn vectors(&self) -> &[&'s Vector] {
+        &self.vectors
+    }
+
+    /// Each vector with its expectation.
+    pub fn iter(&self) -> impl Iterator<Item = (&'s Vector, &Expected)> {
+        self.vectors.iter().copied().zip(&self.expected)
+    }
+
+    /// The `index`th vector with its expectation.
+    pub fn get(&self, index: usize) -> Option<(&'s Vector, &Expected)> {
+        Some((*self.vectors.get(index)?, &self.expected[index]))
+    }
+
+    /// How many vectors.
+    pub fn len(&self) -> usize {
+        self.vectors.len()
+    }
+
+    /// Whether the plan holds no vector.
+    pub fn is_empty(&self) -> bool {
+        self.vectors.is_empty()
+    }
+}
+
+/// Refuse a declaration the suite cannot judge by: an unknown interpretation or alternative.
+pub fn check_choices(suite: &Suite, choices: &Choices) -> Result<()> {
+    let known = suite.interpretations()?;
+    for (i, a) in choices.iter() {
+        let Some((info, _)) = known.get(i) else {
+            let names: Vec<&str> = known.keys().copied().collect();
+            return Err(Error::new(format!(
+                "the implementation declares interpretation {i:?}, which no vector file defines (known: {})",
+                names.join(", ")
+            )));
+        };
+        if !info.alternatives.iter().any(|x| x == a) {
+            return Err(Error::new(format!(
+                "the implementation declares {i}={a}, but {i} has the alternatives {}",
+                info.alternatives.join(", ")
+            )));
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,54 @@
+//! # plcvec: conformance test vectors for PLC clock and calendar instructions
+//!
+//! The golden vectors travel inside this crate. Implement [`Implementation`] (the contract:
+//! a vector's initial state and steps in, the device image after each step out) or the thinner
+//! [`Execute`] ("execute this instruction on my memory", wrapped in [`OnMemory`]), and run every
+//! vector as its own test under `cargo test` with [`harness::run`]:
+//!
+//! ```no_run
+//! // tests/plcvec.rs, with `[[test]] name = "plcvec"`, `harness = false` in Cargo.toml
+//! fn main() -> std::process::ExitCode {
+//!     plcvec::harness::run(|| plcvec::OnMemory(plcvec::reference::Reference::new()))
+//! }
+//! ```
+//!
+//! What the vectors mean and how they are judged is the project's `verifiers/CONTRACT.md`;
+//! the spec's names are generated into [`names`]; `PLCVEC_VECTORS` points at another copy.
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod choices;
+mod compare;
+mod error;
+mod expect;
+// Rendered by `plcvec export --lang rust` (its folder holds nothing else; not formatted by hand).
+#[rustfmt::skip]
+mod generated {
+    pub mod embedded;
+    pub mod names;
+}
+pub mod harness;
+mod implementation;
+mod known;
+mod memory;
+pub mod reference;
+mod runner;
+mod select;
+pub mod serve;
+mod suite;
+mod value;
+mod vector;
+
+pub use choices::{Alternative, Choices};
+pub use compare::{describe, judge, Field, Problem, Status, Verdict};
+pub use error::{Error, Result};
+pub use expect::{Expected, Plan};
+pub use generated::names;
+pub use implementation::{Execute, Implementation, OnMemory, Refusal, ReportedStep, Steps};
+pub use known::{KnownFailure, KnownFailures};
+pub use memory::Memory;
+pub use runner::{judge_plan, run, Followed, Report};
+pub use select::{shard_of, Selection};
+pub use suite::{FamilyInfo, InterpretationInfo, Suite, SCHEMA_MAJOR, VECTORS_ENV};
+pub use value::{Address, Value};
+pub use vector::{Clock, Operand, Step, Vector};

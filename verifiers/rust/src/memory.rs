@@ -1,0 +1,176 @@
+//! A device image for one vector: the "execute on my memory" side of the crate.
+//!
+//! An emulator that only wants to implement "execute this instruction" gets the vector's devices
+//! as a [`Memory`], reads and writes words and bits by address, and leaves the stepping, the
+//! reporting and the comparison to [`OnMemory`](crate::OnMemory). A write to a device the vector
+//! does not list is kept apart, so the runner can report it (the contract forbids it).
+
+use crate::value::{Address, Value};
+use crate::vector::{Step, Vector};
+
+/// The devices of one vector, slot-aligned with [`Vector::devices`], plus any device written
+/// outside the vector.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Memory<'v> {
+    vector: &'v Vector,
+    values: Vec<Value>,
+    outside: Vec<(String, Value)>,
+}
+
+impl<'v> Memory<'v> {
+    /// The vector's initial devices.
+    pub fn new(vector: &'v Vector) -> Memory<'v> {
+        Memory { vector, values: vector.initial().to_vec(), outside: Vec::new() }
+    }
+
+    /// The vector this image belongs to.
+    pub fn vector(&self) -> &'v Vector {
+        self.vector
+    }
+
+    /// Every listed device's value, slot by slot.
+    pub fn values(&self) -> &[Value] {
+        &self.values
+    }
+
+    /// Devices written that the vector does not list (empty for a conforming implementation).
+    pub fn outside(&self) -> &[(String, Value)] {
+        &self.outside
+    }
+
+    /// Apply a step's `set` (values written by the outside world before the execution).
+    pub fn apply_set(&mut self, step: &Step) {
+        for &(slot, v) in step.set() {
+            self.values[slot] = v;
+        }
+    }
+
+    fn slot_of(&self, kind: &str, number: u32) -> Option<usize> {
+        self.vector.devices().iter().position(|a| a.is(kind, number))
+    }
+
+    /// The device `base` + `offset` (D100 + 2 is D102), if it holds a value. A device without a
+    /// number is found by name at offset 0.
+    pub fn get_at(&self, base: &Address, offset: u32) -> Option<Value> {
+        match base.number() {
+            Some(n) => {
+                let number = n.checked_add(offset)?;
+                match self.slot_of(base.kind(), number) {
+                    Some(i) => Some(self.values[i]),
+                    None => self.outside_get(&format!("{}{number}", base.kind())),
+                }
+            }
+            None if offset == 0 => self.get(base.name()),
+            None => None,
+        }
+    }
+
+    /// A device by name, if it holds a value.
+    pub fn get(&self, name: &str) -> Option<Value> {
+        match self.vector.slot(name) {
+            Some(i) => Some(self.values[i]),
+            None => self.outside_get(name),
+        }
+    }
+
+    fn outside_get(&self, name: &str) -> Option<Value> {
+        self.outside.iter().find(|(n, _)| n == name).map(|&(_, v)| v)
+    }
+
+    /// Write a device by name.
+    pub fn set(&mut self, name: &str, value: Value) {
+        match self.vector.slot(name) {
+            Some(i) => self.values[i] = value,
+            None => self.set_outside(name.to_owned(), value),
+        }
+    }
+
+    fn set_outside(&mut self, name: String, value: Value) {
+        match self.outside.iter_mut().find(|(n, _)| *n == name) {
+            Some(entry) => entry.1 = value,
+            None => self.outside.push((name, value)),
+        }
+    }
+
+    /// Write the device `base` + `offset`.
+    pub fn set_at(&mut self, base: &Address, offset: u32, value: Value) {
+        match base.number() {
+            Some(n) => {
+                let number = n.saturating_add(offset);
+                match self.slot_of(base.kind(), number) {
+                    Some(i) => self.values[i] = value,
+                    None => self.set_outside(format!("{}{number}", base.kind()), value),
+                }
+            }
+            None => self.set(base.name(), value),
+        }
+    }
+
+    /// The word at `base` + `offset`. A device the vector does not list reads as 0 (the contract
+    /// leaves it to the implementation); a bit reads as 0 or 1.
+    pub fn word(&self, base: &Address, offset: u32) -> u16 {
+        match self.get_at(base, offset) {
+            Some(Value::Word(w)) => w,
+            Some(Value::Bit(b)) => u16::from(b),
+            None => 0,
+        }
+    }
+
+    /// Write the word at `base` + `offset`.
+    pub fn set_word(&mut self, base: &Address, offset: u32, word: u16) {
+        self.set_at(base, offset, Value::Word(word));
+    }
+
+    /// The bit `name` (an unlisted bit reads as off; a word as "not zero").
+    pub fn bit(&self, name: &str) -> bool {
+        match self.get(name) {
+            Some(Value::Bit(b)) => b,
+            Some(Value::Word(w)) => w != 0,
+            None => false,
+        }
+    }
+
+    /// Write the bit `name`.
+    pub fn set_bit(&mut self, name: &str, on: bool) {
+        self.set(name, Value::Bit(on));
+    }
+
+    /// Whether `base` .. `base + words - 1` all exist, by the vector's `assumes.device_sizes`.
+    /// A device type whose size the vector does not state is taken to exist.
+    pub fn in_range(&self, base: &Address, words: u32) -> bool {
+        match (base.number(), self.vector.device_size(base.kind())) {
+            (Some(n), Some(size)) => u64::from(n) + u64::from(words) <= u64::from(size),
+            _ => true,
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn vector() -> Vector {
+        Vector::from_request(&serde_json::json!({
+            "id": "t", "family": "f", "instruction": "I",
+            "assumes": {"device_sizes": {"D": 8000}},
+            "initial": {"devices": {"D7998": 1, "D7999": 2, "M10": false}, "operands": {}},
+            "steps": [{}],
+        }))
+        .unwrap()
+    }
+
+    #[test]
+    fn offsets_reach_listed_and_unlisted_devices() {
+        let v = vector();
+        let mut m = Memory::new(&v);
+        let base = Address::parse("D7998");
+        assert_eq!((m.word(&base, 0), m.word(&base, 1), m.word(&base, 2)), (1, 2, 0));
+        m.set_word(&base, 2, 7);
+        assert_eq!(m.outside(), &[("D8000".to_owned(), Value::Word(7))]);
+        assert!(m.in_range(&base, 2));
+        assert!(!m.in_range(&base, 3));
+        m.set_bit("M10", true);
+        assert!(m.bit("M10"));
+        assert_eq!(m.values()[2], Value::Bit(true));
+    }
+}

@@ -1,0 +1,172 @@
+//! Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT (time comparison).
+//!
+//! Written from the manual page cp1e-time-compare-DT.txt (W483 p. 2-93).
+//!
+//! P_ER is an Omron condition flag: it reflects the result of the instruction just executed, so
+//! an execution that ends without error turns it off (spec: validity.error.latch false). The
+//! other reading, that only an error ever writes P_ER, is the alternative `held` of CP1E-ER-FLAG.
+
+use std::cmp::Ordering;
+
+use super::{device, holds, read3, rlo_in, word_operand, Mutant};
+use crate::choices::Choices;
+use crate::generated::names::{Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eNonBcd, Cp1eOutOfRange};
+use crate::implementation::Refusal;
+use crate::memory::Memory;
+use crate::vector::Vector;
+
+const ERROR_FLAG: &str = "P_ER";
+// "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <,
+// <=, >, >=)."
+const FLAGS: [(&str, &str); 6] =
+    [("=", "P_EQ"), ("<>", "P_NE"), ("<", "P_LT"), ("<=", "P_LE"), (">", "P_GT"), (">=", "P_GE")];
+
+/// One field of the Calendar/Clock layout, most significant first.
+struct Field {
+    word: usize,
+    /// 0: bits 00-07, 1: bits 08-15.
+    byte: u32,
+    min: u8,
+    max: u8,
+    /// The bit of C that masks it.
+    mask_bit: u16,
+}
+
+// "A351.00 to A351.07 Second (00 to 59, BCD) A351.08 to A351.15 Minute (00 to 59, BCD)
+//  A352.00 to A352.07 Hour (00 to 23, BCD)   A352.08 to A352.15 Day of month (01 to 31, BCD)
+//  A353.00 to A353.07 Month (01 to 12, BCD)  A353.08 to A353.15 Year (00 to 99, BCD)"
+// "Bits 00 to 05 of C mask the seconds, minutes, hours, day, month, and year, respectively."
+const FIELDS: [Field; 6] = [
+    Field { word: 2, byte: 1, min: 0, max: 99, mask_bit: 5 }, // year
+    Field { word: 2, byte: 0, min: 1, max: 12, mask_bit: 4 }, // month
+    Field { word: 1, byte: 1, min: 1, max: 31, mask_bit: 3 }, // day
+    Field { word: 1, byte: 0, min: 0, max: 23, mask_bit: 2 }, // hour
+    Field { word: 0, byte: 1, min: 0, max: 59, mask_bit: 1 }, // minute
+    Field { word: 0, byte: 0, min: 0, max: 59, mask_bit: 0 }, // second
+];
+
+#[derive(Clone, Debug)]
+pub(super) struct TimeCompare {
+    non_bcd: Cp1eNonBcd,
+    out_of_range: Cp1eOutOfRange,
+    all_masked: Cp1eAllMasked,
+    c_high_bits: Cp1eCHighBits,
+    and_or: Cp1eAndOrWhenOff,
+    er_flag: Cp1eErFlag,
+    mutant: Option<Mutant>,
+}
+
+fn is_bcd(b: u8) -> bool {
+    b >> 4 <= 9 && b & 0xF <= 9
+}
+
+fn bcd_value(b: u8) -> u8 {
+    (b >> 4) * 10 + (b & 0xF)
+}
+
+impl TimeCompare {
+    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> TimeCompare {
+        let mut er_flag = choices.get::<Cp1eErFlag>();
+        if mutant == Some(Mutant::Cp1eErFlagHeld) {
+            er_flag = Cp1eErFlag::Held; // declared as it is, implemented otherwise
+        }
+        TimeCompare {
+            non_bcd: choices.get(),
+            out_of_range: choices.get(),
+            all_masked: choices.get(),
+            c_high_bits: choices.get(),
+            and_or: choices.get(),
+            er_flag,
+            mutant,
+        }
+    }
+
+    fn bug(&self, m: Mutant) -> bool {
+        self.mutant == Some(m)
+    }
+
+    pub(super) fn execute(
+        &self,
+        instruction: &str,
+        vector: &Vector,
+        step: &crate::vector::Step,
+        mem: &mut Memory<'_>,
+    ) -> Result<bool, Refusal> {
+        // "AND <=DT" -> ("AND", "<=")
+        let (form, symbol) = instruction
+            .split_once(' ')
+            .and_then(|(form, rest)| Some((form, rest.strip_suffix("DT")?)))
+            .ok_or_else(|| Refusal::Error(format!("not a CP1E time comparison: {instruction}")))?;
+        // "The time comparison instructions are treated just like the LD, AND, and OR
+        // instructions to control the execution of subsequent instructions."
+        match form {
+            "LD" => self.evaluate(symbol, vector, mem),
+            "AND" => {
+                let rlo = rlo_in(step)?;
+                if !rlo && self.and_or == Cp1eAndOrWhenOff::AndSkipped {
+                    return Ok(false);
+                }
+                let contact = self.evaluate(symbol, vector, mem)?;
+                Ok(if self.bug(Mutant::Cp1eAndAsOr) { rlo || contact } else { rlo && contact })
+            }
+            "OR" => {
+                let rlo = rlo_in(step)?;
+                let contact = self.evaluate(symbol, vector, mem)?;
+                Ok(rlo || contact)
+            }
+            other => Err(Refusal::Error(format!("not a CP1E time comparison form: {other}"))),
+        }
+    }
+
+    fn evaluate(&self, condition: &str, vector: &Vector, mem: &mut Memory<'_>) -> Result<bool, Refusal> {
+        let s1 = read3(mem, device(vector, "S1")?);
+        let s2 = read3(mem, device(vector, "S2")?);
+        let c = word_operand(vector, mem, "C")?;
+        // Error: P_ER on, the execution condition off, the six arithmetic flags untouched.
+        let error = |mem: &mut Memory<'_>| {
+            mem.set_bit(ERROR_FLAG, true);
+            Ok(false)
+        };
+
+        // Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS).
+        if c & 0xFFC0 != 0 && self.c_high_bits == Cp1eCHighBits::Error {
+            return error(mem);
+        }
+        // "To mask a time value, set the corresponding bit in the control word (C) to 1."
+        // "compares the unmasked values (corresponding bit of C set to 0)"
+        let unmasked = FIELDS.iter().filter(|f| c >> f.mask_bit & 1 == 0);
+        if unmasked.clone().next().is_none() && self.all_masked == Cp1eAllMasked::Error {
+            return error(mem);
+        }
+        let byte = |words: &[u16; 3], f: &Field| (words[f.word] >> (8 * f.byte)) as u8;
+        let mut order = Ordering::Equal;
+        for f in unmasked {
+            let (a, b) = (byte(&s1, f), byte(&s2, f));
+            for raw in [a, b] {
+                if !is_bcd(raw) && !self.bug(Mutant::Cp1eBcdReadAsBinary) {
+                    // "Second (00 to 59, BCD)" ... (CP1E-NON-BCD)
+                    if self.non_bcd == Cp1eNonBcd::Error {
+                        return error(mem);
+                    }
+                } else if !(f.min..=f.max).contains(&bcd_value(raw)) && self.out_of_range == Cp1eOutOfRange::Error {
+                    return error(mem);
+                }
+            }
+            // "The time comparison instructions are limited to comparing 8-bit time values."
+            // For valid BCD the byte order is the numeric order; with "raw-bytes" the bytes are
+            // compared as unsigned 8-bit values.
+            if order == Ordering::Equal {
+                order = a.cmp(&b);
+            }
+        }
+        if !self.bug(Mutant::Cp1eFlagsNotReflected) {
+            for (symbol, flag) in FLAGS {
+                mem.set_bit(flag, holds(symbol, order)?);
+            }
+        }
+        if self.er_flag == Cp1eErFlag::ReflectsEachExecution {
+            mem.set_bit(ERROR_FLAG, false); // executed without error
+        }
+        holds(condition, order)
+    }
+}

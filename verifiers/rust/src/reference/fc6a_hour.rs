@@ -1,0 +1,138 @@
+//! IDEC FC6A MICROSmart: HOUR (hour meter).
+//!
+//! Written from the manual page fc6a-hour-meter-HOUR.txt.
+
+use super::{device, read3, Mutant};
+use crate::choices::Choices;
+use crate::generated::names::{HourInputOff, HourOutputOff, HourPresetZero};
+use crate::implementation::Refusal;
+use crate::memory::Memory;
+use crate::vector::{Operand, Step, Vector};
+
+const ERROR_FLAG: &str = "M8004";
+// "the value returns to 0 hours 0 minutes 0 seconds" after "65,535 hours 59 minutes 59 seconds"
+const CYCLE: u64 = 65536 * 3600;
+
+/// The fraction of a second already measured lives here; on the CPU it is in the system work
+/// area (D3, D3+1), whose contents vectors never compare.
+#[derive(Clone, Debug)]
+pub(super) struct HourMeter {
+    output_off: HourOutputOff,
+    input_off: HourInputOff,
+    preset_zero: HourPresetZero,
+    mutant: Option<Mutant>,
+    fraction_ms: u64,
+    /// For "recompared": D2 stays on across a wrap.
+    wrapped: bool,
+}
+
+fn seconds(hms: [u16; 3]) -> u64 {
+    u64::from(hms[0]) * 3600 + u64::from(hms[1]) * 60 + u64::from(hms[2])
+}
+
+impl HourMeter {
+    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> HourMeter {
+        HourMeter {
+            output_off: choices.get(),
+            input_off: choices.get(),
+            preset_zero: choices.get(),
+            mutant,
+            fraction_ms: 0,
+            wrapped: false,
+        }
+    }
+
+    pub(super) fn reset(&mut self) {
+        self.fraction_ms = 0;
+        self.wrapped = false;
+    }
+
+    fn bug(&self, m: Mutant) -> bool {
+        self.mutant == Some(m)
+    }
+
+    pub(super) fn execute(&mut self, vector: &Vector, step: &Step, mem: &mut Memory<'_>) -> Result<(), Refusal> {
+        let result = self.measure(vector, step, mem);
+        if self.bug(Mutant::HourDropsFraction) {
+            self.fraction_ms = 0;
+        }
+        result
+    }
+
+    fn measure(&mut self, vector: &Vector, step: &Step, mem: &mut Memory<'_>) -> Result<(), Refusal> {
+        let d1 = device(vector, "D1")?;
+        let d2 = device(vector, "D2")?;
+        let on = step.input.ok_or_else(|| Refusal::Error("HOUR needs the step's input".to_owned()))?;
+        if !on {
+            // "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF.
+            if self.input_off == HourInputOff::Reset {
+                for offset in 0..3 {
+                    mem.set_word(d1, offset, 0);
+                }
+                self.fraction_ms = 0;
+            }
+            return Ok(());
+        }
+        // The whole elapsed time since the previous execution is ON time.
+        let elapsed = step.elapsed_ms.ok_or_else(|| Refusal::Error("HOUR needs the step's elapsed_ms".to_owned()))?;
+        self.fraction_ms += elapsed;
+        let whole = self.fraction_ms / 1000;
+        self.fraction_ms %= 1000;
+        let mut total = seconds(read3(mem, d1)) + whole;
+        // "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds,
+        // the value returns to 0 hours 0 minutes 0 seconds to repeat another measuring cycle,
+        // with the comparison output remaining on."
+        let wrapped_now = total >= CYCLE;
+        total %= CYCLE;
+        for (offset, v) in [total / 3600, total % 3600 / 60, total % 60].into_iter().enumerate() {
+            mem.set_word(d1, offset as u32, v as u16);
+        }
+        if wrapped_now && self.bug(Mutant::HourWrapClearsD2) {
+            mem.set_at(d2, 0, false.into());
+        }
+
+        // "When source device S1 is designated by a constant, the preset value can be 0 through
+        // 65,535 in hours, then minutes and seconds are set to 0." A data register: "3
+        // consecutive data registers ... hour, minute, and second data."
+        let preset = match vector.operand("S1") {
+            Some(Operand::Constant(c)) => [*c as u16, 0, 0],
+            Some(Operand::Device(a)) => read3(mem, a),
+            None => return Err(Refusal::Error("HOUR: no operand S1".to_owned())),
+        };
+        // "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."
+        if preset[1] > 59 || preset[2] > 59 {
+            // "... a user program execution error will result, turning on special internal relay
+            // M8004 ... but the input ON duration is measured." "... is changed to an invalid
+            // value after the comparison output has turned on, the comparison output is turned off."
+            mem.set_bit(ERROR_FLAG, true);
+            mem.set_at(d2, 0, false.into());
+            return Ok(());
+        }
+        let preset = seconds(preset);
+        // "When the measured input ON duration value in destination device D1 reaches the preset
+        // value designated by source device S1, the comparison output ... turns on."
+        let mut reached = if self.bug(Mutant::HourOutputAbovePreset) { total > preset } else { total >= preset };
+        if preset == 0 && self.preset_zero == HourPresetZero::Never {
+            reached = false;
+        }
+        let d2_on = mem.get_at(d2, 0) == Some(true.into());
+        match self.output_off {
+            HourOutputOff::Latched => {
+                if reached {
+                    mem.set_at(d2, 0, true.into());
+                }
+            }
+            // D2 = D1 >= S1, except that it stays on across a wrap.
+            HourOutputOff::Recompared => {
+                if wrapped_now && d2_on {
+                    self.wrapped = true;
+                }
+                if reached {
+                    self.wrapped = false;
+                }
+                mem.set_at(d2, 0, (reached || (self.wrapped && d2_on)).into());
+            }
+        }
+        Ok(())
+    }
+}

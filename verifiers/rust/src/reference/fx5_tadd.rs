@@ -1,0 +1,148 @@
+//! Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data).
+//!
+//! Written from the manual page fx5-time-add-TADD.txt.
+
+use super::{device, read3, signed, Mutant};
+use crate::choices::Choices;
+use crate::generated::names::{TaddExact24, TaddFlagsOff, TaddOnError};
+use crate::implementation::Refusal;
+use crate::memory::Memory;
+use crate::value::Value;
+use crate::vector::{Step, Vector};
+
+const DAY: i64 = 24 * 3600;
+// "SM700 Carry ... SM8020 Zero ... SM8022 Carry"
+const CARRY_FLAGS: [&str; 2] = ["SM700", "SM8022"];
+const ZERO_FLAG: &str = "SM8020";
+// "Error code (SD0/SD8067)"
+const ERROR_REGISTERS: [&str; 2] = ["SD0", "SD8067"];
+// "2820H The device range specified by (s1), (s2), and (d) exceeds the corresponding device range."
+const ERR_DEVICE_RANGE: u16 = 0x2820;
+// "3405H Any of values specified by (s1) and (s2) is outside the following range."
+const ERR_VALUE_RANGE: u16 = 0x3405;
+
+#[derive(Clone, Debug)]
+pub(super) struct TimeAdd {
+    flags_off: TaddFlagsOff,
+    exact_24: TaddExact24,
+    on_error: TaddOnError,
+    mutant: Option<Mutant>,
+    /// TADDP: the state of EN before this scan ("off" before the first).
+    previous_en: bool,
+}
+
+impl TimeAdd {
+    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> TimeAdd {
+        TimeAdd {
+            flags_off: choices.get(),
+            exact_24: choices.get(),
+            on_error: choices.get(),
+            mutant,
+            previous_en: false,
+        }
+    }
+
+    pub(super) fn reset(&mut self) {
+        self.previous_en = false;
+    }
+
+    fn bug(&self, m: Mutant) -> bool {
+        self.mutant == Some(m)
+    }
+
+    pub(super) fn execute(
+        &mut self,
+        instruction: &str,
+        vector: &Vector,
+        step: &Step,
+        mem: &mut Memory<'_>,
+    ) -> Result<(), Refusal> {
+        let en = step.en.ok_or_else(|| Refusal::Error(format!("{instruction} needs the step's en")))?;
+        let run = match instruction {
+            "TADD" => en, // every scan while EN is on
+            "TADDP" if self.bug(Mutant::TaddpEveryScan) => en,
+            "TADDP" => en && !self.previous_en, // pulse: the rising edge of EN only
+            other => return Err(Refusal::Error(format!("not TADD/TADDP: {other}"))),
+        };
+        self.previous_en = en;
+        if run {
+            self.add(vector, mem)?;
+        }
+        Ok(())
+    }
+
+    fn add(&self, vector: &Vector, mem: &mut Memory<'_>) -> Result<(), Refusal> {
+        let (s1_dev, s2_dev, d_dev) = (device(vector, "s1")?, device(vector, "s2")?, device(vector, "d")?);
+        // "These instructions occupy three points for each of three devices"; out of range:
+        // 2820H, and nothing is read or written.
+        if !self.bug(Mutant::TaddDeviceRangeUnchecked) && [s1_dev, s2_dev, d_dev].iter().any(|d| !mem.in_range(d, 3)) {
+            error(mem, ERR_DEVICE_RANGE);
+            return Ok(());
+        }
+        let s1 = read3(mem, s1_dev).map(signed);
+        let s2 = read3(mem, s2_dev).map(signed);
+        // "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)", the same for (s2).
+        let ranges = [(0, 23), (0, 59), (0, 59)];
+        let bad = [s1, s2].iter().any(|data| data.iter().zip(ranges).any(|(v, (lo, hi))| !(lo..=hi).contains(v)));
+        if bad {
+            error(mem, ERR_VALUE_RANGE);
+            if self.on_error == TaddOnError::NotExecuted {
+                return Ok(());
+            }
+        }
+        let total = (s1[0] + s2[0]) * 3600 + (s1[1] + s2[1]) * 60 + (s1[2] + s2[2]);
+        let (result, carry) = self.wrap(total);
+        let (h, m, s) = (result / 3600, result % 3600 / 60, result % 60);
+        for (offset, v) in [h, m, s].into_iter().enumerate() {
+            mem.set_word(d_dev, offset as u32, v as u16);
+        }
+        // "If the result is 0 (0:00:00), the zero flag turns on."
+        self.set_flags(mem, carry, result == 0);
+        Ok(())
+    }
+
+    /// The sum in seconds -> (the result in seconds, the carry).
+    fn wrap(&self, total: i64) -> (i64, bool) {
+        // "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result
+        // will be the sum minus 24:00:00." But: "If 1 second is added to 23:59:59, the result will
+        // be 0:00:00. This turns on both the carry flag and the zero flag." -> TADD-EXACT-24.
+        if self.bug(Mutant::TaddNoWrapAt24) && total == DAY {
+            return (total, false);
+        }
+        let carry = match self.exact_24 {
+            TaddExact24::CarryAt24 => total >= DAY,
+            TaddExact24::CarryAbove24 => total > DAY,
+        };
+        (total.rem_euclid(DAY), carry)
+    }
+
+    fn set_flags(&self, mem: &mut Memory<'_>, carry: bool, zero: bool) {
+        let carry_flags: &[&str] =
+            if self.bug(Mutant::TaddSm8022NotWritten) { &CARRY_FLAGS[..1] } else { &CARRY_FLAGS };
+        match self.flags_off {
+            TaddFlagsOff::WrittenEachExecution => {
+                for f in carry_flags {
+                    mem.set_bit(f, carry);
+                }
+                mem.set_bit(ZERO_FLAG, zero);
+            }
+            // An execution only ever turns a flag on.
+            TaddFlagsOff::SetOnly => {
+                if carry {
+                    for f in carry_flags {
+                        mem.set_bit(f, true);
+                    }
+                }
+                if zero {
+                    mem.set_bit(ZERO_FLAG, true);
+                }
+            }
+        }
+    }
+}
+
+fn error(mem: &mut Memory<'_>, code: u16) {
+    for register in ERROR_REGISTERS {
+        mem.set(register, Value::Word(code));
+    }
+}

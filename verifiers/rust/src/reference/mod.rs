@@ -1,0 +1,166 @@
+//! A plain reference implementation of the five families, written from the manual excerpts and
+//! the contract: the Rust oracle. It passes every vector under every combination of
+//! interpretation alternatives, through `cargo test` and over the stdio protocol.
+//!
+//! It is an [`Execute`]: it executes one instruction on a vector's [`Memory`], the way an
+//! emulator would. One module per family:
+//!
+//! - `fx5_compare`: FX5 LDTM□/ANDTM□/ORTM□ and LDDT□/ANDDT□/ORDT□
+//! - `fx5_tadd`: FX5 TADD/TADDP
+//! - `fc6a_hour`: FC6A HOUR
+//! - `cp1e_dt`: CP1E LD/AND/OR =DT ... >=DT
+//!
+//! [`Mutant`]s are the same implementation with one plausible bug each; the suite must reject
+//! every one of them (tests/mutants.rs).
+
+mod cp1e_dt;
+mod fc6a_hour;
+mod fx5_compare;
+mod fx5_tadd;
+mod mutants;
+
+use std::cmp::Ordering;
+
+pub use mutants::Mutant;
+
+use crate::choices::Choices;
+use crate::generated::names::{Family, Instruction};
+use crate::implementation::{Execute, Refusal};
+use crate::memory::Memory;
+use crate::value::Address;
+use crate::vector::{Step, Vector};
+
+/// The reference implementation, following the declared alternatives (default: every default).
+#[derive(Clone, Debug)]
+pub struct Reference {
+    choices: Choices,
+    mutant: Option<Mutant>,
+    family: Option<Family>,
+    fx5_compare: fx5_compare::Fx5Compare,
+    tadd: fx5_tadd::TimeAdd,
+    hour: fc6a_hour::HourMeter,
+    cp1e: cp1e_dt::TimeCompare,
+}
+
+impl Reference {
+    /// The reference following every default alternative.
+    pub fn new() -> Reference {
+        Reference::with_choices(Choices::new())
+    }
+
+    /// The reference following `choices` (and the defaults for the rest).
+    pub fn with_choices(choices: Choices) -> Reference {
+        Reference::build(choices, None)
+    }
+
+    /// The reference with one bug, declaring `choices`.
+    pub fn mutant(mutant: Mutant, choices: Choices) -> Reference {
+        Reference::build(choices, Some(mutant))
+    }
+
+    fn build(choices: Choices, mutant: Option<Mutant>) -> Reference {
+        Reference {
+            fx5_compare: fx5_compare::Fx5Compare::new(&choices, mutant),
+            tadd: fx5_tadd::TimeAdd::new(&choices, mutant),
+            hour: fc6a_hour::HourMeter::new(&choices, mutant),
+            cp1e: cp1e_dt::TimeCompare::new(&choices, mutant),
+            family: None,
+            choices,
+            mutant,
+        }
+    }
+}
+
+impl Default for Reference {
+    fn default() -> Reference {
+        Reference::new()
+    }
+}
+
+impl Execute for Reference {
+    fn name(&self) -> String {
+        match self.mutant {
+            Some(m) => format!("plcvec-reference (mutant {})", m.name()),
+            None => "plcvec-reference".to_owned(),
+        }
+    }
+
+    fn interpretations(&self) -> Choices {
+        self.choices.clone()
+    }
+
+    fn supports(&self, instruction: &str) -> bool {
+        Instruction::from_name(instruction).is_some()
+    }
+
+    fn begin(&mut self, vector: &Vector) -> Result<(), Refusal> {
+        let family = Family::from_name(vector.family())
+            .ok_or_else(|| Refusal::Skip(format!("no family {}", vector.family())))?;
+        self.family = Some(family);
+        // Each vector starts from its own initial state: nothing carries over.
+        self.tadd.reset();
+        self.hour.reset();
+        Ok(())
+    }
+
+    fn execute(&mut self, vector: &Vector, step: &Step, memory: &mut Memory<'_>) -> Result<Option<bool>, Refusal> {
+        let instruction = vector.instruction();
+        match self.family {
+            Some(Family::Fx5TimeCompare) => {
+                self.fx5_compare.execute(fx5_compare::Kind::Time, instruction, vector, step, memory).map(Some)
+            }
+            Some(Family::Fx5DateCompare) => {
+                self.fx5_compare.execute(fx5_compare::Kind::Date, instruction, vector, step, memory).map(Some)
+            }
+            Some(Family::Fx5TimeAdd) => self.tadd.execute(instruction, vector, step, memory).map(|()| None),
+            Some(Family::Fc6aHourMeter) => self.hour.execute(vector, step, memory).map(|()| None),
+            Some(Family::Cp1eTimeCompare) => self.cp1e.execute(instruction, vector, step, memory).map(Some),
+            None => Err(Refusal::Error("execute before begin".to_owned())),
+        }
+    }
+}
+
+/// An operand that must be a device.
+fn device<'v>(vector: &'v Vector, operand: &str) -> Result<&'v Address, Refusal> {
+    vector
+        .operand(operand)
+        .and_then(|o| o.device())
+        .ok_or_else(|| Refusal::Error(format!("{}: operand {operand} must be a device", vector.instruction())))
+}
+
+/// A one-word operand: a K/H constant or the word in a device.
+fn word_operand(vector: &Vector, memory: &Memory<'_>, operand: &str) -> Result<u16, Refusal> {
+    match vector.operand(operand) {
+        Some(crate::vector::Operand::Constant(c)) => Ok(*c as u16), // the low 16 bits, as the CPU stores K/H
+        Some(crate::vector::Operand::Device(a)) => Ok(memory.word(a, 0)),
+        None => Err(Refusal::Error(format!("{}: no operand {operand}", vector.instruction()))),
+    }
+}
+
+/// Three consecutive words from `base`.
+fn read3(memory: &Memory<'_>, base: &Address) -> [u16; 3] {
+    [memory.word(base, 0), memory.word(base, 1), memory.word(base, 2)]
+}
+
+/// A word read as "16-bit signed binary".
+fn signed(word: u16) -> i64 {
+    i64::from(word as i16)
+}
+
+/// A comparison condition of the six (`=`, `<>`, `<`, `<=`, `>`, `>=`) applied to an ordering.
+fn holds(condition: &str, order: Ordering) -> Result<bool, Refusal> {
+    Ok(match condition {
+        "=" => order == Ordering::Equal,
+        "<>" => order != Ordering::Equal,
+        "<" => order == Ordering::Less,
+        "<=" => order != Ordering::Greater,
+        ">" => order == Ordering::Greater,
+        ">=" => order != Ordering::Less,
+        other => return Err(Refusal::Error(format!("no comparison condition {other:?}"))),
+    })
+}
+
+/// The logic state before an AND/OR form.
+fn rlo_in(step: &Step) -> Result<bool, Refusal> {
+    step.rlo_in.ok_or_else(|| Refusal::Error("an AND/OR form needs the step's rlo_in".to_owned()))
+}

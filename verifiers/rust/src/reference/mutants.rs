@@ -1,0 +1,113 @@
+//! Single-bug variants of the reference: each is the reference with one plausible bug an
+//! emulator could have. The suite must reject every one of them, by name (tests/mutants.rs);
+//! a mutant no vector catches means the vectors miss a case.
+
+use crate::generated::names::Family;
+
+/// A mutant of the reference implementation.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Mutant {
+    /// The selected fields are compared from (s1)+2 up, so a later field decides first.
+    Fx5LowFieldFirst,
+    /// Bits 3 to 14 of (s3) are masked off instead of making the result non-continuity.
+    Fx5ReservedBitsIgnored,
+    /// SM709 is written off whenever the data are good, although it is held once on.
+    Fx5Sm709NotLatched,
+    /// (s1)..(s1)+2 and (s2)..(s2)+2 are not checked against the device range.
+    Fx5DeviceRangeUnchecked,
+    /// Declares FX5-AND-OR-WHEN-OFF=and-skipped but executes AND while the preceding logic is off.
+    Fx5AndExecutedWhenOff,
+    /// A sum of exactly 24:00:00 is stored as 24:00:00 with neither flag.
+    TaddNoWrapAt24,
+    /// Only SM700 is written as the carry flag; SM8022 is left alone.
+    TaddSm8022NotWritten,
+    /// TADDP adds on every scan while EN is on, not once on the rising edge.
+    TaddpEveryScan,
+    /// (s1), (s2) and (d) are not checked against the device range: D beyond D7999 is written.
+    TaddDeviceRangeUnchecked,
+    /// D2 turns on only once D1 is past S1, not when it reaches it.
+    HourOutputAbovePreset,
+    /// Each scan's ON time is cut to whole seconds and the remainder thrown away.
+    HourDropsFraction,
+    /// D2 is turned off when D1 wraps to 0:00:00, instead of remaining on.
+    HourWrapClearsD2,
+    /// The time bytes are compared as binary without checking that they are BCD.
+    Cp1eBcdReadAsBinary,
+    /// AND =DT ... AND >=DT combine with the preceding logic as OR does.
+    Cp1eAndAsOr,
+    /// The arithmetic flags (=, <>, <, <=, >, >=) are left alone.
+    Cp1eFlagsNotReflected,
+    /// Declares CP1E-ER-FLAG=reflects-each-execution but never turns P_ER off.
+    Cp1eErFlagHeld,
+}
+
+impl Mutant {
+    /// Every mutant.
+    pub const ALL: &'static [Mutant] = &[
+        Mutant::Fx5LowFieldFirst,
+        Mutant::Fx5ReservedBitsIgnored,
+        Mutant::Fx5Sm709NotLatched,
+        Mutant::Fx5DeviceRangeUnchecked,
+        Mutant::Fx5AndExecutedWhenOff,
+        Mutant::TaddNoWrapAt24,
+        Mutant::TaddSm8022NotWritten,
+        Mutant::TaddpEveryScan,
+        Mutant::TaddDeviceRangeUnchecked,
+        Mutant::HourOutputAbovePreset,
+        Mutant::HourDropsFraction,
+        Mutant::HourWrapClearsD2,
+        Mutant::Cp1eBcdReadAsBinary,
+        Mutant::Cp1eAndAsOr,
+        Mutant::Cp1eFlagsNotReflected,
+        Mutant::Cp1eErFlagHeld,
+    ];
+
+    /// The mutant's name (`tadd-no-wrap-at-24`), as the adapter's `--mutant` takes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Mutant::Fx5LowFieldFirst => "fx5-low-field-first",
+            Mutant::Fx5ReservedBitsIgnored => "fx5-reserved-bits-ignored",
+            Mutant::Fx5Sm709NotLatched => "fx5-sm709-not-latched",
+            Mutant::Fx5DeviceRangeUnchecked => "fx5-device-range-unchecked",
+            Mutant::Fx5AndExecutedWhenOff => "fx5-and-executed-when-off",
+            Mutant::TaddNoWrapAt24 => "tadd-no-wrap-at-24",
+            Mutant::TaddSm8022NotWritten => "tadd-sm8022-not-written",
+            Mutant::TaddpEveryScan => "taddp-every-scan",
+            Mutant::TaddDeviceRangeUnchecked => "tadd-device-range-unchecked",
+            Mutant::HourOutputAbovePreset => "hour-output-above-preset",
+            Mutant::HourDropsFraction => "hour-drops-fraction",
+            Mutant::HourWrapClearsD2 => "hour-wrap-clears-d2",
+            Mutant::Cp1eBcdReadAsBinary => "cp1e-bcd-read-as-binary",
+            Mutant::Cp1eAndAsOr => "cp1e-and-as-or",
+            Mutant::Cp1eFlagsNotReflected => "cp1e-flags-not-reflected",
+            Mutant::Cp1eErFlagHeld => "cp1e-er-flag-held",
+        }
+    }
+
+    /// The families whose vectors must catch it.
+    pub fn families(self) -> &'static [Family] {
+        match self {
+            Mutant::Fx5LowFieldFirst
+            | Mutant::Fx5ReservedBitsIgnored
+            | Mutant::Fx5Sm709NotLatched
+            | Mutant::Fx5DeviceRangeUnchecked
+            | Mutant::Fx5AndExecutedWhenOff => &[Family::Fx5TimeCompare, Family::Fx5DateCompare],
+            Mutant::TaddNoWrapAt24
+            | Mutant::TaddSm8022NotWritten
+            | Mutant::TaddpEveryScan
+            | Mutant::TaddDeviceRangeUnchecked => &[Family::Fx5TimeAdd],
+            Mutant::HourOutputAbovePreset | Mutant::HourDropsFraction | Mutant::HourWrapClearsD2 => {
+                &[Family::Fc6aHourMeter]
+            }
+            Mutant::Cp1eBcdReadAsBinary
+            | Mutant::Cp1eAndAsOr
+            | Mutant::Cp1eFlagsNotReflected
+            | Mutant::Cp1eErFlagHeld => &[Family::Cp1eTimeCompare],
+        }
+    }
+
+    /// The mutant of a name.
+    pub fn from_name(name: &str) -> Option<Mutant> {
+        Mutant::ALL.iter().copied().find(|m| m.name() == name)
+    }
+}

@@ -1,0 +1,197 @@
+//! Running a selection of vectors through an implementation in process, and the summary a person
+//! reads at the end: each failing vector with its field diff, then the totals, with the suite
+//! version, the spec hash, and the alternative followed for every interpretation.
+
+use crate::choices::Choices;
+use crate::compare::{describe, judge, Status, Verdict};
+use crate::error::{Error, Result};
+use crate::expect::{check_choices, Plan};
+use crate::implementation::Implementation;
+use crate::known::KnownFailures;
+use crate::select::Selection;
+use crate::vector::Vector;
+use crate::Suite;
+
+/// The alternative followed for one interpretation.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Followed {
+    /// The interpretation id.
+    pub interpretation: String,
+    /// The alternative.
+    pub alternative: String,
+    /// Whether the implementation declared it (else it is the default).
+    pub declared: bool,
+}
+
+/// The result of a run.
+#[derive(Debug)]
+pub struct Report<'s> {
+    /// The suite the run judged against.
+    pub suite: &'s Suite,
+    /// The implementation's name.
+    pub implementation: String,
+    /// Every interpretation of the run's families and the alternative it was judged by.
+    pub interpretations: Vec<Followed>,
+    /// The plan: the vectors run, with their expectations.
+    pub plan: Plan<'s>,
+    /// One verdict per vector of the plan, in order.
+    pub verdicts: Vec<Verdict>,
+    /// Listed known failures the suite has no vector for (each fails the run).
+    pub unknown_known: Vec<String>,
+}
+
+/// Run the vectors `selection` keeps through `implementation`; `known` is the expectations file.
+///
+/// Refused before anything runs: a selection that names a family, instruction, tag or
+/// interpretation the suite lacks, or that keeps no vector, and a declaration of an unknown
+/// interpretation or alternative. A gate never passes by accident.
+pub fn run<'s, I: Implementation + ?Sized>(
+    suite: &'s Suite,
+    implementation: &mut I,
+    selection: &Selection,
+    known: Option<&KnownFailures>,
+) -> Result<Report<'s>> {
+    let unknown = selection.unknown_names(suite);
+    if !unknown.is_empty() {
+        return Err(Error::new(format!("the selection names what the suite does not have: {}", unknown.join(", "))));
+    }
+    let vectors = selection.apply(suite.vectors());
+    if vectors.is_empty() {
+        return Err(Error::new(format!(
+            "the selection keeps none of the {} vectors of {}",
+            suite.vectors().len(),
+            suite.source()
+        )));
+    }
+    let choices = implementation.interpretations();
+    let plan = Plan::new(suite, vectors, &choices)?;
+    let verdicts = judge_plan(&plan, implementation);
+    let mut report = Report {
+        suite,
+        implementation: implementation.name(),
+        interpretations: followed(suite, &plan, &choices)?,
+        plan,
+        verdicts,
+        unknown_known: Vec::new(),
+    };
+    if let Some(known) = known {
+        for (verdict, v) in report.verdicts.iter_mut().zip(report.plan.vectors()) {
+            *verdict = known.apply(
+                v.id(),
+                std::mem::replace(
+                    verdict,
+                    Verdict { status: Status::Pass, problems: Vec::new(), message: String::new() },
+                ),
+            );
+        }
+        report.unknown_known = known
+            .unknown_ids(|id| suite.get(id).is_some())
+            .map(|e| format!("{}: {}", e.id, known.unknown_message(e)))
+            .collect();
+    }
+    Ok(report)
+}
+
+/// Judge every vector of a plan (the benchmark's loop): unsupported instructions are skipped.
+pub fn judge_plan<I: Implementation + ?Sized>(plan: &Plan<'_>, implementation: &mut I) -> Vec<Verdict> {
+    plan.iter()
+        .map(|(v, expected)| {
+            if implementation.supports(v.instruction()) {
+                judge(implementation, v, expected)
+            } else {
+                Verdict {
+                    status: Status::Skip,
+                    problems: Vec::new(),
+                    message: format!("the implementation does not support {}", v.instruction()),
+                }
+            }
+        })
+        .collect()
+}
+
+fn followed(suite: &Suite, plan: &Plan<'_>, choices: &Choices) -> Result<Vec<Followed>> {
+    check_choices(suite, choices)?;
+    let families: Vec<&str> = plan.vectors().iter().map(|v| v.family()).collect();
+    Ok(suite
+        .interpretations()?
+        .into_iter()
+        .filter(|(_, (_, fams))| fams.iter().any(|f| families.contains(f)))
+        .map(|(id, (info, _))| {
+            let declared = choices.declared(id);
+            Followed {
+                interpretation: id.to_owned(),
+                alternative: declared.unwrap_or(&info.default).to_owned(),
+                declared: declared.is_some(),
+            }
+        })
+        .collect())
+}
+
+impl Report<'_> {
+    /// How many vectors ended with `status`.
+    pub fn count(&self, status: Status) -> usize {
+        self.verdicts.iter().filter(|v| v.status == status).count()
+            + if status == Status::Stale { self.unknown_known.len() } else { 0 }
+    }
+
+    /// The vectors that failed the run, with their verdicts.
+    pub fn failures(&self) -> impl Iterator<Item = (&Vector, &Verdict)> {
+        self.plan.vectors().iter().copied().zip(&self.verdicts).filter(|(_, v)| v.status.is_failing())
+    }
+
+    /// The verdict on one vector, by id.
+    pub fn verdict(&self, id: &str) -> Option<&Verdict> {
+        self.plan.vectors().iter().position(|v| v.id() == id).map(|i| &self.verdicts[i])
+    }
+
+    /// Whether the run passed: nothing failed, and something was judged (an implementation that
+    /// skips every vector does not pass).
+    pub fn passed(&self) -> bool {
+        let judged = self.count(Status::Pass) + self.count(Status::XFail);
+        judged > 0 && self.unknown_known.is_empty() && !self.verdicts.iter().any(|v| v.status.is_failing())
+    }
+
+    /// The summary a person reads.
+    pub fn summary(&self) -> String {
+        let mut out = String::new();
+        for ((v, e), verdict) in self.plan.iter().zip(&self.verdicts) {
+            if verdict.status.is_failing() {
+                out.push_str(&describe(v, Some(e), verdict));
+                out.push('\n');
+            }
+        }
+        for line in &self.unknown_known {
+            out.push_str(&format!("STALE {line}\n"));
+        }
+        let s = self.suite;
+        out.push_str(&format!(
+            "\nplcvec: {} against {} (suite {}, schema {}, spec sha256 {})\n",
+            self.implementation,
+            s.source(),
+            if s.suite_version().is_empty() { "?" } else { s.suite_version() },
+            s.schema_version(),
+            s.spec_sha256().get(..12).unwrap_or("?"),
+        ));
+        let declared: Vec<String> = self
+            .interpretations
+            .iter()
+            .filter(|f| f.declared)
+            .map(|f| format!("{}={}", f.interpretation, f.alternative))
+            .collect();
+        out.push_str(&format!(
+            "interpretations: {}others default\n",
+            if declared.is_empty() { String::new() } else { format!("{}; ", declared.join(", ")) }
+        ));
+        let counts: Vec<String> =
+            [Status::Pass, Status::Fail, Status::Error, Status::Skip, Status::XFail, Status::Stale]
+                .iter()
+                .filter(|&&st| self.count(st) > 0 || matches!(st, Status::Pass | Status::Fail))
+                .map(|&st| format!("{} {}", self.count(st), st.as_str()))
+                .collect();
+        out.push_str(&format!("{} vectors: {}\n", self.verdicts.len() + self.unknown_known.len(), counts.join(", ")));
+        if !self.passed() && !self.verdicts.iter().any(|v| v.status.is_failing()) && self.unknown_known.is_empty() {
+            out.push_str("nothing was judged: the implementation skipped every selected vector\n");
+        }
+        out
+    }
+}

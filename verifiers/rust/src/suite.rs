@@ -1,0 +1,363 @@
+//! Loading a vector set: the copy compiled into the crate, or another one on disk.
+//!
+//! `PLCVEC_VECTORS` names another copy: a folder holding `index.json` and `<family>.jsonl` files
+//! (what `plcvec export` writes), or the repository's `vectors/` folder (`manifest.json` and
+//! `<family>.json`), or a single family file. A damaged file, a vector the contract cannot run,
+//! or a schema major version other than 1 is refused with the file, the line or the vector id.
+
+use std::collections::{BTreeMap, HashMap};
+use std::fs;
+use std::path::Path;
+
+use serde::Deserialize;
+
+use crate::error::{Error, Result};
+use crate::generated::embedded;
+use crate::vector::{RawVector, Vector};
+
+/// The major schema version this crate reads (CONTRACT.md, "Versioning"): a 2.x file may mean
+/// something else by the same fields, so it is refused rather than misread.
+pub const SCHEMA_MAJOR: &str = "1";
+
+/// The environment variable that points the crate at another copy of the vectors.
+pub const VECTORS_ENV: &str = "PLCVEC_VECTORS";
+
+/// What a family file's header says about one interpretation.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+pub struct InterpretationInfo {
+    /// The id (`FX5-SM709-SCOPE`).
+    pub id: String,
+    /// The question the manual leaves open.
+    #[serde(default)]
+    pub question: String,
+    /// The alternative that holds unless another is declared.
+    pub default: String,
+    /// Every alternative's id.
+    #[serde(deserialize_with = "alternative_ids")]
+    pub alternatives: Vec<String>,
+}
+
+fn alternative_ids<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Vec<String>, D::Error> {
+    #[derive(Deserialize)]
+    struct Alt {
+        id: String,
+    }
+    Ok(Vec::<Alt>::deserialize(d)?.into_iter().map(|a| a.id).collect())
+}
+
+/// A family file's header: everything but its vectors.
+#[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+pub struct FamilyInfo {
+    /// The family (`fx5-time-add`).
+    pub family: String,
+    /// The family's title.
+    #[serde(default)]
+    pub title: String,
+    /// The rule kind (`clock_add`).
+    #[serde(default)]
+    pub kind: String,
+    /// The file's schema version.
+    pub schema_version: String,
+    /// The hash of the spec the file was generated from.
+    #[serde(default)]
+    pub spec_sha256: String,
+    /// The family's instructions.
+    #[serde(default)]
+    pub instructions: Vec<String>,
+    /// Every tag with its meaning.
+    #[serde(default)]
+    pub tags: BTreeMap<String, String>,
+    /// The family's interpretations.
+    #[serde(default)]
+    pub interpretations: Vec<InterpretationInfo>,
+}
+
+/// A loaded vector set.
+#[derive(Clone, Debug)]
+pub struct Suite {
+    source: String,
+    suite_version: String,
+    schema_version: String,
+    spec_sha256: String,
+    families: Vec<FamilyInfo>,
+    vectors: Vec<Vector>,
+    by_id: HashMap<String, usize>,
+}
+
+#[derive(Deserialize)]
+struct Index {
+    #[serde(default)]
+    suite_version: String,
+    #[serde(default)]
+    spec_sha256: String,
+    families: BTreeMap<String, IndexEntry>,
+}
+
+#[derive(Deserialize)]
+struct IndexEntry {
+    file: String,
+    count: Option<usize>,
+}
+
+#[derive(Deserialize)]
+struct Manifest {
+    #[serde(default)]
+    generator_version: String,
+    #[serde(default)]
+    spec_sha256: String,
+    families: BTreeMap<String, IndexEntry>,
+}
+
+impl Suite {
+    /// The copy compiled into the crate.
+    pub fn embedded() -> Result<Suite> {
+        let index: Index =
+            serde_json::from_str(embedded::INDEX).map_err(|e| Error::new(format!("(embedded) index.json: {e}")))?;
+        let mut parts = Vec::new();
+        for (family, file, text) in embedded::FAMILIES {
+            let count = index.families.get(*family).and_then(|e| e.count);
+            parts.push(parse_jsonl(&format!("(embedded) {file}"), text, count)?);
+        }
+        Suite::assemble("(embedded vectors)".into(), index.suite_version, index.spec_sha256, parts)
+    }
+
+    /// The copy `PLCVEC_VECTORS` names, or the embedded one when it is unset or empty.
+    pub fn from_env() -> Result<Suite> {
+        match std::env::var_os(VECTORS_ENV) {
+            Some(path) if !path.is_empty() => {
+                Suite::load(&path).map_err(|e| Error::new(format!("{e} (from {VECTORS_ENV})")))
+            }
+            _ => Suite::embedded(),
+        }
+    }
+
+    /// A copy on disk: a folder with `index.json` (+ `*.jsonl`) or `manifest.json` (+ `*.json`),
+    /// or one family file (`.jsonl` or `.json`).
+    pub fn load(path: impl AsRef<Path>) -> Result<Suite> {
+        let path = path.as_ref();
+        let source = path.display().to_string();
+        if path.is_dir() {
+            let index_path = path.join("index.json");
+            let manifest_path = path.join("manifest.json");
+            if index_path.is_file() {
+                let index: Index = read_json(&index_path)?;
+                let mut parts = Vec::new();
+                for entry in index.families.values() {
+                    let file = path.join(&entry.file);
+                    parts.push(parse_jsonl(&file.display().to_string(), &read_text(&file)?, entry.count)?);
+                }
+                return Suite::assemble(source, index.suite_version, index.spec_sha256, parts);
+            }
+            if manifest_path.is_file() {
+                let manifest: Manifest = read_json(&manifest_path)?;
+                let mut parts = Vec::new();
+                for entry in manifest.families.values() {
+                    let file = path.join(&entry.file);
+                    parts.push(parse_family_json(&file, entry.count)?);
+                }
+                return Suite::assemble(source, manifest.generator_version, manifest.spec_sha256, parts);
+            }
+            return Err(Error::new(format!(
+                "{source}: neither index.json nor manifest.json; is this a plcvec vector folder?"
+            )));
+        }
+        if !path.exists() {
+            return Err(Error::new(format!("{source}: no such vector folder or file")));
+        }
+        let part = if path.extension().is_some_and(|e| e == "jsonl") {
+            parse_jsonl(&source, &read_text(path)?, None)?
+        } else {
+            parse_family_json(path, None)?
+        };
+        Suite::assemble(source, String::new(), String::new(), vec![part])
+    }
+
+    fn assemble(
+        source: String,
+        suite_version: String,
+        spec_sha256: String,
+        parts: Vec<(FamilyInfo, Vec<Vector>)>,
+    ) -> Result<Suite> {
+        let mut families = Vec::new();
+        let mut vectors = Vec::new();
+        let mut versions: Vec<String> = Vec::new();
+        for (info, vs) in parts {
+            if !versions.contains(&info.schema_version) {
+                versions.push(info.schema_version.clone());
+            }
+            families.push(info);
+            vectors.extend(vs);
+        }
+        versions.sort();
+        let mut by_id = HashMap::with_capacity(vectors.len());
+        for (i, v) in vectors.iter().enumerate() {
+            if by_id.insert(v.id().to_owned(), i).is_some() {
+                return Err(Error::new(format!("{source}: vector id {} appears twice", v.id())));
+            }
+        }
+        let spec_sha256 = if spec_sha256.is_empty() {
+            families.iter().map(|f| f.spec_sha256.clone()).filter(|h| !h.is_empty()).collect::<Vec<_>>().join(", ")
+        } else {
+            spec_sha256
+        };
+        let suite =
+            Suite { source, suite_version, schema_version: versions.join(", "), spec_sha256, families, vectors, by_id };
+        suite.interpretations()?;
+        Ok(suite)
+    }
+
+    /// Where the vectors came from (a path, or "(embedded vectors)").
+    pub fn source(&self) -> &str {
+        &self.source
+    }
+    /// The suite version (empty for a single family file).
+    pub fn suite_version(&self) -> &str {
+        &self.suite_version
+    }
+    /// The schema version(s) of the files.
+    pub fn schema_version(&self) -> &str {
+        &self.schema_version
+    }
+    /// The spec hash the vectors were generated from.
+    pub fn spec_sha256(&self) -> &str {
+        &self.spec_sha256
+    }
+    /// Every family file's header.
+    pub fn families(&self) -> &[FamilyInfo] {
+        &self.families
+    }
+    /// One family's header.
+    pub fn family(&self, name: &str) -> Option<&FamilyInfo> {
+        self.families.iter().find(|f| f.family == name)
+    }
+    /// Every vector, family by family, each family sorted by id.
+    pub fn vectors(&self) -> &[Vector] {
+        &self.vectors
+    }
+    /// A vector by id.
+    pub fn get(&self, id: &str) -> Option<&Vector> {
+        self.by_id.get(id).map(|&i| &self.vectors[i])
+    }
+
+    /// Every interpretation, each once (the FX5 time and date comparisons share theirs): id ->
+    /// (its description, the families that share it). An interpretation must say the same in
+    /// every family that has it.
+    pub fn interpretations(&self) -> Result<BTreeMap<&str, (&InterpretationInfo, Vec<&str>)>> {
+        let mut out: BTreeMap<&str, (&InterpretationInfo, Vec<&str>)> = BTreeMap::new();
+        for f in &self.families {
+            for i in &f.interpretations {
+                let entry = out.entry(&i.id).or_insert((i, Vec::new()));
+                if (&entry.0.default, &entry.0.alternatives) != (&i.default, &i.alternatives) {
+                    return Err(Error::new(format!(
+                        "{}: interpretation {} has other alternatives or another default in {} than in {}",
+                        self.source, i.id, f.family, entry.1[0]
+                    )));
+                }
+                entry.1.push(&f.family);
+            }
+        }
+        Ok(out)
+    }
+
+    /// interpretation id -> default alternative.
+    pub fn defaults(&self) -> BTreeMap<&str, &str> {
+        self.families
+            .iter()
+            .flat_map(|f| f.interpretations.iter().map(|i| (i.id.as_str(), i.default.as_str())))
+            .collect()
+    }
+}
+
+fn read_text(path: &Path) -> Result<String> {
+    fs::read_to_string(path).map_err(|e| Error::new(format!("{}: cannot read: {e}", path.display())))
+}
+
+fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T> {
+    serde_json::from_str(&read_text(path)?)
+        .map_err(|e| Error::new(format!("{}:{}: not a readable plcvec file ({e})", path.display(), e.line())))
+}
+
+fn check_header(name: &str, header: &FamilyInfo) -> Result<()> {
+    let major = header.schema_version.split('.').next().unwrap_or("");
+    if major != SCHEMA_MAJOR {
+        return Err(Error::new(format!(
+            "{name}: schema_version {} is not {SCHEMA_MAJOR}.x; this crate reads {SCHEMA_MAJOR}.x files only (see CONTRACT.md, Versioning)",
+            if header.schema_version.is_empty() { "(none)" } else { &header.schema_version }
+        )));
+    }
+    Ok(())
+}
+
+fn check_vector(name: &str, where_: &str, header: &FamilyInfo, raw: RawVector) -> Result<Vector> {
+    if raw.family != header.family {
+        return Err(Error::new(format!(
+            "{where_}: vector {}: family {:?} in a {:?} file",
+            raw.id, raw.family, header.family
+        )));
+    }
+    let v = Vector::from_raw(raw, true).map_err(|e| Error::new(format!("{where_}: {e}")))?;
+    for i in v.interpretations() {
+        if !header.interpretations.iter().any(|h| &h.id == i) {
+            return Err(Error::new(format!(
+                "{name}: vector {}: depends on interpretation {i}, which the header does not define",
+                v.id()
+            )));
+        }
+    }
+    Ok(v)
+}
+
+fn check_count(name: &str, count: Option<usize>, found: usize) -> Result<()> {
+    match count {
+        Some(n) if n != found => {
+            Err(Error::new(format!("{name}: {found} vectors, but the index says {n} (a truncated or damaged copy?)")))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// One family in JSON Lines: line 1 the header, then one vector a line.
+fn parse_jsonl(name: &str, text: &str, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
+    let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
+    let (_, first) = lines.next().ok_or_else(|| Error::new(format!("{name}: empty file")))?;
+    let header: FamilyInfo =
+        serde_json::from_str(first).map_err(|e| Error::new(format!("{name}:1: not a plcvec family header ({e})")))?;
+    check_header(name, &header)?;
+    let mut vectors = Vec::new();
+    for (n, line) in lines {
+        let where_ = format!("{name}:{}", n + 1);
+        let raw: RawVector = serde_json::from_str(line).map_err(|e| {
+            let id = serde_json::from_str::<serde_json::Value>(line)
+                .ok()
+                .and_then(|v| v.get("id").and_then(|i| i.as_str()).map(|s| format!(" vector {s}:")))
+                .unwrap_or_default();
+            Error::new(format!("{where_}:{id} not a plcvec vector ({e})"))
+        })?;
+        vectors.push(check_vector(name, &where_, &header, raw)?);
+    }
+    check_count(name, count, vectors.len())?;
+    Ok((header, vectors))
+}
+
+/// One family file as `plcvec generate` writes it: a JSON object with `vectors`.
+fn parse_family_json(path: &Path, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
+    let name = path.display().to_string();
+    let mut data: serde_json::Value = read_json(path)?;
+    let vectors = match data.get_mut("vectors").map(serde_json::Value::take) {
+        Some(serde_json::Value::Array(vs)) => vs,
+        _ => return Err(Error::new(format!("{name}: not a plcvec vector file (no `vectors` list)"))),
+    };
+    let header =
+        FamilyInfo::deserialize(&data).map_err(|e| Error::new(format!("{name}: not a plcvec vector file ({e})")))?;
+    check_header(&name, &header)?;
+    let mut out = Vec::with_capacity(vectors.len());
+    for (k, v) in vectors.into_iter().enumerate() {
+        let label = v.get("id").and_then(|i| i.as_str()).map_or(format!("#{k}"), str::to_owned);
+        let raw = RawVector::deserialize(&v).map_err(|e| {
+            Error::new(format!("{name}: vector {label}: {e} (is the file a plcvec vector file, unedited?)"))
+        })?;
+        out.push(check_vector(&name, &name, &header, raw)?);
+    }
+    check_count(&name, count, out.len())?;
+    Ok((header, out))
+}

@@ -1,0 +1,143 @@
+//! Device values and device addresses, as the contract defines them.
+
+use std::fmt;
+
+/// The value of one device: a word is the raw 16 bits (a "16-bit signed binary" -1 is 65535),
+/// a bit is on or off. The two never compare equal: a bit reported as the word 1 is wrong.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Value {
+    /// A bit device (`true`/`false` in JSON): M10, SM709, P_EQ.
+    Bit(bool),
+    /// A word device (an integer 0..=65535 in JSON): D100, SD0.
+    Word(u16),
+}
+
+impl Value {
+    /// The word, or `None` for a bit.
+    pub fn word(self) -> Option<u16> {
+        match self {
+            Value::Word(w) => Some(w),
+            Value::Bit(_) => None,
+        }
+    }
+
+    /// The bit, or `None` for a word.
+    pub fn bit(self) -> Option<bool> {
+        match self {
+            Value::Bit(b) => Some(b),
+            Value::Word(_) => None,
+        }
+    }
+
+    /// The value as JSON (`true`, `12`).
+    pub fn to_json(self) -> serde_json::Value {
+        match self {
+            Value::Bit(b) => serde_json::Value::Bool(b),
+            Value::Word(w) => serde_json::Value::from(w),
+        }
+    }
+
+    /// A JSON value read as a device value: `true`/`false`, or an integer 0..=65535.
+    pub fn from_json(value: &serde_json::Value) -> Option<Value> {
+        match value {
+            serde_json::Value::Bool(b) => Some(Value::Bit(*b)),
+            serde_json::Value::Number(n) => n.as_u64().and_then(|w| u16::try_from(w).ok()).map(Value::Word),
+            _ => None,
+        }
+    }
+}
+
+impl fmt::Display for Value {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Value::Bit(b) => write!(f, "{b}"),
+            Value::Word(w) => write!(f, "{w}"),
+        }
+    }
+}
+
+impl From<bool> for Value {
+    fn from(b: bool) -> Value {
+        Value::Bit(b)
+    }
+}
+
+impl From<u16> for Value {
+    fn from(w: u16) -> Value {
+        Value::Word(w)
+    }
+}
+
+/// A device address split into its device type and number: `D100` is (`D`, 100). Names without
+/// a number (Omron's `P_EQ`) have none.
+#[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Address {
+    name: String,
+    kind_len: usize,
+    number: Option<u32>,
+}
+
+impl Address {
+    /// Parse a device name: upper-case letters then decimal digits (`SD8067`), or any other name.
+    pub fn parse(name: &str) -> Address {
+        let kind_len = name.bytes().take_while(u8::is_ascii_uppercase).count();
+        let digits = &name[kind_len..];
+        let number = if kind_len > 0 && !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) {
+            digits.parse().ok()
+        } else {
+            None
+        };
+        Address { name: name.to_owned(), kind_len: if number.is_some() { kind_len } else { name.len() }, number }
+    }
+
+    /// The address as written (`D100`).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The device type (`D`, `SM`), or the whole name when it has no number.
+    pub fn kind(&self) -> &str {
+        &self.name[..self.kind_len]
+    }
+
+    /// The device number, if the name has one.
+    pub fn number(&self) -> Option<u32> {
+        self.number
+    }
+
+    /// Whether this is `kind` `number` (no allocation: the hot path of every device read).
+    pub fn is(&self, kind: &str, number: u32) -> bool {
+        self.number == Some(number) && self.kind() == kind
+    }
+}
+
+impl fmt::Display for Address {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.name)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn addresses_split_into_type_and_number() {
+        let a = Address::parse("SD8067");
+        assert_eq!((a.kind(), a.number()), ("SD", Some(8067)));
+        let p = Address::parse("P_EQ");
+        assert_eq!((p.kind(), p.number()), ("P_EQ", None));
+        assert!(Address::parse("D100").is("D", 100));
+        assert!(!Address::parse("D100").is("SD", 100));
+    }
+
+    #[test]
+    fn json_values_keep_their_type() {
+        assert_eq!(Value::from_json(&serde_json::json!(true)), Some(Value::Bit(true)));
+        assert_eq!(Value::from_json(&serde_json::json!(1)), Some(Value::Word(1)));
+        assert_ne!(Value::Word(1), Value::Bit(true));
+        assert_eq!(Value::from_json(&serde_json::json!(65536)), None);
+        assert_eq!(Value::from_json(&serde_json::json!(-1)), None);
+        assert_eq!(Value::from_json(&serde_json::json!(1.5)), None);
+    }
+}

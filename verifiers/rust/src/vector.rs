@@ -1,0 +1,471 @@
+//! One vector: its initial state, its steps' inputs, and (in a suite) its expectations.
+//!
+//! A vector's devices are numbered once at load: `devices()` is the slot table (sorted by name, as
+//! in the files), and every value list of the crate (the initial image, an expected state, a
+//! [`Memory`](crate::Memory)) is aligned with it. Running and judging a vector then needs no
+//! string lookups and no allocation beyond the one device image.
+
+use std::collections::BTreeMap;
+
+use serde::Deserialize;
+
+use crate::error::{Error, Result};
+use crate::value::{Address, Value};
+
+type Json = serde_json::Value;
+
+/// An operand: a device (the first of its words for a multi-word operand) or a K/H constant.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Operand {
+    /// `{"device": "D100"}`: D100, D101, ... in the order the manual gives.
+    Device(Address),
+    /// `{"constant": 7}`.
+    Constant(i64),
+}
+
+impl Operand {
+    /// The device, if the operand is one.
+    pub fn device(&self) -> Option<&Address> {
+        match self {
+            Operand::Device(a) => Some(a),
+            Operand::Constant(_) => None,
+        }
+    }
+}
+
+/// The current clock a current-time comparison reads (only the fields the family compares).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Clock {
+    fields: Vec<(String, i64)>,
+}
+
+impl Clock {
+    /// The field (`hour`, `year`), if the step gives it.
+    pub fn get(&self, field: &str) -> Option<i64> {
+        self.fields.iter().find(|(name, _)| name == field).map(|&(_, v)| v)
+    }
+
+    /// Every field as given, sorted by name.
+    pub fn fields(&self) -> impl Iterator<Item = (&str, i64)> {
+        self.fields.iter().map(|(n, v)| (n.as_str(), *v))
+    }
+}
+
+/// One execution of the instruction (one scan): what the outside world sets, then the inputs.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Step {
+    set: Vec<(usize, Value)>,
+    /// The logic state before an AND/OR form (absent for LD forms).
+    pub rlo_in: Option<bool>,
+    /// The execution condition of TADD/TADDP.
+    pub en: Option<bool>,
+    /// The HOUR input this scan.
+    pub input: Option<bool>,
+    /// Milliseconds since the previous execution (HOUR).
+    pub elapsed_ms: Option<u64>,
+    /// The current clock (current-time comparisons).
+    pub clock: Option<Clock>,
+}
+
+impl Step {
+    /// `(slot, value)` of each device the outside world writes before the execution.
+    pub fn set(&self) -> &[(usize, Value)] {
+        &self.set
+    }
+}
+
+/// What one step must produce: the contact result, and the devices that changed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct StepExpect {
+    pub result: Option<bool>,
+    pub devices: Vec<(usize, Value)>,
+}
+
+/// One set of expectations: the vector's own, or one of its alternatives.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Expectation {
+    pub choices: Vec<(String, String)>,
+    pub steps: Vec<StepExpect>,
+    pub final_devices: BTreeMap<String, Value>,
+    pub category: String,
+}
+
+/// The expectations of a suite vector (a request sent over the protocol has none).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Expectations {
+    /// The interpretations the outcome depends on.
+    pub touched: Vec<String>,
+    pub own: Expectation,
+    pub alternatives: Vec<Expectation>,
+}
+
+/// One test vector.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Vector {
+    id: String,
+    family: String,
+    instruction: String,
+    description: String,
+    tags: Vec<String>,
+    clauses: Vec<String>,
+    device_sizes: Vec<(String, u32)>,
+    devices: Vec<Address>,
+    initial: Vec<Value>,
+    scratch: Vec<bool>,
+    operands: Vec<(String, Operand)>,
+    steps: Vec<Step>,
+    pub(crate) expectations: Option<Expectations>,
+}
+
+impl Vector {
+    /// The stable id (`fx5-time-add/TADD/manual-example/program`): the test's name.
+    pub fn id(&self) -> &str {
+        &self.id
+    }
+    /// The family (`fx5-time-add`).
+    pub fn family(&self) -> &str {
+        &self.family
+    }
+    /// The instruction as the spec spells it (`LDTM<=`, `LD <=DT`).
+    pub fn instruction(&self) -> &str {
+        &self.instruction
+    }
+    /// What the vector tests, in a sentence.
+    pub fn description(&self) -> &str {
+        &self.description
+    }
+    /// Why the vector exists (`boundary`, `manual-example`).
+    pub fn tags(&self) -> &[String] {
+        &self.tags
+    }
+    /// The spec clauses the vector exercises.
+    pub fn clauses(&self) -> &[String] {
+        &self.clauses
+    }
+    /// The interpretations the vector's outcome depends on.
+    pub fn interpretations(&self) -> &[String] {
+        self.expectations.as_ref().map_or(&[], |e| &e.touched)
+    }
+    /// `assumes.device_sizes`: the number of points of each device type (`D` -> 8000).
+    pub fn device_sizes(&self) -> &[(String, u32)] {
+        &self.device_sizes
+    }
+    /// The number of points of one device type, if the vector states it.
+    pub fn device_size(&self, kind: &str) -> Option<u32> {
+        self.device_sizes.iter().find(|(k, _)| k == kind).map(|&(_, n)| n)
+    }
+    /// Every device the vector lists (its slots), sorted by name.
+    pub fn devices(&self) -> &[Address] {
+        &self.devices
+    }
+    /// The initial value of each slot.
+    pub fn initial(&self) -> &[Value] {
+        &self.initial
+    }
+    /// Whether each slot is a scratch word (the implementation's own work area, never compared).
+    pub fn scratch(&self) -> &[bool] {
+        &self.scratch
+    }
+    /// The slot of a listed device.
+    pub fn slot(&self, name: &str) -> Option<usize> {
+        self.devices.binary_search_by(|a| a.name().cmp(name)).ok()
+    }
+    /// The operands by name (`s1`, `d`, `S1`, `D2`), sorted.
+    pub fn operands(&self) -> &[(String, Operand)] {
+        &self.operands
+    }
+    /// One operand.
+    pub fn operand(&self, name: &str) -> Option<&Operand> {
+        self.operands.iter().find(|(n, _)| n == name).map(|(_, o)| o)
+    }
+    /// The executions, in order.
+    pub fn steps(&self) -> &[Step] {
+        &self.steps
+    }
+
+    /// A vector as the runner sends it over the protocol (no expectations).
+    pub fn from_request(request: &Json) -> Result<Vector> {
+        let raw = RawVector::deserialize(request).map_err(|e| Error::new(format!("not a vector request: {e}")))?;
+        Vector::from_raw(raw, false)
+    }
+
+    /// The request the runner sends for this vector (PROTOCOL.md, run-request).
+    pub fn to_request(&self) -> Json {
+        let devices: serde_json::Map<String, Json> =
+            self.devices.iter().zip(&self.initial).map(|(a, v)| (a.name().to_owned(), v.to_json())).collect();
+        let operands: serde_json::Map<String, Json> = self
+            .operands
+            .iter()
+            .map(|(n, o)| {
+                let o = match o {
+                    Operand::Device(a) => serde_json::json!({ "device": a.name() }),
+                    Operand::Constant(c) => serde_json::json!({ "constant": c }),
+                };
+                (n.clone(), o)
+            })
+            .collect();
+        let mut initial = serde_json::json!({ "devices": devices, "operands": operands });
+        let scratch: Vec<&str> =
+            self.devices.iter().zip(&self.scratch).filter(|(_, &s)| s).map(|(a, _)| a.name()).collect();
+        if !scratch.is_empty() {
+            initial["scratch"] = serde_json::json!(scratch);
+        }
+        let steps: Vec<Json> = self
+            .steps
+            .iter()
+            .map(|s| {
+                let mut m = serde_json::Map::new();
+                if !s.set.is_empty() {
+                    let set: serde_json::Map<String, Json> =
+                        s.set.iter().map(|&(i, v)| (self.devices[i].name().to_owned(), v.to_json())).collect();
+                    m.insert("set".into(), set.into());
+                }
+                for (key, v) in [("rlo_in", s.rlo_in), ("en", s.en), ("input", s.input)] {
+                    if let Some(b) = v {
+                        m.insert(key.into(), b.into());
+                    }
+                }
+                if let Some(ms) = s.elapsed_ms {
+                    m.insert("elapsed_ms".into(), ms.into());
+                }
+                if let Some(c) = &s.clock {
+                    let c: serde_json::Map<String, Json> = c.fields().map(|(n, v)| (n.to_owned(), v.into())).collect();
+                    m.insert("clock".into(), c.into());
+                }
+                Json::Object(m)
+            })
+            .collect();
+        let sizes: serde_json::Map<String, Json> =
+            self.device_sizes.iter().map(|(k, n)| (k.clone(), (*n).into())).collect();
+        serde_json::json!({
+            "id": self.id, "family": self.family, "instruction": self.instruction,
+            "assumes": { "device_sizes": sizes }, "initial": initial, "steps": steps,
+        })
+    }
+
+    pub(crate) fn from_raw(raw: RawVector, with_expectations: bool) -> Result<Vector> {
+        let id = raw.id;
+        let bad = |what: String| Error::new(format!("vector {id}: {what}"));
+        let mut devices = Vec::with_capacity(raw.initial.devices.len());
+        let mut initial = Vec::with_capacity(raw.initial.devices.len());
+        for (name, value) in &raw.initial.devices {
+            if name.is_empty() {
+                return Err(bad("initial.devices has an empty device name".into()));
+            }
+            devices.push(Address::parse(name));
+            initial.push(
+                device_value(value).ok_or_else(|| bad(format!("initial.devices.{name}: {value} {WORD_OR_BIT}")))?,
+            );
+        }
+        let slot = |name: &str| devices.binary_search_by(|a: &Address| a.name().cmp(name)).ok();
+        let mut scratch = vec![false; devices.len()];
+        for name in &raw.initial.scratch {
+            let i = slot(name).ok_or_else(|| bad(format!("scratch device {name} is not in initial.devices")))?;
+            scratch[i] = true;
+        }
+        let listed = |what: &str, map: &BTreeMap<String, Json>| -> Result<Vec<(usize, Value)>> {
+            map.iter()
+                .map(|(name, value)| {
+                    let i = slot(name).ok_or_else(|| {
+                        bad(format!("{what} names {name}, which initial.devices does not list (the vector must list every device it touches)"))
+                    })?;
+                    let v = device_value(value).ok_or_else(|| bad(format!("{what}.{name}: {value} {WORD_OR_BIT}")))?;
+                    Ok((i, v))
+                })
+                .collect()
+        };
+        let mut operands = Vec::with_capacity(raw.initial.operands.len());
+        for (name, op) in raw.initial.operands {
+            let op = match (op.device, op.constant) {
+                (Some(d), None) => Operand::Device(Address::parse(&d)),
+                (None, Some(c)) => Operand::Constant(c),
+                _ => return Err(bad(format!("operand {name} needs exactly one of `device` and `constant`"))),
+            };
+            operands.push((name, op));
+        }
+        let mut device_sizes = Vec::new();
+        for (kind, n) in raw.assumes.device_sizes {
+            let n = u32::try_from(n).map_err(|_| bad(format!("assumes.device_sizes.{kind}: {n} is too large")))?;
+            device_sizes.push((kind, n));
+        }
+        if raw.steps.is_empty() {
+            return Err(bad("no steps".into()));
+        }
+        let mut steps = Vec::with_capacity(raw.steps.len());
+        let mut own_expects = Vec::with_capacity(raw.steps.len());
+        for (n, s) in raw.steps.into_iter().enumerate() {
+            let set = listed(&format!("steps[{n}].set"), &s.set)?;
+            if with_expectations {
+                let e = s.expect.ok_or_else(|| bad(format!("steps[{n}] has no `expect`")))?;
+                own_expects.push(step_expect(&e, &format!("steps[{n}].expect"), &listed)?);
+            }
+            let clock = s.clock.map(|c| Clock { fields: c.into_iter().collect() });
+            steps.push(Step { set, rlo_in: s.rlo_in, en: s.en, input: s.input, elapsed_ms: s.elapsed_ms, clock });
+        }
+        let expectations = if with_expectations {
+            let final_devices = raw.final_.ok_or_else(|| bad("no `final`".into()))?;
+            let outcome = raw.outcome.ok_or_else(|| bad("no `outcome`".into()))?;
+            let default_category = outcome.default.map_or(outcome.category.clone(), |d| d.category);
+            let own = Expectation {
+                choices: Vec::new(),
+                steps: own_expects,
+                final_devices: final_map(&final_devices.devices, "final.devices", &bad)?,
+                category: if outcome.interpretations.is_empty() { outcome.category } else { default_category },
+            };
+            let mut alternatives = Vec::with_capacity(raw.alternatives.len());
+            for (k, alt) in raw.alternatives.into_iter().enumerate() {
+                if alt.expect.len() != steps.len() {
+                    return Err(bad(format!(
+                        "alternatives[{k}] has {} expectations for {} steps",
+                        alt.expect.len(),
+                        steps.len()
+                    )));
+                }
+                let expects = alt
+                    .expect
+                    .iter()
+                    .enumerate()
+                    .map(|(n, e)| step_expect(e, &format!("alternatives[{k}].expect[{n}]"), &listed))
+                    .collect::<Result<Vec<_>>>()?;
+                alternatives.push(Expectation {
+                    choices: alt.choices.into_iter().collect(),
+                    steps: expects,
+                    final_devices: final_map(&alt.final_.devices, &format!("alternatives[{k}].final.devices"), &bad)?,
+                    category: alt.outcome.category,
+                });
+            }
+            Some(Expectations { touched: outcome.interpretations, own, alternatives })
+        } else {
+            None
+        };
+        Ok(Vector {
+            id,
+            family: raw.family,
+            instruction: raw.instruction,
+            description: raw.description,
+            tags: raw.tags,
+            clauses: raw.clauses,
+            device_sizes,
+            devices,
+            initial,
+            scratch,
+            operands,
+            steps,
+            expectations,
+        })
+    }
+}
+
+const WORD_OR_BIT: &str = "is neither a word (an integer 0..65535) nor a bit (true/false)";
+
+/// Reads a device map of a vector (`set`, `expect.devices`) into `(slot, value)` pairs.
+type ListDevices<'a> = dyn Fn(&str, &BTreeMap<String, Json>) -> Result<Vec<(usize, Value)>> + 'a;
+
+fn device_value(value: &Json) -> Option<Value> {
+    Value::from_json(value)
+}
+
+fn step_expect(e: &RawExpect, what: &str, listed: &ListDevices<'_>) -> Result<StepExpect> {
+    Ok(StepExpect { result: e.result, devices: listed(&format!("{what}.devices"), &e.devices)? })
+}
+
+fn final_map(
+    map: &BTreeMap<String, Json>,
+    what: &str,
+    bad: &dyn Fn(String) -> Error,
+) -> Result<BTreeMap<String, Value>> {
+    map.iter()
+        .map(|(n, v)| Ok((n.clone(), device_value(v).ok_or_else(|| bad(format!("{what}.{n}: {v} {WORD_OR_BIT}")))?)))
+        .collect()
+}
+
+// The file shapes (vectors/schema/vector-file.schema.json); unknown fields are ignored, as a
+// minor schema version may add optional ones.
+
+#[derive(Deserialize)]
+pub(crate) struct RawVector {
+    pub id: String,
+    pub family: String,
+    instruction: String,
+    #[serde(default)]
+    description: String,
+    #[serde(default)]
+    tags: Vec<String>,
+    #[serde(default)]
+    clauses: Vec<String>,
+    #[serde(default)]
+    assumes: RawAssumes,
+    initial: RawInitial,
+    steps: Vec<RawStep>,
+    #[serde(rename = "final")]
+    final_: Option<RawFinal>,
+    outcome: Option<RawOutcome>,
+    #[serde(default)]
+    alternatives: Vec<RawAlternative>,
+}
+
+#[derive(Deserialize, Default)]
+struct RawAssumes {
+    #[serde(default)]
+    device_sizes: BTreeMap<String, u64>,
+}
+
+#[derive(Deserialize)]
+struct RawInitial {
+    devices: BTreeMap<String, Json>,
+    operands: BTreeMap<String, RawOperand>,
+    #[serde(default)]
+    scratch: Vec<String>,
+}
+
+#[derive(Deserialize)]
+struct RawOperand {
+    device: Option<String>,
+    constant: Option<i64>,
+}
+
+#[derive(Deserialize)]
+struct RawStep {
+    #[serde(default)]
+    set: BTreeMap<String, Json>,
+    rlo_in: Option<bool>,
+    en: Option<bool>,
+    input: Option<bool>,
+    elapsed_ms: Option<u64>,
+    clock: Option<BTreeMap<String, i64>>,
+    expect: Option<RawExpect>,
+}
+
+#[derive(Deserialize)]
+struct RawExpect {
+    result: Option<bool>,
+    #[serde(default)]
+    devices: BTreeMap<String, Json>,
+}
+
+#[derive(Deserialize)]
+struct RawFinal {
+    devices: BTreeMap<String, Json>,
+}
+
+#[derive(Deserialize)]
+struct RawCategory {
+    category: String,
+}
+
+#[derive(Deserialize)]
+struct RawOutcome {
+    category: String,
+    #[serde(default)]
+    interpretations: Vec<String>,
+    default: Option<RawCategory>,
+}
+
+#[derive(Deserialize)]
+struct RawAlternative {
+    choices: BTreeMap<String, String>,
+    expect: Vec<RawExpect>,
+    #[serde(rename = "final")]
+    final_: RawFinal,
+    outcome: RawCategory,
+}
