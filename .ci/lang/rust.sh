@@ -35,4 +35,14 @@ cargo test --locked --release --manifest-path "$crate/Cargo.toml" --workspace
 
 step "the reference over the stdio protocol: plcvec verify"
 python3 -m plcvec verify --adapter "$crate/reference-adapter" -q
+step "the gate rejects a mutant of the reference served over stdio"
+set +e
+python3 -m plcvec verify --adapter "$crate/reference-adapter --mutant tadd-device-range-unchecked" \
+    --family fx5-time-add -q >/dev/null
+status=$?
+set -e
+if [ "$status" -ne 1 ]; then
+    echo "rust.sh: plcvec verify gave exit $status for the mutant tadd-device-range-unchecked (expected 1: rejected)" >&2
+    exit 1
+fi
 step "done"

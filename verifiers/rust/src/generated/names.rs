@@ -10,7 +10,7 @@ pub const SUITE_VERSION: &str = "0.1.0";
 /// The vector files' `schema_version`.
 pub const SCHEMA_VERSION: &str = "1.0.0";
 /// The hash of the spec the embedded vectors were generated from.
-pub const SPEC_SHA256: &str = "16e04a093d32a18911a4d612d43f0be0055f67c54c6d46f8804222ff37135a24";
+pub const SPEC_SHA256: &str = "90c2e2a0e8b4a5d89805b7e473f0bd4ec243612a5aa1faeca464e99c0de22e12";
 /// How many vectors the embedded copy holds.
 pub const TOTAL: usize = 2899;
 
@@ -627,6 +627,8 @@ pub enum Cp1eAllMasked {
     Error,
     #[doc = "`equal`: Nothing is compared, so the data are equal: =, <=, >= on."]
     Equal,
+    #[doc = "`not-compared`: Nothing is compared, so no comparison condition holds: the execution condition is OFF, the six flags are left as they were, and it is no error (P_ER is written off like any execution without error)."]
+    NotCompared,
 }
 
 impl Cp1eAllMasked {
@@ -635,7 +637,7 @@ impl Cp1eAllMasked {
         id: "CP1E-ALL-MASKED",
         question: "What is the result when C masks all six fields?",
         default: "error",
-        alternatives: &["error", "equal"],
+        alternatives: &["error", "equal", "not-compared"],
         families: &[Family::Cp1eTimeCompare],
     };
 }
@@ -643,12 +645,13 @@ impl Cp1eAllMasked {
 impl Alternative for Cp1eAllMasked {
     const ID: &'static str = "CP1E-ALL-MASKED";
     const DEFAULT: Self = Cp1eAllMasked::Error;
-    const ALL: &'static [Self] = &[Cp1eAllMasked::Error, Cp1eAllMasked::Equal];
+    const ALL: &'static [Self] = &[Cp1eAllMasked::Error, Cp1eAllMasked::Equal, Cp1eAllMasked::NotCompared];
 
     fn as_str(self) -> &'static str {
         match self {
             Cp1eAllMasked::Error => "error",
             Cp1eAllMasked::Equal => "equal",
+            Cp1eAllMasked::NotCompared => "not-compared",
         }
     }
 }
@@ -693,6 +696,8 @@ pub enum Cp1eAndOrWhenOff {
     AlwaysExecuted,
     #[doc = "`and-skipped`: An AND form with its execution condition OFF is not executed and leaves the flags as they were."]
     AndSkipped,
+    #[doc = "`short-circuit`: An AND form with its execution condition OFF and an OR form with it ON are not executed (their result is already decided) and leave the flags as they were."]
+    ShortCircuit,
 }
 
 impl Cp1eAndOrWhenOff {
@@ -701,7 +706,7 @@ impl Cp1eAndOrWhenOff {
         id: "CP1E-AND-OR-WHEN-OFF",
         question: "Does an AND form execute, and update the flags, while its execution condition is OFF?",
         default: "always-executed",
-        alternatives: &["always-executed", "and-skipped"],
+        alternatives: &["always-executed", "and-skipped", "short-circuit"],
         families: &[Family::Cp1eTimeCompare],
     };
 }
@@ -709,12 +714,13 @@ impl Cp1eAndOrWhenOff {
 impl Alternative for Cp1eAndOrWhenOff {
     const ID: &'static str = "CP1E-AND-OR-WHEN-OFF";
     const DEFAULT: Self = Cp1eAndOrWhenOff::AlwaysExecuted;
-    const ALL: &'static [Self] = &[Cp1eAndOrWhenOff::AlwaysExecuted, Cp1eAndOrWhenOff::AndSkipped];
+    const ALL: &'static [Self] = &[Cp1eAndOrWhenOff::AlwaysExecuted, Cp1eAndOrWhenOff::AndSkipped, Cp1eAndOrWhenOff::ShortCircuit];
 
     fn as_str(self) -> &'static str {
         match self {
             Cp1eAndOrWhenOff::AlwaysExecuted => "always-executed",
             Cp1eAndOrWhenOff::AndSkipped => "and-skipped",
+            Cp1eAndOrWhenOff::ShortCircuit => "short-circuit",
         }
     }
 }
@@ -792,6 +798,8 @@ pub enum HourInputOff {
     Hold,
     #[doc = "`reset`: While the input is off D1 returns to 0:00:00 and the fraction is dropped; D2 is kept."]
     Reset,
+    #[doc = "`hold-drop-fraction`: While the input is off D1 and D2 are kept, but the fraction of a second counted in the work area is dropped: each ON period counts whole seconds from its own start."]
+    HoldDropFraction,
 }
 
 impl HourInputOff {
@@ -800,7 +808,7 @@ impl HourInputOff {
         id: "HOUR-INPUT-OFF",
         question: "Does D1 hold its value while the input is off, or is it cleared?",
         default: "hold",
-        alternatives: &["hold", "reset"],
+        alternatives: &["hold", "reset", "hold-drop-fraction"],
         families: &[Family::Fc6aHourMeter],
     };
 }
@@ -808,12 +816,13 @@ impl HourInputOff {
 impl Alternative for HourInputOff {
     const ID: &'static str = "HOUR-INPUT-OFF";
     const DEFAULT: Self = HourInputOff::Hold;
-    const ALL: &'static [Self] = &[HourInputOff::Hold, HourInputOff::Reset];
+    const ALL: &'static [Self] = &[HourInputOff::Hold, HourInputOff::Reset, HourInputOff::HoldDropFraction];
 
     fn as_str(self) -> &'static str {
         match self {
             HourInputOff::Hold => "hold",
             HourInputOff::Reset => "reset",
+            HourInputOff::HoldDropFraction => "hold-drop-fraction",
         }
     }
 }
@@ -858,6 +867,8 @@ pub enum Fx5Sm709Scope {
     SelectedFields,
     #[doc = "`all-words`: All three words of (s1) and, unless (s2) is ignored, of (s2) are checked whenever the instruction executes."]
     AllWords,
+    #[doc = "`compared-operands`: All three words of each compared operand ((s1) and, unless (s2) is ignored, (s2)) are checked, but only when a comparison is made: (s3) has no reserved bit set and selects at least one field. A selector that compares nothing checks nothing."]
+    ComparedOperands,
 }
 
 impl Fx5Sm709Scope {
@@ -866,7 +877,7 @@ impl Fx5Sm709Scope {
         id: "FX5-SM709-SCOPE",
         question: "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?",
         default: "selected-fields",
-        alternatives: &["selected-fields", "all-words"],
+        alternatives: &["selected-fields", "all-words", "compared-operands"],
         families: &[Family::Fx5DateCompare, Family::Fx5TimeCompare],
     };
 }
@@ -874,12 +885,13 @@ impl Fx5Sm709Scope {
 impl Alternative for Fx5Sm709Scope {
     const ID: &'static str = "FX5-SM709-SCOPE";
     const DEFAULT: Self = Fx5Sm709Scope::SelectedFields;
-    const ALL: &'static [Self] = &[Fx5Sm709Scope::SelectedFields, Fx5Sm709Scope::AllWords];
+    const ALL: &'static [Self] = &[Fx5Sm709Scope::SelectedFields, Fx5Sm709Scope::AllWords, Fx5Sm709Scope::ComparedOperands];
 
     fn as_str(self) -> &'static str {
         match self {
             Fx5Sm709Scope::SelectedFields => "selected-fields",
             Fx5Sm709Scope::AllWords => "all-words",
+            Fx5Sm709Scope::ComparedOperands => "compared-operands",
         }
     }
 }

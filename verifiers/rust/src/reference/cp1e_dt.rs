@@ -103,7 +103,7 @@ impl TimeCompare {
             "LD" => self.evaluate(symbol, vector, mem),
             "AND" => {
                 let rlo = rlo_in(step)?;
-                if !rlo && self.and_or == Cp1eAndOrWhenOff::AndSkipped {
+                if !rlo && matches!(self.and_or, Cp1eAndOrWhenOff::AndSkipped | Cp1eAndOrWhenOff::ShortCircuit) {
                     return Ok(false);
                 }
                 let contact = self.evaluate(symbol, vector, mem)?;
@@ -111,6 +111,9 @@ impl TimeCompare {
             }
             "OR" => {
                 let rlo = rlo_in(step)?;
+                if rlo && self.and_or == Cp1eAndOrWhenOff::ShortCircuit {
+                    return Ok(true); // decided already: not executed, the flags left as they were
+                }
                 let contact = self.evaluate(symbol, vector, mem)?;
                 Ok(rlo || contact)
             }
@@ -135,8 +138,18 @@ impl TimeCompare {
         // "To mask a time value, set the corresponding bit in the control word (C) to 1."
         // "compares the unmasked values (corresponding bit of C set to 0)"
         let unmasked = FIELDS.iter().filter(|f| c >> f.mask_bit & 1 == 0);
-        if unmasked.clone().next().is_none() && self.all_masked == Cp1eAllMasked::Error {
-            return error(mem);
+        if unmasked.clone().next().is_none() {
+            match self.all_masked {
+                Cp1eAllMasked::Error => return error(mem),
+                // Nothing compared, no result: OFF, the flags untouched, no error.
+                Cp1eAllMasked::NotCompared => {
+                    if self.er_flag == Cp1eErFlag::ReflectsEachExecution {
+                        mem.set_bit(ERROR_FLAG, false);
+                    }
+                    return Ok(false);
+                }
+                Cp1eAllMasked::Equal => {}
+            }
         }
         let byte = |words: &[u16; 3], f: &Field| (words[f.word] >> (8 * f.byte)) as u8;
         let mut order = Ordering::Equal;

@@ -65,11 +65,16 @@ impl HourMeter {
         let on = step.input.ok_or_else(|| Refusal::Error("HOUR needs the step's input".to_owned()))?;
         if !on {
             // "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF.
-            if self.input_off == HourInputOff::Reset {
-                for offset in 0..3 {
-                    mem.set_word(d1, offset, 0);
+            match self.input_off {
+                HourInputOff::Hold => {}
+                HourInputOff::Reset => {
+                    for offset in 0..3 {
+                        mem.set_word(d1, offset, 0);
+                    }
+                    self.fraction_ms = 0;
                 }
-                self.fraction_ms = 0;
+                // D1 kept; the part of a second already counted is lost.
+                HourInputOff::HoldDropFraction => self.fraction_ms = 0,
             }
             return Ok(());
         }

@@ -207,6 +207,16 @@ impl Fx5Compare {
                     return Ok(Contact::Compared(false));
                 }
             }
+            // The operands are "comparison target data" as a whole, but only when the table says
+            // they "are compared": not for a selector that compares nothing.
+            Fx5Sm709Scope::ComparedOperands => {
+                if !s3_valid {
+                    return Ok(Contact::Compared(false));
+                }
+                if out_of_range(&s1, None) || (!use_clock && out_of_range(&s2, None)) {
+                    return Ok(Contact::Error);
+                }
+            }
             Fx5Sm709Scope::SelectedFields => {
                 // A masked word is not comparison target data.
                 if !s3_valid {
