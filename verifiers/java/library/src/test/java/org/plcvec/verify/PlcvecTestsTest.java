@@ -1,0 +1,99 @@
+package org.plcvec.verify;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+
+import org.junit.jupiter.api.DynamicNode;
+import org.junit.jupiter.api.DynamicTest;
+import org.junit.jupiter.api.Test;
+import org.opentest4j.AssertionFailedError;
+import org.opentest4j.TestAbortedException;
+import org.plcvec.spec.Family;
+
+/** The JUnit layer: one test per vector named by id, and a gate that cannot pass by accident. */
+class PlcvecTestsTest {
+    private static List<DynamicNode> nodes(PlcvecTests t) {
+        return t.stream().toList();
+    }
+
+    @Test
+    void oneTestPerVectorDisplayedByItsId() throws Throwable {
+        List<DynamicNode> n = nodes(PlcvecTests.of(Fakes.echo((s, d) -> { })).selection(Selection.all().families(Family.FX5_TIME_ADD)));
+        assertEquals(Selection.all().families(Family.FX5_TIME_ADD).apply(Suite.golden()).size(), n.size());
+        assertEquals(Suite.golden().vectors().stream().filter(v -> v.family().equals("fx5-time-add")).findFirst().orElseThrow().id(),
+                n.get(0).getDisplayName());
+        ((DynamicTest) n.get(0)).getExecutable().execute();
+    }
+
+    @Test
+    void aFailureCarriesTheDiffAndBothSides() {
+        List<DynamicNode> n = nodes(PlcvecTests.of(Fakes.echo((s, d) -> d.put("D31", 41)))
+                .selection(Selection.all().ids(CompareTest.PROGRAM)));
+        AssertionFailedError e = assertThrows(AssertionFailedError.class, () -> ((DynamicTest) n.get(0)).getExecutable().execute());
+        assertTrue(e.getMessage().contains("step 0 D31: expected 40, got 41"), e.getMessage());
+        assertEquals("step 0 D31 = 40\n", e.getExpected().getStringRepresentation());
+        assertEquals("step 0 D31 = 41\n", e.getActual().getStringRepresentation());
+    }
+
+    @Test
+    void aSkippedVectorIsAborted() {
+        Implementation none = new Implementation() {
+            @Override
+            public boolean supports(String instruction) {
+                return instruction.equals("TADD");
+            }
+
+            @Override
+            public List<StepState> run(VectorRequest vector) {
+                throw new SkipVector("not today");
+            }
+        };
+        List<DynamicNode> n = nodes(PlcvecTests.of(none).selection(Selection.all().ids(CompareTest.PROGRAM)));
+        TestAbortedException e = assertThrows(TestAbortedException.class, () -> ((DynamicTest) n.get(0)).getExecutable().execute());
+        assertEquals("skip: not today", e.getMessage());
+    }
+
+    @Test
+    void anEmptySelectionOrNothingSupportedIsOneFailingTest() {
+        List<DynamicNode> n = nodes(PlcvecTests.of(Fakes.echo((s, d) -> { })).selection(Selection.all().ids("no/such/*")));
+        assertEquals(1, n.size());
+        assertEquals("plcvec: cannot run", n.get(0).getDisplayName());
+        assertThrows(AssertionFailedError.class, () -> ((DynamicTest) n.get(0)).getExecutable().execute());
+
+        Implementation nothing = new Implementation() {
+            @Override
+            public boolean supports(String instruction) {
+                return false;
+            }
+
+            @Override
+            public List<StepState> run(VectorRequest vector) {
+                return List.of();
+            }
+        };
+        List<DynamicNode> m = nodes(PlcvecTests.of(nothing).selection(Selection.all().families(Family.FC6A_HOUR_METER)));
+        assertEquals("plcvec: nothing to run", m.get(0).getDisplayName());
+    }
+
+    @Test
+    void anUnknownInterpretationIsRefused() {
+        Implementation wrong = new Implementation() {
+            @Override
+            public Choices choices() {
+                return Choices.parse(List.of("TADD-EXACT-24=carry-at-25"));
+            }
+
+            @Override
+            public List<StepState> run(VectorRequest vector) {
+                return List.of();
+            }
+        };
+        List<DynamicNode> n = nodes(PlcvecTests.of(wrong));
+        AssertionFailedError e = assertThrows(AssertionFailedError.class, () -> ((DynamicTest) n.get(0)).getExecutable().execute());
+        assertTrue(e.getMessage().contains("TADD-EXACT-24=carry-at-25, but TADD-EXACT-24 has the alternatives carry-at-24, "
+                + "carry-above-24"), e.getMessage());
+    }
+}
