@@ -13,7 +13,7 @@ fi
 started=$SECONDS
 # -B -q: no progress bars or download logs. Dependencies and pinned plugins come from Maven Central
 # the first time, from ~/.m2 after that (the build also runs with -o once they are there).
-(cd verifiers/java && mvn -B -q verify)
+(cd verifiers/java && mvn -B -q -Dstyle.color=never verify)
 echo "java: mvn verify in $((SECONDS - started)) s"
 
 python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
