@@ -74,6 +74,7 @@ type StepResult struct {
 	Result  Result
 	Values  []Value
 	Devices []Device
+	buf     *resultBuffer // Emulate's buffer that holds the results, to reuse once judged
 }
 
 // Image is the whole device image of a step result of req, as Devices alone.
@@ -99,6 +100,7 @@ type Request struct {
 	Scratch     []string           // work-area words: start at 0, never compared
 	Steps       []Inputs
 	addrs       []Addr         // parallel to Devices
+	keys        []uint64       // parallel to Devices: addrKey of each
 	operands    []namedOperand // Operands by name, their addresses parsed once
 	sizes       []kindSize     // DeviceSizes as a list: a few entries, read on every range check
 }
@@ -168,10 +170,7 @@ func NewRequest(id, family, instruction string, sizes map[string]int, devices ma
 		r.Devices = append(r.Devices, Device{name, v})
 	}
 	sort.Slice(r.Devices, func(a, b int) bool { return r.Devices[a].Name < r.Devices[b].Name })
-	r.addrs = make([]Addr, len(r.Devices))
-	for i, d := range r.Devices {
-		r.addrs[i] = ParseAddr(d.Name)
-	}
+	r.prepareAddrs()
 	r.prepareOperands()
 	r.prepareSizes()
 	return r

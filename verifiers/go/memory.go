@@ -34,10 +34,47 @@ func (m *Memory) reset(req *Request) {
 		m.vals[i] = d.Value
 	}
 	if req.addrs == nil {
-		req.addrs = make([]Addr, len(req.Devices))
-		for i, d := range req.Devices {
-			req.addrs[i] = ParseAddr(d.Name)
-		}
+		req.prepareAddrs()
+	}
+}
+
+func (r *Request) prepareAddrs() {
+	r.addrs = make([]Addr, len(r.Devices))
+	r.keys = make([]uint64, len(r.Devices))
+	for i, d := range r.Devices {
+		r.addrs[i] = ParseAddr(d.Name)
+		r.keys[i] = addrKey(r.addrs[i])
+	}
+}
+
+// addrKey folds an address into one integer (its number, and an FNV-1a hash of its kind), so a
+// lookup compares integers and compares strings only on a match: names without a number
+// (P_EQ, P_NE, ...) all have N = -1 and would otherwise each cost a string comparison.
+func addrKey(a Addr) uint64 {
+	h := uint32(2166136261)
+	for i := 0; i < len(a.Kind); i++ {
+		h = (h ^ uint32(a.Kind[i])) * 16777619
+	}
+	return uint64(uint32(a.N))<<32 | uint64(h)
+}
+
+type resultBuffer struct {
+	values []Value
+	steps  []StepResult
+}
+
+var results = sync.Pool{New: func() any { return new(resultBuffer) }}
+
+func grow(v []Value, n int) []Value {
+	if cap(v) < n {
+		return make([]Value, n)
+	}
+	return v[:n]
+}
+
+func (emulated) recycle(steps []StepResult) {
+	if len(steps) > 0 && steps[0].buf != nil {
+		results.Put(steps[0].buf)
 	}
 }
 
@@ -46,10 +83,9 @@ func (m *Memory) reset(req *Request) {
 var memories = sync.Pool{New: func() any { return new(Memory) }}
 
 func (m *Memory) index(a Addr) int {
-	addrs := m.req.addrs
-	for i := range addrs {
-		// The number first: it differs for almost every other device, and costs no string compare.
-		if addrs[i].N == a.N && addrs[i].Kind == a.Kind {
+	key, keys := addrKey(a), m.req.keys
+	for i := range keys {
+		if keys[i] == key && m.req.addrs[i] == a {
 			return i
 		}
 	}
@@ -188,9 +224,15 @@ func (em emulated) Run(req *Request) ([]StepResult, error) {
 	mem.reset(req)
 	defer memories.Put(mem)
 	n := len(req.Devices)
-	// Every step's values in one allocation without pointers: the collector never scans it.
-	values := make([]Value, n*len(req.Steps))
-	out := make([]StepResult, len(req.Steps))
+	// Every step's values in one buffer without pointers, reused once the runner has judged them
+	// (recycle); a caller that keeps the results (the stdio adapter) simply never hands them back.
+	buf := results.Get().(*resultBuffer)
+	buf.values = grow(buf.values, n*len(req.Steps))
+	if cap(buf.steps) < len(req.Steps) {
+		buf.steps = make([]StepResult, len(req.Steps))
+	}
+	values, out := buf.values, buf.steps[:len(req.Steps)]
+	clear(out)
 	for i := range req.Steps {
 		step := &req.Steps[i]
 		if step.Set != nil {
@@ -207,5 +249,6 @@ func (em emulated) Run(req *Request) ([]StepResult, error) {
 			out[i].Devices = append([]Device(nil), mem.outside...)
 		}
 	}
+	out[0].buf = buf
 	return out, nil
 }

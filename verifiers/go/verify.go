@@ -133,8 +133,15 @@ func (c *Case) Judge(impl Implementation) (verdict Verdict) {
 	} else {
 		verdict.Status = StatusPass
 	}
+	if r, ok := impl.(recycler); ok {
+		r.recycle(steps)
+	}
 	return verdict
 }
+
+// recycler is an implementation of this package (Emulate's) whose step results the runner
+// hands back once judged, to be reused for the next vector.
+type recycler interface{ recycle([]StepResult) }
 
 // trimStack keeps the frames below the panic, not the runner's own.
 func trimStack(stack []byte) string {

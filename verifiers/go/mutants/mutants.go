@@ -134,3 +134,13 @@ func Find(name string) (Mutant, error) {
 	sort.Strings(names)
 	return Mutant{}, fmt.Errorf("no mutant %q; known: %s", name, strings.Join(names, ", "))
 }
+
+// Table is the Markdown table of the mutants that MUTANTS.md holds (a test keeps them equal).
+func Table() string {
+	var b strings.Builder
+	b.WriteString("| mutant | families | what it breaks | the bug |\n|---|---|---|---|\n")
+	for _, m := range All {
+		fmt.Fprintf(&b, "| `%s` | %s | %s | %s |\n", m.Name, strings.Join(m.Families, ", "), m.Aspect, m.Bug)
+	}
+	return b.String()
+}

@@ -1,6 +1,7 @@
 package mutants_test
 
 import (
+	"os"
 	"strings"
 	"testing"
 
@@ -101,5 +102,16 @@ func TestUnknownMutant(t *testing.T) {
 	}
 	if _, err := reference.New(map[string]string{"NO-SUCH-INTERPRETATION": "x"}); err == nil {
 		t.Error("the reference accepted an unknown interpretation")
+	}
+}
+
+// TestTableInMutantsMD: MUTANTS.md lists exactly the mutants of All.
+func TestTableInMutantsMD(t *testing.T) {
+	text, err := os.ReadFile("MUTANTS.md")
+	if err != nil {
+		t.Fatal(err)
+	}
+	if !strings.Contains(string(text), mutants.Table()) {
+		t.Errorf("MUTANTS.md does not hold the table of mutants.All; put this in it:\n%s", mutants.Table())
 	}
 }
