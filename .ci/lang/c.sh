@@ -70,3 +70,6 @@ if [ "$rc" -ne 1 ]; then
     exit 1
 fi
 echo "c: the gate rejects a mutant served over stdio"
+
+# Live differential run: fresh cases drawn from the spec through the C reference and the spec engine.
+python3 -m plcvec fuzz --adapter verifiers/c/reference-adapter --examples 500 --seed 3
