@@ -56,6 +56,8 @@ class VectorBuilder:
         self.executions = 0   # runs of a case under one set of choices, for the benchmark and its tests
         self.ids = set()
         self.defaults = fam.default_choices()
+        self.order = list(fam.interpretations)
+        self.options = {i: [a["id"] for a in fam.interpretations[i]["alternatives"]] for i in self.order}
         coverage = fam.doc.get("coverage", {})
         # Clauses the spec says every vector embodies (names, operand types, encoding), and those a
         # vector cites because the generator tagged it for that reason.
@@ -93,7 +95,8 @@ class VectorBuilder:
         ctx = {"device_sizes": self.sizes}
         trace, expects, errors = set(), [], []
         for index, step in enumerate(steps):
-            state.update(step.get("set", {}))
+            if "set" in step:
+                state.update(step["set"])
             before = dict(state)
             result = engine.execute(instr, operands, state, step, ctx, trace)
             if len(state) != len(before):
@@ -101,7 +104,8 @@ class VectorBuilder:
             expect = {}
             if result is not None:
                 expect["result"] = result
-            expect["devices"] = {k: state[k] for k in sorted(state) if state[k] != before[k] and k not in scratch}
+            changed = sorted(k for k, v in state.items() if v != before[k] and k not in scratch)
+            expect["devices"] = {k: state[k] for k in changed}
             expects.append(expect)
             if "error" in ctx:
                 errors.append(dict(step=index, **ctx.pop("error")))
@@ -118,9 +122,7 @@ class VectorBuilder:
         A run that consulted an interpretation not yet fixed is split into one entry per combination of
         those interpretations' alternatives (the one that keeps the defaults is the run itself).
         """
-        fam, defaults = self.fam, self.defaults
-        order = list(fam.interpretations)
-        options = {i: [a["id"] for a in fam.interpretations[i]["alternatives"]] for i in order}
+        defaults, order, options = self.defaults, self.order, self.options
         done, pending = [], [{}]
         while pending:
             fixed = pending.pop()
@@ -179,10 +181,13 @@ class VectorBuilder:
         changes the result; the result is then a function of the touched ones only. Only the
         interpretations some run consulted can touch it, so the grid is that of the consulted ones.
         """
-        fam, defaults = self.fam, self.defaults
+        defaults = self.defaults
         runs = self.runs(instr, operands, devices, steps, scratch)
-        consulted = [i for i in fam.interpretations if any(i in choice for choice, _ in runs)]
-        options = [[a["id"] for a in fam.interpretations[i]["alternatives"]] for i in consulted]
+        if len(runs) == 1:  # nothing consulted: the result of every combination is this one
+            (_, root), = runs
+            return root.expects, root.final, root.outcome, set(root.trace), [], []
+        consulted = [i for i in self.order if any(i in choice for choice, _ in runs)]
+        options = [self.options[i] for i in consulted]
         # Runs with equal results share a class, so the grid compares small integers.
         classes, distinct = [], []
         for _, run in runs:

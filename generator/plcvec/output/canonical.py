@@ -6,8 +6,12 @@ vector's own keys is the order the builder gives, which is fixed in code.
 import json
 
 
+# One encoder for every value: json.dumps with these options would build a new one per call.
+_ENCODER = json.JSONEncoder(sort_keys=True, ensure_ascii=False, separators=(", ", ": "))
+
+
 def dumps_value(value):
-    return json.dumps(value, sort_keys=True, ensure_ascii=False, separators=(", ", ": "))
+    return _ENCODER.encode(value)
 
 
 def dumps_object_lines(obj, indent):
