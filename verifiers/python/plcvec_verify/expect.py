@@ -25,6 +25,10 @@ class Expected:
     scratch: frozenset
     outcome: dict           # the outcome category under the chosen alternatives
     choices: dict           # interpretation -> alternative applied (only those the vector depends on)
+    # The answer's steps exactly as a passing adapter reports them, for compare.passes(): None when
+    # scratch devices make the reported state differ from `states`.
+    wire: list | None = None
+    typed_columns: tuple = ()   # per step: `typed` as (devices, types), for one comparison of the types
 
 
 def request_of(vector: dict) -> dict:
@@ -72,4 +76,8 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
                           "(the vector file is inconsistent; regenerate it)")
     # Python's 1 == True: only values equal to 0 or 1 can compare equal under the wrong JSON type.
     typed = tuple(tuple((k, type(v)) for k, v in st.items() if v in (0, 1)) for st in states)
-    return Expected(vector["id"], tuple(results), tuple(states), tuple(befores), typed, scratch, category, applied)
+    wire = None if scratch else [{"devices": st} if r is None else {"devices": st, "result": r}
+                                  for st, r in zip(states, results)]
+    columns = tuple((tuple(k for k, _ in t), tuple(ty for _, ty in t)) for t in typed)
+    return Expected(vector["id"], tuple(results), tuple(states), tuple(befores), typed, scratch, category, applied,
+                    wire, columns)

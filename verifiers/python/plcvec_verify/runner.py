@@ -11,7 +11,7 @@ import time
 from dataclasses import dataclass, field
 
 from .adapters import AdapterAbort
-from .compare import Problem, compare
+from .compare import Problem, compare, passes
 from .errors import VerifyError
 from .expect import expected_of, request_of
 from .known import KnownFailures
@@ -143,9 +143,17 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
             v = by_id[answer.id]
             exp = plan.expected[answer.id]
             msg = answer.message
+            if not answer.fault and passes(exp, msg):     # the usual case: equal at one comparison
+                # Every field given by position: keyword and default handling cost as much as the check.
+                results[answer.id] = VectorResult(v["id"], v["family"], v["instruction"], PASS, [], "", [],
+                                                  exp.choices)
+                done += 1
+                if progress:
+                    progress(done, total, failed)
+                continue
             problems = None
             if not answer.fault and result_shape_ok(msg):
-                problems = compare(exp, msg["steps"])     # the usual case: shape fine, compare at once
+                problems = compare(exp, msg["steps"])     # shape fine: compare at once
             errors = () if answer.fault or problems == [] else result_errors(msg)
             if answer.fault or errors:
                 fault = answer.fault or "the result does not match result.schema.json: " + "; ".join(errors)
