@@ -126,7 +126,10 @@ int plcvec_main(const plcvec_impl *impl, const plcvec_known_failure *known, size
             }
         if (matched)
             continue;
-        if (strcmp(argv[i], "--shard") == 0 && i + 1 < argc) {
+        if (strcmp(argv[i], "--shard") == 0 && i + 1 >= argc) {
+            fprintf(stderr, "%s: --shard needs a value (K/N)\n", prog);
+            rc = 2;
+        } else if (strcmp(argv[i], "--shard") == 0) {
             char tail;
             if (sscanf(argv[++i], "%u/%u%c", &opt.selection.shard_k, &opt.selection.shard_n, &tail) != 2) {
                 fprintf(stderr, "%s: --shard takes K/N (e.g. 2/4), got '%s'\n", prog, argv[i]);

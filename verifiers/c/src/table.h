@@ -17,6 +17,12 @@ typedef struct plcvec_family_table {
 
 extern const plcvec_family_table *const plcvec_tables[PLCVEC_FAMILY_COUNT];
 
+/* The tables were exported from vector files of schema 1.x; a 2.x file may mean something else by
+ * the same fields, so a library written for 1.x refuses to build from it (CONTRACT.md, Versioning). */
+#if PLCVEC_SCHEMA_MAJOR != 1
+#error "src/generated/ was exported from vector files of another major schema_version; this library reads 1.x"
+#endif
+
 _Static_assert(PLCVEC_TAG_COUNT <= 64, "a vector's tags are a 64-bit set");
 
 /* A list and its length (the export counts); NONE is the empty list. */
