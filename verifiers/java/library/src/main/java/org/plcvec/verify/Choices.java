@@ -83,6 +83,29 @@ public final class Choices {
         return chosen;
     }
 
+    /**
+     * Checks every declaration against the spec's names this library was generated with (before
+     * any suite is loaded, e.g. for a command line's {@code --choose}).
+     */
+    public Choices checked() {
+        for (Map.Entry<String, String> e : chosen.entrySet()) {
+            org.plcvec.spec.Interpretation i = org.plcvec.spec.Interpretation.byId(e.getKey());
+            if (i == null) {
+                StringBuilder known = new StringBuilder();
+                for (org.plcvec.spec.Interpretation k : org.plcvec.spec.Interpretation.values()) {
+                    known.append(known.length() == 0 ? "" : ", ").append(k.id());
+                }
+                throw new VerifyException("no interpretation " + e.getKey() + " (known: " + known + ")");
+            }
+            if (i.alternative(e.getValue()) == null) {
+                StringBuilder known = new StringBuilder();
+                i.alternatives().forEach(a -> known.append(known.length() == 0 ? "" : ", ").append(a.id()));
+                throw new VerifyException(e.getKey() + " has no alternative " + e.getValue() + " (it has " + known + ")");
+            }
+        }
+        return this;
+    }
+
     /** Checks every declaration against the suite; an unknown id is a usage error, never ignored. */
     public void validate(Suite suite, String who) {
         Map<String, Suite.InterpretationInfo> known = suite.interpretations();

@@ -42,238 +42,211 @@ public final class Mutants {
         add("fx5-low-field-first", FX5_COMPARE,
                 "The selected fields are compared from (s1)+2 up (second before minute before hour), so a later field "
                         + "decides before an earlier one.",
-                c -> new Reference(c) {
+                c -> fx5(c, (v, m, fields, settings) -> new Fx5Compare(v, m, fields, settings) {
                     @Override
-                    protected Scan fx5Compare(VectorRequest v, Memory m, Fx5Compare.Field[] fields) {
-                        return new Fx5Compare(v, m, fields, settings) {
-                            @Override
-                            protected int compare(int[] a, int[] b, int selected) {
-                                for (int i = fields.length - 1; i >= 0; i--) {
-                                    Fx5Compare.Field f = fields[i];
-                                    if (((selected >> f.bit()) & 1) != 0 && a[f.offset()] != b[f.offset()]) {
-                                        return a[f.offset()] < b[f.offset()] ? -1 : 1;
-                                    }
-                                }
-                                return 0;
+                    protected int compare(int[] a, int[] b, int selected) {
+                        for (int i = fields.length - 1; i >= 0; i--) {
+                            Fx5Compare.Field f = fields[i];
+                            if (((selected >> f.bit()) & 1) != 0 && a[f.offset()] != b[f.offset()]) {
+                                return a[f.offset()] < b[f.offset()] ? -1 : 1;
                             }
-                        };
+                        }
+                        return 0;
                     }
-                });
+                }));
         add("fx5-sm709-not-latched", FX5_COMPARE,
                 "SM709 is written on every execution, off when the data are good, although 'Once SM709 turns on, the "
                         + "on state is held until the CPU module is powered off or reset'.",
-                c -> new Reference(c) {
+                c -> fx5(c, (v, m, fields, settings) -> new Fx5Compare(v, m, fields, settings) {
                     @Override
-                    protected Scan fx5Compare(VectorRequest v, Memory m, Fx5Compare.Field[] fields) {
-                        return new Fx5Compare(v, m, fields, settings) {
-                            @Override
-                            protected boolean evaluate(Step step) {
-                                mem.setBit(Address.of("SM709"), false);
-                                return super.evaluate(step);
-                            }
-                        };
+                    protected boolean evaluate(Step step) {
+                        mem.setBit(Address.of("SM709"), false);
+                        return super.evaluate(step);
                     }
-                });
+                }));
         add("fx5-clock-bit-ignored", FX5_COMPARE,
                 "Bit 15 of (s3) does not bring in the current time: (s1) is compared with (s2) all the same.",
-                c -> new Reference(c) {
+                c -> fx5(c, (v, m, fields, settings) -> new Fx5Compare(v, m, fields, settings) {
                     @Override
-                    protected Scan fx5Compare(VectorRequest v, Memory m, Fx5Compare.Field[] fields) {
-                        return new Fx5Compare(v, m, fields, settings) {
-                            @Override
-                            protected int[] clock(Step step) {
-                                return read(s2.device());
-                            }
-                        };
+                    protected int[] clock(Step step) {
+                        return read(s2.device());
                     }
-                });
+                }));
         add("fx5-date-calendar-check", List.of(Family.FX5_DATE_COMPARE),
                 "A date that does not exist but is within the setting range (2006/02/30) turns SM709 on, although "
                         + "'Even if the data are not recognized as date data, SM709 does not turn on if the data are "
                         + "within the setting range'.",
-                c -> new Reference(c) {
+                c -> fx5(c, (v, m, fields, settings) -> new Fx5Compare(v, m, fields, settings) {
                     @Override
-                    protected Scan fx5Compare(VectorRequest v, Memory m, Fx5Compare.Field[] fields) {
-                        return new Fx5Compare(v, m, fields, settings) {
-                            @Override
-                            protected boolean outOfRange(int[] words, int selected) {
-                                if (fields == Fx5Compare.DATE && words[1] >= 1 && words[1] <= 12 && words[0] >= 1
-                                        && words[2] > java.time.YearMonth.of(words[0], words[1]).lengthOfMonth()) {
-                                    return true;
-                                }
-                                return super.outOfRange(words, selected);
-                            }
-                        };
+                    protected boolean outOfRange(int[] words, int selected) {
+                        if (fields == Fx5Compare.DATE && words[1] >= 1 && words[1] <= 12 && words[0] >= 1
+                                && words[2] > java.time.YearMonth.of(words[0], words[1]).lengthOfMonth()) {
+                            return true;
+                        }
+                        return super.outOfRange(words, selected);
                     }
-                });
+                }));
         add("fx5-and-executed-when-off", List.of(Family.FX5_TIME_COMPARE),
                 "Declares FX5-AND-OR-WHEN-OFF=and-skipped (the default) but executes AND while the preceding logic is "
                         + "off, as always-executed does: an interpretation followed other than the one declared.",
-                c -> new Reference(c) {
-                    private final Settings alwaysExecuted =
-                            new Settings(choices.with(Alternatives.Fx5AndOrWhenOff.ALWAYS_EXECUTED));
-
-                    @Override
-                    protected Scan fx5Compare(VectorRequest v, Memory m, Fx5Compare.Field[] fields) {
-                        return new Fx5Compare(v, m, fields, alwaysExecuted);
-                    }
+                c -> {
+                    Settings alwaysExecuted = new Settings(c.with(Alternatives.Fx5AndOrWhenOff.ALWAYS_EXECUTED));
+                    return fx5(c, (v, m, fields, declared) -> new Fx5Compare(v, m, fields, alwaysExecuted));
                 });
 
         // -- FX5 TADD / TADDP ---------------------------------------------------------------------
         add("tadd-no-wrap-at-24", List.of(Family.FX5_TIME_ADD),
                 "'If the sum of two values exceeds 24:00:00' read literally: a sum of exactly 24:00:00 is stored as "
                         + "24:00:00 with neither flag, not as 0:00:00 with carry and zero.",
-                c -> new Reference(c) {
+                c -> tadd(c, (v, m, settings) -> new Fx5TimeAdd(v, m, settings) {
                     @Override
-                    protected Scan fx5TimeAdd(VectorRequest v, Memory m) {
-                        return new Fx5TimeAdd(v, m, settings) {
-                            @Override
-                            protected int wrap(int total) {
-                                return total == 24 * 3600 ? total : super.wrap(total);
-                            }
-
-                            @Override
-                            protected boolean carries(int total) {
-                                return total > 24 * 3600;
-                            }
-                        };
+                    protected int wrap(int total) {
+                        return total == 24 * 3600 ? total : super.wrap(total);
                     }
-                });
+
+                    @Override
+                    protected boolean carries(int total) {
+                        return total > 24 * 3600;
+                    }
+                }));
         add("tadd-sm8022-not-written", List.of(Family.FX5_TIME_ADD),
                 "Only SM700 is written as the carry flag; SM8022, the table's second 'Carry' relay, is left alone.",
-                c -> new Reference(c) {
+                c -> tadd(c, (v, m, settings) -> new Fx5TimeAdd(v, m, settings) {
                     @Override
-                    protected Scan fx5TimeAdd(VectorRequest v, Memory m) {
-                        return new Fx5TimeAdd(v, m, settings) {
-                            @Override
-                            protected void setFlags(boolean carry, boolean zero) {
-                                boolean before = mem.bit(Address.of("SM8022"));
-                                super.setFlags(carry, zero);
-                                mem.setBit(Address.of("SM8022"), before);
-                            }
-                        };
+                    protected void setFlags(boolean carry, boolean zero) {
+                        boolean before = mem.bit(Address.of("SM8022"));
+                        super.setFlags(carry, zero);
+                        mem.setBit(Address.of("SM8022"), before);
                     }
-                });
+                }));
         add("taddp-every-scan", List.of(Family.FX5_TIME_ADD),
                 "TADDP adds on every scan while EN is on, like TADD, instead of once on its rising edge.",
-                c -> new Reference(c) {
+                c -> tadd(c, (v, m, settings) -> new Fx5TimeAdd(v, m, settings) {
                     @Override
-                    protected Scan fx5TimeAdd(VectorRequest v, Memory m) {
-                        return new Fx5TimeAdd(v, m, settings) {
-                            @Override
-                            public Boolean execute(Step step) {
-                                previousEn = false;
-                                return super.execute(step);
-                            }
-                        };
+                    public Boolean execute(Step step) {
+                        previousEn = false;
+                        return super.execute(step);
                     }
-                });
+                }));
         add("tadd-writes-past-d", List.of(Family.FX5_TIME_ADD),
                 "The destination is cleared as four words, (d) to (d)+3, although 'These instructions occupy three "
                         + "points': (d)+3 is written outside the vector.",
-                c -> new Reference(c) {
+                c -> tadd(c, (v, m, settings) -> new Fx5TimeAdd(v, m, settings) {
                     @Override
-                    protected Scan fx5TimeAdd(VectorRequest v, Memory m) {
-                        return new Fx5TimeAdd(v, m, settings) {
-                            @Override
-                            protected void add() {
-                                super.add();
-                                mem.setWord(d, 3, 0);
-                            }
-                        };
+                    protected void add() {
+                        super.add();
+                        mem.setWord(d, 3, 0);
                     }
-                });
+                }));
 
         // -- FC6A HOUR ----------------------------------------------------------------------------
         add("hour-drops-fraction", List.of(Family.FC6A_HOUR_METER),
                 "Each scan's ON time is cut to whole seconds and the remainder thrown away, so many short scans never "
                         + "add up to the 'measured input ON duration'.",
-                c -> new Reference(c) {
+                c -> hour(c, (v, m, settings) -> new Fc6aHourMeter(v, m, settings) {
                     @Override
-                    protected Scan fc6aHourMeter(VectorRequest v, Memory m) {
-                        return new Fc6aHourMeter(v, m, settings) {
-                            @Override
-                            public Boolean execute(Step step) {
-                                fractionMs = 0;
-                                return super.execute(step);
-                            }
-                        };
+                    public Boolean execute(Step step) {
+                        fractionMs = 0;
+                        return super.execute(step);
                     }
-                });
+                }));
         add("hour-wrap-clears-d2", List.of(Family.FC6A_HOUR_METER),
                 "When D1 returns to 0 hours 0 minutes 0 seconds D2 is turned off with it, instead of 'with the "
                         + "comparison output remaining on'.",
-                c -> new Reference(c) {
+                c -> hour(c, (v, m, settings) -> new Fc6aHourMeter(v, m, settings) {
                     @Override
-                    protected Scan fc6aHourMeter(VectorRequest v, Memory m) {
-                        return new Fc6aHourMeter(v, m, settings) {
-                            @Override
-                            public Boolean execute(Step step) {
-                                long before = measured();
-                                Boolean r = super.execute(step);
-                                if (measured() < before && step.input()) {
-                                    mem.setBit(d2, false);
-                                }
-                                return r;
-                            }
-                        };
+                    public Boolean execute(Step step) {
+                        long before = measured();
+                        Boolean r = super.execute(step);
+                        if (measured() < before && step.input()) {
+                            mem.setBit(d2, false);
+                        }
+                        return r;
                     }
-                });
+                }));
         add("hour-input-off-resets", List.of(Family.FC6A_HOUR_METER),
                 "Declares HOUR-INPUT-OFF=hold (the default) but clears D1 while the input is off, as reset does: an "
                         + "interpretation followed other than the one declared.",
-                c -> new Reference(c) {
-                    private final Settings reset = new Settings(choices.with(Alternatives.HourInputOff.RESET));
-
-                    @Override
-                    protected Scan fc6aHourMeter(VectorRequest v, Memory m) {
-                        return new Fc6aHourMeter(v, m, reset);
-                    }
+                c -> {
+                    Settings reset = new Settings(c.with(Alternatives.HourInputOff.RESET));
+                    return hour(c, (v, m, declared) -> new Fc6aHourMeter(v, m, reset));
                 });
 
         // -- CP1E time comparison -----------------------------------------------------------------
         add("cp1e-mask-inverted", List.of(Family.CP1E_TIME_COMPARE),
                 "A C bit set to 1 selects its field for comparison, the opposite of 'To mask a time value, set the "
                         + "corresponding bit in the control word (C) to 1'.",
-                c -> new Reference(c) {
+                c -> cp1e(c, (v, m, settings) -> new Cp1eTimeCompare(v, m, settings) {
                     @Override
-                    protected Scan cp1eTimeCompare(VectorRequest v, Memory m) {
-                        return new Cp1eTimeCompare(v, m, settings) {
-                            @Override
-                            protected boolean masked(int mask, Field f) {
-                                return !super.masked(mask, f);
-                            }
-                        };
+                    protected boolean masked(int mask, Field f) {
+                        return !super.masked(mask, f);
                     }
-                });
+                }));
         add("cp1e-flags-not-reflected", List.of(Family.CP1E_TIME_COMPARE),
                 "The arithmetic flags (=, <>, <, <=, >, >=) are left alone, although 'the result of a time comparison "
                         + "instruction is reflected in the arithmetic flags'.",
-                c -> new Reference(c) {
+                c -> cp1e(c, (v, m, settings) -> new Cp1eTimeCompare(v, m, settings) {
                     @Override
-                    protected Scan cp1eTimeCompare(VectorRequest v, Memory m) {
-                        return new Cp1eTimeCompare(v, m, settings) {
-                            @Override
-                            protected void reflectFlags(int order) {
-                                // the bug: nothing
-                            }
-                        };
+                    protected void reflectFlags(int order) {
+                        // the bug: nothing
                     }
-                });
+                }));
         add("cp1e-bcd-read-as-binary", List.of(Family.CP1E_TIME_COMPARE),
                 "The time bytes are taken as plain binary without checking that they are BCD, so a byte such as 1AH "
                         + "is compared instead of turning P_ER on.",
-                c -> new Reference(c) {
+                c -> cp1e(c, (v, m, settings) -> new Cp1eTimeCompare(v, m, settings) {
                     @Override
-                    protected Scan cp1eTimeCompare(VectorRequest v, Memory m) {
-                        return new Cp1eTimeCompare(v, m, settings) {
-                            @Override
-                            protected boolean isBcd(int b) {
-                                return true;
-                            }
-                        };
+                    protected boolean isBcd(int b) {
+                        return true;
                     }
-                });
+                }));
+    }
+
+    /** Builds one family's class for a vector: a mutant returns its subclass. */
+    @FunctionalInterface
+    interface Fx5Factory {
+        Scan make(VectorRequest v, Memory m, Fx5Compare.Field[] fields, Settings settings);
+    }
+
+    @FunctionalInterface
+    interface Factory {
+        Scan make(VectorRequest v, Memory m, Settings settings);
+    }
+
+    private static Reference fx5(Choices c, Fx5Factory f) {
+        return new Reference(c) {
+            @Override
+            protected Scan fx5Compare(VectorRequest v, Memory m, Fx5Compare.Field[] fields) {
+                return f.make(v, m, fields, settings);
+            }
+        };
+    }
+
+    private static Reference tadd(Choices c, Factory f) {
+        return new Reference(c) {
+            @Override
+            protected Scan fx5TimeAdd(VectorRequest v, Memory m) {
+                return f.make(v, m, settings);
+            }
+        };
+    }
+
+    private static Reference hour(Choices c, Factory f) {
+        return new Reference(c) {
+            @Override
+            protected Scan fc6aHourMeter(VectorRequest v, Memory m) {
+                return f.make(v, m, settings);
+            }
+        };
+    }
+
+    private static Reference cp1e(Choices c, Factory f) {
+        return new Reference(c) {
+            @Override
+            protected Scan cp1eTimeCompare(VectorRequest v, Memory m) {
+                return f.make(v, m, settings);
+            }
+        };
     }
 
     /** Every mutant, in a fixed order. */

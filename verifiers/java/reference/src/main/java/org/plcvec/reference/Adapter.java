@@ -40,7 +40,7 @@ public final class Adapter {
             }
         }
         try {
-            Choices choices = Choices.parse(choose);
+            Choices choices = Choices.parse(choose).checked();
             return StdioServer.serve(variants == null ? new Reference(choices) : variants.apply(choices));
         } catch (VerifyException e) {
             System.err.println("reference-adapter: " + e.getMessage());

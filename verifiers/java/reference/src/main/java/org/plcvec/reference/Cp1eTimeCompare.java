@@ -1,8 +1,5 @@
 package org.plcvec.reference;
 
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
-
 import org.plcvec.spec.Alternatives.Cp1eAndOrWhenOff;
 import org.plcvec.verify.Address;
 import org.plcvec.verify.Emulator;
@@ -36,83 +33,24 @@ public class Cp1eTimeCompare implements Emulator.Scan {
     };
 
     static final Address P_ER = Address.of("P_ER");
-    /** The arithmetic flags, in the order of the flag table's columns. */
+    /** The arithmetic flags, in the order of {@link Contact.Condition}: =, <>, <, <=, >, >=. */
     static final Address[] FLAGS = {
         Address.of("P_EQ"), Address.of("P_NE"), Address.of("P_LT"), Address.of("P_LE"), Address.of("P_GT"), Address.of("P_GE"),
     };
 
-    enum Form { LD, AND, OR }
-
-    /** The flag table: for S1 = S2, S1 > S2, S1 < S2, which of =, <>, <, <=, >, >= are on. */
-    enum Condition {
-        EQ("=", 0), NE("<>", 1), LT("<", 2), LE("<=", 3), GT(">", 4), GE(">=", 5);
-
-        final String symbol;
-        final int flag;
-
-        Condition(String symbol, int flag) {
-            this.symbol = symbol;
-            this.flag = flag;
-        }
-
-        boolean holds(int order) {
-            switch (this) {
-                case EQ: return order == 0;
-                case NE: return order != 0;
-                case LT: return order < 0;
-                case LE: return order <= 0;
-                case GT: return order > 0;
-                default: return order >= 0;
-            }
-        }
-    }
-
-    private static final Condition[] CONDITIONS = Condition.values();
-
-    /** {@code AND <=DT} is (AND, <=). */
-    record Mnemonic(Form form, Condition condition) {
-        private static final Map<String, Mnemonic> CACHE = new ConcurrentHashMap<>();
-
-        static Mnemonic parse(String instruction) {
-            Mnemonic m = CACHE.get(instruction);
-            if (m == null) {
-                m = read(instruction);
-                if (m != null) {
-                    CACHE.put(instruction, m);
-                }
-            }
-            return m;
-        }
-
-        private static Mnemonic read(String instruction) {
-            int space = instruction.indexOf(' ');
-            if (space < 0 || !instruction.endsWith("DT")) {
-                return null;
-            }
-            String form = instruction.substring(0, space);
-            String symbol = instruction.substring(space + 1, instruction.length() - 2);
-            for (Form f : Form.values()) {
-                for (Condition c : Condition.values()) {
-                    if (f.name().equals(form) && c.symbol.equals(symbol)) {
-                        return new Mnemonic(f, c);
-                    }
-                }
-            }
-            return null;
-        }
-    }
+    private static final Contact.Condition[] CONDITIONS = Contact.Condition.values();
 
     protected final Memory mem;
     protected final Settings settings;
-    protected final Form form;
-    protected final Condition condition;
+    protected final Contact.Form form;
+    protected final Contact.Condition condition;
     protected final Address s1;
     protected final Address s2;
     protected final Operand c;
 
     public Cp1eTimeCompare(VectorRequest vector, Memory memory, Settings settings) {
-        Mnemonic m = Mnemonic.parse(vector.instruction());
-        if (m == null) {
+        Contact.Mnemonic m = Contact.Mnemonic.parse(vector.instruction());
+        if (m == null || !m.kind().equals("CP1E")) {
             throw new IllegalArgumentException("not a CP1E time comparison: " + vector.instruction());
         }
         this.mem = memory;
@@ -130,22 +68,9 @@ public class Cp1eTimeCompare implements Emulator.Scan {
      */
     @Override
     public Boolean execute(Step step) {
-        if (form == Form.LD) {
-            return evaluate();
-        }
-        boolean rlo = step.rloIn();
-        if (form == Form.AND) {
-            if (!rlo && settings.cp1eLogic != Cp1eAndOrWhenOff.ALWAYS_EXECUTED) {
-                return false;
-            }
-            boolean contact = evaluate();
-            return rlo && contact;
-        }
-        if (rlo && settings.cp1eLogic == Cp1eAndOrWhenOff.SHORT_CIRCUIT) {
-            return true;
-        }
-        boolean contact = evaluate();
-        return rlo || contact;
+        Cp1eAndOrWhenOff logic = settings.cp1eLogic;
+        return Contact.result(form, step, logic != Cp1eAndOrWhenOff.ALWAYS_EXECUTED, logic == Cp1eAndOrWhenOff.SHORT_CIRCUIT,
+                this::evaluate);
     }
 
     protected boolean evaluate() {
@@ -213,8 +138,8 @@ public class Cp1eTimeCompare implements Emulator.Scan {
 
     /** "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <, <=, >, >=)." */
     protected void reflectFlags(int order) {
-        for (Condition k : CONDITIONS) {
-            mem.setBit(FLAGS[k.flag], k.holds(order));
+        for (Contact.Condition k : CONDITIONS) {
+            mem.setBit(FLAGS[k.ordinal()], k.holds(order));
         }
     }
 

@@ -1,8 +1,5 @@
 package org.plcvec.reference;
 
-import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
-
 import org.plcvec.spec.Alternatives.Fx5AndOrWhenOff;
 import org.plcvec.verify.Address;
 import org.plcvec.verify.Emulator;
@@ -34,74 +31,17 @@ public class Fx5Compare implements Emulator.Scan {
 
     static final Address SM709 = Address.of("SM709");
 
-    enum Form { LD, AND, OR }
-
-    /** "The following table lists the comparison operation results of each instruction." */
-    enum Condition {
-        EQ("="), NE("<>"), GT(">"), LE("<="), LT("<"), GE(">=");
-
-        final String symbol;
-
-        Condition(String symbol) {
-            this.symbol = symbol;
-        }
-
-        /** {@code order}: the sign of (s1) compared with (s2). */
-        boolean holds(int order) {
-            switch (this) {
-                case EQ: return order == 0;
-                case NE: return order != 0;
-                case GT: return order > 0;
-                case LE: return order <= 0;
-                case LT: return order < 0;
-                default: return order >= 0;
-            }
-        }
-    }
-
-    /** {@code ANDTM<=} is (AND, TM, <=). */
-    record Mnemonic(Form form, String kind, Condition condition) {
-        private static final Map<String, Mnemonic> CACHE = new ConcurrentHashMap<>();
-
-        static Mnemonic parse(String instruction) {
-            Mnemonic m = CACHE.get(instruction);
-            if (m == null) {
-                m = read(instruction);
-                if (m != null) {
-                    CACHE.put(instruction, m);
-                }
-            }
-            return m;
-        }
-
-        private static Mnemonic read(String instruction) {
-            for (Form form : Form.values()) {
-                for (String kind : new String[] {"TM", "DT"}) {
-                    String prefix = form.name() + kind;
-                    if (instruction.startsWith(prefix)) {
-                        for (Condition c : Condition.values()) {
-                            if (instruction.substring(prefix.length()).equals(c.symbol)) {
-                                return new Mnemonic(form, kind, c);
-                            }
-                        }
-                    }
-                }
-            }
-            return null;
-        }
-    }
-
     protected final Memory mem;
     protected final Field[] fields;
     protected final Settings settings;
-    protected final Form form;
-    protected final Condition condition;
+    protected final Contact.Form form;
+    protected final Contact.Condition condition;
     protected final Operand s1;
     protected final Operand s2;
     protected final Operand s3;
 
     public Fx5Compare(VectorRequest vector, Memory memory, Field[] fields, Settings settings) {
-        Mnemonic m = Mnemonic.parse(vector.instruction());
+        Contact.Mnemonic m = Contact.Mnemonic.parse(vector.instruction());
         if (m == null || !m.kind().equals(fields == TIME ? "TM" : "DT")) {
             throw new IllegalArgumentException("not an FX5 " + (fields == TIME ? "time" : "date") + " comparison: "
                     + vector.instruction());
@@ -119,25 +59,11 @@ public class Fx5Compare implements Emulator.Scan {
     /** One scan of one LD/AND/OR contact; returns the logic state after it. */
     @Override
     public Boolean execute(Step step) {
-        if (form == Form.LD) {
-            return evaluate(step);
-        }
-        boolean rlo = step.rloIn();
-        Fx5AndOrWhenOff logic = settings.fx5Logic;
         // "(Devices are used as a normally open contact.)" NOTES.md (iQ-R processing times): "an
         // AND/OR comparison is not executed while the preceding logic is off" (FX5-AND-OR-WHEN-OFF).
-        if (form == Form.AND) {
-            if (!rlo && logic != Fx5AndOrWhenOff.ALWAYS_EXECUTED) {
-                return false;
-            }
-            boolean contact = evaluate(step);    // executed: may set SM709
-            return rlo && contact;
-        }
-        if (rlo && logic == Fx5AndOrWhenOff.SHORT_CIRCUIT) {
-            return true;
-        }
-        boolean contact = evaluate(step);
-        return rlo || contact;
+        Fx5AndOrWhenOff logic = settings.fx5Logic;
+        return Contact.result(form, step, logic != Fx5AndOrWhenOff.ALWAYS_EXECUTED, logic == Fx5AndOrWhenOff.SHORT_CIRCUIT,
+                () -> evaluate(step));
     }
 
     /** The comparison itself (the "contact"). */

@@ -49,7 +49,7 @@ public class Reference implements Emulator {
     @Override
     public boolean supports(String instruction) {
         return instruction.equals("TADD") || instruction.equals("TADDP") || instruction.equals("HOUR")
-                || Fx5Compare.Mnemonic.parse(instruction) != null || Cp1eTimeCompare.Mnemonic.parse(instruction) != null;
+                || Contact.Mnemonic.parse(instruction) != null;
     }
 
     @Override
