@@ -331,10 +331,11 @@ typedef struct plcvec_summary {
     size_t selected, passed, failed, errors, skipped, xfail, stale;
 } plcvec_summary;
 
-/* Judge every selected vector, print each failure as a field-level diff, then the suite, the
- * alternatives followed and the closing "N passed, N failed" line. Returns 0 if everything
- * passed (or is a known failure, or was skipped), 1 on any failure, error or stale entry, 2 on a
- * usage error (unknown name, bad shard, nothing selected, every vector skipped). */
+/* Print the suite and the alternatives followed, judge every selected vector, print each failure
+ * as a field-level diff, then the closing "plcvec: N passed, N failed, N skipped" line. Returns 0
+ * if everything passed (or is a known failure, or was skipped), 1 on any failure, error or stale
+ * entry, or when every selected vector was skipped, 2 on a usage error (an unknown name, a bad
+ * shard, an empty selection, an unknown declared alternative). */
 int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summary *summary);
 
 /* A test program's main(): parses --family, --instruction, --tag, --id GLOB, --interpretation,
