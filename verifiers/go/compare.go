@@ -69,6 +69,11 @@ func (e *expected) compare(req *Request, steps []StepResult) []Problem {
 				continue
 			}
 		}
+		if vals := steps[i].Values; vals != nil && len(vals) != len(req.Devices) {
+			problems = append(problems, Problem{Step: i, Field: "values", Expected: fmt.Sprintf("%d values, one per device of the request", len(req.Devices)),
+				Actual: fmt.Sprintf("%d values", len(vals))})
+			continue
+		}
 		got := steps[i].Image(req)
 		// Fast path: the image in the request's order, every compared value equal (Value's ==
 		// compares the JSON type too). Most vectors pass, and this is where a run spends its time.

@@ -84,6 +84,7 @@ func TestComparison(t *testing.T) {
 		{"device that must stay unchanged", set("D10", plcvec.Word(0)), "step 0 D10: expected 10, got 0 (the step must leave it unchanged)"},
 		{"write outside the vector", set("D33", plcvec.Word(0)), "step 0 D33: expected <not in the vector>, got 0"},
 		{"device not reported", func(ds []plcvec.Device) []plcvec.Device { return ds[1:] }, "step 0 D10: expected 10, got <not reported>"},
+		{"device reported twice", func(ds []plcvec.Device) []plcvec.Device { return append(ds, ds[0]) }, "step 0 D10: expected one value, got the device reported twice"},
 	}
 	for _, c := range cases {
 		t.Run(c.name, func(t *testing.T) {
@@ -366,4 +367,18 @@ func TestPlcvecReference(t *testing.T) {
 		t.Fatal(err)
 	}
 	plcvec.Run(t, ref.Implementation(), plcvec.Options{})
+}
+
+// valuesAnswer reports its steps in the fast form, with the wrong number of values.
+type valuesAnswer struct{ manualAnswer }
+
+func (v valuesAnswer) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
+	return []plcvec.StepResult{{Values: make([]plcvec.Value, len(req.Devices)+1)}}, nil
+}
+
+func TestValuesOfTheWrongLength(t *testing.T) {
+	v := judge(t, valuesAnswer{})
+	if v.Status != plcvec.StatusFail || !strings.Contains(v.Text(), "step 0 values: expected 14 values, one per device of the request, got 15 values") {
+		t.Errorf("got:\n%s", v.Text())
+	}
 }
