@@ -382,3 +382,32 @@ func TestValuesOfTheWrongLength(t *testing.T) {
 		t.Errorf("got:\n%s", v.Text())
 	}
 }
+
+// TestEnvVectors: $PLCVEC_VECTORS replaces the embedded copy (checked in a child process, since
+// Default loads once per process); a wrong path is an error naming the variable.
+func TestEnvVectors(t *testing.T) {
+	if want := os.Getenv("PLCVEC_CHILD_WANT"); want != "" {
+		suite, err := plcvec.Default()
+		got := ""
+		if err != nil {
+			got = err.Error()
+		} else {
+			got = suite.Source
+		}
+		if !strings.Contains(got, want) {
+			t.Fatalf("Default(): %q, want %q", got, want)
+		}
+		return
+	}
+	repo := filepath.Join("..", "..", "vectors")
+	for dir, want := range map[string]string{
+		repo:              repo,
+		"/no/such/folder": "$PLCVEC_VECTORS: /no/such/folder: no such vector folder",
+	} {
+		cmd := exec.Command(os.Args[0], "-test.run", "^TestEnvVectors$")
+		cmd.Env = append(os.Environ(), "PLCVEC_VECTORS="+dir, "PLCVEC_CHILD_WANT="+want)
+		if out, err := cmd.CombinedOutput(); err != nil {
+			t.Errorf("PLCVEC_VECTORS=%s: %v\n%s", dir, err, out)
+		}
+	}
+}
