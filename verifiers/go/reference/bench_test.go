@@ -55,3 +55,44 @@ func cpuSeconds() float64 {
 	}
 	return float64(u.Utime.Sec+u.Stime.Sec) + float64(u.Utime.Usec+u.Stime.Usec)/1e6
 }
+
+// replay answers every vector with the answers recorded from the reference, so that
+// BenchmarkHarnessOnly measures the runner alone (preparing nothing, judging everything).
+type replay struct {
+	hello   plcvec.Hello
+	answers map[*plcvec.Request][]plcvec.StepResult
+}
+
+func (r replay) Hello() plcvec.Hello { return r.hello }
+
+func (r replay) Run(req *plcvec.Request) ([]plcvec.StepResult, error) { return r.answers[req], nil }
+
+// BenchmarkHarnessOnly judges the golden set with answers recorded from the reference: what the
+// verifier itself costs, apart from the implementation's run time.
+func BenchmarkHarnessOnly(b *testing.B) {
+	impl := mustNew(b, nil)
+	plan, err := plcvec.Prepare(impl, plcvec.Options{})
+	if err != nil {
+		b.Fatal(err)
+	}
+	rp := replay{hello: impl.Hello(), answers: map[*plcvec.Request][]plcvec.StepResult{}}
+	for _, c := range plan.Cases {
+		steps, err := impl.Run(c.Request)
+		if err != nil {
+			b.Fatal(err)
+		}
+		rp.answers[c.Request] = steps
+	}
+	if report := plan.Verify(rp); !report.OK() || len(report.Failed()) > 0 {
+		b.Fatalf("the recorded answers do not pass: %v", report.Counts())
+	}
+	cpu0 := cpuSeconds()
+	b.ResetTimer()
+	for i := 0; i < b.N; i++ {
+		plan.Verify(rp)
+	}
+	b.StopTimer()
+	n := float64(len(plan.Cases))
+	b.ReportMetric(n*float64(b.N)/b.Elapsed().Seconds(), "vectors/s")
+	b.ReportMetric(n*float64(b.N)/(cpuSeconds()-cpu0), "cpu-vectors/s")
+}
