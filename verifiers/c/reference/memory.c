@@ -15,26 +15,25 @@ static const mem_cell *find(const memory *m, address a)
 
 address memory_device(int device)
 {
-    address a = {plcvec_devices[device].kind, plcvec_devices[device].number, device};
+    const plcvec_device_info *d = plcvec_device(device);
+    address a = {d->kind, d->number, device};
     return a;
 }
 
 address memory_offset(address base, int offset)
 {
     address a = {base.kind, base.number + offset, offset == 0 ? base.device : -1};
-    if (a.device < 0) {
-        /* The table of names is sorted, so D101 usually sits right after D100: look nearby. */
-        for (int d = base.device >= 0 ? base.device : 0; d < PLCVEC_DEVICE_COUNT; d++)
-            if (plcvec_devices[d].number == a.number && strcmp(plcvec_devices[d].kind, a.kind) == 0) {
-                a.device = d;
-                break;
-            }
-        if (a.device < 0 && base.device > 0)
-            for (int d = 0; d < base.device; d++)
-                if (plcvec_devices[d].number == a.number && strcmp(plcvec_devices[d].kind, a.kind) == 0) {
-                    a.device = d;
-                    break;
-                }
+    if (a.device >= 0)
+        return a;
+    /* The table of names is sorted, so D101 usually sits right after D100: start there, wrap
+     * around. A device the table does not have keeps -1 and is found by type and number. */
+    int start = base.device >= 0 && base.device < PLCVEC_DEVICE_COUNT ? base.device : 0;
+    for (int k = 0; k < PLCVEC_DEVICE_COUNT; k++) {
+        int d = (start + k) % PLCVEC_DEVICE_COUNT;
+        if (plcvec_devices[d].number == a.number && strcmp(plcvec_devices[d].kind, a.kind) == 0) {
+            a.device = d;
+            break;
+        }
     }
     return a;
 }
@@ -84,8 +83,8 @@ void memory_load(memory *m, const plcvec_vector *v)
         const plcvec_cell *src = &v->devices[i];
         mem_cell *c = &m->cells[m->n++];
         c->device = src->device;
-        c->kind = plcvec_devices[src->device].kind;
-        c->number = plcvec_devices[src->device].number;
+        c->kind = plcvec_device(src->device)->kind;
+        c->number = plcvec_device(src->device)->number;
         c->type = src->type;
         c->value = src->value;
     }

@@ -79,7 +79,7 @@ static reported *add_cell(plcvec_out *out, plcvec_type type, unsigned value)
 
 void plcvec_out_device(plcvec_out *out, int device, plcvec_type type, unsigned value)
 {
-    if (device < 0 || device >= PLCVEC_DEVICE_COUNT) {
+    if (!plcvec_device(device)) {
         out->overflow = 1;
         return;
     }
@@ -342,7 +342,7 @@ static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const p
         plcvec_problem *p = problem(j, s, r[k].device);
         if (!p)
             return;
-        snprintf(p->name, sizeof p->name, "%s", r[k].device >= 0 ? plcvec_devices[r[k].device].name : r[k].name);
+        snprintf(p->name, sizeof p->name, "%s", r[k].device >= 0 ? plcvec_device(r[k].device)->name : r[k].name);
         p->has_actual = 1;
         p->actual_type = r[k].type;
         p->actual = r[k].value;
@@ -528,7 +528,7 @@ size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *vd)
             add(&t, "steps: expected %u steps, got %u steps\n", (unsigned)p->expected, (unsigned)p->actual);
             continue;
         }
-        add(&t, "%s: expected ", p->name[0] ? p->name : p->device == -1 ? "result" : plcvec_devices[p->device].name);
+        add(&t, "%s: expected ", p->name[0] ? p->name : p->device == -1 ? "result" : plcvec_device(p->device)->name);
         value(&t, p->has_expected, p->expected_type, p->expected, "<not in the vector>");
         add(&t, ", got ");
         value(&t, p->has_actual, p->actual_type, p->actual, "<not reported>");

@@ -54,7 +54,7 @@ const char *plcvec_clause(const plcvec_vector *v, size_t i)
 
 const char *plcvec_operand_device_name(const plcvec_operand *op)
 {
-    return op->is_constant ? NULL : plcvec_devices[op->device].name;
+    return op->is_constant ? NULL : plcvec_device(op->device)->name;
 }
 
 const plcvec_operand *plcvec_operand_named(const plcvec_vector *v, const char *name)
@@ -65,8 +65,58 @@ const plcvec_operand *plcvec_operand_named(const plcvec_vector *v, const char *n
     return NULL;
 }
 
+/* Devices added at run time, after the generated table: ids PLCVEC_DEVICE_COUNT and up. */
+static plcvec_device_info *interned;
+static int n_interned, cap_interned;
+
+const plcvec_device_info *plcvec_device(int id)
+{
+    if (id >= 0 && id < PLCVEC_DEVICE_COUNT)
+        return &plcvec_devices[id];
+    if (id >= PLCVEC_DEVICE_COUNT && id - PLCVEC_DEVICE_COUNT < n_interned)
+        return &interned[id - PLCVEC_DEVICE_COUNT];
+    return NULL;
+}
+
+int plcvec_device_intern(const char *name)
+{
+    int id = plcvec_device_named(name);
+    size_t len = strlen(name);
+    if (id >= 0 || len == 0 || len > 23)
+        return len > 23 ? -1 : id;
+    if (n_interned == cap_interned) {
+        int cap = cap_interned ? cap_interned * 2 : 16;
+        plcvec_device_info *grown = realloc(interned, (size_t)cap * sizeof *grown);
+        if (!grown)
+            return -1;
+        interned = grown;
+        cap_interned = cap;
+    }
+    /* "D5000" -> kind "D", number 5000; a name without digits at the end has number -1. */
+    size_t k = len;
+    while (k > 0 && name[k - 1] >= '0' && name[k - 1] <= '9')
+        k--;
+    char *copy = malloc(2 * len + 2);
+    if (!copy)
+        return -1;
+    memcpy(copy, name, len + 1);
+    char *kind = copy + len + 1;
+    memcpy(kind, name, k);
+    kind[k] = '\0';
+    long number = -1;
+    if (k < len && k > 0 && len - k <= 9)
+        number = strtol(name + k, NULL, 10);
+    else if (k < len)
+        memcpy(kind, name, len + 1);           /* all digits, or too many: a name, no number */
+    interned[n_interned] = (plcvec_device_info){copy, kind, (int32_t)number};
+    return PLCVEC_DEVICE_COUNT + n_interned++;
+}
+
 int plcvec_device_named(const char *name)
 {
+    for (int i = 0; i < n_interned; i++)
+        if (strcmp(interned[i].name, name) == 0)
+            return PLCVEC_DEVICE_COUNT + i;
     size_t lo = 0, hi = PLCVEC_DEVICE_COUNT;       /* the table is sorted by name */
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;

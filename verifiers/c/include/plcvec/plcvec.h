@@ -145,13 +145,20 @@ typedef struct plcvec_device_info {
 } plcvec_device_info;
 extern const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT];
 
+/* A device by id: one of plcvec_devices[], or one added by plcvec_device_intern(); NULL if none. */
+const plcvec_device_info *plcvec_device(int id);
+/* The id of a device by name, adding it when the suite does not name it ("D5000"): for runners
+ * that build vectors at run time (the stdio adapter). -1 for a name longer than 23 characters
+ * or out of memory. Not thread-safe. */
+int plcvec_device_intern(const char *name);
+
 size_t plcvec_count(void);                              /* every vector of the suite */
 const plcvec_vector *plcvec_at(size_t index);           /* in family order, then by id */
 const plcvec_vector *plcvec_find(const char *id);       /* NULL if the suite has no such vector */
 const char *plcvec_clause(const plcvec_vector *v, size_t i);    /* "fx5-time-add#carry" */
 const char *plcvec_operand_device_name(const plcvec_operand *op);
 const plcvec_operand *plcvec_operand_named(const plcvec_vector *v, const char *name);
-int plcvec_device_named(const char *name);              /* the plcvec_device_id, or -1 */
+int plcvec_device_named(const char *name);              /* its id (interned ones too), or -1 */
 long plcvec_size_of(const plcvec_vector *v, const char *kind);  /* points, or -1 if not stated */
 /* "FX5-SM709-SCOPE" -> its plcvec_interpretation, and an alternative's number; -1 if unknown. */
 int plcvec_interpretation_named(const char *id);
