@@ -61,3 +61,46 @@ def test_expectations_file_turns_a_failure_into_xfail(tmp_path):
     rc, out = pytest_in(tmp_path, "--plcvec-adapter", faulty, "--plcvec-expectations", "known.toml",
                         "-k", "manual-example and TADD")
     assert rc == 0 and "1 xfailed" in out, out
+
+
+# -- the gate holds under pytest as under `plcvec verify` ------------------------------------
+
+LAZY = REPO / "tests" / "adapters" / "lazy.py"
+
+
+@pytest.mark.parametrize("args, message", [
+    (["--plcvec-tag", "nosuchtag"], "--plcvec-tag nosuchtag: "),
+    (["--plcvec-instruction", "TADX"], "--plcvec-instruction TADX: "),
+    (["--plcvec-id", "zzz*"], "--plcvec-id zzz*: matches no vector id"),
+    (["-m", "nonexistent_dates"], "nonexistent_dates is neither a vector tag nor a registered marker"),
+], ids=["tag", "instruction", "id", "marker"])
+def test_unknown_names_are_usage_errors(tmp_path, args, message):
+    rc, out = pytest_in(tmp_path, *REFERENCE, *args)
+    assert rc == 4 and message in out, out      # pytest's usage error
+
+
+def test_an_empty_selection_exits_5_unless_allowed(tmp_path):
+    args = [*REFERENCE, "--plcvec-family", "fx5-time-add", "--plcvec-instruction", "LDTM="]
+    rc, out = pytest_in(tmp_path, *args)
+    assert rc == 5, out
+    rc, out = pytest_in(tmp_path, *args, "--plcvec-allow-empty")
+    assert rc == 0, out
+
+
+def test_a_session_in_which_everything_is_skipped_exits_5(tmp_path, suite):
+    n = sum(v["family"] == "fx5-time-add" for v in suite.vectors)
+    rc, out = pytest_in(tmp_path, "--plcvec-python", f"{LAZY}:SkipsEverything", "--plcvec-family", "fx5-time-add")
+    assert rc == 5 and f"{n} skipped" in out and f"SKIPPED {n} of {n} vectors" in out, out
+    assert "NOT PASSED (exit 5): nothing passed" in out
+    rc, out = pytest_in(tmp_path, "--plcvec-python", f"{LAZY}:SkipsEverything", "--plcvec-family", "fx5-time-add",
+                        "--plcvec-allow-empty")
+    assert rc == 0, out
+
+
+def test_max_skipped(tmp_path, suite):
+    skipped = sum(v["family"] == "fx5-time-add" and v["instruction"] != "TADD" for v in suite.vectors)
+    args = ["--plcvec-python", f"{LAZY}:OnlyTadd", "--plcvec-family", "fx5-time-add"]
+    rc, out = pytest_in(tmp_path, *args, "--plcvec-max-skipped", str(skipped))
+    assert rc == 0, out
+    rc, out = pytest_in(tmp_path, *args, "--plcvec-max-skipped", str(skipped - 1))
+    assert rc == 5 and f"more than --plcvec-max-skipped {skipped - 1}" in out, out

@@ -1,4 +1,4 @@
-"""`plcvec verify`: the CI gate. Exit 0 all passed, 1 failures, 2 usage or harness error."""
+"""`plcvec verify`: the CI gate. Exit 0 passed, 1 failures, 2 usage or harness error, 5 nothing tested."""
 from __future__ import annotations
 
 import argparse
@@ -6,7 +6,19 @@ import sys
 from pathlib import Path
 
 from .errors import VerifyError
+from .gate import NOTHING_TESTED
 from .locate import default_vectors, default_vectors_text
+
+EXIT_STATUS = f"""\
+exit status:
+  0    every selected vector passed (or is a known failure), and at least one passed
+  1    some vector failed, errored, was not run, or is a stale known failure
+  2    usage or harness error: bad path or file, an unknown family/instruction/tag/interpretation
+       name or an --id glob that matches nothing, an adapter that cannot be started or keeps crashing
+  {NOTHING_TESTED}    nothing tested: no vector selected, nothing passed (all skipped), or more skipped
+       than --max-skipped allows (--allow-empty accepts the first two; pytest's "no tests collected")
+  130  stopped by SIGINT, 143 stopped by SIGTERM (the adapter is ended, the reports are written)
+"""
 
 
 def add_arguments(p: argparse.ArgumentParser) -> None:
@@ -22,6 +34,11 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     sel.add_argument("--interpretation", action="append", default=[], metavar="ID",
                      help="vectors whose outcome depends on this interpretation")
     sel.add_argument("--shard", metavar="K/N", help="run the K-th of N shards (by a hash of the id)")
+    gate = p.add_argument_group("what a passing run must show")
+    gate.add_argument("--allow-empty", action="store_true",
+                      help=f"pass a run that selects no vector or in which nothing passes (else exit {NOTHING_TESTED})")
+    gate.add_argument("--max-skipped", metavar="N|N%",
+                      help=f"exit {NOTHING_TESTED} when more than N vectors (or N%% of those selected) are skipped")
     p.add_argument("--choose", action="append", default=[], metavar="ID=ALT",
                    help="the alternative this implementation follows, for adapters that do not declare it")
     p.add_argument("--expectations", metavar="FILE", help="known failures (TOML, see known.py)")
@@ -39,7 +56,7 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
 
 def register(sub, spec_parent) -> None:
     p = sub.add_parser("verify", help="run the vectors against an implementation (CI gate)",
-                       description=__doc__)
+                       description=__doc__, epilog=EXIT_STATUS, formatter_class=argparse.RawDescriptionHelpFormatter)
     add_arguments(p)
     p.set_defaults(func=main_args)
 
@@ -50,6 +67,15 @@ def build_selection(args):
     return Selection(families=tuple(args.family), instructions=tuple(args.instruction), tags=tuple(args.tag),
                      ids=tuple(args.id), interpretations=tuple(args.interpretation),
                      shard=parse_shard(args.shard) if args.shard else None)
+
+
+def build_gate(allow_empty: bool, max_skipped: str | None, option_prefix: str = "--"):
+    from .gate import Gate, parse_max_skipped
+
+    if max_skipped is None:
+        return Gate(allow_empty=allow_empty, option_prefix=option_prefix)
+    limit, percent = parse_max_skipped(max_skipped, f"{option_prefix}max-skipped")
+    return Gate(allow_empty=allow_empty, max_skipped=limit, percent=percent, option_prefix=option_prefix)
 
 
 def parse_choices(items) -> dict:
@@ -96,11 +122,12 @@ def _verify(args) -> int:
     try:
         suite = Suite.load(args.vectors or default_vectors().path)
         selection = build_selection(args)
+        gate = build_gate(args.allow_empty, args.max_skipped)
         known = KnownFailures.load(args.expectations) if args.expectations else None
         adapter = make_adapter(args)
         progress = None if args.no_progress or args.quiet else Progress.for_stream(sys.stderr)
         report = run(suite, adapter, selection, choose=parse_choices(args.choose), known=known,
-                     progress=progress)
+                     progress=progress, gate=gate)
         if progress:
             progress.done()
         # Reports first: whatever the outcome, the CI job keeps them.
@@ -117,6 +144,8 @@ def _verify(args) -> int:
         sys.stdout.write(text)
         if report.aborted:
             print(f"plcvec verify: {report.aborted}", file=sys.stderr)
+        elif not report.failed and report.shortfall:
+            print(f"plcvec verify: {report.shortfall}", file=sys.stderr)
         return report.exit_code
     except VerifyError as exc:
         print(f"plcvec verify: {exc}", file=sys.stderr)
@@ -124,6 +153,7 @@ def _verify(args) -> int:
 
 
 def main(argv=None) -> int:
-    p = argparse.ArgumentParser(prog="python3 -m plcvec_verify", description=__doc__)
+    p = argparse.ArgumentParser(prog="python3 -m plcvec_verify", description=__doc__, epilog=EXIT_STATUS,
+                                formatter_class=argparse.RawDescriptionHelpFormatter)
     add_arguments(p)
     return main_args(p.parse_args(argv))

@@ -8,8 +8,18 @@ Items are named by vector id (node id `plcvec::<id>`). The vectors pytest keeps 
 are run together through one adapter when the first item runs (one process, batched), and each
 item then reports its own result. Without --plcvec-adapter or --plcvec-python the plugin does
 nothing.
+
+The gate holds as with `plcvec verify`: an unknown name in --plcvec-family/-instruction/-tag/
+-interpretation, an --plcvec-id glob that matches nothing, or a `-m` marker that is neither a tag
+nor a registered marker is a usage error (pytest's exit 4); a session in which no vector is
+selected, none passes (all skipped), or more are skipped than --plcvec-max-skipped allows exits 5
+(pytest's "no tests collected"), unless --plcvec-allow-empty says the job means it. SIGTERM stops
+the session like Ctrl-C, with the adapter ended.
 """
 from __future__ import annotations
+
+import re
+import signal
 
 import pytest
 
@@ -26,6 +36,15 @@ def pytest_addoption(parser):
                 help="interpretation alternative the implementation follows, if its adapter does not declare it")
     g.addoption("--plcvec-timeout", type=float, default=30.0, help="seconds per batch (adapter processes)")
     g.addoption("--plcvec-batch-size", type=int, default=256)
+    for kind, example in (("family", "fx5-time-add"), ("instruction", "TADDP"), ("tag", "boundary"),
+                          ("id", "'fx5-time-add/TADD/*'"), ("interpretation", "TADD-EXACT-24")):
+        g.addoption(f"--plcvec-{kind}", action="append", default=[], metavar=kind.upper(),
+                    help=f"select by {kind} (repeatable; OR within one option, AND across), e.g. {example}")
+    g.addoption("--plcvec-shard", metavar="K/N", help="run the K-th of N shards (by a hash of the id)")
+    g.addoption("--plcvec-allow-empty", action="store_true",
+                help="pass a session that selects no vector or in which nothing passes (else exit 5)")
+    g.addoption("--plcvec-max-skipped", metavar="N|N%",
+                help="exit 5 when more than N vectors (or N%% of those selected) are skipped")
 
 
 def _enabled(config):
@@ -38,7 +57,8 @@ class VectorFailure(Exception):
 
 class PlcvecSuite(pytest.Collector):
     def collect(self):
-        return [VectorItem.from_parent(self, name=v["id"], vector=v) for v in self.config._plcvec_suite.vectors]
+        vectors = self.config._plcvec_selection.apply(self.config._plcvec_suite.vectors)
+        return [VectorItem.from_parent(self, name=v["id"], vector=v) for v in vectors]
 
 
 class VectorItem(pytest.Item):
@@ -85,11 +105,21 @@ class VectorItem(pytest.Item):
 def pytest_configure(config):
     if not _enabled(config):
         return
+    from .command import build_gate
     from .locate import default_vectors
-    from .suite import Suite
+    from .suite import Selection, Suite, parse_shard
 
     try:
         config._plcvec_suite = Suite.load(config.getoption("plcvec_vectors") or default_vectors().path)
+        shard = config.getoption("plcvec_shard")
+        config._plcvec_selection = Selection(
+            families=tuple(config.getoption("plcvec_family")), instructions=tuple(config.getoption("plcvec_instruction")),
+            tags=tuple(config.getoption("plcvec_tag")), ids=tuple(config.getoption("plcvec_id")),
+            interpretations=tuple(config.getoption("plcvec_interpretation")),
+            shard=parse_shard(shard) if shard else None)
+        config._plcvec_selection.check(config._plcvec_suite, option_prefix="--plcvec-")
+        config._plcvec_gate = build_gate(config.getoption("plcvec_allow_empty"),
+                                         config.getoption("plcvec_max_skipped"), option_prefix="--plcvec-")
     except VerifyError as exc:
         raise pytest.UsageError(f"plcvec: {exc}")
     # Every tag becomes a marker (`-m boundary`), declared with the meaning the vector file gives it.
@@ -105,7 +135,24 @@ def pytest_configure(config):
 def pytest_collection_modifyitems(session, config, items):
     # tryfirst: the vector items must be in the list before -k/-m deselect from it.
     if _enabled(config):
+        _check_markexpr(config)
         items.extend(PlcvecSuite.from_parent(session, name="plcvec").collect())
+
+
+# An identifier in a -m expression, as pytest's own expression grammar reads one.
+_IDENT = re.compile(r"(?:\w|:|\+|-|\.|\[|\]|\\|/)+")
+_MARKEXPR_WORDS = {"and", "or", "not", "True", "False", "None"}
+
+
+def _check_markexpr(config):
+    """`-m nosuchtag` would deselect every vector: a typo, refused like an unknown --plcvec-tag."""
+    expr = config.getoption("markexpr", "") or ""
+    registered = {line.split(":")[0].split("(")[0].strip() for line in config.getini("markers")}
+    tags = sorted(config._plcvec_suite.names()["tag"])
+    for name in _IDENT.findall(re.sub(r"\([^)]*\)", "", expr)):
+        if name not in _MARKEXPR_WORDS and name not in registered:
+            raise pytest.UsageError(f"plcvec: -m {expr!r}: {name} is neither a vector tag nor a registered marker; "
+                                    f"tags (as markers): {', '.join(t.replace('-', '_') for t in tags)}")
 
 
 def _results(session):
@@ -121,6 +168,7 @@ def _run(session):
     from .known import KnownFailures
     from .runner import run
     from .stdio import StdioAdapter
+    from .stopping import stop_on_signals
 
     config = session.config
     suite = config._plcvec_suite
@@ -134,11 +182,15 @@ def _run(session):
         else:
             adapter = StdioAdapter(config.getoption("plcvec_adapter"), timeout=config.getoption("plcvec_timeout"),
                                    batch_size=config.getoption("plcvec_batch_size"))
-        report = run(suite, adapter, vectors=vectors, known=known,
-                     choose=parse_choices(config.getoption("plcvec_choose")))
+        # pytest ends on SIGTERM without unwinding; within the run, it ends the adapter first.
+        with stop_on_signals((signal.SIGTERM,)):
+            report = run(suite, adapter, vectors=vectors, known=known, gate=config._plcvec_gate,
+                         choose=parse_choices(config.getoption("plcvec_choose")))
     except VerifyError as exc:
         return _Everywhere(f"plcvec: {exc}")
     config._plcvec_report = report
+    if report.stopped:
+        raise KeyboardInterrupt(report.aborted)
     results = {r.id: r for r in report.results}
     if report.aborted:
         for r in report.results:
@@ -158,11 +210,32 @@ class _Everywhere(dict):
         return self.message
 
 
+@pytest.hookimpl(tryfirst=True)
+def pytest_sessionfinish(session, exitstatus):
+    """A session that passed but proves nothing (or too little) exits 5, like `plcvec verify`."""
+    config = session.config
+    if not _enabled(config) or not hasattr(config, "_plcvec_gate") or config.option.collectonly:
+        return
+    gate = config._plcvec_gate
+    report = getattr(config, "_plcvec_report", None)
+    if exitstatus == pytest.ExitCode.OK:
+        # No report: no vector item was left to run (-k, -m or the --plcvec- filters removed them all).
+        config._plcvec_shortfall = report.shortfall if report is not None else gate.shortfall({}, 0)
+        if config._plcvec_shortfall:
+            session.exitstatus = pytest.ExitCode.NO_TESTS_COLLECTED
+    elif exitstatus == pytest.ExitCode.NO_TESTS_COLLECTED and gate.allow_empty and report is None:
+        session.exitstatus = pytest.ExitCode.OK
+
+
 def pytest_terminal_summary(terminalreporter, config):
+    shortfall = getattr(config, "_plcvec_shortfall", "")
     report = getattr(config, "_plcvec_report", None)
     if report is None:
+        if shortfall:
+            terminalreporter.write_sep("-", "plcvec")
+            terminalreporter.write_line(f"NOT PASSED (exit 5): {shortfall}", red=True)
         return
-    from .reports import header
+    from .reports import header, skipped_lines
 
     h = header(report)
     terminalreporter.write_sep("-", "plcvec")
@@ -171,3 +244,7 @@ def pytest_terminal_summary(terminalreporter, config):
     stale = [r for r in report.results if r.status == "stale" and not r.family]
     for r in stale:
         terminalreporter.write_line(f"STALE {r.id}: {r.message}")
+    for line in skipped_lines(report):
+        terminalreporter.write_line(line, yellow=True)
+    if shortfall:
+        terminalreporter.write_line(f"NOT PASSED (exit 5): {shortfall}", red=True)

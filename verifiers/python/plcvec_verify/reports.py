@@ -6,6 +6,7 @@ adapter, and the interpretation alternative every vector was judged by.
 from __future__ import annotations
 
 import json
+from collections import Counter
 import xml.etree.ElementTree as ET
 from .atomic import write_atomic
 from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL, RunReport
@@ -57,8 +58,11 @@ def summary_text(report: RunReport, verbose: bool = False) -> str:
             lines.append(f"NOTE {r.id}: {note}")
     for note in report.notes:
         lines.append(f"NOTE adapter: {note}")
+    lines += skipped_lines(report)
     if report.aborted:
         lines.append(f"ABORTED: {report.aborted}")
+    elif not report.failed and report.shortfall:
+        lines.append(f"NOT PASSED (exit {report.exit_code}): {report.shortfall}")
     h = header(report)
     adapter = report.adapter.get("name", "?") + (f" {report.adapter['version']}" if report.adapter.get("version") else "")
     lines.append("")
@@ -67,9 +71,25 @@ def summary_text(report: RunReport, verbose: bool = False) -> str:
     declared = [f"{i}={d['alternative']}" for i, d in h["interpretations"].items() if d["declared"]]
     lines.append("interpretations: " + (", ".join(declared) + "; " if declared else "") + "others default")
     counts = report.counts
-    parts = [f"{counts[s]} {s}" for s in STATUSES if counts[s] or s in (PASS, FAIL)]
+    parts = [f"{counts[s]} {s}" for s in STATUSES if counts[s] or s in (PASS, FAIL, SKIP)]
     lines.append(f"{len(report.results)} vectors: " + ", ".join(parts) + f" in {report.seconds:.2f} s")
     return "\n".join(lines) + "\n"
+
+
+def skipped_lines(report: RunReport) -> list[str]:
+    """How many vectors were skipped and why, most common reason first: a run that skips much
+    proves little, so the number is said before the totals, not hidden among them."""
+    skipped = [r.message for r in report.results if r.status == SKIP]
+    if not skipped:
+        return []
+    selected = max(report.selected, 1)
+    lines = [f"SKIPPED {len(skipped)} of {report.selected} vectors ({100.0 * len(skipped) / selected:.1f}%):"]
+    reasons = Counter(skipped).most_common()
+    for reason, n in reasons[:SHOW_PROBLEMS]:
+        lines.append(f"    {n:>6}  {reason or '(no reason given)'}")
+    if len(reasons) > SHOW_PROBLEMS:
+        lines.append(f"    ... and {len(reasons) - SHOW_PROBLEMS} more reasons (--jsonl lists each vector)")
+    return lines
 
 
 def jsonl_lines(report: RunReport):
@@ -87,7 +107,8 @@ def jsonl_lines(report: RunReport):
             item["notes"] = r.notes
         yield item
     yield {"type": "summary", "counts": report.counts, "seconds": round(report.seconds, 3),
-           "aborted": report.aborted or None, "notes": report.notes, "exit_code": report.exit_code}
+           "aborted": report.aborted or None, "shortfall": report.shortfall or None, "notes": report.notes,
+           "exit_code": report.exit_code}
 
 
 def _jsonable(value):

@@ -14,6 +14,7 @@ from .adapters import AdapterAbort
 from .compare import Problem, compare, passes
 from .errors import VerifyError
 from .expect import expected_of, request_of
+from .gate import NOTHING_TESTED, Gate
 from .known import KnownFailures
 from .protocol import hello_request, result_errors, result_shape_ok
 from .stopping import Stopped
@@ -49,6 +50,7 @@ class RunReport:
     notes: list = field(default_factory=list)   # adapter notes not tied to a vector
     selection: Selection = field(default_factory=Selection)
     stopped: int = 0                            # the signal that stopped the run, if one did
+    gate: Gate = field(default_factory=Gate)    # what the run must show beyond "no failures"
 
     def count(self, status):
         return sum(1 for r in self.results if r.status == status)
@@ -62,12 +64,25 @@ class RunReport:
         return [r for r in self.results if r.status in FAILING]
 
     @property
+    def selected(self):
+        """The vectors the run was given (not the stale ids an expectations file adds)."""
+        return sum(1 for r in self.results if r.family)
+
+    @property
+    def shortfall(self) -> str:
+        """Why the run proves too little to pass, though nothing failed ("" when it is enough)."""
+        return self.gate.shortfall(self.counts, self.selected)
+
+    @property
     def exit_code(self):
+        """128+N stopped by signal N; 2 harness error; 1 failures; 5 nothing (or too little) tested; 0 passed."""
         if self.stopped:
             return 128 + self.stopped
         if self.aborted:
             return 2
-        return 1 if self.failed else 0
+        if self.failed:
+            return 1
+        return NOTHING_TESTED if self.shortfall else 0
 
 
 class Plan:
@@ -111,14 +126,19 @@ def resolve_choices(suite: Suite, families, declared: dict, cli: dict) -> dict:
 
 def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: dict | None = None,
         known: KnownFailures | None = None, progress=None, plan: Plan | None = None,
-        vectors: list | None = None, keep_open: bool = False) -> RunReport:
+        vectors: list | None = None, keep_open: bool = False, gate: Gate | None = None) -> RunReport:
     """Run the selected vectors through `adapter` (adapters.InProcess or stdio.StdioAdapter).
 
     `vectors`, when given, is the list to run instead of `selection` (the pytest plugin passes the
     items pytest kept after -k and friends). `keep_open` leaves the adapter running for another run.
+    `gate` says what the run must show beyond "no failures" (gate.py); by default, at least one pass.
+    A selection naming a family, instruction, tag or interpretation the suite does not have, or an
+    id glob that matches no vector, is a VerifyError: a typo must not turn a gate off.
     """
     started = time.perf_counter()
-    vectors = selection.apply(suite.vectors) if vectors is None else vectors
+    if vectors is None:
+        selection.check(suite)
+        vectors = selection.apply(suite.vectors)
     families = sorted({v["family"] for v in vectors}) or sorted(suite.headers)
     hello = adapter.hello(hello_request(suite, families))
     interpretations = resolve_choices(suite, families, hello.get("interpretations", {}), choose or {})
@@ -136,7 +156,7 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     if plan is None:
         plan = Plan(suite, runnable, choices)
     by_id = suite.by_id
-    report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection)
+    report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate())
     total, done, failed = len(runnable), 0, 0
     try:
         for answer in adapter.answers([plan.requests[v["id"]] for v in runnable], plan.wire):

@@ -100,6 +100,18 @@ class Suite:
     def instructions(self) -> dict[str, list[str]]:
         return {family: list(h.get("instructions", [])) for family, h in sorted(self.headers.items())}
 
+    def names(self) -> dict[str, list[str]]:
+        """The names a selection may use, by kind: family, instruction, tag, interpretation."""
+        instructions, tags = set(), set()
+        for header in self.headers.values():
+            instructions.update(header.get("instructions", ()))
+            tags.update(header.get("tags", {}))
+        for v in self.vectors:
+            instructions.add(v["instruction"])
+            tags.update(v.get("tags", ()))
+        return {"family": sorted(self.headers), "instruction": sorted(instructions), "tag": sorted(tags),
+                "interpretation": sorted(self.interpretations())}
+
 
 # What the runner reads of a vector, checked once at load so that a damaged file is reported by
 # name rather than failing half-way through a run (the full schema is vectors/schema/).
@@ -170,6 +182,25 @@ class Selection:
 
     def apply(self, vectors: list[dict]) -> list[dict]:
         return [v for v in vectors if self.matches(v)]
+
+    def check(self, suite: "Suite", option_prefix: str = "--") -> None:
+        """Refuse names the suite does not have, listing those it has, and id globs that match nothing.
+
+        An unknown name would select nothing, and a gate that selects nothing must not look like one
+        that passed; a usage error says which word was mistyped.
+        """
+        known = suite.names()
+        for kind, given in (("family", self.families), ("instruction", self.instructions), ("tag", self.tags),
+                            ("interpretation", self.interpretations)):
+            for name in given:
+                if name not in known[kind]:
+                    raise VerifyError(f"{option_prefix}{kind} {name}: {suite.source} has no such {kind}; "
+                                      f"known: {', '.join(known[kind]) or '(none)'}")
+        for pattern in self.ids:
+            if not any(fnmatch.fnmatchcase(vid, pattern) for vid in suite.by_id):
+                example = next(iter(suite.by_id), "")
+                raise VerifyError(f"{option_prefix}id {pattern}: matches no vector id in {suite.source} "
+                                  f"(ids look like {example}; a glob matches the whole id)")
 
 
 def shard_of(vector_id: str, n: int) -> int:
