@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The Java verifier (verifiers/java/): build every module with warnings as errors, run the JUnit
-# tests (the reference on every vector under every combination of alternatives, the mutants each
-# rejected by name, the library's own tests, the README's example project), then serve the
-# reference over the stdio protocol to the Python gate. Run from the repository root.
+# tests (the library's own, the reference on every vector under the defaults and under every
+# combination of alternatives, the mutants each rejected by name, and the README's example project
+# examples/minimal), then serve the reference over the stdio protocol to the Python gate and to a
+# seeded differential fuzz run, and check that the gate rejects a mutant. From the repository root.
 set -euo pipefail
 
 if ! command -v mvn >/dev/null || ! command -v javac >/dev/null; then
@@ -11,12 +12,24 @@ if ! command -v mvn >/dev/null || ! command -v javac >/dev/null; then
 fi
 
 started=$SECONDS
-# -B -q: no progress bars or download logs. Dependencies and pinned plugins come from Maven Central
-# the first time, from ~/.m2 after that (the build also runs with -o once they are there).
-(cd verifiers/java && mvn -B -q -Dstyle.color=never verify)
-echo "java: mvn verify in $((SECONDS - started)) s"
+# -B -q: no progress bars or download logs (Debian's Maven still prints bare colour resets: drop
+# them). Dependencies and the pinned plugins come from Maven Central the first time, from ~/.m2
+# after that (the build then also runs with -o).
+(cd verifiers/java && mvn -B -q -Dstyle.color=never verify) 2>&1 | sed -e 's/\x1b\[0m//g' -e '/^$/d'
+echo "java: mvn verify (build, lint, $(cat verifiers/java/*/target/surefire-reports/*.xml \
+    verifiers/java/examples/*/target/surefire-reports/*.xml | grep -c '<testcase') JUnit tests) in $((SECONDS - started)) s"
 
 python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
+
+# Fresh inputs through the Java reference and the spec engine, under the defaults and under a set
+# of other alternatives (fixed seeds: repeatable).
+python3 -m plcvec fuzz --adapter verifiers/java/reference-adapter --examples 500 --seed 1
+python3 -m plcvec fuzz --examples 500 --seed 2 --adapter "verifiers/java/reference-adapter \
+    --choose FX5-SM709-SCOPE=compared-operands --choose FX5-AND-OR-WHEN-OFF=short-circuit \
+    --choose TADD-EXACT-24=carry-above-24 --choose TADD-ON-ERROR=computed --choose HOUR-OUTPUT-OFF=recompared \
+    --choose HOUR-INPUT-OFF=hold-drop-fraction --choose CP1E-NON-BCD=raw-bytes --choose CP1E-ALL-MASKED=not-compared \
+    --choose CP1E-ER-FLAG=held"
+
 # The same gate must reject a mutant served the same way (exit 1, not 0 and not 2).
 status=0
 python3 -m plcvec verify --adapter "verifiers/java/reference-adapter --mutant tadd-sm8022-not-written" \
@@ -25,3 +38,4 @@ if [ "$status" -ne 1 ]; then
     echo "java: plcvec verify gave exit $status for the mutant tadd-sm8022-not-written (expected 1)" >&2
     exit 1
 fi
+echo "java: done in $((SECONDS - started)) s"

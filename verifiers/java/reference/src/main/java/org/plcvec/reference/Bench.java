@@ -24,9 +24,13 @@ public final class Bench {
     }
 
     public static void main(String[] args) {
+        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+        boolean cpuTime = threads.isCurrentThreadCpuTimeSupported();
+        long c0 = cpuTime ? threads.getCurrentThreadCpuTime() : 0;
         long t0 = System.nanoTime();
         Suite suite = Suite.golden();
         double load = (System.nanoTime() - t0) / 1e9;
+        double loadCpu = cpuTime ? (threads.getCurrentThreadCpuTime() - c0) / 1e9 : Double.NaN;
         t0 = System.nanoTime();
         Verifier verifier = Verifier.of(new Reference()).suite(suite);
         int n = verifier.vectors().size();
@@ -40,8 +44,6 @@ public final class Bench {
         }
         double[] seconds = new double[PASSES];
         double[] cpu = new double[PASSES];
-        ThreadMXBean threads = ManagementFactory.getThreadMXBean();
-        boolean cpuTime = threads.isCurrentThreadCpuTimeSupported();
         for (int i = 0; i < PASSES; i++) {
             long c = cpuTime ? threads.getCurrentThreadCpuTime() : 0;
             long s = System.nanoTime();
@@ -57,6 +59,8 @@ public final class Bench {
         System.out.printf(Locale.ROOT, "%-52s %8s %10s %12s%n", "java verifier, golden set, in process", "vectors", "seconds",
                 "vectors/s");
         System.out.printf(Locale.ROOT, "%-52s %8d %10.4f %12s%n", "load the vectors (" + suite.source() + ")", n, load, "");
+        System.out.printf(Locale.ROOT, "%-52s %8d %10.4f %12s%n", "  of which CPU time of the loading thread (cold JVM)", n,
+                loadCpu, "");
         System.out.printf(Locale.ROOT, "%-52s %8d %10.4f %12s%n", "plan: expectations under the alternatives", n, plan, "");
         System.out.printf(Locale.ROOT, "%-52s %8d %10.6f %,12.0f%n", "judge with the reference (median pass)", n, median, rate);
         System.out.printf(Locale.ROOT, "%-52s %8d %10.6f %,12.0f%n", "  fastest pass", n, seconds[0], n / seconds[0]);
