@@ -72,7 +72,6 @@ int plcvec_reference_choose(plcvec_reference *ref, const char *interpretation, c
 plcvec_impl plcvec_reference_impl(plcvec_reference *ref);
 
 /* The family machines: execute one step on ref->mem; return the contact result or PLCVEC_NONE. */
-typedef struct fx5_state { int unused; } fx5_state;
 typedef struct tadd_state { int previous_en; } tadd_state;
 typedef struct hour_state { long fraction_ms; int wrapped; } hour_state;
 
