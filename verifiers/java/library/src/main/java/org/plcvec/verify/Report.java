@@ -1,5 +1,10 @@
 package org.plcvec.verify;
 
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
@@ -42,6 +47,50 @@ public final class Report {
 
     public double seconds() {
         return seconds;
+    }
+
+    /**
+     * Write the failing vectors of this run as a new expectations file, each with {@code reason}
+     * (a starting list for adopting the suite, as {@code plcvec verify --write-expectations}
+     * writes it). Written atomically: the file is whole or untouched. Returns the number of entries.
+     */
+    public int writeExpectations(Path file, String reason) {
+        StringBuilder sb = new StringBuilder("# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n");
+        int n = 0;
+        for (Result r : results.stream().sorted(java.util.Comparator.comparing(Result::id)).toList()) {
+            if (r.vector() != null && (r.status() == Status.FAIL || r.status() == Status.ERROR || r.status() == Status.XFAIL)) {
+                sb.append("[[").append(KnownFailures.SECTION).append("]]\nid = ").append(toml(r.id())).append("\nreason = ")
+                        .append(toml(reason)).append("\n\n");
+                n++;
+            }
+        }
+        Path dir = file.toAbsolutePath().getParent();
+        try {
+            Path tmp = Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
+            try {
+                Files.writeString(tmp, sb, StandardCharsets.UTF_8);
+                Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } finally {
+                Files.deleteIfExists(tmp);
+            }
+        } catch (IOException e) {
+            throw new VerifyException(file + ": cannot write the expectations file: " + e.getMessage(), e);
+        }
+        return n;
+    }
+
+    private static String toml(String s) {
+        StringBuilder sb = new StringBuilder("\"");
+        for (char c : s.toCharArray()) {
+            if (c == '"' || c == '\\') {
+                sb.append('\\').append(c);
+            } else if (c < 0x20 || c == 0x7f) {
+                sb.append(String.format("\\u%04X", (int) c));
+            } else {
+                sb.append(c);
+            }
+        }
+        return sb.append('"').toString();
     }
 
     /** What {@code plcvec verify} prints at the end of a run. */

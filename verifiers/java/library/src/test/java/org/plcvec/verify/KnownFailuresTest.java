@@ -53,6 +53,17 @@ class KnownFailuresTest {
     }
 
     @Test
+    void theFailuresOfARunBecomeAStartingList(@org.junit.jupiter.api.io.TempDir java.nio.file.Path tmp) throws Exception {
+        java.nio.file.Path file = tmp.resolve("known.toml");
+        assertEquals(1, run("").writeExpectations(file, "not \"yet\" done"));
+        KnownFailures written = KnownFailures.load(file);
+        assertEquals(java.util.Set.of(WRONG), written.entries().keySet());
+        assertEquals("not \"yet\" done", written.entries().get(WRONG).reason());
+        assertEquals(3, written.entries().get(WRONG).line());
+        assertTrue(run(java.nio.file.Files.readString(file)).passed());
+    }
+
+    @Test
     void mistakesAreNamedWithFileAndLine() {
         assertEquals("known.toml:3: x/y: every known failure needs a `reason`", assertThrows(VerifyException.class,
                 () -> KnownFailures.parse("# c\n\n[[known-failure]]\nid = \"x/y\"\n", "known.toml")).getMessage());
