@@ -58,7 +58,11 @@ func addrKey(a Addr) uint64 {
 	return uint64(uint32(a.N))<<32 | uint64(h)
 }
 
+// resultBuffer is what Emulate needs for one vector: its memory and its results. It is reused
+// for the next vector once the runner has judged the results (recycle); a caller that keeps
+// the results (the stdio adapter) simply never hands it back.
 type resultBuffer struct {
+	mem    Memory
 	values []Value
 	steps  []StepResult
 }
@@ -77,10 +81,6 @@ func (emulated) recycle(steps []StepResult) {
 		results.Put(steps[0].buf)
 	}
 }
-
-// memories recycles the Memory of one vector for the next: Emulate's Memory lives only
-// while its vector runs (a CPU must not keep it).
-var memories = sync.Pool{New: func() any { return new(Memory) }}
 
 func (m *Memory) index(a Addr) int {
 	key, keys := addrKey(a), m.req.keys
@@ -220,13 +220,11 @@ func (em emulated) Run(req *Request) ([]StepResult, error) {
 	if err != nil {
 		return nil, err
 	}
-	mem := memories.Get().(*Memory)
-	mem.reset(req)
-	defer memories.Put(mem)
-	n := len(req.Devices)
-	// Every step's values in one buffer without pointers, reused once the runner has judged them
-	// (recycle); a caller that keeps the results (the stdio adapter) simply never hands them back.
 	buf := results.Get().(*resultBuffer)
+	mem := &buf.mem
+	mem.reset(req)
+	n := len(req.Devices)
+	// Every step's values in one buffer without pointers: the collector never scans it.
 	buf.values = grow(buf.values, n*len(req.Steps))
 	if cap(buf.steps) < len(req.Steps) {
 		buf.steps = make([]StepResult, len(req.Steps))
