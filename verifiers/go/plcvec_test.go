@@ -411,3 +411,24 @@ func TestEnvVectors(t *testing.T) {
 		}
 	}
 }
+
+// TestEnvShard: PLCVEC_SHARD=K/N runs that shard only; a bad value fails naming the variable.
+func TestEnvShard(t *testing.T) {
+	ref, err := reference.New(nil)
+	if err != nil {
+		t.Fatal(err)
+	}
+	t.Setenv("PLCVEC_SHARD", "2/5")
+	sel := plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}}
+	report := plcvec.Run(t, ref.Implementation(), plcvec.Options{Selection: sel})
+	all, _ := plcvec.Verify(ref.Implementation(), plcvec.Options{Selection: sel})
+	want := 0
+	for _, v := range all.Verdicts {
+		if plcvec.ShardOf(v.ID, 5) == 2 {
+			want++
+		}
+	}
+	if len(report.Verdicts) != want || want == 0 || want == len(all.Verdicts) {
+		t.Errorf("shard 2/5 ran %d vectors, want %d of %d", len(report.Verdicts), want, len(all.Verdicts))
+	}
+}

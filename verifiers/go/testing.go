@@ -1,6 +1,7 @@
 package plcvec
 
 import (
+	"os"
 	"regexp"
 	"strconv"
 	"strings"
@@ -27,8 +28,16 @@ import (
 // such as "cp1e-time-compare/AND <=DT/logic/rlo-off/eq" is therefore the subtest
 // "TestPlcvec/cp1e-time-compare/AND_<=DT/logic/rlo-off/eq"; RunPattern gives the -run pattern
 // that selects exactly one id, and -run 'TestPlcvec/fx5-time-add/TADDP/' one instruction.
+// $PLCVEC_SHARD=K/N runs one shard of the selection (when Options give no shard).
 func Run(t *testing.T, impl Implementation, opts Options) *Report {
 	t.Helper()
+	if text := os.Getenv(EnvShard); text != "" && opts.Selection.Shard == (Shard{}) {
+		shard, err := ParseShard(text)
+		if err != nil {
+			t.Fatalf("plcvec: $%s: %v", EnvShard, err)
+		}
+		opts.Selection.Shard = shard
+	}
 	plan, err := Prepare(impl, opts)
 	if err != nil {
 		t.Fatalf("plcvec: %v", err)
@@ -63,6 +72,10 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 	}
 	return report
 }
+
+// EnvShard names the environment variable that gives Run a shard K/N when Options do not, so a
+// CI matrix splits the suite without changing the test: PLCVEC_SHARD=2/4 go test ./...
+const EnvShard = "PLCVEC_SHARD"
 
 // SubtestName is the name Go's testing package gives the subtest of a vector id: each space
 // becomes '_' and each unprintable character its escape, as testing.T.Run writes it.
