@@ -83,7 +83,8 @@ public final class PlcvecTests {
         }
         final Verifier run = v;
         for (Vector vector : vectors) {
-            tests.add(DynamicTest.dynamicTest(vector.id(), () -> verdict(run.check(vector))));
+            // The test source lets an IDE open the vector's line in the vector file.
+            tests.add(DynamicTest.dynamicTest(vector.id(), vector.source(), () -> verdict(run.check(vector))));
         }
         for (Result stale : v.knownFailures().unknownIds(v.suite())) {
             tests.add(failing("expectations: " + stale.id(), stale.message()));

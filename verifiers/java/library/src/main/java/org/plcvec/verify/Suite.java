@@ -205,8 +205,11 @@ public final class Suite {
         }
         String family = header(data, name, headers);
         int i = 0;
+        java.net.URI file = uri(name, 0);
         for (JsonNode v : data.get("vectors")) {
-            vectors.add(vector(v, family, name, "#" + i++));
+            Vector vector = vector(v, family, name, "#" + i++);
+            vector.source(file);
+            vectors.add(vector);
         }
     }
 
@@ -225,7 +228,9 @@ public final class Suite {
                 }
                 family = header(node, name, headers);
             } else {
-                vectors.add(vector(node, family, name + ":" + (n + 1), "on this line"));
+                Vector v = vector(node, family, name + ":" + (n + 1), "on this line");
+                v.source(uri(name, n + 1));
+                vectors.add(v);
             }
         }
         if (family == null) {
@@ -247,6 +252,19 @@ public final class Suite {
         }
         headers.put(family, data);
         return family;
+    }
+
+    /** A test source for JUnit: classpath or file, with the line when known. */
+    private static java.net.URI uri(String name, int line) {
+        String query = line > 0 ? "?line=" + line : "";
+        try {
+            if (name.startsWith("classpath:")) {
+                return new java.net.URI("classpath", name.substring("classpath:".length()) + query, null);
+            }
+            return java.net.URI.create(Path.of(name).toAbsolutePath().toUri() + query);
+        } catch (java.net.URISyntaxException | IllegalArgumentException e) {
+            return null;   // a source link is a convenience; never a reason to refuse the vectors
+        }
     }
 
     private static Vector vector(JsonNode v, String family, String where, String fallbackName) {

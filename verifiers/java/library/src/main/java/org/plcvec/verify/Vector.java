@@ -23,6 +23,7 @@ public final class Vector extends VectorRequest {
     private final List<String> interpretations;
     private final Expectation expectation;
     private final List<Variant> variants;
+    private java.net.URI source;     // where the vector is written, for an IDE to open (set by Suite)
 
     Vector(VectorRequest request, String description, List<String> tags, List<String> clauses,
            List<String> interpretations, Expectation expectation, List<Variant> variants) {
@@ -33,6 +34,18 @@ public final class Vector extends VectorRequest {
         this.interpretations = List.copyOf(interpretations);
         this.expectation = expectation;
         this.variants = List.copyOf(variants);
+    }
+
+    /**
+     * Where the vector is written ({@code classpath:/org/plcvec/vectors/fx5-time-add.jsonl?line=12},
+     * or a file URI), or null: the JUnit test source of its dynamic test.
+     */
+    public java.net.URI source() {
+        return source;
+    }
+
+    void source(java.net.URI uri) {
+        this.source = uri;
     }
 
     public String description() {

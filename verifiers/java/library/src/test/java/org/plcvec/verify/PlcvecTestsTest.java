@@ -26,6 +26,8 @@ class PlcvecTestsTest {
         assertEquals(Suite.golden().vectors().stream().filter(v -> v.family().equals("fx5-time-add")).findFirst().orElseThrow().id(),
                 n.get(0).getDisplayName());
         ((DynamicTest) n.get(0)).getExecutable().execute();
+        // The IDE can open the vector's own line: line 1 of a .jsonl copy is the header.
+        assertEquals("classpath:/org/plcvec/vectors/fx5-time-add.jsonl?line=2", n.get(0).getTestSourceUri().orElseThrow().toString());
     }
 
     @Test
