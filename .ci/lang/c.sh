@@ -61,6 +61,9 @@ echo "c: shard 2/3 holds the same vectors as the Python runner's"
 # The reference over the stdio protocol passes the Python gate; a mutant served the same way is
 # rejected (exit 1), so the gate is not passing by accident.
 python3 -m plcvec verify --adapter verifiers/c/reference-adapter -q
+# ... and under declared alternatives other than the defaults, judged by the vectors' alternatives.
+python3 -m plcvec verify -q --adapter "verifiers/c/reference-adapter --choose FX5-SM709-SCOPE=compared-operands \
+    --choose CP1E-ALL-MASKED=not-compared --choose TADD-FLAGS-OFF=set-only --choose HOUR-INPUT-OFF=reset"
 set +e
 python3 -m plcvec verify --adapter "verifiers/c/reference-adapter --mutant cp1e-and-as-or" -q >/dev/null
 rc=$?
