@@ -13,6 +13,7 @@ import java.util.concurrent.ConcurrentHashMap;
 public final class Address {
     private static final ConcurrentHashMap<String, Address> BY_NAME = new ConcurrentHashMap<>();
     private static final ConcurrentHashMap<String, Integer> KINDS = new ConcurrentHashMap<>();
+    private static final java.util.concurrent.atomic.AtomicInteger NEXT_KIND = new java.util.concurrent.atomic.AtomicInteger();
     /** Named devices get numbers from here, above any real device number. */
     private static final int NAMED = Integer.MAX_VALUE;
 
@@ -51,7 +52,7 @@ public final class Address {
     }
 
     private static long kindKey(String kind) {
-        int id = KINDS.computeIfAbsent(kind, k -> KINDS.size() + 1);
+        int id = KINDS.computeIfAbsent(kind, k -> NEXT_KIND.incrementAndGet());
         return ((long) id) << 32;
     }
 
