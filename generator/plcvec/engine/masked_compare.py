@@ -28,6 +28,11 @@ class MaskedCompare:
         self.words = {k: v.get("words", 1) for k, v in self.ops.items()}
         self.conditions = {c["symbol"]: c for c in doc["instructions"]["conditions"]}
         self.reserved_mask = sum(1 << b for b in self.sel["reserved_bits"])
+        # What the selector's bits mean and each field's range, looked up once, not per execution.
+        self._want = 1 if self.sel["polarity"] == "select" else 0
+        self._field_bits = [(f, self.sel["field_bits"][f["name"]]) for f in self.fields]
+        self._field_clauses = [self.sel["field_clauses"][f["name"]] for f in self.fields]
+        self._ranges = [(f["name"], f["min"], f["max"]) for f in self.fields]
 
     # -- the instruction ---------------------------------------------------------------------------
     def execute(self, instr, operands, state, step, ctx, trace):
@@ -101,7 +106,8 @@ class MaskedCompare:
             values[second] = {f["name"]: step["clock"][f["name"]] for f in self.fields}
 
         # The check's scope decides something only when some value is invalid.
-        if self._invalid(values, compared_ops, self.fields) and self.validity["scope"] == "all":
+        invalid = self._invalid(values, compared_ops)
+        if invalid and self.validity["scope"] == "all":
             self._check(values, compared_ops, self.fields, trace)
 
         if sel & self.reserved_mask:
@@ -111,10 +117,9 @@ class MaskedCompare:
                 return None
             if action == "error":
                 raise _Error
-        want = 1 if self.sel["polarity"] == "select" else 0
-        selected = [f for f in self.fields if (sel >> self.sel["field_bits"][f["name"]] & 1) == want]
-        for f in self.fields:
-            trace.add(self.sel["field_clauses"][f["name"]])
+        want = self._want
+        selected = [f for f, bit in self._field_bits if (sel >> bit & 1) == want]
+        trace.update(self._field_clauses)
         if not selected:
             trace.add(self.sel["no_field_clause"])
             action = self.sel["on_no_field"]
@@ -132,7 +137,7 @@ class MaskedCompare:
         # Checked only now that a comparison is made: the selected fields, or every field of each
         # compared operand (scope "compared"); scope "all" was checked before the selector. The scope
         # decides something only when some value is invalid, so only then is it asked.
-        if self._invalid(values, compared_ops, self.fields):
+        if invalid:
             scope = self.validity["scope"]
             if scope in ("selected", "compared"):
                 self._check(values, compared_ops, selected if scope == "selected" else self.fields, trace)
@@ -148,10 +153,15 @@ class MaskedCompare:
                 return "lt" if a < b else "gt"
         return "eq"
 
-    def _invalid(self, values, compared_ops, fields):
-        """Whether any of `fields` of the compared operands is out of range or not a valid encoding."""
-        in_range = self.codec.in_range
-        return any(not in_range(f, values[op][f["name"]]) for op in compared_ops for f in fields)
+    def _invalid(self, values, compared_ops):
+        """Whether any field of the compared operands is out of range or not a valid encoding."""
+        for op in compared_ops:
+            held = values[op]
+            for name, lo, hi in self._ranges:
+                v = held[name]
+                if v is None or not lo <= v <= hi:
+                    return True
+        return False
 
     def _check(self, values, compared_ops, fields, trace):
         for op in compared_ops:

@@ -71,6 +71,17 @@ def encode(value, encoding, width):
     return raw
 
 
+@lru_cache(maxsize=None)
+def decoder(encoding, width):
+    """decode() of one encoding and width as a function of the raw bits: a table for BCD up to 16 bits
+    (built once), the arithmetic itself otherwise."""
+    if encoding == "bcd" and width <= 16:
+        return [decode(raw, encoding, width) for raw in range(1 << width)].__getitem__
+    if encoding == "unsigned16":
+        return int
+    return lambda raw: decode(raw, encoding, width)
+
+
 class FieldCodec:
     """Reads and writes the fields of a multi-word operand as the spec's data.fields lay them out."""
 
@@ -81,6 +92,8 @@ class FieldCodec:
         # (name, word, lsb, mask, encoding, width) per field: the layout, read once.
         self._layout = [(f["name"], f["word"], f["lsb"], (1 << f["width"]) - 1, f["encoding"], f["width"])
                         for f in fields]
+        self._readers = [(name, word, lsb, mask, decoder(encoding, width))
+                         for name, word, lsb, mask, encoding, width in self._layout]
         self._radices = [f["max"] + 1 for f in fields]
         self._modulus = 1
         for r in self._radices:
@@ -92,8 +105,7 @@ class FieldCodec:
     def read(self, state, head):
         """{field name: decoded value or None}."""
         words = [state[a] for a in word_addresses(head, self.count)]
-        return {name: decode((words[word] >> lsb) & mask, encoding, width)
-                for name, word, lsb, mask, encoding, width in self._layout}
+        return {name: dec((words[word] >> lsb) & mask) for name, word, lsb, mask, dec in self._readers}
 
     def pack(self, values):
         """The words that hold `values` (field name -> value); fields not given are 0."""

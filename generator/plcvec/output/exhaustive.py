@@ -49,10 +49,9 @@ def stream_exhaustive(families, out_dir, only=None, choices=None, selectors=None
     return count, time.perf_counter() - start
 
 
-# Stand-ins for the selector value in a line's text: the decimal value (a device value no operand
-# holds, so it occurs once in a dumped state) and the hex form of the id and description.
+# Stands in for the selector's value in a dumped state, where the template takes the line's value:
+# a device value no operand holds, so it occurs once.
 _MARKER = -12345
-_HEX = "\x00"   # json.dumps escapes control characters, so this never occurs in dumped JSON
 
 
 def _write_family(fam, path, choices, selectors):
@@ -80,12 +79,13 @@ def _write_family(fam, path, choices, selectors):
     source_bit = cases.clock_bit["bit"] if cases.clock_bit else None
     devices[sel_head] = _MARKER
     block = _Blocks(fam, engine, loads, conditions, devices, sel_head, operands, sizes, cases.selop, b)
+    initial = devices.items()
     clock_step = {"clock": b}
     tmp = path.with_name(f".{path.name}.partial")
     n = 0
-    with open(tmp, "w", encoding="utf-8") as out:
-        out.write(json.dumps(header, sort_keys=True) + "\n")
-        lines = []
+    with open(tmp, "wb", buffering=1 << 20) as out:
+        out.write((json.dumps(header, sort_keys=True) + "\n").encode("utf-8"))
+        templates, width = block.templates, len(loads)
         for sel in selectors:
             # Only the engine's answer depends on the line; the text around it is built once per
             # distinct answer (a few dozen) and filled in with the selector value.
@@ -96,32 +96,29 @@ def _write_family(fam, path, choices, selectors):
             trace = set()
             outcome = engine.evaluate(operands, state, step, ctx, trace)
             state[sel_head] = _MARKER
-            changed = tuple((k, v) for k, v in state.items() if devices[k] != v)
+            changed = tuple(sorted(state.items() - initial))   # equal values count as unchanged, as 1 == True
             error = ctx.get("error")
             key = (outcome, frozenset(trace), changed, bool(step), None if error is None else tuple(sorted(error.items())))
-            template = block.templates.get(key)
+            template = templates.get(key)
             if template is None:
                 template = block.make(key, trace, state, error, step)
-            lines.append(template % {"d": sel, "h": f"{sel:04X}H"})
-            n += len(loads)
-            if len(lines) >= 1024:
-                out.write("".join(lines))
-                lines.clear()
-        out.write("".join(lines))
+            out.write(template % {b"s": sel})
+            n += width
     tmp.replace(path)
     return n
 
 
 class _Blocks:
-    """The lines of one selector value, for each distinct answer of the engine, as a %-template."""
+    """The lines of one selector value, for each distinct answer of the engine, as a %-template of
+    UTF-8 bytes in which %(s)d is the selector value and %(s)04XH its hex form (0000H to FFFFH)."""
 
     def __init__(self, fam, engine, loads, conditions, devices, sel_head, operands, sizes, selop, clock):
         self.fam, self.engine, self.templates, self.sel_head = fam, engine, {}, sel_head
         pre, post = _escape(dumps_value(dict(sorted(devices.items())))).split(str(_MARKER))
         self.common = (f'"tags": ["exhaustive"], "assumes": {{"device_sizes": {_escape(dumps_value(sizes))}}}, '
-                       f'"initial": {{"operands": {_escape(dumps_value(operands))}, "devices": {pre}%(d)s{post}}}, ')
+                       f'"initial": {{"operands": {_escape(dumps_value(operands))}, "devices": {pre}%(s)d{post}}}, ')
         self.clock = f'"clock": {_escape(dumps_value(clock))}, '
-        self.description = f'"description": "{_escape(selop)} = %(h)s", '
+        self.description = f'"description": "{_escape(selop)} = %(s)04XH", '
         self.names = [(_escape(json.dumps(f"{fam.name}/{name}/exhaustive/"))[:-1], _escape(json.dumps(name)),
                        _escape(json.dumps(instr["st"])), instr["symbol"],
                        {instr["form"]["clause"], conditions[instr["symbol"]]["clause"]})
@@ -135,17 +132,17 @@ class _Blocks:
         result_outcome = ('{"category": "error", "errors": [%s]}' % dumps_value(dict(step=0, **error))) if error \
             else '{"category": "value"}'
         pre, post = _escape(dumps_value(dict(sorted(state.items())))).split(str(_MARKER))
-        final = f"{pre}%(d)s{post}"
+        final = f"{pre}%(s)d{post}"
         clock = self.clock if step else ""
         lines = []
         for vid, name, st, symbol, own in self.names:
             result = "true" if self.engine.contact(symbol, outcome) else "false"
             clauses = _escape(json.dumps(sorted(self.fam.clause_ref(c) for c in trace | own)))
-            lines.append(f'{{"id": {vid}%(h)s", "family": "{self.family}", "instruction": {name}, "st": {st}, '
+            lines.append(f'{{"id": {vid}%(s)04XH", "family": "{self.family}", "instruction": {name}, "st": {st}, '
                          f'{self.description}"clauses": {clauses}, {self.common}'
                          f'"steps": [{{{clock}"expect": {{"devices": {changed}, "result": {result}}}}}], '
                          f'"final": {{"devices": {final}}}, "outcome": {_escape(result_outcome)}}}\n')
-        template = self.templates[key] = "".join(lines)
+        template = self.templates[key] = "".join(lines).encode("utf-8")
         return template
 
 
