@@ -1,72 +1,260 @@
-"""`plcvec bench`: how fast the golden set and the exhaustive tier are made, and in how much memory.
+"""`plcvec bench`: how fast the golden set and the exhaustive tier are made, in how much memory, and
+how fast the verifier judges the golden set.
 
-Each measurement runs in a child process so that its peak resident memory is its own.
+Each measurement runs in a child process, so that its peak resident memory is its own and so that
+another tree can be measured the same way: `--baseline REV` exports a git revision into a temporary
+folder and measures its code (on its own spec and vectors) in the same run, each measurement of this
+tree followed at once by the same measurement of the revision, and prints the two side by side with
+the ratio of their speeds. A speed-up is then a ratio from one moment of the machine, not two
+figures from two moments.
 """
+import io
 import json
 import os
+import shutil
 import subprocess
 import sys
+import tarfile
 import tempfile
 import time
 from pathlib import Path
 
+from plcvec.errors import PlcvecError
+
 GOLDEN_TARGET_S = 10.0
-EXHAUSTIVE_TARGET_PER_S = 100_000
+GOLDEN_TARGET_RATIO = 10
+EXHAUSTIVE_TARGET_PER_S = 300_000
+VERIFY_TARGET_PER_S = 200_000
+VERIFY_PASSES = 5
+
+# Run in a child with the tree's own code; the APIs they use are those of every revision since the
+# verifier's Plan (build_golden, load_spec, Suite, Plan, run, InProcess, ReferenceAdapter).
+_GOLDEN_IN_PROCESS = """
+import json, sys, time
+from plcvec.output.golden import build_golden
+from plcvec.spec.loader import load_spec
+families = load_spec(sys.argv[1])
+start, cpu = time.perf_counter(), time.process_time()
+_, by_family = build_golden(families)
+print(json.dumps({"vectors": sum(len(v) for v in by_family.values()), "seconds": time.perf_counter() - start,
+                  "cpu": time.process_time() - cpu}))
+"""
+
+# The verifier in process, steady state: requests and expectations prepared once, one pass to warm
+# up, the median of the passes after it. "harness" answers from memory (the runner's own cost);
+# "reference" runs the Python reference implementation (its time included).
+_VERIFY_IN_PROCESS = """
+import gc, json, statistics, sys, time
+from plcvec_reference.adapter import ReferenceAdapter
+from plcvec_verify.adapters import InProcess
+from plcvec_verify.runner import Plan, run
+from plcvec_verify.suite import Suite
+suite = Suite.load(sys.argv[1])
+plan = Plan(suite, suite.vectors, {})
+gc.freeze()
+reference = ReferenceAdapter()
+answers = {v["id"]: reference.run(plan.requests[v["id"]]) for v in suite.vectors}
+
+class Replay:
+    def hello(self, request):
+        return reference.hello(request)
+
+    def run(self, request):
+        return answers[request["id"]]
+
+def seconds(adapter):
+    # (wall, CPU) seconds of a pass over the golden set: the medians of the passes after the first.
+    walls, cpus = [], []
+    for i in range(int(sys.argv[2]) + 1):
+        start, cpu = time.perf_counter(), time.process_time()
+        report = run(suite, adapter, plan=plan)
+        wall, cpu = time.perf_counter() - start, time.process_time() - cpu
+        if report.exit_code != 0:
+            raise SystemExit(f"the reference did not pass the golden set: {report.counts}")
+        if i:
+            walls.append(wall)
+            cpus.append(cpu)
+    return statistics.median(walls), statistics.median(cpus)
+
+print(json.dumps({"vectors": len(suite.vectors), "harness": seconds(InProcess(Replay())),
+                  "reference": seconds(InProcess(reference))}))
+"""
 
 
-def _child(args):
-    start = time.perf_counter()
-    proc = subprocess.Popen([sys.executable, "-m", "plcvec", *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    _, status, usage = os.wait4(proc.pid, 0)
-    seconds = time.perf_counter() - start
-    out, err = proc.stdout.read(), proc.stderr.read()
-    proc.returncode = os.waitstatus_to_exitcode(status)
-    if proc.returncode:
-        raise SystemExit(f"plcvec bench: `plcvec {' '.join(args)}` failed ({proc.returncode}):\n{err}")
-    return seconds, usage.ru_maxrss / 1024, out
+class Tree:
+    """Where a measured version of plcvec lives: its import roots, spec and vectors."""
+
+    def __init__(self, label, root, spec_dir=None):
+        self.label, self.root = label, root
+        self.spec_dir = Path(spec_dir) if spec_dir else root / "spec"
+        self.vectors_dir = root / "vectors"
+
+    def env(self):
+        """The environment that imports this tree's plcvec and plcvec_verify first."""
+        return dict(os.environ, PYTHONPATH=os.pathsep.join([str(self.root / "generator"),
+                                                              str(self.root / "verifiers" / "python")]))
+
+    def child(self, args, what):
+        """(seconds, CPU seconds, peak RSS MiB, stdout) of `python3 ARGS` run with this tree's code, from its root."""
+        env = self.env()
+        with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+            start = time.perf_counter()
+            proc = subprocess.Popen([sys.executable, *args], stdout=out, stderr=err, text=True, env=env, cwd=self.root)
+            _, status, usage = os.wait4(proc.pid, 0)   # this child's own peak memory
+            seconds = time.perf_counter() - start
+            proc.returncode = os.waitstatus_to_exitcode(status)
+            out.seek(0)
+            err.seek(0)
+            if proc.returncode:
+                raise PlcvecError(f"bench: {what} failed for {self.label} ({proc.returncode}):\n{err.read().strip()}")
+            return seconds, usage.ru_utime + usage.ru_stime, usage.ru_maxrss / 1024, out.read()
 
 
-def run_benchmark(spec_dir, out_dir=None, verify=True):
-    from plcvec.output.golden import build_golden
-    from plcvec.spec.loader import load_spec
+def current_tree(spec_dir):
+    """The tree this plcvec is imported from (a checkout: the root above generator/plcvec)."""
+    root = Path(__file__).resolve().parents[2]
+    if not (root / "generator" / "plcvec").is_dir() or not (root / "verifiers" / "python").is_dir():
+        raise PlcvecError(f"bench: the code is not in a source tree ({root}); run it from a checkout")
+    return Tree("this tree", root, spec_dir)
 
+
+def golden_in_process(tree, work):
+    _, _, _, out = tree.child(["-c", _GOLDEN_IN_PROCESS, str(tree.spec_dir)], "the golden set in process")
+    golden = json.loads(out)
+    return [("golden set, in process", golden["vectors"], golden["seconds"], golden["cpu"], None)]
+
+
+def golden_generate(tree, work):
+    seconds, cpu, rss, _ = tree.child(["-m", "plcvec", "generate", "--spec-dir", str(tree.spec_dir), "--out",
+                                  str(work / "golden")], "plcvec generate")
+    count = json.loads((work / "golden" / "manifest.json").read_text("utf-8"))["total"]
+    return [("golden set, `plcvec generate`", count, seconds, cpu, rss)]
+
+
+def exhaustive(tree, work):
+    """All families, then the first alone: memory must not grow with the number of lines written."""
+    def one_run(families):
+        args = ["-m", "plcvec", "exhaustive", "--spec-dir", str(tree.spec_dir), "--out", str(work / "exhaustive")]
+        for name in families:
+            args += ["--family", name]
+        seconds, cpu, rss, out = tree.child(args, "plcvec exhaustive")
+        names = sorted(p.name[:-len(".exhaustive.jsonl")] for p in (work / "exhaustive").glob("*.exhaustive.jsonl"))
+        shutil.rmtree(work / "exhaustive")   # about a gigabyte for the families: do not keep it
+        return (int(out.split()[2]), seconds, cpu, rss), names
+
+    every, names = one_run(())
+    one, _ = one_run(names[:1])
+    return [("exhaustive tier, 1 family", *one), (f"exhaustive tier, {len(names)} families", *every)]
+
+
+def verifier_in_process(tree, work):
+    _, _, _, out = tree.child(["-c", _VERIFY_IN_PROCESS, str(tree.vectors_dir), str(VERIFY_PASSES)],
+                              "the verifier in process")
+    v = json.loads(out)
+    return [("verify in process (harness only)", v["vectors"], *v["harness"], None),
+            ("verify in process (reference)", v["vectors"], *v["reference"], None)]
+
+
+MEASUREMENTS = (golden_in_process, golden_generate, exhaustive, verifier_in_process)
+
+
+def export_revision(rev, dest):
+    """The files of git revision `rev` (of the repository of the current folder) written into `dest`."""
+    found = subprocess.run(["git", "rev-parse", "--verify", "--quiet", f"{rev}^{{commit}}"],
+                           capture_output=True, text=True, timeout=60)
+    if found.returncode:
+        raise PlcvecError(f"bench --baseline: {rev!r} is not a commit of the git repository here "
+                          f"({Path.cwd()})")
+    commit = found.stdout.strip()
+    archive = subprocess.run(["git", "archive", "--format=tar", commit], capture_output=True, timeout=300)
+    if archive.returncode:
+        raise PlcvecError(f"bench --baseline: git archive {rev} failed: {archive.stderr.decode().strip()}")
+    with tarfile.open(fileobj=io.BytesIO(archive.stdout)) as tar:
+        if hasattr(tarfile, "data_filter"):
+            tar.extractall(dest, filter="data")
+        else:  # Python without extraction filters; git archive writes plain files and folders
+            tar.extractall(dest)
+    return commit
+
+
+def _cells(n, seconds, cpu, rss):
+    return f"{n:>9,} {seconds:>8.2f} {n / seconds:>10,.0f} {n / cpu:>10,.0f} {('%.1f' % rss) if rss else '-':>6}"
+
+
+_HEAD = f"{'vectors':>9} {'seconds':>8} {'vectors/s':>10} {'per CPU-s':>10} {'MiB':>6}"
+
+
+def print_single(rows):
+    print(f"{'measurement':34} {_HEAD}")
+    for label, *cells in rows:
+        print(f"{label:34} {_cells(*cells)}")
+
+
+def print_side_by_side(rows, base_rows, base_label):
+    """Each measurement of this tree beside the baseline's, with the ratio of their speeds: by the
+    clock, and by the CPU time used (steadier on a machine other work shares)."""
+    print(f"{'':34} {'this tree':^47}   {base_label:^47}   {'speed-up':^15}")
+    print(f"{'measurement':34} {_HEAD}   {_HEAD}   {'wall':>7} {'CPU':>7}")
+    for (label, *cells), (_, *base) in zip(rows, base_rows):
+        wall = (cells[0] / cells[1]) / (base[0] / base[1])
+        cpu = (cells[0] / cells[2]) / (base[0] / base[2])
+        print(f"{label:34} {_cells(*cells)}   {_cells(*base)}   {wall:>6.1f}x {cpu:>6.1f}x")
+
+
+def run_benchmark(spec_dir, out_dir=None, verify=True, baseline=None):
+    tree = current_tree(spec_dir)
     with tempfile.TemporaryDirectory(prefix="plcvec-bench-") as tmp:
         work = Path(out_dir or tmp)
-        rows = []
-        # Golden set, in process (generation alone) and as a user runs it (interpreter start included).
-        families = load_spec(spec_dir)
-        start = time.perf_counter()
-        _, by_family = build_golden(families)
-        inproc = time.perf_counter() - start
-        count = sum(len(v) for v in by_family.values())
-        seconds, rss, _ = _child(["generate", "--spec-dir", str(spec_dir), "--out", str(work / "golden")])
-        rows.append(("golden set, in process", count, inproc, None))
-        rows.append(("golden set, `plcvec generate`", count, seconds, rss))
-        # Exhaustive tier: one family, then all, to show memory does not grow with the number written.
-        names = [f.name for f in families if f.kind == "masked_compare"]
-        for label, only in (("exhaustive tier, 1 family", names[:1]), (f"exhaustive tier, {len(names)} families", names)):
-            args = ["exhaustive", "--spec-dir", str(spec_dir), "--out", str(work / "exhaustive")]
-            for name in only:
-                args += ["--family", name]
-            seconds, rss, out = _child(args)
-            n = int(out.split()[2])
-            rows.append((label, n, seconds, rss))
-    print(f"{'measurement':34} {'vectors':>10} {'seconds':>9} {'vectors/s':>12} {'peak RSS MiB':>13}")
-    for label, n, seconds, rss in rows:
-        print(f"{label:34} {n:>10,} {seconds:>9.2f} {n / seconds:>12,.0f} {('%.1f' % rss) if rss else '-':>13}")
+        base = None
+        if baseline:
+            commit = export_revision(baseline, Path(tmp) / "baseline")
+            base = Tree(baseline if commit.startswith(baseline) else f"{baseline} ({commit[:7]})", Path(tmp) / "baseline")
+        rows, base_rows = [], []
+        for measurement in MEASUREMENTS:   # each on this tree, then at once on the baseline
+            rows += measurement(tree, work / "this")
+            if base:
+                base_rows += measurement(base, work / "baseline")
+    figures = {label: n / seconds for label, n, seconds, _, _ in rows}
+    cpu_figures = {label: n / cpu for label, n, _, cpu, _ in rows}
+    rss = {label: r for label, _, _, _, r in rows}
+    if base_rows:
+        print_side_by_side(rows, base_rows, base.label)
+    else:
+        print_single(rows)
     golden_s = rows[1][2]
-    ex_rate = rows[3][1] / rows[3][2]
-    flat = rows[3][3] / rows[2][3]
-    print(f"targets: golden set <= {GOLDEN_TARGET_S:.0f} s: {'met' if golden_s <= GOLDEN_TARGET_S else 'MISSED'} ({golden_s:.2f} s); "
-          f"exhaustive >= {EXHAUSTIVE_TARGET_PER_S:,}/s: {'met' if ex_rate >= EXHAUSTIVE_TARGET_PER_S else 'MISSED'} ({ex_rate:,.0f}/s); "
-          f"memory {rows[3][1] / rows[2][1]:.0f}x the vectors in {flat:.2f}x the peak RSS")
-    print(json.dumps({"golden_seconds": round(golden_s, 3), "exhaustive_vectors_per_s": round(ex_rate),
-                      "exhaustive_peak_rss_mib": round(rows[3][3], 1), "memory_ratio_3_vs_1_family": round(flat, 3)}))
+    one_label, ex_label = rows[2][0], rows[3][0]
+    ex_rate, flat = figures[ex_label], rss[ex_label] / rss[one_label]
+    harness = figures["verify in process (harness only)"]
+    verdicts = [f"golden set <= {GOLDEN_TARGET_S:.0f} s: {_met(golden_s <= GOLDEN_TARGET_S)} ({golden_s:.2f} s)"]
+    summary = {"golden_seconds": round(golden_s, 3), "golden_in_process_seconds": round(rows[0][2], 3),
+               "exhaustive_vectors_per_s": round(ex_rate), "exhaustive_vectors_per_cpu_s": round(cpu_figures[ex_label]),
+               "exhaustive_peak_rss_mib": round(rss[ex_label], 1), "memory_ratio_all_vs_1_family": round(flat, 3),
+               "verify_in_process_harness_per_s": round(harness),
+               "verify_in_process_harness_per_cpu_s": round(cpu_figures["verify in process (harness only)"])}
+    if base_rows:
+        label, n, seconds, cpu, _ = base_rows[0]
+        ratio, cpu_ratio = figures[label] / (n / seconds), cpu_figures[label] / (n / cpu)
+        verdicts.append(f"golden set in process >= {GOLDEN_TARGET_RATIO}x {base.label}: "
+                        f"{_met(ratio >= GOLDEN_TARGET_RATIO)} ({ratio:.1f}x by the clock, {cpu_ratio:.1f}x in CPU time)")
+        summary.update(golden_in_process_speedup=round(ratio, 2), golden_in_process_cpu_speedup=round(cpu_ratio, 2),
+                       baseline=base.label)
+    verdicts += [f"exhaustive >= {EXHAUSTIVE_TARGET_PER_S:,}/s: {_met(ex_rate >= EXHAUSTIVE_TARGET_PER_S)} ({ex_rate:,.0f}/s, "
+                 f"{cpu_figures[ex_label]:,.0f} per CPU-second), peak RSS {rss[ex_label]:.1f} MiB for all families, "
+                 f"{flat:.2f}x that of one",
+                 f"verify in process, harness only >= {VERIFY_TARGET_PER_S:,}/s: "
+                 f"{_met(harness >= VERIFY_TARGET_PER_S)} ({harness:,.0f}/s, "
+                 f"{cpu_figures['verify in process (harness only)']:,.0f} per CPU-second)"]
+    print("targets: " + "; ".join(verdicts))
+    print(json.dumps(summary))
     if verify:
-        # The verifier's own figures, on the committed vectors it ships with (plcvec_verify/bench.py).
+        # The verifier's full figures (batched stdio, a process per vector) for this tree.
         from plcvec_verify.bench import print_verify_benchmark
         from plcvec_verify.locate import default_vectors
 
         print()
         print_verify_benchmark(default_vectors().path)
     return 0
+
+
+def _met(ok):
+    return "met" if ok else "MISSED"

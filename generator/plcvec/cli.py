@@ -104,7 +104,8 @@ def _parse_choice(text):
 def _bench(args):
     from plcvec.bench import run_benchmark
 
-    return run_benchmark(args.spec_dir, Path(args.out) if args.out else None, verify=not args.no_verify)
+    return run_benchmark(args.spec_dir, Path(args.out) if args.out else None, verify=not args.no_verify,
+                         baseline=args.baseline)
 
 
 def _lint(args):
@@ -166,7 +167,9 @@ def build_parser():
 
     b = sub.add_parser("bench", parents=[spec], help="measure generation speed and memory")
     b.add_argument("--out", help="folder for the exhaustive tier during the benchmark (default: a temporary one)")
-    b.add_argument("--no-verify", action="store_true", help="skip the verifier's figures")
+    b.add_argument("--no-verify", action="store_true", help="skip the verifier's stdio figures")
+    b.add_argument("--baseline", metavar="REV",
+                   help="also measure git revision REV (its code, spec and vectors) in the same run, side by side")
     b.set_defaults(func=_bench)
 
     lint = sub.add_parser("lint", parents=[spec], help="load and validate the spec files only")
