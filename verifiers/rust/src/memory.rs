@@ -20,7 +20,19 @@ pub struct Memory<'v> {
 impl<'v> Memory<'v> {
     /// The vector's initial devices.
     pub fn new(vector: &'v Vector) -> Memory<'v> {
-        Memory { vector, values: vector.initial().to_vec(), outside: Vec::new() }
+        Memory::reusing(vector, Vec::new())
+    }
+
+    /// The vector's initial devices, in a buffer kept from an earlier vector (no allocation).
+    pub fn reusing(vector: &'v Vector, mut buffer: Vec<Value>) -> Memory<'v> {
+        buffer.clear();
+        buffer.extend_from_slice(vector.initial());
+        Memory { vector, values: buffer, outside: Vec::new() }
+    }
+
+    /// The buffer, for the next vector's [`Memory::reusing`].
+    pub fn into_buffer(self) -> Vec<Value> {
+        self.values
     }
 
     /// The vector this image belongs to.
@@ -45,21 +57,15 @@ impl<'v> Memory<'v> {
         }
     }
 
-    fn slot_of(&self, kind: &str, number: u32) -> Option<usize> {
-        self.vector.devices().iter().position(|a| a.is(kind, number))
-    }
-
     /// The device `base` + `offset` (D100 + 2 is D102), if it holds a value. A device without a
     /// number is found by name at offset 0.
     pub fn get_at(&self, base: &Address, offset: u32) -> Option<Value> {
         match base.number() {
-            Some(n) => {
-                let number = n.checked_add(offset)?;
-                match self.slot_of(base.kind(), number) {
-                    Some(i) => Some(self.values[i]),
-                    None => self.outside_get(&format!("{}{number}", base.kind())),
-                }
-            }
+            Some(n) => match self.vector.slot_at(base, offset) {
+                Some(i) => Some(self.values[i]),
+                None if self.outside.is_empty() => None,
+                None => self.outside_get(&format!("{}{}", base.kind(), n.checked_add(offset)?)),
+            },
             None if offset == 0 => self.get(base.name()),
             None => None,
         }
@@ -69,6 +75,7 @@ impl<'v> Memory<'v> {
     pub fn get(&self, name: &str) -> Option<Value> {
         match self.vector.slot(name) {
             Some(i) => Some(self.values[i]),
+            None if self.outside.is_empty() => None,
             None => self.outside_get(name),
         }
     }
@@ -95,13 +102,10 @@ impl<'v> Memory<'v> {
     /// Write the device `base` + `offset`.
     pub fn set_at(&mut self, base: &Address, offset: u32, value: Value) {
         match base.number() {
-            Some(n) => {
-                let number = n.saturating_add(offset);
-                match self.slot_of(base.kind(), number) {
-                    Some(i) => self.values[i] = value,
-                    None => self.set_outside(format!("{}{number}", base.kind()), value),
-                }
-            }
+            Some(n) => match self.vector.slot_at(base, offset) {
+                Some(i) => self.values[i] = value,
+                None => self.set_outside(format!("{}{}", base.kind(), n.saturating_add(offset)), value),
+            },
             None => self.set(base.name(), value),
         }
     }

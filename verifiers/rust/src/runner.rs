@@ -2,10 +2,13 @@
 //! reads at the end: each failing vector with its field diff, then the totals, with the suite
 //! version, the spec hash, and the alternative followed for every interpretation.
 
+use std::collections::HashMap;
+
 use crate::choices::Choices;
 use crate::compare::{describe, judge, Status, Verdict};
 use crate::error::{Error, Result};
 use crate::expect::{check_choices, Plan};
+use crate::generated::names::Instruction;
 use crate::implementation::Implementation;
 use crate::known::KnownFailures;
 use crate::select::Selection;
@@ -94,9 +97,15 @@ pub fn run<'s, I: Implementation + ?Sized>(
 
 /// Judge every vector of a plan (the benchmark's loop): unsupported instructions are skipped.
 pub fn judge_plan<I: Implementation + ?Sized>(plan: &Plan<'_>, implementation: &mut I) -> Vec<Verdict> {
+    // Ask once per instruction the build knows (an unknown one is asked every time).
+    let mut asked: HashMap<Instruction, bool> = HashMap::new();
     plan.iter()
         .map(|(v, expected)| {
-            if implementation.supports(v.instruction()) {
+            let supported = match v.known_instruction() {
+                Some(i) => *asked.entry(i).or_insert_with(|| implementation.supports(v.instruction())),
+                None => implementation.supports(v.instruction()),
+            };
+            if supported {
                 judge(implementation, v, expected)
             } else {
                 Verdict {

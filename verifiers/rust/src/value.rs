@@ -68,6 +68,18 @@ impl From<u16> for Value {
     }
 }
 
+/// Up to 8 bytes of a name packed into an integer, so that names compare as integers on the hot
+/// path of every device access; 0 (no key) for a longer name, which is compared as text.
+pub(crate) fn pack(name: &str) -> u64 {
+    let bytes = name.as_bytes();
+    if bytes.is_empty() || bytes.len() > 8 {
+        return 0;
+    }
+    let mut b = [0u8; 8];
+    b[..bytes.len()].copy_from_slice(bytes);
+    u64::from_le_bytes(b)
+}
+
 /// A device address split into its device type and number: `D100` is (`D`, 100). Names without
 /// a number (Omron's `P_EQ`) have none.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -75,6 +87,7 @@ pub struct Address {
     name: String,
     kind_len: usize,
     number: Option<u32>,
+    kind_key: u64,
 }
 
 impl Address {
@@ -87,7 +100,8 @@ impl Address {
         } else {
             None
         };
-        Address { name: name.to_owned(), kind_len: if number.is_some() { kind_len } else { name.len() }, number }
+        let kind_len = if number.is_some() { kind_len } else { name.len() };
+        Address { name: name.to_owned(), kind_len, number, kind_key: pack(&name[..kind_len]) }
     }
 
     /// The address as written (`D100`).
@@ -108,6 +122,20 @@ impl Address {
     /// Whether this is `kind` `number` (no allocation: the hot path of every device read).
     pub fn is(&self, kind: &str, number: u32) -> bool {
         self.number == Some(number) && self.kind() == kind
+    }
+
+    /// The device type packed as an integer (0 when it is longer than 8 bytes).
+    pub(crate) fn kind_key(&self) -> u64 {
+        self.kind_key
+    }
+
+    /// Whether `other` is of the same device type (`D100` and `D7999`).
+    pub fn same_kind(&self, other: &Address) -> bool {
+        if self.kind_key != 0 && other.kind_key != 0 {
+            self.kind_key == other.kind_key
+        } else {
+            self.kind() == other.kind()
+        }
     }
 }
 

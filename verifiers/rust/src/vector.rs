@@ -10,7 +10,8 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 
 use crate::error::{Error, Result};
-use crate::value::{Address, Value};
+use crate::generated::names::{Family, Instruction};
+use crate::value::{pack, Address, Value};
 
 type Json = serde_json::Value;
 
@@ -99,6 +100,14 @@ pub(crate) struct Expectations {
     pub alternatives: Vec<Expectation>,
 }
 
+/// A slot's name and address as integers (`value::pack`; 0 when a name is longer than 8 bytes).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct SlotKey {
+    name: u64,
+    kind: u64,
+    number: u32,
+}
+
 /// One test vector.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Vector {
@@ -110,10 +119,16 @@ pub struct Vector {
     clauses: Vec<String>,
     device_sizes: Vec<(String, u32)>,
     devices: Vec<Address>,
+    /// Each slot's packed name, device type and number, side by side: every device access of
+    /// an implementation searches these, so they are kept small and contiguous.
+    keys: Vec<SlotKey>,
     initial: Vec<Value>,
     scratch: Vec<bool>,
     operands: Vec<(String, Operand)>,
+    operand_keys: Vec<u64>,
     steps: Vec<Step>,
+    known_family: Option<Family>,
+    known_instruction: Option<Instruction>,
     pub(crate) expectations: Option<Expectations>,
 }
 
@@ -129,6 +144,15 @@ impl Vector {
     /// The instruction as the spec spells it (`LDTM<=`, `LD <=DT`).
     pub fn instruction(&self) -> &str {
         &self.instruction
+    }
+    /// The family as a generated enum (`None` for a family this build does not know, from a
+    /// newer copy named by `PLCVEC_VECTORS`).
+    pub fn known_family(&self) -> Option<Family> {
+        self.known_family
+    }
+    /// The instruction as a generated enum (`None` for one this build does not know).
+    pub fn known_instruction(&self) -> Option<Instruction> {
+        self.known_instruction
     }
     /// What the vector tests, in a sentence.
     pub fn description(&self) -> &str {
@@ -168,7 +192,19 @@ impl Vector {
     }
     /// The slot of a listed device.
     pub fn slot(&self, name: &str) -> Option<usize> {
-        self.devices.binary_search_by(|a| a.name().cmp(name)).ok()
+        match pack(name) {
+            0 => self.devices.binary_search_by(|a| a.name().cmp(name)).ok(),
+            key => self.keys.iter().position(|k| k.name == key),
+        }
+    }
+
+    /// The slot of the device `base` + `offset` (D100 + 2 is D102), if the vector lists it.
+    pub fn slot_at(&self, base: &Address, offset: u32) -> Option<usize> {
+        let number = base.number()?.checked_add(offset)?;
+        match base.kind_key() {
+            0 => self.devices.iter().position(|a| a.number() == Some(number) && a.same_kind(base)),
+            kind => self.keys.iter().position(|k| k.number == number && k.kind == kind),
+        }
     }
     /// The operands by name (`s1`, `d`, `S1`, `D2`), sorted.
     pub fn operands(&self) -> &[(String, Operand)] {
@@ -176,7 +212,10 @@ impl Vector {
     }
     /// One operand.
     pub fn operand(&self, name: &str) -> Option<&Operand> {
-        self.operands.iter().find(|(n, _)| n == name).map(|(_, o)| o)
+        match pack(name) {
+            0 => self.operands.iter().find(|(n, _)| n == name).map(|(_, o)| o),
+            key => self.operand_keys.iter().position(|&k| k == key).map(|i| &self.operands[i].1),
+        }
     }
     /// The executions, in order.
     pub fn steps(&self) -> &[Step] {
@@ -338,7 +377,13 @@ impl Vector {
         } else {
             None
         };
+        let known_family = Family::from_name(&raw.family);
+        let known_instruction = Instruction::from_name(&raw.instruction).filter(|i| Some(i.family()) == known_family);
+        let operand_keys = operands.iter().map(|(n, _)| pack(n)).collect();
         Ok(Vector {
+            operand_keys,
+            known_family,
+            known_instruction,
             id,
             family: raw.family,
             instruction: raw.instruction,
@@ -346,6 +391,10 @@ impl Vector {
             tags: raw.tags,
             clauses: raw.clauses,
             device_sizes,
+            keys: devices
+                .iter()
+                .map(|a| SlotKey { name: pack(a.name()), kind: a.kind_key(), number: a.number().unwrap_or(u32::MAX) })
+                .collect(),
             devices,
             initial,
             scratch,

@@ -8,7 +8,7 @@
 
 use std::cmp::Ordering;
 
-use super::{device, holds, read3, rlo_in, word_operand, Mutant};
+use super::{device, read3, rlo_in, word_operand, Condition, Mutant};
 use crate::choices::Choices;
 use crate::generated::names::{Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eNonBcd, Cp1eOutOfRange};
 use crate::implementation::Refusal;
@@ -18,8 +18,7 @@ use crate::vector::Vector;
 const ERROR_FLAG: &str = "P_ER";
 // "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <,
 // <=, >, >=)."
-const FLAGS: [(&str, &str); 6] =
-    [("=", "P_EQ"), ("<>", "P_NE"), ("<", "P_LT"), ("<=", "P_LE"), (">", "P_GT"), (">=", "P_GE")];
+const FLAGS: [&str; 6] = ["P_EQ", "P_NE", "P_LT", "P_LE", "P_GT", "P_GE"]; // in Condition::ALL's order
 
 /// One field of the Calendar/Clock layout, most significant first.
 struct Field {
@@ -97,6 +96,7 @@ impl TimeCompare {
             .split_once(' ')
             .and_then(|(form, rest)| Some((form, rest.strip_suffix("DT")?)))
             .ok_or_else(|| Refusal::Error(format!("not a CP1E time comparison: {instruction}")))?;
+        let symbol = Condition::parse(symbol)?;
         // "The time comparison instructions are treated just like the LD, AND, and OR
         // instructions to control the execution of subsequent instructions."
         match form {
@@ -121,7 +121,7 @@ impl TimeCompare {
         }
     }
 
-    fn evaluate(&self, condition: &str, vector: &Vector, mem: &mut Memory<'_>) -> Result<bool, Refusal> {
+    fn evaluate(&self, condition: Condition, vector: &Vector, mem: &mut Memory<'_>) -> Result<bool, Refusal> {
         let s1 = read3(mem, device(vector, "S1")?);
         let s2 = read3(mem, device(vector, "S2")?);
         let c = word_operand(vector, mem, "C")?;
@@ -173,13 +173,13 @@ impl TimeCompare {
             }
         }
         if !self.bug(Mutant::Cp1eFlagsNotReflected) {
-            for (symbol, flag) in FLAGS {
-                mem.set_bit(flag, holds(symbol, order)?);
+            for (condition, flag) in Condition::ALL.into_iter().zip(FLAGS) {
+                mem.set_bit(flag, condition.holds(order));
             }
         }
         if self.er_flag == Cp1eErFlag::ReflectsEachExecution {
             mem.set_bit(ERROR_FLAG, false); // executed without error
         }
-        holds(condition, order)
+        Ok(condition.holds(order))
     }
 }

@@ -6,7 +6,7 @@
 
 use std::cmp::Ordering;
 
-use super::{device, holds, read3, rlo_in, signed, word_operand, Mutant};
+use super::{device, read3, rlo_in, signed, word_operand, Condition, Mutant};
 use crate::choices::Choices;
 use crate::generated::names::{Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5Sm709Scope};
 use crate::implementation::Refusal;
@@ -84,7 +84,8 @@ impl Fx5Compare {
         step: &Step,
         mem: &mut Memory<'_>,
     ) -> Result<bool, Refusal> {
-        let (form, condition) = parse_mnemonic(instruction, kind)?;
+        let (form, symbol) = parse_mnemonic(instruction, kind)?;
+        let condition = Condition::parse(symbol)?;
         let logic = self.logic;
         // "(Devices are used as a normally open contact.)" NOTES.md (iQ-R processing times): "an
         // AND/OR comparison is not executed while the preceding logic is off".
@@ -112,7 +113,7 @@ impl Fx5Compare {
     fn contact(
         &self,
         kind: Kind,
-        condition: &str,
+        condition: Condition,
         vector: &Vector,
         step: &Step,
         mem: &mut Memory<'_>,
@@ -137,7 +138,7 @@ impl Fx5Compare {
     fn evaluate(
         &self,
         kind: Kind,
-        condition: &str,
+        condition: Condition,
         vector: &Vector,
         step: &Step,
         mem: &Memory<'_>,
@@ -230,7 +231,7 @@ impl Fx5Compare {
         // Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
         // the data are within the setting range." -> 02/30 is compared as it is.
         let order = self.compare(fields, &s1, &s2, s3);
-        Ok(Contact::Compared(holds(condition, order)?))
+        Ok(Contact::Compared(condition.holds(order)))
     }
 
     /// Field by field, the most significant selected field first.

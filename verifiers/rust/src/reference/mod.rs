@@ -94,8 +94,7 @@ impl Execute for Reference {
     }
 
     fn begin(&mut self, vector: &Vector) -> Result<(), Refusal> {
-        let family = Family::from_name(vector.family())
-            .ok_or_else(|| Refusal::Skip(format!("no family {}", vector.family())))?;
+        let family = vector.known_family().ok_or_else(|| Refusal::Skip(format!("no family {}", vector.family())))?;
         self.family = Some(family);
         // Each vector starts from its own initial state: nothing carries over.
         self.tadd.reset();
@@ -147,17 +146,46 @@ fn signed(word: u16) -> i64 {
     i64::from(word as i16)
 }
 
-/// A comparison condition of the six (`=`, `<>`, `<`, `<=`, `>`, `>=`) applied to an ordering.
-fn holds(condition: &str, order: Ordering) -> Result<bool, Refusal> {
-    Ok(match condition {
-        "=" => order == Ordering::Equal,
-        "<>" => order != Ordering::Equal,
-        "<" => order == Ordering::Less,
-        "<=" => order != Ordering::Greater,
-        ">" => order == Ordering::Greater,
-        ">=" => order != Ordering::Less,
-        other => return Err(Refusal::Error(format!("no comparison condition {other:?}"))),
-    })
+/// The six comparison conditions of both vendors' tables.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Condition {
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+}
+
+impl Condition {
+    /// Every condition.
+    const ALL: [Condition; 6] =
+        [Condition::Eq, Condition::Ne, Condition::Lt, Condition::Le, Condition::Gt, Condition::Ge];
+
+    /// The condition of a symbol (`<=`).
+    fn parse(symbol: &str) -> Result<Condition, Refusal> {
+        Ok(match symbol {
+            "=" => Condition::Eq,
+            "<>" => Condition::Ne,
+            "<" => Condition::Lt,
+            "<=" => Condition::Le,
+            ">" => Condition::Gt,
+            ">=" => Condition::Ge,
+            other => return Err(Refusal::Error(format!("no comparison condition {other:?}"))),
+        })
+    }
+
+    /// Whether the condition holds for (s1) compared with (s2).
+    fn holds(self, order: Ordering) -> bool {
+        match self {
+            Condition::Eq => order == Ordering::Equal,
+            Condition::Ne => order != Ordering::Equal,
+            Condition::Lt => order == Ordering::Less,
+            Condition::Le => order != Ordering::Greater,
+            Condition::Gt => order == Ordering::Greater,
+            Condition::Ge => order != Ordering::Less,
+        }
+    }
 }
 
 /// The logic state before an AND/OR form.
