@@ -149,6 +149,15 @@ int plcvec_main(const plcvec_impl *impl, const plcvec_known_failure *known, size
             rc = 2;
         }
     }
+    /* PLCVEC_SHARD=K/N splits a CI matrix without changing the test's command line. */
+    const char *env = getenv("PLCVEC_SHARD");
+    if (!rc && !opt.selection.shard_n && env && *env) {
+        char tail;
+        if (sscanf(env, "%u/%u%c", &opt.selection.shard_k, &opt.selection.shard_n, &tail) != 2) {
+            fprintf(stderr, "%s: PLCVEC_SHARD takes K/N (e.g. 2/4), got '%s'\n", prog, env);
+            rc = 2;
+        }
+    }
     if (rc) {
         free(names);
         return rc;

@@ -346,7 +346,8 @@ typedef struct plcvec_summary {
 int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summary *summary);
 
 /* A test program's main(): parses --family, --instruction, --tag, --id GLOB, --interpretation,
- * --shard K/N, --list, --verbose (repeatable filters), then plcvec_run(). */
+ * --shard K/N, --list, --verbose (repeatable filters), then plcvec_run(). Without --shard, the
+ * environment variable PLCVEC_SHARD=K/N gives the shard (for a CI matrix). */
 int plcvec_main(const plcvec_impl *impl, const plcvec_known_failure *known, size_t n_known,
                 int argc, char **argv);
 
