@@ -10,7 +10,7 @@ import { PlcvecError } from "./errors.js";
 import type { KnownFailures } from "./known.js";
 import { loadSuite, type Suite } from "./load.js";
 import { applyKnown, describeResult, judge, prepare, resolveChoices, type Implementation, type VectorResult } from "./run.js";
-import { select, type Selection } from "./select.js";
+import { parseShard, select, type Selection } from "./select.js";
 
 /** A vector the implementation does not pass; its message is the whole field-level diff, with no stack to read past. */
 export class VectorFailure extends Error {
@@ -38,10 +38,20 @@ export interface Case {
   check(): VectorResult;
 }
 
+/**
+ * `PLCVEC_SHARD=K/N` in the environment picks a shard when the selection names none, so one test
+ * file serves every job of a sharded CI matrix unchanged.
+ */
+export function withEnvironmentShard(selection: Selection = {}): Selection {
+  const env = process.env["PLCVEC_SHARD"];
+  if (selection.shard !== undefined || env === undefined || env === "") return selection;
+  return { ...selection, shard: parseShard(env) };
+}
+
 /** One case per selected vector; expectations are worked out lazily, when a case runs. */
 export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
   const suite = options.suite ?? loadSuite();
-  const vectors = select(suite, options.selection);
+  const vectors = select(suite, withEnvironmentShard(options.selection));
   if (vectors.length === 0 && !options.allowEmpty) {
     throw new PlcvecError("the selection holds no vector: a gate that runs nothing would pass by accident (allowEmpty to accept that)");
   }

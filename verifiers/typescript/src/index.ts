@@ -34,5 +34,5 @@ export {
   type VectorResult,
 } from "./run.js";
 export { crc32, globToRegExp, parseShard, select, shardOf, type Selection } from "./select.js";
-export { cases, VectorFailure, type Case, type CaseOptions } from "./cases.js";
+export { cases, VectorFailure, withEnvironmentShard, type Case, type CaseOptions } from "./cases.js";
 export type * from "./types.js";

@@ -35,6 +35,19 @@ test("node --test --test-name-pattern selects vectors by id", () => {
   assert.doesNotMatch(run.stdout, /✔ fx5-time-add\/TADD\/carry/);
 });
 
+test("PLCVEC_SHARD=K/N runs one shard of the selection, as every plcvec runner splits it", () => {
+  const counts = [1, 2].map((k) => {
+    const run = nodeTest([], { PLCVEC_SHARD: `${k}/2` });
+    return Number(/ℹ tests (\d+)/.exec(run.stdout)?.[1]) - 1; // less the closing test of the run
+  });
+  const all = Number(/ℹ tests (\d+)/.exec(nodeTest([]).stdout)?.[1]) - 1;
+  assert.ok(counts[0]! > 0 && counts[1]! > 0, JSON.stringify(counts));
+  assert.equal(counts[0]! + counts[1]!, all);
+  const bad = nodeTest([], { PLCVEC_SHARD: "3/2" });
+  assert.notEqual(bad.status, 0);
+  assert.match(bad.stdout + bad.stderr, /shard takes K\/N/);
+});
+
 test("node --test: an empty selection fails the file instead of passing it", () => {
   const run = nodeTest([], { PLCVEC_TEST_FAMILY: "no-such-family" });
   assert.notEqual(run.status, 0);
