@@ -75,19 +75,25 @@ def test_generated_output_is_what_is_committed(repo, generated):
         assert (repo / "vectors" / name).read_text() == text, f"vectors/{name} is stale: run plcvec generate"
 
 
-def test_byte_identical_across_hash_seeds(repo, tmp_path):
-    outs = []
-    for seed in ("0", "12345"):
-        out = tmp_path / seed
-        env = dict(os.environ, PYTHONHASHSEED=seed)
-        subprocess.run([sys.executable, "-m", "plcvec", "generate", "--out", str(out)], check=True, env=env, capture_output=True)
-        outs.append({p.name: p.read_bytes() for p in out.iterdir()})
-    assert outs[0] == outs[1]
+def test_byte_identical_across_hash_seeds(repo, tmp_path, generated):
+    """`plcvec generate` under a fixed hash seed writes what this process generated under its own."""
+    seed = "12345" if os.environ.get("PYTHONHASHSEED") != "12345" else "54321"   # another seed than ours
+    out = tmp_path / seed
+    env = dict(os.environ, PYTHONHASHSEED=seed)
+    subprocess.run([sys.executable, "-m", "plcvec", "generate", "--out", str(out)], check=True, env=env, capture_output=True)
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == {name: text.encode() for name, text in generated[0].items()}
 
 
-def test_check_names_the_drifted_file(repo, tmp_path):
+def write_generated(generated, out):
+    """The session's golden set written into `out`, as `plcvec generate` writes it."""
+    out.mkdir(parents=True)
+    for name, text in generated[0].items():
+        (out / name).write_text(text, encoding="utf-8")
+
+
+def test_check_names_the_drifted_file(repo, tmp_path, generated):
     out = tmp_path / "v"
-    subprocess.run([sys.executable, "-m", "plcvec", "generate", "--out", str(out)], check=True, capture_output=True)
+    write_generated(generated, out)
     ok = subprocess.run([sys.executable, "-m", "plcvec", "generate", "--check", "--out", str(out)], capture_output=True, text=True)
     assert ok.returncode == 0
     target = out / "fx5-time-add.json"
@@ -101,12 +107,12 @@ def test_check_names_the_drifted_file(repo, tmp_path):
     assert "cp1e-time-compare.json" not in bad.stderr
 
 
-def test_interrupted_generate_leaves_previous_files_intact(repo, tmp_path, monkeypatch):
+def test_interrupted_generate_leaves_previous_files_intact(repo, tmp_path, monkeypatch, generated):
     from plcvec import cli
     from plcvec.output import atomic
 
     out = tmp_path / "v"
-    assert cli.main(["generate", "--out", str(out)]) == 0
+    write_generated(generated, out)
     before = {p.name: p.read_bytes() for p in out.iterdir()}
     for p in out.glob("*.json"):  # make every file differ so generate must rewrite each
         p.write_bytes(p.read_bytes() + b" ")
