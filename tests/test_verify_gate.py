@@ -199,3 +199,111 @@ def test_every_test_the_fault_tables_name_exists():
             for param in filter(None, params.rstrip("]").split(", ")):
                 assert f'"{param}"' in source or f"signal.{param}" in source, f"{file}::{test}[{param}]"
             current = (file, test)
+
+
+# -- vector files are checked against their schema when loaded ---------------------------------
+
+def _damaged_file(tmp_path, damage):
+    """A copy of fx5-time-add.json with `damage(data)` applied; returns its path and the vector id."""
+    data = json.loads((REPO / "vectors" / "fx5-time-add.json").read_text())
+    vid = damage(data)
+    path = tmp_path / "fx5-time-add.json"
+    path.write_text(json.dumps(data))
+    return path, vid
+
+
+def _word_70000(data):
+    """A word of 70000 written by a step, consistently in `expect` and `final`, so that only the
+    value is wrong (before validation this read as "the per-step changes do not add up")."""
+    v = next(v for v in data["vectors"] if v["steps"][0]["expect"]["devices"])
+    dev = next(d for d, x in sorted(v["steps"][0]["expect"]["devices"].items()) if type(x) is int)
+    v["steps"][0]["expect"]["devices"][dev] = 70000
+    v["final"]["devices"][dev] = 70000
+    _word_70000.where = f"steps/0/expect/devices/{dev}"
+    return v["id"]
+
+
+def _extra_key(data):
+    data["vectors"][3]["comment"] = "edited by hand"
+    return data["vectors"][3]["id"]
+
+
+def _bad_device_name(data):
+    data["vectors"][4]["initial"]["devices"]["D-1"] = 0
+    return data["vectors"][4]["id"]
+
+
+@pytest.mark.parametrize("damage, where, message", [
+    (_word_70000, None, "70000 is greater than the maximum of 65535"),
+    (_extra_key, "(the vector)", "Additional properties are not allowed ('comment' was unexpected)"),
+    (_bad_device_name, "initial/devices", "'D-1' does not match"),
+], ids=["word-70000", "unknown-key", "bad-device-name"])
+def test_a_value_the_schema_refuses_is_named_with_its_vector_and_path(tmp_path, damage, where, message):
+    path, vid = _damaged_file(tmp_path, damage)
+    with pytest.raises(VerifyError) as e:
+        Suite.load(path)
+    text = str(e.value)
+    where = where or _word_70000.where
+    assert f"{path}: does not match vector-file.schema.json" in text
+    assert f"vector {vid}: at {where}: {message}" in text, text
+    assert "do not add up" not in text
+
+
+def test_a_schema_error_in_the_cli_exits_2_without_a_traceback(tmp_path):
+    path, vid = _damaged_file(tmp_path, _word_70000)
+    proc = subprocess.run([sys.executable, "-m", "plcvec", "verify", *REFERENCE, "--vectors", str(path)],
+                          capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 2 and f"vector {vid}: at {_word_70000.where}: 70000 is greater" in proc.stderr
+    assert "Traceback" not in proc.stderr
+
+
+def test_the_header_is_checked_too(tmp_path):
+    def bad_tags(data):
+        data["tags"] = ["boundary"]          # a {tag: meaning} object in the schema
+    path, _ = _damaged_file(tmp_path, bad_tags)
+    with pytest.raises(VerifyError, match="header: at tags: .* is not of type 'object'"):
+        Suite.load(path)
+
+
+def test_a_file_is_validated_once_per_content(tmp_path, monkeypatch):
+    """Validation costs far more than loading, so a valid file is remembered by its sha256: in the
+    process and, for the next process, in the cache folder. Changed bytes are validated again; a
+    file that fails is never remembered."""
+    from plcvec_verify import validate
+
+    monkeypatch.setenv("PLCVEC_CACHE_DIR", str(tmp_path / "cache"))
+    monkeypatch.setattr(validate, "_VALID", set())
+    validations = []
+    real = validate._validator
+    monkeypatch.setattr(validate, "_validator", lambda text: validations.append(1) or real(text))
+    path = tmp_path / "fx5-time-add.json"
+    path.write_bytes((REPO / "vectors" / "fx5-time-add.json").read_bytes())
+
+    Suite.load(path)
+    Suite.load(path)
+    assert len(validations) == 1
+    validate._VALID.clear()                  # as in a new process: only the cache folder is left
+    Suite.load(path)
+    assert len(validations) == 1 and len(list((tmp_path / "cache").rglob("*"))) == 2   # folder + marker
+    path.write_bytes(path.read_bytes() + b"\n")
+    Suite.load(path)
+    assert len(validations) == 2
+
+    (tmp_path / "bad").mkdir()
+    bad, _ = _damaged_file(tmp_path / "bad", _bad_device_name)
+    for _ in range(2):
+        with pytest.raises(VerifyError, match="'D-1' does not match"):
+            Suite.load(bad)
+    assert len(validations) == 4
+
+
+def test_without_a_schema_the_file_is_refused(tmp_path, monkeypatch):
+    from plcvec_verify import locate
+
+    def nowhere():
+        raise VerifyError("no vector folder")
+    monkeypatch.setattr(locate, "default_vectors", nowhere)
+    path = tmp_path / "fx5-time-add.json"
+    path.write_bytes((REPO / "vectors" / "fx5-time-add.json").read_bytes())
+    with pytest.raises(VerifyError, match=f"{path}: no vector-file.schema.json to check it against"):
+        Suite.load(path)

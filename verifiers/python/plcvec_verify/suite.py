@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .errors import VerifyError
+from .validate import schema_for, validate_file
 
 # The major schema version this verifier understands (CONTRACT.md, "Versioning"): a 2.x file may
 # mean something else by the same fields, so it is refused rather than misread.
@@ -49,9 +50,11 @@ class Suite:
             files, suite_version, manifest_hash = [path], "", ""
         else:
             raise VerifyError(f"{path}: no such vector folder or file")
+        schema = schema_for(path)
         headers, vectors, spec_hashes, schema_versions = {}, [], set(), set()
         for file in files:
-            data = _read_json(file)
+            raw = _read_bytes(file)
+            data = _parse_json(file, raw)
             if not isinstance(data, dict) or not isinstance(data.get("vectors"), list) or "family" not in data:
                 raise VerifyError(f"{file}: not a plcvec vector file (no `family` and `vectors`)")
             version = str(data.get("schema_version", ""))
@@ -67,6 +70,9 @@ class Suite:
                 if problem:
                     name = v.get("id") if isinstance(v, dict) and isinstance(v.get("id"), str) else f"#{index}"
                     raise VerifyError(f"{file}: vector {name}: {problem} (is the file a plcvec vector file, unedited?)")
+            # Then every value against the schema: a word of 70000 is named where it is, not
+            # discovered later as an expectation that "does not add up".
+            validate_file(file, raw, data, schema)
             vectors.extend(data["vectors"])
         seen = set()
         for v in vectors:
@@ -137,14 +143,23 @@ def _shape_problem(v, family) -> str:
 
 
 def _read_json(path: Path):
+    return _parse_json(path, _read_bytes(path))
+
+
+def _read_bytes(path: Path) -> bytes:
     try:
-        text = path.read_text(encoding="utf-8")
+        return path.read_bytes()
     except FileNotFoundError:
         raise VerifyError(f"{path}: no such file")
     except OSError as exc:
         raise VerifyError(f"{path}: {exc.strerror}")
+
+
+def _parse_json(path: Path, raw: bytes):
     try:
-        return json.loads(text)
+        return json.loads(raw.decode("utf-8"))
+    except UnicodeDecodeError as exc:
+        raise VerifyError(f"{path}: not UTF-8 text (byte {exc.start})")
     except json.JSONDecodeError as exc:
         raise VerifyError(f"{path}:{exc.lineno}: not valid JSON ({exc.msg})")
 

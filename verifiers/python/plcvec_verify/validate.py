@@ -1,0 +1,124 @@
+"""Checking a vector file against its JSON Schema when it is loaded.
+
+A damaged or hand-edited file must be refused with the vector and the field that is wrong (`a
+word of 70000 at initial/devices/D100`), not trusted until something downstream trips over it
+with a misleading message. The schema is `schema/vector-file.schema.json` beside the vector
+files (a vector folder's own, or the folder a lone family file sits in); a file with none beside
+it is checked against the default vector set's schema.
+
+Validating the golden set with jsonschema takes some seconds, many times what loading it takes,
+so a file found valid is remembered by the sha256 of its bytes and of the schema: in this process,
+and across processes as an empty marker file in a cache folder ($PLCVEC_CACHE_DIR, else
+$XDG_CACHE_HOME/plcvec or ~/.cache/plcvec). A changed byte is a new hash and is validated again;
+a file that fails is never remembered. Without a writable cache folder every run validates.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from functools import lru_cache
+from pathlib import Path
+
+from .errors import VerifyError
+
+SCHEMA_FILE = "vector-file.schema.json"
+SHOW_ERRORS = 5          # schema errors named per file; the rest are counted
+_VALID: set[str] = set()  # cache keys validated in this process
+
+
+def schema_for(path: Path) -> Path:
+    """The vector-file schema that governs `path` (a vector folder or a family file)."""
+    from .locate import default_vectors
+
+    folder = path if path.is_dir() else path.parent
+    candidates = [folder / "schema" / SCHEMA_FILE]
+    try:
+        candidates.append(default_vectors().path / "schema" / SCHEMA_FILE)
+    except VerifyError:
+        pass
+    for candidate in candidates:
+        if candidate.is_file():
+            return candidate
+    raise VerifyError(f"{path}: no {SCHEMA_FILE} to check it against (looked for "
+                      + ", ".join(str(c) for c in candidates) + ")")
+
+
+@lru_cache(maxsize=None)
+def _validator(schema_text: str):
+    """One validator per schema, its class chosen by `$schema` and the schema itself checked once."""
+    import jsonschema
+
+    schema = json.loads(schema_text)
+    cls = jsonschema.validators.validator_for(schema)
+    cls.check_schema(schema)
+    return cls(schema)
+
+
+def validate_file(file: Path, raw: bytes, data: dict, schema_path: Path) -> None:
+    """Raise VerifyError naming the vector and JSON path of each way `data` breaks the schema."""
+    try:
+        schema_text = schema_path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise VerifyError(f"{schema_path}: cannot read the vector-file schema: {exc.strerror or exc}")
+    key = (hashlib.sha256(raw).hexdigest() + "-"
+           + hashlib.sha256(schema_text.encode("utf-8")).hexdigest()[:16])
+    if key in _VALID or _cached(key):
+        _VALID.add(key)
+        return
+    try:
+        validator = _validator(schema_text)
+    except Exception as exc:   # a broken schema file is the set's fault, not the vector's
+        raise VerifyError(f"{schema_path}: not a usable JSON Schema: {exc}")
+    errors = sorted(validator.iter_errors(data), key=lambda e: [str(p) for p in e.absolute_path])
+    if errors:
+        lines = [_describe(e, data) for e in errors[:SHOW_ERRORS]]
+        more = f"\n  ... and {len(errors) - SHOW_ERRORS} more" if len(errors) > SHOW_ERRORS else ""
+        raise VerifyError(f"{file}: does not match {schema_path.name}:\n  " + "\n  ".join(lines) + more)
+    _VALID.add(key)
+    _remember(key)
+
+
+def _describe(error, data) -> str:
+    """`vector <id>: at initial/devices/D100: 70000 is greater than the maximum of 65535`."""
+    # Under oneOf/anyOf, say what the branch that came closest found ("greater than the maximum":
+    # the value had the branch's type), not only that no branch matched.
+    detail = min(error.context, key=lambda e: (e.validator == "type", len(e.absolute_path))) \
+        if error.context else error
+    path = list(error.absolute_path)
+    if len(path) >= 2 and path[0] == "vectors" and isinstance(path[1], int):
+        v = data["vectors"][path[1]]
+        name = v.get("id") if isinstance(v, dict) and isinstance(v.get("id"), str) else f"#{path[1]}"
+        where, what = "/".join(str(p) for p in path[2:]) or "(the vector)", f"vector {name}"
+    else:
+        where, what = "/".join(str(p) for p in path) or "(the file)", "header"
+    return f"{what}: at {where}: {detail.message}"
+
+
+def _cache_dir() -> Path | None:
+    if os.environ.get("PLCVEC_CACHE_DIR"):
+        root = Path(os.environ["PLCVEC_CACHE_DIR"])
+    elif os.environ.get("XDG_CACHE_HOME"):
+        root = Path(os.environ["XDG_CACHE_HOME"]) / "plcvec"
+    else:
+        try:
+            root = Path.home() / ".cache" / "plcvec"
+        except RuntimeError:    # no home folder
+            return None
+    return root / "valid-vector-files"
+
+
+def _cached(key: str) -> bool:
+    folder = _cache_dir()
+    return folder is not None and (folder / key).is_file()
+
+
+def _remember(key: str) -> None:
+    folder = _cache_dir()
+    if folder is None:
+        return
+    try:
+        folder.mkdir(parents=True, exist_ok=True)
+        (folder / key).touch()
+    except OSError:   # a read-only home: validate every time rather than fail
+        pass
