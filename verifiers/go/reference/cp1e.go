@@ -42,22 +42,27 @@ var cp1eFields = [6]cp1eField{
 	{0, 0, 0, 59, 0}, // second
 }
 
-type cp1e struct {
+// cp1eConfig is what the alternatives decide, shared by every vector's CPU.
+type cp1eConfig struct {
 	parts                   *Parts
-	form, condition         string
-	s1, s2                  plcvec.Addr
-	c                       plcvec.Operand
 	nonBCDError, rangeError bool   // CP1E-NON-BCD, CP1E-OUT-OF-RANGE
 	highBitsErr, erEach     bool   // CP1E-C-HIGH-BITS, CP1E-ER-FLAG
 	allMasked, andOrWhenOff string // CP1E-ALL-MASKED, CP1E-AND-OR-WHEN-OFF
 }
 
+type cp1e struct {
+	*cp1eConfig
+	form, condition string
+	s1, s2          plcvec.Addr
+	c               plcvec.Operand
+}
+
 func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
-	base, err := r.cp1e.get(func() (cp1e, error) { return configureCP1E(r) })
+	cfg, err := r.cp1e.get(func() (cp1eConfig, error) { return configureCP1E(r) })
 	if err != nil {
 		return nil, err
 	}
-	c := &base
+	c := &cp1e{cp1eConfig: cfg}
 	form, symbol, _ := strings.Cut(req.Instruction, " ")
 	if (form != "LD" && form != "AND" && form != "OR") || !strings.HasSuffix(symbol, "DT") ||
 		!knownCondition(strings.TrimSuffix(symbol, "DT")) {
@@ -74,7 +79,7 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 }
 
 // configureCP1E: the CPU as the alternatives of the CP1E comparisons configure it.
-func configureCP1E(r *Reference) (c cp1e, err error) {
+func configureCP1E(r *Reference) (c cp1eConfig, err error) {
 	c.parts = &r.parts
 	for _, q := range []struct {
 		id, when, other string

@@ -30,17 +30,22 @@ var timeFields = [3]field{{"hour", 0, 23, 2}, {"minute", 0, 59, 1}, {"second", 0
 // '"date" data in ... (s1)+2 ... 1 to 31.' '(1) Set "day" ... (2) ... "month" ... (3) ... "year"'
 var dateFields = [3]field{{"year", 1980, 2079, 2}, {"month", 1, 12, 1}, {"day", 1, 31, 0}}
 
-type fx5Compare struct {
+// fx5Config is what the alternatives decide, shared by every vector's CPU.
+type fx5Config struct {
 	parts        *Parts
-	fields       *[3]field
-	date         bool
-	form         string // LD, AND, OR
-	condition    string // =, <>, >, <=, <, >=
-	s1, s2       plcvec.Addr
-	s3           plcvec.Operand
 	scope        string // FX5-SM709-SCOPE
 	andOrWhenOff string // FX5-AND-OR-WHEN-OFF
 	checkClockS2 bool   // FX5-CLOCK-S2-DEVICE-RANGE
+}
+
+type fx5Compare struct {
+	*fx5Config
+	fields    *[3]field
+	date      bool
+	form      string // LD, AND, OR
+	condition string // =, <>, >, <=, <, >=
+	s1, s2    plcvec.Addr
+	s3        plcvec.Operand
 }
 
 func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.CPU, error) {
@@ -48,12 +53,11 @@ func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.
 	if fields == &dateFields {
 		kind = "DT"
 	}
-	base, err := r.fx5.get(func() (fx5Compare, error) { return configureFX5(r) })
+	cfg, err := r.fx5.get(func() (fx5Config, error) { return configureFX5(r) })
 	if err != nil {
 		return nil, err
 	}
-	c := &base
-	c.fields, c.date = fields, kind == "DT"
+	c := &fx5Compare{fx5Config: cfg, fields: fields, date: kind == "DT"}
 	for _, form := range [3]string{"LD", "AND", "OR"} {
 		rest, ok := strings.CutPrefix(req.Instruction, form)
 		if ok && strings.HasPrefix(rest, kind) {
@@ -74,7 +78,7 @@ func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.
 }
 
 // configureFX5: the CPU as the alternatives of the FX5 comparisons configure it.
-func configureFX5(r *Reference) (c fx5Compare, err error) {
+func configureFX5(r *Reference) (c fx5Config, err error) {
 	c.parts = &r.parts
 	if c.scope, err = r.choice(spec.InterpFx5Sm709Scope, spec.Fx5Sm709ScopeSelectedFields,
 		spec.Fx5Sm709ScopeAllWords, spec.Fx5Sm709ScopeComparedOperands); err != nil {

@@ -34,7 +34,8 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if err != nil {
 		return nil, err
 	}
-	h := &base
+	h := new(hourMeter)
+	*h = *base
 	if h.s1, err = operand(req, "S1"); err != nil {
 		return nil, err
 	}

@@ -27,10 +27,10 @@ type Reference struct {
 	parts   Parts
 	// Each family's CPU as configured by the alternatives, worked out once: a vector's CPU is a
 	// copy of it with the vector's operands.
-	fx5  configured[fx5Compare]
+	fx5  configured[fx5Config]
 	tadd configured[tadd]
 	hour configured[hourMeter]
-	cp1e configured[cp1e]
+	cp1e configured[cp1eConfig]
 }
 
 type configured[T any] struct {
@@ -39,9 +39,9 @@ type configured[T any] struct {
 	err  error
 }
 
-func (c *configured[T]) get(configure func() (T, error)) (T, error) {
+func (c *configured[T]) get(configure func() (T, error)) (*T, error) {
 	c.once.Do(func() { c.cpu, c.err = configure() })
-	return c.cpu, c.err
+	return &c.cpu, c.err
 }
 
 // New is the reference following the given alternatives (interpretation id -> alternative);

@@ -40,7 +40,8 @@ func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if err != nil {
 		return nil, err
 	}
-	t := &base
+	t := new(tadd)
+	*t = *base
 	switch req.Instruction {
 	case spec.InstrTadd:
 	case spec.InstrTaddp:
