@@ -274,3 +274,26 @@ def test_an_adapter_left_running_is_ended_when_the_interpreter_exits(tmp_path):
         assert _wait_for(lambda: not any(_alive(p) for p in pids), 10), "an adapter process was left running"
     finally:
         _reap(pids)
+
+
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT], ids=lambda s: s.name)
+def test_stopping_pytest_with_the_plugin_ends_the_adapter_and_its_child(tmp_path, signum):
+    """pytest itself ends on SIGTERM without unwinding: the plugin turns it into an interrupt."""
+    pidfile = tmp_path / "pids"
+    proc = subprocess.Popen([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q",
+                             "--plcvec-adapter", f"{sys.executable} {SPAWNER} {pidfile}",
+                             "--plcvec-family", "fx5-time-add", "--plcvec-timeout", "300"],
+                            cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    pids = []
+    try:
+        pids = _spawned(pidfile)
+        assert _wait_for(lambda: "answered" in pidfile.read_text(), 60)
+        proc.send_signal(signum)
+        out, _ = proc.communicate(timeout=30)
+        assert _wait_for(lambda: not any(_alive(p) for p in pids), 10), "an adapter process was left running"
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate(timeout=30)
+        _reap(pids)
+    assert proc.returncode == pytest.ExitCode.INTERRUPTED, out
