@@ -46,6 +46,7 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 	report := &Report{Plan: plan, Verdicts: make([]Verdict, 0, len(plan.Cases))}
 	for _, c := range plan.Cases {
 		t.Run(c.Vector.ID, func(t *testing.T) {
+			t.Helper() // the report names the vector; a line of this file would say nothing
 			v := c.Judge(impl)
 			if plan.Known != nil {
 				plan.Known.apply(&v)
