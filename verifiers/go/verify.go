@@ -158,7 +158,7 @@ func trimStack(stack []byte) string {
 	return strings.Join(lines, "\n")
 }
 
-// Run is a whole run's verdicts with what they were judged against.
+// Report is a whole run's verdicts with what they were judged against.
 type Report struct {
 	Plan     *Plan
 	Verdicts []Verdict
