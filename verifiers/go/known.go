@@ -4,6 +4,7 @@ import (
 	"errors"
 	"fmt"
 	"os"
+	"path/filepath"
 	"sort"
 	"strings"
 
@@ -140,4 +141,68 @@ func (k *KnownFailures) unknownIDs(s *Suite) []Verdict {
 		}
 	}
 	return out
+}
+
+// WriteExpectations writes the vectors that fail in r as a new expectations file, each with the
+// given reason: the starting list for an implementation adopting the suite (the same file
+// `plcvec verify --write-expectations` writes). The file is replaced atomically: a reader never
+// sees half of it. It returns the number of entries.
+func (r *Report) WriteExpectations(path, reason string) (int, error) {
+	var b strings.Builder
+	b.WriteString("# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n")
+	ids := []string{}
+	for _, v := range r.Verdicts {
+		if v.Vector != nil && (v.Status == StatusFail || v.Status == StatusError || v.Status == StatusXFail) {
+			ids = append(ids, v.ID)
+		}
+	}
+	sort.Strings(ids)
+	for _, id := range ids {
+		fmt.Fprintf(&b, "[[%s]]\nid = %s\nreason = %s\n\n", knownSection, tomlString(id), tomlString(reason))
+	}
+	return len(ids), writeAtomic(path, []byte(b.String()))
+}
+
+// tomlString quotes s as a TOML basic string: `\` and `"` escaped, control characters as \uXXXX
+// (Go's own quoting writes \x and \a, which TOML does not read).
+func tomlString(s string) string {
+	var b strings.Builder
+	b.WriteByte('"')
+	for _, r := range s {
+		switch {
+		case r == '\\' || r == '"':
+			b.WriteByte('\\')
+			b.WriteRune(r)
+		case r < 0x20 || r == 0x7f:
+			fmt.Fprintf(&b, "\\u%04X", r)
+		default:
+			b.WriteRune(r)
+		}
+	}
+	b.WriteByte('"')
+	return b.String()
+}
+
+// writeAtomic replaces path with data through a temporary file in the same folder.
+func writeAtomic(path string, data []byte) error {
+	tmp, err := os.CreateTemp(filepath.Dir(path), "."+filepath.Base(path)+".*")
+	if err != nil {
+		return fmt.Errorf("%s: %v", path, err)
+	}
+	defer os.Remove(tmp.Name())
+	if _, err := tmp.Write(data); err != nil {
+		tmp.Close()
+		return fmt.Errorf("%s: %v", path, err)
+	}
+	if err := tmp.Chmod(0o644); err != nil {
+		tmp.Close()
+		return fmt.Errorf("%s: %v", path, err)
+	}
+	if err := tmp.Close(); err != nil {
+		return fmt.Errorf("%s: %v", path, err)
+	}
+	if err := os.Rename(tmp.Name(), path); err != nil {
+		return fmt.Errorf("%s: %v", path, err)
+	}
+	return nil
 }

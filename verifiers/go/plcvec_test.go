@@ -432,3 +432,30 @@ func TestEnvShard(t *testing.T) {
 		t.Errorf("shard 2/5 ran %d vectors, want %d of %d", len(report.Verdicts), want, len(all.Verdicts))
 	}
 }
+
+// TestWriteExpectations: the failures of a run become an expectations file that makes the same
+// run pass (every entry an xfail), and that the loader reads back.
+func TestWriteExpectations(t *testing.T) {
+	path := filepath.Join(t.TempDir(), "known.toml")
+	wrong := manualAnswer{change: set("D31", plcvec.Word(41))}
+	opts := plcvec.Options{Selection: plcvec.Selection{IDs: []string{manualTADD}}}
+	report, err := plcvec.Verify(wrong, opts)
+	if err != nil {
+		t.Fatal(err)
+	}
+	n, err := report.WriteExpectations(path, "D31 off by one (\"minute\")\tc:\\x")
+	if err != nil || n != 1 {
+		t.Fatalf("%d entries, %v", n, err)
+	}
+	opts.Expectations = path
+	report, err = plcvec.Verify(wrong, opts)
+	if err != nil {
+		t.Fatal(err)
+	}
+	if !report.OK() || report.Verdicts[0].Status != plcvec.StatusXFail || !strings.Contains(report.Verdicts[0].Message, "D31 off by one (\"minute\")\tc:\\x") {
+		t.Errorf("the written file does not make the run pass: %+v", report.Verdicts)
+	}
+	if _, err := report.WriteExpectations(filepath.Join(t.TempDir(), "no", "such", "dir", "k.toml"), "r"); err == nil {
+		t.Error("writing into a missing folder succeeded")
+	}
+}
