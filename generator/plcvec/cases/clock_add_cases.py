@@ -134,7 +134,7 @@ class AddCases:
         gen = self.doc["generation"]
         for d in draw_addition(self.fields, gen["seed"], gen["random_examples"]):
             yield self.case(self.every_scan, f"random/{d['key']}", tags=["random"],
-                            description=f"{self.hms(d['s1'])} + {self.hms(d['s2'])}, drawn by hypothesis with a fixed seed.",
+                            description=f"{self.hms(d['s1'])} + {self.hms(d['s2'])}, drawn with the spec's seed.",
                             values={self.addends[0]: d["s1"], self.addends[1]: d["s2"]})
 
 

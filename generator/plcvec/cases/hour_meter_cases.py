@@ -121,7 +121,7 @@ class HourCases:
         gen = self.doc["generation"]
         for d in draw_hour_meter(self.fields, gen["seed"], gen["random_examples"]):
             yield self.case(f"random/{d['key']}", tags=["random"], preset=d["preset"], measured=d["measured"], steps=d["steps"],
-                            description="A scan sequence drawn by hypothesis with a fixed seed.")
+                            description="A scan sequence drawn with the spec's seed.")
 
 
 def hour_meter_cases(fam, builder):

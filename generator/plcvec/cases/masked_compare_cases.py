@@ -350,7 +350,7 @@ class CompareCases:
         gen = self.doc["generation"]
         for draw in draw_compare(self, gen["seed"], gen["random_examples"]):
             yield self.case(draw["form"], draw["symbol"], f"random/{draw['key']}", tags=["random"],
-                            description="Drawn by hypothesis from the spec's ranges with a fixed seed.",
+                            description="Drawn from the spec's ranges with the spec's seed.",
                             s1=draw["s1"], s2=draw["s2"], sel=draw["sel"], clock=draw["clock"], rlo_in=draw["rlo_in"])
 
 

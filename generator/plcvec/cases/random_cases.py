@@ -1,44 +1,42 @@
-"""Random cases drawn with hypothesis from the spec's ranges, reproducibly from the spec's seed.
+"""Random cases drawn from the spec's ranges with the spec's seed, the same for ever.
 
-The @given test runner adapts how it explores from run to run, so the same seed did not always give
-the same examples. Each example is drawn instead from a ConjectureData fed by one seeded PRNG: the
-draws are then a pure function of (seed, count, strategy, hypothesis version), and the version is
-pinned in pyproject.toml.
+Each family's `generation` section gives a seed and a number of draws; the draws come from
+SplitMix64 (prng.py) alone, so the golden `random` vectors depend on the spec and nothing else: no
+library version, no Python version. A draw repeated is kept once. The vector id ends in a hash of
+what was drawn (`key_of`), so it names what the vector tests, never its position.
+
+What is drawn, per family kind:
+- comparison: an instruction form and condition; (s1) and (s2) with each field in its range half the
+  time and otherwise one of its boundary values, which include the values just past the range (and,
+  for BCD, values no digits can hold: those become raw field bits, see `compare_case`); the clock;
+  a selector that is one of the field-subset classes half the time and any 16-bit word otherwise;
+  the preceding logic state;
+- addition: two times of day in range;
+- hour meter: a preset and a measured value in range, and one to six scans, each with the input
+  and the elapsed time (up to 2.5 s half the time, up to 10,000 s otherwise).
+
+`plcvec fuzz` draws the same kinds of case, widened, with hypothesis (fuzz/strategies.py).
 """
 import hashlib
 import json
-import random
-
-from hypothesis import strategies as st
-from hypothesis.control import BuildContext
-from hypothesis.internal.conjecture.data import ConjectureData
-from hypothesis.internal.conjecture.providers import HypothesisProvider
 
 from plcvec.cases.common import signed_boundaries
+from plcvec.cases.prng import SplitMix64
+
+MAX_SCANS = 6
+SHORT_MS, LONG_MS = 2500, 10 ** 7
 
 
-class SeededProvider(HypothesisProvider):
-    """Hypothesis' own provider, minus its habit of mixing in constants found in whatever modules the
-    process has imported (which made the draws depend on, e.g., whether pytest had loaded the tests)."""
-
-    def _maybe_draw_constant(self, choice_type, constraints, *, p=0.05):
-        return None
+def key_of(value):
+    return hashlib.sha256(json.dumps(value, sort_keys=True).encode()).hexdigest()[:12]
 
 
-def draw_seeded(strategy, rng):
-    """One value of `strategy` drawn from `rng` alone, and the choices hypothesis made for it (which
-    replay it, e.g. for shrinking)."""
-    data = ConjectureData(random=rng, provider=SeededProvider)
-    with BuildContext(data, is_final=True, wrapped_test=None):
-        value = data.draw(strategy)
-    return value, data.choices
-
-
-def _collect(strategy, seed_value, count):
-    rng = random.Random(seed_value)
+def _collect(draw_one, seed_value, count):
+    """`count` draws of `draw_one(rng)` from one seeded generator, each distinct draw once, in order."""
+    rng = SplitMix64(seed_value)
     drawn, seen = [], set()
     for _ in range(count):
-        value, _ = draw_seeded(strategy, rng)
+        value = draw_one(rng)
         key = json.dumps(value, sort_keys=True)
         if key not in seen:
             seen.add(key)
@@ -46,37 +44,22 @@ def _collect(strategy, seed_value, count):
     return drawn
 
 
-def key_of(value):
-    return hashlib.sha256(json.dumps(value, sort_keys=True).encode()).hexdigest()[:12]
-
-
-def field_values(field):
-    """Mostly in-range values, with the boundary set mixed in."""
-    return st.one_of(st.integers(field["min"], field["max"]), st.sampled_from(signed_boundaries(field)))
-
-
-def in_range(fields):
+def in_range(rng, fields):
     """Every field within the range the spec gives it."""
-    return st.fixed_dictionaries({f["name"]: st.integers(f["min"], f["max"]) for f in fields})
+    return {f["name"]: rng.integer(f["min"], f["max"]) for f in fields}
 
 
-def around_range(fields):
-    """Every field mostly in range, with its boundary set (and what lies just past it) mixed in."""
-    return st.fixed_dictionaries({f["name"]: field_values(f) for f in fields})
+def around_range(rng, fields):
+    """Each field in range half the time, else one of its boundary values (and what lies just past them)."""
+    return {f["name"]: rng.choice(signed_boundaries(f)) if rng.boolean() else rng.integer(f["min"], f["max"])
+            for f in fields}
 
 
-def compare_parts(cases):
-    """The strategies of one comparison case, by name (`plcvec fuzz` recombines them)."""
-    subsets = sorted({cases.selector([n for i, n in enumerate(cases.names) if m >> i & 1], clock)
-                      for m in range(1 << len(cases.names))
-                      for clock in ([False, True] if cases.clock_bit else [False])})
-    return {
-        "form": st.sampled_from(sorted(cases.forms)),
-        "symbol": st.sampled_from(cases.conditions),
-        "a": around_range(cases.fields), "b": around_range(cases.fields), "clock": in_range(cases.fields),
-        "sel": st.one_of(st.sampled_from(subsets), st.integers(0, 0xFFFF)),
-        "rlo_in": st.booleans(),
-    }
+def selector_subsets(cases):
+    """Every selector value that selects a subset of the fields (with or without the clock bit)."""
+    return sorted({cases.selector([n for i, n in enumerate(cases.names) if m >> i & 1], clock)
+                   for m in range(1 << len(cases.names))
+                   for clock in ([False, True] if cases.clock_bit else [False])})
 
 
 def compare_case(cases, d, raw=None):
@@ -96,30 +79,39 @@ def compare_case(cases, d, raw=None):
     }
 
 
-def draw_compare(cases, seed_value, count):
-    for d in _collect(st.fixed_dictionaries(compare_parts(cases)), seed_value, count):
-        yield compare_case(cases, d)
-
-
 def _raw_overflow(fields, values):
     """BCD values past the digits' reach cannot be encoded; keep them as raw bits instead."""
     return {f["name"]: values[f["name"]] for f in fields
             if f["encoding"] == "bcd" and not 0 <= values[f["name"]] < 10 ** (f["width"] // 4)}
 
 
+def draw_compare(cases, seed_value, count):
+    forms, subsets, fields = sorted(cases.forms), selector_subsets(cases), cases.fields
+
+    def one(rng):
+        return {"form": rng.choice(forms), "symbol": rng.choice(cases.conditions),
+                "a": around_range(rng, fields), "b": around_range(rng, fields), "clock": in_range(rng, fields),
+                "sel": rng.choice(subsets) if rng.boolean() else rng.integer(0, 0xFFFF),
+                "rlo_in": rng.boolean()}
+
+    for d in _collect(one, seed_value, count):
+        yield compare_case(cases, d)
+
+
 def draw_addition(fields, seed_value, count):
-    hms = in_range(fields)
-    for d in _collect(st.fixed_dictionaries({"s1": hms, "s2": hms}), seed_value, count):
+    for d in _collect(lambda rng: {"s1": in_range(rng, fields), "s2": in_range(rng, fields)}, seed_value, count):
         yield dict(d, key=key_of(d))
 
 
-def hour_meter_step():
-    """One scan of an hour meter: the input, and the time since the previous scan (mostly short)."""
-    return st.fixed_dictionaries({"input": st.booleans(), "elapsed_ms": st.one_of(st.integers(0, 2500), st.integers(0, 10 ** 7))})
+def _scan(rng):
+    """One scan of an hour meter: the input, and the time since the previous scan (short half the time)."""
+    return {"input": rng.boolean(), "elapsed_ms": rng.integer(0, SHORT_MS if rng.boolean() else LONG_MS)}
 
 
 def draw_hour_meter(fields, seed_value, count):
-    value = in_range(fields)
-    strategy = st.fixed_dictionaries({"preset": value, "measured": value, "steps": st.lists(hour_meter_step(), min_size=1, max_size=6)})
-    for d in _collect(strategy, seed_value, count):
+    def one(rng):
+        return {"preset": in_range(rng, fields), "measured": in_range(rng, fields),
+                "steps": [_scan(rng) for _ in range(rng.integer(1, MAX_SCANS))]}
+
+    for d in _collect(one, seed_value, count):
         yield dict(d, key=key_of(d))

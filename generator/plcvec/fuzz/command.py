@@ -2,7 +2,7 @@
 
 Draws cases with hypothesis from the spec's ranges and past them, runs each through the adapter and
 the spec engine, and on the first disagreement shrinks it to a minimal case, printed as a vector file
-ready to keep. Deterministic with --seed. Exit 0 no disagreement, 1 one found, 2 usage or harness error.
+ready to keep. Deterministic with --seed under one hypothesis version. Exit 0 no disagreement, 1 one found, 2 usage or harness error.
 """
 import sys
 import time
@@ -46,6 +46,11 @@ def main_args(args):
 
     if args.examples < 1 or args.timeout <= 0 or args.batch_size < 1:
         raise PlcvecError("fuzz: --examples and --batch-size must be at least 1, --timeout above 0")
+    try:
+        import hypothesis  # noqa: F401  (fuzzing draws and shrinks with it; the golden vectors do not need it)
+    except ModuleNotFoundError:
+        raise PlcvecError("fuzz: needs hypothesis, which plcvec installs only with its fuzz extra: "
+                          "pip install 'plcvec[fuzz]'") from None
     try:
         families, asked = _selection(args)
         adapter = make_adapter(args)

@@ -1,6 +1,6 @@
 """Drawing fuzz cases, and building each into a full vector with the spec engine.
 
-The strategies are the golden random cases' own (cases/random_cases.py), widened the way a fixed set
+The strategies draw what the golden random cases draw (fuzz/strategies.py), widened the way a fixed set
 cannot be: fully valid data and data around and past the ranges side by side, raw words no value
 encodes, the spec's nonexistent dates, reserved selector bits, constants, operands at the top of their
 device range, flags already on, and sequences of scans (latching, the pulse form, HOUR with its
@@ -20,9 +20,9 @@ from plcvec.cases.clock_add_cases import AddCases
 from plcvec.cases.common import top_head
 from plcvec.cases.hour_meter_cases import HourCases
 from plcvec.cases.masked_compare_cases import CompareCases
-from plcvec.cases.random_cases import (around_range, compare_case, compare_parts, field_values, hour_meter_step,
-                                       in_range, key_of)
+from plcvec.cases.random_cases import compare_case, key_of
 from plcvec.engine.words import operand_words, split_address
+from plcvec.fuzz.strategies import around_range, compare_parts, field_values, hour_meter_step, in_range
 
 TAG = "fuzz"
 DESCRIPTION = ("Drawn by `plcvec fuzz` from the spec's ranges and past them: the minimal case of a disagreement "

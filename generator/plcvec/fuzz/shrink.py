@@ -1,14 +1,14 @@
 """Shrinking a disagreement to a minimal case with hypothesis' own shrinker, deterministically.
 
 `@given` and `find()` were not used: their generation phase mixes in constants from whatever modules
-are loaded, so the same seed could explore differently (see cases/random_cases.py). Here the failing
+are loaded, so the same seed could explore differently (see fuzz/seeded.py). Here the failing
 example's choice sequence, found by the seeded search, is handed straight to hypothesis' engine with
 only the shrink phase, no example database, and a Random seeded from --seed; draws past the replayed
 choices come from the same constant-free provider as the search. The result is then a function of the
 seed, the spec and the adapter's answers.
 
-This uses hypothesis' internal engine API (ConjectureRunner), as random_cases.py does; the version is
-pinned in pyproject.toml.
+This uses hypothesis' internal engine API (ConjectureRunner), as fuzz/seeded.py does: the shrunk case
+is the same for the same seed under one hypothesis version.
 """
 import random
 
@@ -19,7 +19,7 @@ from hypothesis.internal.conjecture.data import ConjectureData, Status
 from hypothesis.internal.conjecture.engine import ConjectureRunner, RunIsComplete
 from hypothesis.internal.escalation import InterestingOrigin
 
-from plcvec.cases.random_cases import SeededProvider
+from plcvec.fuzz.seeded import SeededProvider
 
 
 class Disagreement(Exception):

@@ -5,8 +5,6 @@ import io
 import json
 from collections import Counter
 
-import hypothesis
-
 from plcvec import SCHEMA_VERSION, __version__
 from plcvec.cases import CASE_FAMILIES
 from plcvec.cases.build import VectorBuilder
@@ -68,7 +66,6 @@ def build_golden(families):
         "generated": GENERATED_NOTE,
         "schema_version": SCHEMA_VERSION,
         "generator_version": __version__,
-        "hypothesis_version": hypothesis.__version__,
         "spec_sha256": spec_hash(families),
         "total": len(everything),
         "families": {
