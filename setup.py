@@ -7,7 +7,7 @@ wheel carries a copy of each as package data, where the commands find them with 
 
     plcvec/_data/spec/...            the spec, for generate --check, lint, review, fuzz, exhaustive
     plcvec_verify/_data/vectors/...  the golden vectors, for verify and the pytest plugin
-    plcvec_verify/_data/*.md         CONTRACT.md and PROTOCOL.md, for release
+    plcvec_verify/_data/verifiers/   CONTRACT.md and PROTOCOL.md, for release
 
 An editable install copies nothing: it runs from the checkout, whose own folders are used.
 Everything else is declared in pyproject.toml.
@@ -24,8 +24,8 @@ DATA = "_data"
 COPIES = [
     ("spec", "plcvec", "spec"),
     ("vectors", "plcvec_verify", "vectors"),
-    ("verifiers/CONTRACT.md", "plcvec_verify", "CONTRACT.md"),
-    ("verifiers/PROTOCOL.md", "plcvec_verify", "PROTOCOL.md"),
+    ("verifiers/CONTRACT.md", "plcvec_verify", "verifiers/CONTRACT.md"),
+    ("verifiers/PROTOCOL.md", "plcvec_verify", "verifiers/PROTOCOL.md"),
 ]
 SKIP = ("__pycache__", ".*", "*.pyc", "*.tmp")
 

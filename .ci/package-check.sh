@@ -1,0 +1,74 @@
+#!/usr/bin/env bash
+# The package as a user gets it: build the sdist and the wheel (the wheel from the sdist, so the sdist
+# is shown complete), check their metadata, install each into a fresh virtual environment outside the
+# checkout, and run the commands from an empty temporary folder, where no checkout can be found: the
+# installed spec and vectors must be enough.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+checkout=$PWD
+work=$(mktemp -d "${TMPDIR:-/tmp}/plcvec-package.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+started=$SECONDS
+step() { echo "== package-check [$((SECONDS - started)) s] $*"; }
+
+step "build tools"
+python3 -m venv "$work/tools"
+"$work/tools/bin/pip" install --quiet --disable-pip-version-check build twine
+
+step "build the sdist, then the wheel from it"
+"$work/tools/bin/python" -m build --outdir "$work/dist" "$checkout" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }
+sdist=$(ls "$work"/dist/plcvec-*.tar.gz)
+wheel=$(ls "$work"/dist/plcvec-*-py3-none-any.whl)
+"$work/tools/bin/twine" check --strict "$sdist" "$wheel"
+
+# Run a command of the installed package from $run, with nothing of the checkout reachable.
+installed() {
+    (cd "$run" && env -u PYTHONPATH PATH="$venv/bin:$PATH" "$@")
+}
+
+for artifact in "$wheel" "$sdist"; do
+    kind=$([[ $artifact == *.whl ]] && echo wheel || echo sdist)
+    venv="$work/venv-$kind"
+    run="$work/run-$kind"
+    mkdir -p "$run"
+    step "$kind: install into a fresh virtual environment (no extras, plus pytest)"
+    python3 -m venv "$venv"
+    "$venv/bin/pip" install --quiet --disable-pip-version-check "$artifact" pytest
+
+    step "$kind: plcvec --version"
+    installed plcvec --version | tee "$run/version.txt"
+    grep -q "installed with plcvec" "$run/version.txt"
+    # The spec hash it prints is the one the committed manifest records.
+    grep -q "spec sha256 $(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["spec_sha256"])' "$checkout/vectors/manifest.json")" "$run/version.txt"
+
+    step "$kind: plcvec verify on the reference adapter"
+    installed plcvec verify --adapter "python3 -m plcvec_reference.adapter" --junit verify.xml | tail -3
+    grep -q "site-packages/plcvec_verify/_data/vectors" "$run/verify.xml"
+
+    step "$kind: pytest --plcvec-adapter (a selection)"
+    installed python3 -m pytest -q -p no:cacheprovider --plcvec-adapter "python3 -m plcvec_reference.adapter" \
+        -k "TADD and boundary or LDDT and nonexistent_date" | tail -2
+
+    step "$kind: plcvec review and plcvec lint"
+    installed plcvec review --out review
+    test -s "$run/review/review.html" && test -s "$run/review/review.md"
+    installed plcvec lint | tail -1
+
+    step "$kind: plcvec generate writes nowhere it is not told to"
+    if installed plcvec generate 2>"$run/generate.err"; then
+        echo "plcvec generate wrote somewhere outside a checkout without --out" >&2; exit 1
+    fi
+    grep -q -- "--out DIR" "$run/generate.err"
+    step "$kind: plcvec fuzz without its extra says which to install"
+    if installed plcvec fuzz --adapter "python3 -m plcvec_reference.adapter" --examples 1 2>"$run/fuzz.err"; then
+        echo "plcvec fuzz ran without hypothesis installed?" >&2; exit 1
+    fi
+    grep -q "plcvec\[fuzz\]" "$run/fuzz.err"
+done
+
+# Once: the installed generator reproduces the installed golden set byte for byte.
+venv="$work/venv-wheel" run="$work/run-wheel"
+step "wheel: plcvec generate --check against the installed vectors"
+installed plcvec generate --check
+
+step "done in $((SECONDS - started)) s"
