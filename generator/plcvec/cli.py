@@ -13,6 +13,7 @@ _STAGE_COMMANDS = [
     "plcvec.fuzz.command",
     "plcvec.review.command",
     "plcvec.output.diff_command",
+    "plcvec.release.command",
     "plcvec.export.command",
     "plcvec.native_bench",
 ]

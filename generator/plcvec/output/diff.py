@@ -82,6 +82,7 @@ class VectorSet:
     label: str
     single: bool                       # one family file rather than a folder
     families: dict = field(default_factory=dict)   # name -> {"header": {...}, "vectors": {id: vector}}
+    manifest: dict = field(default_factory=dict)   # the folder's manifest.json (empty for a single file)
 
     def count(self):
         return sum(len(f["vectors"]) for f in self.families.values())
@@ -141,7 +142,7 @@ def _folder(source, label):
     families = manifest.get("families") if isinstance(manifest, dict) else None
     if not isinstance(families, dict) or not all(isinstance(e, dict) and isinstance(e.get("file"), str) for e in families.values()):
         raise DiffInputError(f"{source.label(MANIFEST)}: not a vector manifest (no \"families\" with a \"file\" for each)")
-    out = VectorSet(label, single=False)
+    out = VectorSet(label, single=False, manifest=manifest)
     for name in sorted(families):
         doc = _family(source, families[name]["file"])
         if doc["header"]["family"] != name:
@@ -149,6 +150,12 @@ def _folder(source, label):
                                  f"but {MANIFEST} lists it as {name!r}")
         out.families[name] = doc
     return out
+
+
+def load_source(source, label):
+    """The vector set of any folder-like `source`: an object with label(name) and read(name) -> bytes or
+    None (as _Disk and _Git), e.g. a folder inside an archive read into memory."""
+    return _folder(source, label)
 
 
 def _single(source, name, label):

@@ -1,0 +1,77 @@
+"""`plcvec release --out DIR`: plcvec-vectors-<version>.tar.gz and .zip, byte-identical on every run.
+
+Bundle (release/bundle.py): the vector files, their JSON Lines form, the CSV, the schemas, the
+manifest, the review (HTML and Markdown), CONTRACT.md and PROTOCOL.md, CHANGES.md made by `plcvec
+diff` against the previous release (--previous), and SHA256SUMS. The version is the suite version;
+CONTRACT.md ("Suite version") says when it moves, and a release that breaks the rule is refused.
+"""
+from pathlib import Path
+
+from plcvec.errors import PlcvecError
+
+
+def register(sub, spec_parent):
+    from plcvec_verify.locate import default_vectors_text
+
+    r = sub.add_parser("release", parents=[spec_parent], description=__doc__,
+                       help="write the versioned release archives (.tar.gz, .zip) of the golden set")
+    r.add_argument("--out", required=True, metavar="DIR", help="folder for the two archives")
+    r.add_argument("--previous", metavar="DIR|ARCHIVE|REV",
+                   help="the previous release, for CHANGES.md: a vector folder or unpacked release, a release archive, "
+                        "or a git revision (e.g. v0.1.0); without it the release says it is the first")
+    r.add_argument("--vectors", metavar="DIR",
+                   help=f"the committed vector folder, which must match the spec (default: {default_vectors_text()})")
+    r.add_argument("--manual-dir", metavar="DIR", help="check the review's quotes against the manual text")
+    r.set_defaults(func=run)
+
+
+def run(args):
+    from plcvec_verify.errors import VerifyError
+    from plcvec_verify.locate import default_vectors, inside_installation, locate
+
+    from plcvec import SCHEMA_VERSION, __version__
+    from plcvec.output.atomic import write_atomic
+    from plcvec.release import archive, bundle, changes
+    from plcvec.spec.loader import load_spec
+
+    out = Path(args.out)
+    if inside_installation(out):
+        raise PlcvecError(f"release: --out {out}: inside the Python installation (site-packages); name a folder of your own")
+    if out.exists() and not out.is_dir():
+        raise PlcvecError(f"release: --out {out}: not a folder")
+    try:
+        vectors_dir = Path(args.vectors) if args.vectors else default_vectors().path
+        docs_dir = locate("plcvec_verify", "verifiers", "CONTRACT.md").path
+    except VerifyError as exc:
+        raise PlcvecError(f"release: {exc}") from None
+    previous = changes.load_previous(args.previous) if args.previous else None   # a bad name fails before the work
+
+    families = load_spec(args.spec_dir)
+    golden, by_family = bundle.golden_checked(families, vectors_dir)
+    text, report = changes.changes_text(__version__, bundle.current_set(golden, __version__), previous, args.previous)
+    if report is not None:
+        old_schema = str(previous.manifest.get("schema_version", ""))
+        changes.check_version(__version__, previous.manifest.get("generator_version", ""),
+                              changes.required_bump(report, old_schema, SCHEMA_VERSION))
+    files = bundle.bundle(__version__, golden, vectors_dir, _review(families, by_family, args.manual_dir), docs_dir, text)
+
+    name = bundle.root_name(__version__)
+    written = []
+    for suffix, make in ((".tar.gz", archive.tar_gz), (".zip", archive.zip_bytes)):
+        target = out / f"{name}{suffix}"
+        write_atomic(target, make(files))
+        written.append(str(target))
+    t = report["totals"] if report else None
+    summary = "first release" if report is None else ", ".join(f"{n} {k}" for k, n in t.items() if n) or "no vector differs"
+    print(f"plcvec release {__version__}: {len(files)} files, {sum(len(f['vectors']) for f in bundle.current_set(golden, __version__).families.values())} "
+          f"vectors ({summary}); wrote {', '.join(written)}")
+    return 0
+
+
+def _review(families, by_family, manual_dir):
+    from plcvec.review.model import build_model, run_audit
+    from plcvec.review.quotes import check_quotes, read_manual
+    from plcvec.review.render import render
+
+    quotes = check_quotes(families, read_manual(manual_dir)) if manual_dir else None
+    return render(build_model(families, by_family, quotes=quotes, audit=run_audit(families)))

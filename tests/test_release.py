@@ -1,0 +1,186 @@
+"""`plcvec release`: what the bundle holds, that two runs give the same bytes, and the version rule."""
+import gzip
+import hashlib
+import io
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tarfile
+import zipfile
+
+import pytest
+
+from plcvec import __version__
+from plcvec.errors import PlcvecError
+from plcvec.release import changes
+
+from conftest import REPO
+
+NAME = f"plcvec-vectors-{__version__}"
+FAMILY = "fx5-time-add"
+
+
+def release(out, *args, hashseed):
+    env = dict(os.environ, PYTHONHASHSEED=str(hashseed))   # set and dict order must not leak into the bytes
+    return subprocess.run([sys.executable, "-m", "plcvec", "release", "--out", str(out), *args],
+                          capture_output=True, text=True, cwd=REPO, env=env, timeout=900)
+
+
+@pytest.fixture(scope="module")
+def previous(tmp_path_factory):
+    """An older release's vector folder: one vector of FAMILY missing, another with a different result."""
+    folder = tmp_path_factory.mktemp("previous") / "vectors"
+    shutil.copytree(REPO / "vectors", folder)
+    path = folder / f"{FAMILY}.json"
+    data = json.loads(path.read_text(encoding="utf-8"))
+    dropped = data["vectors"].pop(0)
+    changed = data["vectors"][0]
+    changed["final"]["devices"] = {k: (v + 1 if isinstance(v, int) and not isinstance(v, bool) else v)
+                                   for k, v in changed["final"]["devices"].items()}
+    path.write_text(json.dumps(data), encoding="utf-8")
+    manifest = json.loads((folder / "manifest.json").read_text(encoding="utf-8"))
+    manifest["generator_version"] = "0.0.1"
+    (folder / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
+    return folder, dropped["id"], changed["id"]
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory, previous):
+    folder = previous[0]
+    outs = [tmp_path_factory.mktemp(f"release{i}") for i in (1, 2)]
+    for seed, out in zip((1, 2), outs):
+        proc = release(out, "--previous", str(folder), hashseed=seed)
+        assert proc.returncode == 0, proc.stderr
+        assert "Traceback" not in proc.stderr
+    return outs
+
+
+def members(out):
+    with tarfile.open(out / f"{NAME}.tar.gz") as tar:
+        return {m.name: tar.extractfile(m).read() for m in tar.getmembers()}, tar.getmembers()
+
+
+def test_two_runs_give_identical_archives(runs):
+    for suffix in (".tar.gz", ".zip"):
+        a, b = ((out / f"{NAME}{suffix}").read_bytes() for out in runs)
+        assert a == b, suffix
+
+
+def test_archives_carry_no_time_or_owner(runs):
+    raw = (runs[0] / f"{NAME}.tar.gz").read_bytes()
+    assert raw[:2] == b"\x1f\x8b" and raw[4:8] == b"\0\0\0\0"        # gzip MTIME field (RFC 1952): 0
+    assert not raw[3] & 0x08                                          # FLG.FNAME: no file name stored
+    _, infos = members(runs[0])
+    assert [i.name for i in infos] == sorted(i.name for i in infos)
+    assert {(i.mtime, i.uid, i.gid, i.uname, i.gname, i.mode) for i in infos} == {(315532800, 0, 0, "", "", 0o644)}
+    with zipfile.ZipFile(runs[0] / f"{NAME}.zip") as z:
+        assert {i.date_time for i in z.infolist()} == {(1980, 1, 1, 0, 0, 0)}
+        assert sorted(z.namelist()) == sorted(members(runs[0])[0])
+
+
+def test_bundle_holds_every_part_and_the_sums_match(runs):
+    files, _ = members(runs[0])
+    root = NAME + "/"
+    manifest = json.loads((REPO / "vectors" / "manifest.json").read_text(encoding="utf-8"))
+    expected = {"CHANGES.md", "CONTRACT.md", "PROTOCOL.md", "SHA256SUMS", "review/review.html", "review/review.md",
+                "vectors/manifest.json", "vectors/vectors.csv", "vectors/schema/vector-file.schema.json"}
+    expected |= {f"vectors/{e['file']}" for e in manifest["families"].values()}
+    expected |= {f"jsonl/{name}.jsonl" for name in manifest["families"]}
+    names = {n[len(root):] for n in files}
+    assert expected <= names
+    assert any(n.startswith("protocol/") and n.endswith(".schema.json") for n in names)
+    # The committed files, byte for byte, and the documents as they are.
+    for name in ("vectors/manifest.json", "vectors/vectors.csv", f"vectors/{FAMILY}.json"):
+        assert files[root + name] == (REPO / name).read_bytes(), name
+    assert files[root + "CONTRACT.md"] == (REPO / "verifiers" / "CONTRACT.md").read_bytes()
+    # SHA256SUMS: every other file once, in sha256sum's format.
+    listed = {}
+    for line in files[root + "SHA256SUMS"].decode().splitlines():
+        digest, name = line.split("  ", 1)
+        listed[name] = digest
+    assert set(listed) == names - {"SHA256SUMS"}
+    for name, digest in listed.items():
+        assert hashlib.sha256(files[root + name]).hexdigest() == digest, name
+
+
+def test_jsonl_is_the_header_then_one_canonical_vector_per_line(runs):
+    files, _ = members(runs[0])
+    family = json.loads((REPO / "vectors" / f"{FAMILY}.json").read_text(encoding="utf-8"))
+    lines = files[f"{NAME}/jsonl/{FAMILY}.jsonl"].decode("utf-8").split("\n")
+    assert lines[-1] == ""
+    lines = lines[:-1]
+    assert len(lines) == 1 + len(family["vectors"])
+    header = {k: v for k, v in family.items() if k != "vectors"}
+    assert json.loads(lines[0]) == header
+    for line, vector in zip(lines[1:], family["vectors"]):
+        assert json.loads(line) == vector
+        assert line == json.dumps(vector, sort_keys=True, separators=(",", ":"), ensure_ascii=False)
+
+
+def test_changes_lists_what_differs_from_the_previous_release(runs, previous):
+    _, dropped, changed = previous
+    files, _ = members(runs[0])
+    text = files[f"{NAME}/CHANGES.md"].decode("utf-8")
+    assert f"# plcvec-vectors {__version__}" in text and "since 0.0.1" in text
+    assert f"  + {dropped}\n" in text                      # absent before: added now
+    assert f"  ~ {changed} (expectation)\n" in text
+    assert f"{FAMILY}: 1 added, 1 expectation changed" in text
+
+
+def test_a_release_archive_can_be_the_previous_release(runs):
+    found = changes.load_previous(str(runs[0] / f"{NAME}.tar.gz"))
+    current = changes.load_previous(str(REPO / "vectors"))
+    assert found.manifest["generator_version"] == __version__
+    assert {n: set(f["vectors"]) for n, f in found.families.items()} == \
+        {n: set(f["vectors"]) for n, f in current.families.items()}
+    zipped = changes.load_previous(str(runs[0] / f"{NAME}.zip"))
+    assert zipped.count() == current.count()
+
+
+def test_a_damaged_archive_is_named(tmp_path):
+    bad = tmp_path / "old.tar.gz"
+    bad.write_bytes(gzip.compress(b"not a tar"))
+    with pytest.raises(PlcvecError, match="old.tar.gz"):
+        changes.load_previous(str(bad))
+    empty = tmp_path / "empty.zip"
+    with zipfile.ZipFile(empty, "w") as z:
+        z.writestr("README", "x")
+    with pytest.raises(PlcvecError, match="no vectors/manifest.json"):
+        changes.load_previous(str(empty))
+
+
+def _report(**counts):
+    totals = dict.fromkeys(("added", "removed", "expectation", "inputs", "metadata"), 0)
+    totals.update(counts)
+    return {"totals": totals, "identical": not any(totals.values())}
+
+
+@pytest.mark.parametrize("counts, bump", [
+    ({"added": 1}, "minor"), ({"removed": 2}, "minor"), ({"expectation": 1}, "minor"), ({"inputs": 1}, "minor"),
+    ({"metadata": 3}, "patch"), ({}, None)])
+def test_the_bump_contract_md_asks_for(counts, bump):
+    assert changes.required_bump(_report(**counts), "1.0.0", "1.0.0") == bump
+    assert changes.required_bump(_report(**counts), "1.0.0", "2.0.0") == "major"
+
+
+@pytest.mark.parametrize("new, old, bump, ok", [
+    ("0.2.0", "0.1.0", "minor", True), ("0.1.1", "0.1.0", "minor", False), ("1.0.0", "0.9.3", "minor", True),
+    ("0.1.1", "0.1.0", "patch", True), ("0.1.0", "0.1.0", "patch", False), ("0.1.0", "0.1.0", None, True),
+    ("0.9.0", "1.0.0", None, False), ("1.0.0", "0.5.0", "major", True), ("0.6.0", "0.5.0", "major", False)])
+def test_the_version_must_move_far_enough(new, old, bump, ok):
+    if ok:
+        changes.check_version(new, old, bump)
+    else:
+        with pytest.raises(PlcvecError, match="version"):
+            changes.check_version(new, old, bump)
+
+
+def test_first_release_says_so(tmp_path):
+    from plcvec.output import diff
+
+    current = diff.load_set(str(REPO / "vectors"))
+    text, report = changes.changes_text("9.9.9", current)
+    assert report is None
+    assert "The first release" in text and f"Total: {current.count()} vectors." in text
