@@ -42,8 +42,10 @@ for artifact in "$wheel" "$sdist"; do
     grep -q "spec sha256 $(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["spec_sha256"])' "$checkout/vectors/manifest.json")" "$run/version.txt"
 
     step "$kind: plcvec verify on the reference adapter"
-    installed plcvec verify --adapter "python3 -m plcvec_reference.adapter" --junit verify.xml | tail -3
-    grep -q "site-packages/plcvec_verify/_data/vectors" "$run/verify.xml"
+    installed plcvec verify --adapter "python3 -m plcvec_reference.adapter" --junit verify.xml >"$run/verify.txt"
+    tail -3 "$run/verify.txt"
+    grep -q "against $venv/.*/site-packages/plcvec_verify/_data/vectors " "$run/verify.txt"   # the installed copy
+    test -s "$run/verify.xml"
 
     step "$kind: pytest --plcvec-adapter (a selection)"
     installed python3 -m pytest -q -p no:cacheprovider --plcvec-adapter "python3 -m plcvec_reference.adapter" \
