@@ -136,7 +136,7 @@ const TagNonexistentDate = "nonexistent-date"
 // TagPulse: Execution on the rising edge of the execution condition, over a sequence of scans.
 const TagPulse = "pulse"
 
-// TagRandom: Drawn with hypothesis from the spec's ranges with a fixed seed.
+// TagRandom: Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec.
 const TagRandom = "random"
 
 // TagReconstructed: The manual's input values were lost; these satisfy its printed table.

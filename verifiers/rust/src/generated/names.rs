@@ -426,7 +426,7 @@ pub enum Tag {
     NonexistentDate,
     #[doc = "Execution on the rising edge of the execution condition, over a sequence of scans."]
     Pulse,
-    #[doc = "Drawn with hypothesis from the spec's ranges with a fixed seed."]
+    #[doc = "Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec."]
     Random,
     #[doc = "The manual's input values were lost; these satisfy its printed table."]
     Reconstructed,
@@ -500,7 +500,7 @@ impl Tag {
             Tag::ManualExample => "Reproduces an example printed in the manual; `printed` holds the manual's own expectation.",
             Tag::NonexistentDate => "A date no calendar has, whose fields are each within range.",
             Tag::Pulse => "Execution on the rising edge of the execution condition, over a sequence of scans.",
-            Tag::Random => "Drawn with hypothesis from the spec's ranges with a fixed seed.",
+            Tag::Random => "Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec.",
             Tag::Reconstructed => "The manual's input values were lost; these satisfy its printed table.",
             Tag::Regression => "A case that once exposed a bug in an implementation (spec/regressions/), kept so it stays fixed; its note says which bug.",
             Tag::ReservedBit => "A selector bit the manual reserves, alone or mixed with others.",

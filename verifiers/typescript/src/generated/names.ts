@@ -151,7 +151,7 @@ export const TAG_DESCRIPTIONS: Readonly<Record<Tag, string>> = {
   "manual-example": "Reproduces an example printed in the manual; `printed` holds the manual's own expectation.",
   "nonexistent-date": "A date no calendar has, whose fields are each within range.",
   "pulse": "Execution on the rising edge of the execution condition, over a sequence of scans.",
-  "random": "Drawn with hypothesis from the spec's ranges with a fixed seed.",
+  "random": "Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec.",
   "reconstructed": "The manual's input values were lost; these satisfy its printed table.",
   "regression": "A case that once exposed a bug in an implementation (spec/regressions/), kept so it stays fixed; its note says which bug.",
   "reserved-bit": "A selector bit the manual reserves, alone or mixed with others.",

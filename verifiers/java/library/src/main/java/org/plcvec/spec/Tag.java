@@ -29,8 +29,8 @@ public enum Tag {
     NONEXISTENT_DATE("nonexistent-date", "A date no calendar has, whose fields are each within range."),
     /** Execution on the rising edge of the execution condition, over a sequence of scans. */
     PULSE("pulse", "Execution on the rising edge of the execution condition, over a sequence of scans."),
-    /** Drawn with hypothesis from the spec's ranges with a fixed seed. */
-    RANDOM("random", "Drawn with hypothesis from the spec's ranges with a fixed seed."),
+    /** Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec. */
+    RANDOM("random", "Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec."),
     /** The manual's input values were lost; these satisfy its printed table. */
     RECONSTRUCTED("reconstructed", "The manual's input values were lost; these satisfy its printed table."),
     /** A case that once exposed a bug in an implementation (spec/regressions/), kept so it stays fixed; its note says which bug. */
