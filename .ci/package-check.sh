@@ -13,7 +13,12 @@ step() { echo "== package-check [$((SECONDS - started)) s] $*"; }
 
 step "build tools"
 python3 -m venv "$work/tools"
-"$work/tools/bin/pip" install --quiet --disable-pip-version-check build twine
+"$work/tools/bin/pip" install --quiet --disable-pip-version-check build twine vermin
+
+# requires-python says 3.10: nothing newer may be used (tomllib comes from tomli below 3.11). vermin
+# reads the code for the standard library's version history; it exits 1 on anything past 3.10.
+step "nothing in the package needs a Python newer than 3.10"
+"$work/tools/bin/vermin" -t=3.10- --violations --no-tips --eval-annotations generator verifiers/python
 
 step "build the sdist, then the wheel from it"
 "$work/tools/bin/python" -m build --outdir "$work/dist" "$checkout" >"$work/build.log" 2>&1 || { cat "$work/build.log"; exit 1; }

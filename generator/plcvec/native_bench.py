@@ -21,15 +21,18 @@ from pathlib import Path
 
 from plcvec.errors import PlcvecError
 
-REPO = Path(__file__).resolve().parents[2]
 TIMEOUT_S = 900      # one language's build and benchmark; a hung one is reported, not waited on
 
 
 def register(sub, spec_parent):
     b = sub.add_parser("bench-native", help="vectors/s of each native verifier (verifiers/<lang>/bench) beside Python's")
     b.add_argument("--lang", action="append", metavar="L", help="only this language (repeatable)")
-    b.add_argument("--vectors", default=str(REPO / "vectors"), help="the vector folder for the Python figure")
-    b.add_argument("--root", default=str(REPO), help="the repository holding verifiers/ (default: %(default)s)")
+    from plcvec_verify.locate import checkout
+
+    root = checkout()   # the checkout in use (plcvec_verify/locate.py): the native verifiers live only there
+    b.add_argument("--vectors", default=str(root / "vectors") if root else None, help="the vector folder for the Python figure")
+    b.add_argument("--root", default=str(root) if root else None,
+                   help="the repository holding verifiers/ (default: %(default)s)")
     b.set_defaults(func=run)
 
 
@@ -56,6 +59,8 @@ def _native(script: Path) -> dict:
 def run(args):
     from plcvec_verify.bench import in_process_rate
 
+    if not args.root or not args.vectors:
+        raise PlcvecError("bench-native: not in a plcvec checkout; name the repository with --root and the vectors with --vectors")
     root = Path(args.root)
     scripts = sorted(p for p in (root / "verifiers").glob("*/bench") if os.access(p, os.X_OK))
     if args.lang:

@@ -9,7 +9,13 @@ from plcvec.export.model import load_model
 from plcvec.export.targets import languages, render
 from plcvec.output.atomic import write_atomic
 
-REPO = Path(__file__).resolve().parents[3]
+
+
+def _checkout():
+    """The checkout in use (plcvec_verify/locate.py): exports go into its verifiers/, never into an installation."""
+    from plcvec_verify.locate import checkout
+
+    return checkout()
 
 
 def register(sub, spec_parent):
@@ -23,8 +29,11 @@ def register(sub, spec_parent):
     which = e.add_mutually_exclusive_group(required=True)
     which.add_argument("--lang", action="append", metavar="L", help="a language (repeatable)")
     which.add_argument("--all", action="store_true", help="every language that has templates")
-    e.add_argument("--vectors", default=str(REPO / "vectors"), help="the vector folder to export (default: %(default)s)")
-    e.add_argument("--root", default=str(REPO), help="the repository the outputs go into (default: %(default)s)")
+    root = _checkout()
+    e.add_argument("--vectors", default=str(root / "vectors") if root else None,
+                   help="the vector folder to export (default: %(default)s)")
+    e.add_argument("--root", default=str(root) if root else None,
+                   help="the repository the outputs go into (default: %(default)s)")
     e.add_argument("--check", action="store_true", help="write nothing; exit 1 and name each file that differs")
     e.set_defaults(func=run)
 
@@ -38,6 +47,8 @@ def run(args):
     unknown = sorted(set(chosen) - set(known))
     if unknown:
         raise PlcvecError(f"--lang {', '.join(unknown)}: no such language (known: {', '.join(known) or 'none'})")
+    if not args.root or not args.vectors:
+        raise PlcvecError("export: not in a plcvec checkout; name the repository with --root and the vectors with --vectors")
     model = load_model(args.vectors)
     root = Path(args.root)
     differ, written, total = [], 0, 0
