@@ -297,3 +297,21 @@ def test_stopping_pytest_with_the_plugin_ends_the_adapter_and_its_child(tmp_path
             proc.communicate(timeout=30)
         _reap(pids)
     assert proc.returncode == pytest.ExitCode.INTERRUPTED, out
+
+
+def test_a_stop_signal_waits_for_the_end_of_a_section_that_must_not_be_cut():
+    """Starting the adapter and recording it (or killing and reaping it) is never cut in half by
+    SIGTERM: the signal is raised when the section ends, once."""
+    from plcvec_verify.stopping import Stopped, deferred, stop_on_signals
+
+    reached = []
+    with pytest.raises(Stopped) as e:
+        with stop_on_signals():
+            with deferred():
+                os.kill(os.getpid(), signal.SIGTERM)
+                os.kill(os.getpid(), signal.SIGINT)      # ignored: one stop is enough
+                time.sleep(0.1)
+                reached.append("end of the section")
+            reached.append("after the section")
+    assert reached == ["end of the section"] and e.value.signum == signal.SIGTERM
+    assert signal.getsignal(signal.SIGTERM) is signal.SIG_DFL      # the handlers are put back

@@ -34,6 +34,7 @@ from collections import deque
 from .adapters import AdapterAbort, Answer, check_hello
 from .errors import VerifyError
 from .protocol import encode
+from .stopping import deferred
 
 READ_CHUNK = 1 << 16
 STDERR_KEEP = 2000          # characters of stderr kept per note
@@ -89,13 +90,14 @@ class StdioAdapter:
     # -- process life ---------------------------------------------------------------------------
 
     def _spawn(self):
-        try:
-            self.proc = subprocess.Popen(self.argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                         stderr=subprocess.PIPE, bufsize=0, cwd=self.cwd, env=self.env,
-                                         start_new_session=True)
-        except OSError as exc:
-            raise AdapterAbort(f"--adapter {self.command}: cannot start it: {exc.strerror or exc}")
-        _LIVE.add(self)
+        with deferred():   # started and recorded in _LIVE, or not started: never in between
+            try:
+                self.proc = subprocess.Popen(self.argv, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                             stderr=subprocess.PIPE, bufsize=0, cwd=self.cwd, env=self.env,
+                                             start_new_session=True)
+            except OSError as exc:
+                raise AdapterAbort(f"--adapter {self.command}: cannot start it: {exc.strerror or exc}")
+            _LIVE.add(self)
         for f in (self.proc.stdin, self.proc.stdout, self.proc.stderr):
             os.set_blocking(f.fileno(), False)
         self._out = b""
@@ -108,6 +110,10 @@ class StdioAdapter:
         self._stdout_open = True
 
     def _kill(self, current=None):
+        with deferred():   # a stop signal waits until the process is killed and reaped
+            self._kill_now(current)
+
+    def _kill_now(self, current):
         if self.proc is None:
             return
         # The whole group: the adapter and any children it started (a shell wrapper, an emulator).

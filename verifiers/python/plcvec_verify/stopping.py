@@ -13,6 +13,11 @@ from contextlib import contextmanager
 
 STOP_SIGNALS = (signal.SIGTERM, signal.SIGINT)
 
+# Sections that must not be cut in half (starting the adapter and registering it, killing it and
+# reaping it): a stop signal arriving inside one is raised when the outermost one ends.
+_deferring = 0
+_pending: list[int] = []
+
 
 class Stopped(BaseException):
     """The runner received a stop signal.
@@ -48,6 +53,9 @@ def stop_on_signals(signals=STOP_SIGNALS):
     def handler(signum, frame):
         for s in signals:
             signal.signal(s, signal.SIG_IGN)
+        if _deferring:
+            _pending.append(signum)
+            return
         raise Stopped(signum)
 
     previous = {s: signal.signal(s, handler) for s in signals}
@@ -56,3 +64,22 @@ def stop_on_signals(signals=STOP_SIGNALS):
     finally:
         for s, h in previous.items():
             signal.signal(s, h)
+
+
+@contextmanager
+def deferred():
+    """Hold a stop signal until the block ends, so the block is never cut in half.
+
+    Without it, a SIGTERM arriving between the fork of the adapter and the line that records it
+    would leave a process that nothing knows to end.
+    """
+    global _deferring
+    _deferring += 1
+    try:
+        yield
+    finally:
+        _deferring -= 1
+        if not _deferring and _pending:
+            signum = _pending.pop()
+            _pending.clear()
+            raise Stopped(signum)
