@@ -9,9 +9,19 @@ public final class DeviceSizes {
     public static final DeviceSizes UNSTATED = new DeviceSizes(Map.of());
 
     private final Map<String, Integer> sizes;
+    // The same by device type id (the high half of Address.key()): checked on every execution.
+    private final long[] kinds;
+    private final int[] points;
 
     public DeviceSizes(Map<String, Integer> sizes) {
         this.sizes = Collections.unmodifiableMap(new LinkedHashMap<>(sizes));
+        this.kinds = new long[sizes.size()];
+        this.points = new int[sizes.size()];
+        int i = 0;
+        for (Map.Entry<String, Integer> e : this.sizes.entrySet()) {
+            kinds[i] = Address.of(e.getKey() + "0").key() >>> 32;
+            points[i++] = e.getValue();
+        }
     }
 
     /** Points of device type {@code kind}, or -1 when the vector does not state it. */
@@ -22,12 +32,13 @@ public final class DeviceSizes {
 
     /** Whether {@code count} points from {@code base} all exist; an unstated type is taken to exist. */
     public boolean inRange(Address base, int count) {
-        Integer n = sizes.get(base.kind());
-        if (n == null) {
-            return true;
+        long kind = base.key() >>> 32;
+        for (int i = 0; i < kinds.length; i++) {
+            if (kinds[i] == kind) {
+                return base.number() >= 0 && (long) base.number() + count <= points[i];
+            }
         }
-        long last = (long) base.number() + count;
-        return base.number() >= 0 && last <= n;
+        return true;
     }
 
     public Map<String, Integer> asMap() {

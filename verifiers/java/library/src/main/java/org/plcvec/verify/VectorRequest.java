@@ -28,6 +28,10 @@ public class VectorRequest {
     final int listed;             // initial.devices.size()
     private final Family familyName;
     private final Instruction instructionName;
+    // The operands again as arrays: a lookup by the manual's name is a few reference comparisons
+    // (field names are interned by the JSON parser, like the literals callers pass).
+    private final String[] operandNames;
+    private final Operand[] operandValues;
 
     VectorRequest(String id, String family, String instruction, DeviceSizes sizes, Map<String, Operand> operands,
                   Set<String> scratch, List<Step> steps, Address[] slots, int[] initial, boolean[] compared, int listed) {
@@ -44,6 +48,8 @@ public class VectorRequest {
         this.listed = listed;
         this.familyName = Family.byId(family);
         this.instructionName = Instruction.byMnemonic(instruction);
+        this.operandNames = operands.keySet().toArray(new String[0]);
+        this.operandValues = operands.values().toArray(new Operand[0]);
     }
 
     VectorRequest(VectorRequest r) {
@@ -87,6 +93,12 @@ public class VectorRequest {
 
     /** The operand named {@code name} as the manual names it ({@code s1}, {@code D1}, {@code C}). */
     public Operand operand(String name) {
+        String[] names = operandNames;
+        for (int i = 0; i < names.length; i++) {
+            if (names[i] == name) {
+                return operandValues[i];
+            }
+        }
         Operand o = operands.get(name);
         if (o == null) {
             throw new IllegalStateException("vector " + id + " has no operand " + name + " (has " + operands.keySet() + ")");

@@ -46,6 +46,21 @@ final class Contact {
          * FX5 {@code <form><kind><symbol>} with kind TM or DT, or CP1E {@code <form> <symbol>DT}
          * (kind "CP1E"); null when the instruction is neither.
          */
+        /** By the generated instruction name: an array index, for the hot path. */
+        private static final Mnemonic[] BY_NAME = new Mnemonic[org.plcvec.spec.Instruction.values().length];
+
+        static {
+            for (org.plcvec.spec.Instruction i : org.plcvec.spec.Instruction.values()) {
+                BY_NAME[i.ordinal()] = read(i.mnemonic());
+            }
+        }
+
+        /** The instruction of {@code vector}, read once per instruction. */
+        static Mnemonic of(org.plcvec.verify.VectorRequest vector) {
+            org.plcvec.spec.Instruction name = vector.instructionName();
+            return name != null ? BY_NAME[name.ordinal()] : parse(vector.instruction());
+        }
+
         static Mnemonic parse(String instruction) {
             Mnemonic m = CACHE.get(instruction);
             if (m == null) {

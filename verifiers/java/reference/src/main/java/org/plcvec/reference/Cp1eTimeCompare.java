@@ -49,7 +49,7 @@ public class Cp1eTimeCompare implements Emulator.Scan {
     protected final Operand c;
 
     public Cp1eTimeCompare(VectorRequest vector, Memory memory, Settings settings) {
-        Contact.Mnemonic m = Contact.Mnemonic.parse(vector.instruction());
+        Contact.Mnemonic m = Contact.Mnemonic.of(vector);
         if (m == null || !m.kind().equals("CP1E")) {
             throw new IllegalArgumentException("not a CP1E time comparison: " + vector.instruction());
         }

@@ -41,7 +41,7 @@ public class Fx5Compare implements Emulator.Scan {
     protected final Operand s3;
 
     public Fx5Compare(VectorRequest vector, Memory memory, Field[] fields, Settings settings) {
-        Contact.Mnemonic m = Contact.Mnemonic.parse(vector.instruction());
+        Contact.Mnemonic m = Contact.Mnemonic.of(vector);
         if (m == null || !m.kind().equals(fields == TIME ? "TM" : "DT")) {
             throw new IllegalArgumentException("not an FX5 " + (fields == TIME ? "time" : "date") + " comparison: "
                     + vector.instruction());
