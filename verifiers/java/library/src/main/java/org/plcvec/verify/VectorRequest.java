@@ -29,7 +29,7 @@ public class VectorRequest {
     private final Family familyName;
     private final Instruction instructionName;
     // The operands again as arrays: a lookup by the manual's name is a few reference comparisons
-    // (field names are interned by the JSON parser, like the literals callers pass).
+    // (the names are interned here, like the string literals callers pass).
     private final String[] operandNames;
     private final Operand[] operandValues;
 
@@ -48,7 +48,7 @@ public class VectorRequest {
         this.listed = listed;
         this.familyName = Family.byId(family);
         this.instructionName = Instruction.byMnemonic(instruction);
-        this.operandNames = operands.keySet().toArray(new String[0]);
+        this.operandNames = operands.keySet().stream().map(String::intern).toArray(String[]::new);
         this.operandValues = operands.values().toArray(new Operand[0]);
     }
 
@@ -96,6 +96,11 @@ public class VectorRequest {
         String[] names = operandNames;
         for (int i = 0; i < names.length; i++) {
             if (names[i] == name) {
+                return operandValues[i];
+            }
+        }
+        for (int i = 0; i < names.length; i++) {
+            if (names[i].equals(name)) {
                 return operandValues[i];
             }
         }
