@@ -143,21 +143,7 @@ where
             .expectations
             .or_else(|| std::env::var_os("PLCVEC_EXPECTATIONS").filter(|p| !p.is_empty()).map(PathBuf::from));
         let known = expectations.map(KnownFailures::load).transpose()?;
-        let unknown = selection.unknown_names(suite);
-        if !unknown.is_empty() {
-            return Err(Error::new(format!(
-                "the selection names what the suite does not have: {}",
-                unknown.join(", ")
-            )));
-        }
-        let vectors = selection.apply(suite.vectors());
-        if vectors.is_empty() {
-            return Err(Error::new(format!(
-                "the selection keeps none of the {} vectors of {}",
-                suite.vectors().len(),
-                suite.source()
-            )));
-        }
+        let vectors = selection.select(suite)?;
         let probe = (self.factory)();
         let plan = Plan::new(suite, vectors, &probe.interpretations())?;
         let supported: Vec<bool> = plan.vectors().iter().map(|v| probe.supports(v.instruction())).collect();

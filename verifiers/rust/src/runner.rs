@@ -6,7 +6,7 @@ use std::collections::HashMap;
 
 use crate::choices::Choices;
 use crate::compare::{describe, judge, Status, Verdict};
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::expect::{check_choices, Plan};
 use crate::generated::names::Instruction;
 use crate::implementation::Implementation;
@@ -54,18 +54,7 @@ pub fn run<'s, I: Implementation + ?Sized>(
     selection: &Selection,
     known: Option<&KnownFailures>,
 ) -> Result<Report<'s>> {
-    let unknown = selection.unknown_names(suite);
-    if !unknown.is_empty() {
-        return Err(Error::new(format!("the selection names what the suite does not have: {}", unknown.join(", "))));
-    }
-    let vectors = selection.apply(suite.vectors());
-    if vectors.is_empty() {
-        return Err(Error::new(format!(
-            "the selection keeps none of the {} vectors of {}",
-            suite.vectors().len(),
-            suite.source()
-        )));
-    }
+    let vectors = selection.select(suite)?;
     let choices = implementation.interpretations();
     let plan = Plan::new(suite, vectors, &choices)?;
     let verdicts = judge_plan(&plan, implementation);

@@ -91,6 +91,28 @@ impl Selection {
         vectors.iter().filter(|v| self.matches(v)).collect()
     }
 
+    /// The vectors of `suite` the selection keeps, refusing a selection that names a family,
+    /// instruction, tag or interpretation the suite lacks, or that keeps nothing: a gate never
+    /// passes by accident.
+    pub fn select<'s>(&self, suite: &'s crate::Suite) -> Result<Vec<&'s Vector>> {
+        let unknown = self.unknown_names(suite);
+        if !unknown.is_empty() {
+            return Err(Error::new(format!(
+                "the selection names what the suite does not have: {}",
+                unknown.join(", ")
+            )));
+        }
+        let vectors = self.apply(suite.vectors());
+        if vectors.is_empty() {
+            return Err(Error::new(format!(
+                "the selection keeps none of the {} vectors of {}",
+                suite.vectors().len(),
+                suite.source()
+            )));
+        }
+        Ok(vectors)
+    }
+
     /// Names in the selection that the suite does not have (a misspelt family selects nothing,
     /// which must not read as a passing run).
     pub fn unknown_names(&self, suite: &crate::Suite) -> Vec<String> {
