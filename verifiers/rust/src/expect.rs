@@ -21,8 +21,6 @@ pub struct Expected {
     /// Per step: every slot's value after the step (scratch slots hold their initial value and
     /// are never compared).
     pub states: Vec<Vec<Value>>,
-    /// Per step: every slot's value before the execution (after `set`), for the messages.
-    pub befores: Vec<Vec<Value>>,
     /// The interpretations the vector depends on, with the alternative it is judged by.
     pub choices: Vec<(String, String)>,
     /// The outcome category under these alternatives (`value`, `error`, `implementation-defined`).
@@ -60,13 +58,11 @@ impl Expected {
         };
         let mut state = vector.initial().to_vec();
         let mut states = Vec::with_capacity(chosen.steps.len());
-        let mut befores = Vec::with_capacity(chosen.steps.len());
         let mut results = Vec::with_capacity(chosen.steps.len());
         for (step, expect) in vector.steps().iter().zip(&chosen.steps) {
             for &(slot, v) in step.set() {
                 state[slot] = v;
             }
-            befores.push(state.clone());
             for &(slot, v) in &expect.devices {
                 state[slot] = v;
             }
@@ -84,7 +80,20 @@ impl Expected {
                 vector.id()
             )));
         }
-        Ok(Expected { results, states, befores, choices: applied, category: chosen.category.clone() })
+        Ok(Expected { results, states, choices: applied, category: chosen.category.clone() })
+    }
+}
+
+impl Expected {
+    /// A slot's value before step `step` executed (after its `set`): shown beside a difference.
+    /// Worked out only for a failure, so a passing run never pays for it.
+    pub fn before(&self, vector: &Vector, step: usize, slot: usize) -> Value {
+        let set = vector.steps().get(step).and_then(|s| s.set().iter().find(|(i, _)| *i == slot));
+        match (set, step) {
+            (Some(&(_, v)), _) => v,
+            (None, 0) => vector.initial()[slot],
+            (None, _) => self.states[step - 1][slot],
+        }
     }
 }
 

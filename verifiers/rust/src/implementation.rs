@@ -182,7 +182,7 @@ impl<'a> Steps<'a> {
                     let scratch = self.vector.scratch();
                     for (i, (g, w)) in got.iter().zip(want).enumerate() {
                         if g != w && !scratch[i] {
-                            let before = expected.befores[step][i];
+                            let before = expected.before(self.vector, step, i);
                             problems.push(Problem::new(
                                 Some(step),
                                 self.vector.devices()[i].name(),
@@ -238,7 +238,7 @@ impl<'a> Steps<'a> {
                         self.vector.devices()[i].name(),
                         Field::Value(*w),
                         actual,
-                        Some(expected.befores[step][i]),
+                        Some(expected.before(self.vector, step, i)),
                     ));
                 }
                 problems.sort_by(|a, b| (a.step, &a.field).cmp(&(b.step, &b.field)));
