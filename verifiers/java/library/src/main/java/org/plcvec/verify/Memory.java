@@ -182,7 +182,23 @@ public final class Memory {
 
     /** A copy of the image as it is now. */
     public DeviceImage snapshot() {
-        return new DeviceImage(Arrays.copyOf(addresses, size), Arrays.copyOf(values, size), null);
+        int n = 0;
+        for (int i = 0; i < size; i++) {
+            n += values[i] != Values.ABSENT ? 1 : 0;
+        }
+        if (n == size) {
+            return new DeviceImage(Arrays.copyOf(addresses, size), Arrays.copyOf(values, size), null);
+        }
+        // Devices the vector names for later (a step's `set`) hold nothing yet: not in the image.
+        Address[] a = new Address[n];
+        int[] v = new int[n];
+        for (int i = 0, j = 0; i < size; i++) {
+            if (values[i] != Values.ABSENT) {
+                a[j] = addresses[i];
+                v[j++] = values[i];
+            }
+        }
+        return new DeviceImage(a, v, null);
     }
 
     @Override

@@ -41,6 +41,17 @@ class MemoryTest {
     }
 
     @Test
+    void aDeviceNamedOnlyByALaterSetIsNotInTheImageUntilWritten() {
+        // A vector whose step 1 sets D5, which initial.devices does not list.
+        Memory m = new Memory(DeviceSizes.UNSTATED, new Address[] {Address.of("D1"), Address.of("D5")},
+                new int[] {3, Values.ABSENT});
+        assertEquals(Map.of("D1", 3), m.snapshot().toMap());
+        assertEquals(0, m.word("D5"));
+        m.setWord("D5", 9);
+        assertEquals(Map.of("D1", 3, "D5", 9), m.snapshot().toMap());
+    }
+
+    @Test
     void namedDevicesAreTheirOwnType() {
         Address er = Address.of("P_ER");
         assertEquals("P_ER", er.kind());
