@@ -48,7 +48,8 @@ def run(args):
 
     families = load_spec(args.spec_dir)
     golden, by_family = bundle.golden_checked(families, vectors_dir)
-    text, report = changes.changes_text(__version__, bundle.current_set(golden, __version__), previous, args.previous)
+    current = bundle.current_set(golden, __version__)
+    text, report = changes.changes_text(__version__, current, previous, args.previous)
     if report is not None:
         old_schema = str(previous.manifest.get("schema_version", ""))
         changes.check_version(__version__, previous.manifest.get("generator_version", ""),
@@ -63,8 +64,8 @@ def run(args):
         written.append(str(target))
     t = report["totals"] if report else None
     summary = "first release" if report is None else ", ".join(f"{n} {k}" for k, n in t.items() if n) or "no vector differs"
-    print(f"plcvec release {__version__}: {len(files)} files, {sum(len(f['vectors']) for f in bundle.current_set(golden, __version__).families.values())} "
-          f"vectors ({summary}); wrote {', '.join(written)}")
+    print(f"plcvec release {__version__}: {len(files)} files, {current.count()} vectors ({summary}); "
+          f"wrote {', '.join(written)}")
     return 0
 
 
