@@ -8,6 +8,8 @@ the expectation of every combination of the touched ones.
 import itertools
 from typing import NamedTuple
 
+from plcvec.coverage.derive import CLASSIFIERS
+from plcvec.coverage.model import model_of
 from plcvec.engine import make_engine
 from plcvec.spec.knobs import resolve
 
@@ -63,6 +65,11 @@ class VectorBuilder:
         # vector cites because the generator tagged it for that reason.
         self.every_vector = set(coverage.get("every_vector", []))
         self.by_tag = coverage.get("by_tag", {})
+        # The coverage model's cells each vector exercises, under any reading: {vector id: frozenset}.
+        self.model = model_of(fam)
+        self.classifier = CLASSIFIERS[fam.kind](fam.doc, self.sizes) if self.model else None
+        self.cells = {}
+        self._cell_memo, self._cells_seen = {}, set()
 
     def engine(self, choices):
         """The engine under `choices` (interpretation id -> alternative id), as plain as it can be."""
@@ -99,6 +106,8 @@ class VectorBuilder:
                 state.update(step["set"])
             before = dict(state)
             result = engine.execute(instr, operands, state, step, ctx, trace)
+            if self.classifier is not None:
+                self._cells_seen.add(self._cell(index, instr, operands, before, step, ctx["exercised"][-1]))
             if len(state) != len(before):
                 raise GeneratorBug(f"engine wrote {sorted(set(state) - set(before))} not in the initial state")
             expect = {}
@@ -136,6 +145,13 @@ class VectorBuilder:
                     pending.append(choice)
         return done
 
+    def _cell(self, index, instr, operands, before, step, record):
+        """The model cell of one execution; the same inputs recur under every reading of a vector."""
+        key = (index, tuple(before.items()), tuple(record.values()))
+        if key not in self._cell_memo:
+            self._cell_memo[key] = self.model.cell(self.classifier.classify(instr, operands, before, step, record))
+        return self._cell_memo[key]
+
     def vector(self, instruction, key, *, tags, description, operands, devices, steps,
                scratch=(), clauses=(), printed=None):
         instr = self.instructions[instruction]
@@ -145,7 +161,11 @@ class VectorBuilder:
         self.ids.add(vid)
         for error in _errors_in_code(operands):
             raise GeneratorBug(f"{vid}: {error}")
+        self._cell_memo, self._cells_seen = {}, set()
         expects, final, outcome, trace, touched, alternatives = self.expectations(instr, operands, devices, steps, scratch)
+        # What the vector exercises for the coverage model, under every reading it carries: the runs
+        # cover every behaviour (a combination not run reads nothing that would change it).
+        self.cells[vid] = frozenset(self._cells_seen)
         if touched:
             outcome = {"category": "implementation-defined", "interpretations": touched,
                        "default": outcome,

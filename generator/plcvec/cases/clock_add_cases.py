@@ -2,6 +2,7 @@
 each range error of each field of each operand, device range at the top, source = destination,
 and the pulse form over a sequence of scans."""
 from plcvec.cases.common import Operands, signed_boundaries, top_head
+from plcvec.cases.model_cases import model_cases
 from plcvec.cases.random_cases import draw_addition
 from plcvec.engine.words import operand_words, split_address
 
@@ -130,6 +131,53 @@ class AddCases:
                             values={s1: a, s2: a}, steps=[{"en": False}], flags_on=True,
                             clauses=[self.b.instructions[instr]["clause"]])
 
+    # -- the coverage model's rows -----------------------------------------------------------------
+    def sum_values(self, where, same):
+        """Addends whose sum falls `where` against the wrap (plcvec.coverage.add_cells.sum_classes);
+        with `same` both addends are one device, so they are equal."""
+        zero = {n: 0 for n in self.names}
+        top = self.fields[0]
+        half = dict(zero, **{top["name"]: (top["max"] + 1) // 2})
+        maxall = {f["name"]: f["max"] for f in self.fields}
+        one = dict(zero, **{self.names[-1]: 1})
+        pairs = {"zero": (zero, zero), "exact-wrap": (half, half), "above-wrap": (maxall, maxall),
+                 "below-wrap": (one, one) if same else (self.ops.values(), one)}
+        return pairs.get(where, (self.ops.values(), self.ops.values()) if not same else (one, one))
+
+    def from_row(self, row, key):
+        """The vector of one row of the coverage model: {derivation: class}."""
+        s1, s2 = self.addends
+        alias = row.get("aliasing", "distinct")
+        a, b = self.sum_values(row.get("sum"), alias == f"{s1}={s2}")
+        values = {s1: dict(a), s2: dict(b)}
+        heads, initial = {}, None
+        data = row.get("data-validity", "valid")
+        if data.endswith(".device-range"):
+            op = data.split(".")[0]
+            prefix = split_address(self.place[op])[0]
+            heads[op] = top_head(prefix, self.b.sizes[prefix], self.words, 1)
+        elif data != "valid":
+            op, name, kind = data.split(".")
+            f = self.ops.by_name[name]
+            codec, total = self.ops.codec, sum(self.ops.codec.to_units(v) for v in values.values())
+            values[op][name] = f["min"] - 1 if kind == "below" else f["max"] + 1
+            # Under the reading that still adds (TADD-ON-ERROR), keep the sum the row asks for: the
+            # other addend makes up the difference, where a valid value can.
+            other = s2 if op == s1 else s1
+            rest = total - codec.to_units(values[op])
+            if alias == "distinct" and 0 <= rest < codec.modulus():
+                values[other] = codec.from_units(rest)
+        if alias != "distinct":
+            first, second = alias.split("=")
+            heads[second] = heads.get(first, self.place[first])
+            if second == self.result:
+                initial = self.ops.words(values[first])
+        en = row.get("execution-condition", "rising")
+        steps = {"rising": [{"en": True}], "held": [{"en": True}, {"en": True}], "off": [{"en": False}]}[en]
+        return self.case(row["instructions"], key, tags=["model"], values=values, heads=heads, steps=steps,
+                         flags_on=row.get("flags-before") == "on", result_initial=initial,
+                         description=f"Coverage model row: {', '.join(f'{k} {v}' for k, v in row.items() if v is not None)}.")
+
     def random(self):
         gen = self.doc["generation"]
         for d in draw_addition(self.fields, gen["seed"], gen["random_examples"]):
@@ -140,5 +188,7 @@ class AddCases:
 
 def clock_add_cases(fam, builder):
     c = AddCases(fam, builder)
+    vectors = []
     for family in (c.manual_examples, c.carries, c.range_errors, c.device_range, c.same_device, c.pulse, c.random):
-        yield from family()
+        vectors += family()
+    return vectors + model_cases(builder, vectors, c.from_row, ("instructions",))

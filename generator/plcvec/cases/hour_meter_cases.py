@@ -1,5 +1,6 @@
 """Cases for `hour_meter` families: scan sequences with the elapsed time of each scan."""
 from plcvec.cases.common import Operands
+from plcvec.cases.model_cases import model_cases
 from plcvec.cases.random_cases import draw_hour_meter
 from plcvec.engine.words import operand_words
 
@@ -76,6 +77,13 @@ class HourCases:
                         steps=self.on(self.unit), description=f"Constant preset {top['max']}: D1 starts at it, so one scan turns D2 on.")
         yield self.case("constant/zero", tags=["constant", "boundary", "zero-preset"], preset=0, measured=self.hms(),
                         steps=self.on(0) + self.on(self.unit), description="Constant preset 0.")
+        # A constant counts hours: D1 below the constant in hours is below it, whatever the
+        # constant would be in minutes or seconds.
+        for hours, start in ((2, 2 * per_top - 2), (90, 90 * 60), (1000, 1000 * 60)):
+            yield self.case(f"constant/{hours}-hours", tags=["constant"], preset=hours, measured=self.seconds(start),
+                            steps=self.on(self.unit, 2),
+                            description=f"Constant preset {hours} ({self.cf} only): D1 from {start} s, two scans of 1 s; "
+                                        f"reached only at {hours * per_top} s.")
         yield self.case("register/zero", tags=["boundary", "zero-preset"], preset=self.hms(), measured=self.hms(),
                         steps=self.on(self.unit), description="Preset 0:00:00 in data registers.")
 
@@ -117,6 +125,32 @@ class HourCases:
                                                      "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(self.seconds(self.ops.codec.modulus() // (self.fields[0]["max"] + 1)))))}],
                         description="After D2 turned on the preset is raised above D1.")
 
+    # -- the coverage model's rows -----------------------------------------------------------------
+    def from_row(self, row, key):
+        """The vector of one execution for a row of the coverage model: {derivation: class}."""
+        codec = self.ops.codec
+        per_top = codec.modulus() // (self.fields[0]["max"] + 1)   # seconds in one unit of the top field
+        whole = {"none": 0, "one": 1, "several": 3}[row.get("whole-seconds", "one")]
+        on = row.get("input", "on") == "on"
+        if row.get("wrap") == "yes":
+            after = max(whole - 1, 0)
+            before = (codec.modulus() - whole + after) % codec.modulus()
+        else:
+            after = 5 * per_top
+            before = after - whole
+        reach = row.get("reach", "at")
+        target = {"below": after + per_top, "at": after, "above": after - per_top if after >= per_top else 0}.get(reach, after)
+        constant = row.get("preset-operand") == "constant"
+        preset = target // per_top if constant else self.seconds(target)
+        validity = row.get("preset-validity")
+        if validity not in (None, "valid") and not constant:
+            name = validity.split(".")[0]
+            preset = dict(preset, **{name: self.ops.by_name[name]["max"] + 1})
+        step = {"input": on, "elapsed_ms": whole * self.unit + (self.unit // 2 if whole == 0 else 0)}
+        return self.case(key, tags=["model"], preset=preset, measured=self.seconds(before), steps=[step],
+                         output=row.get("output-before") == "on", error=row.get("error-before") == "on",
+                         description=f"Coverage model row: {', '.join(f'{k} {v}' for k, v in row.items() if v is not None)}.")
+
     def random(self):
         gen = self.doc["generation"]
         for d in draw_hour_meter(self.fields, gen["seed"], gen["random_examples"]):
@@ -126,5 +160,7 @@ class HourCases:
 
 def hour_meter_cases(fam, builder):
     c = HourCases(fam, builder)
+    vectors = []
     for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.input_off, c.random):
-        yield from family()
+        vectors += family()
+    return vectors + model_cases(builder, vectors, c.from_row, ())

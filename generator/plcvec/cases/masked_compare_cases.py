@@ -3,6 +3,7 @@ nonexistent dates, device range, current clock, latching, and random draws."""
 import itertools
 
 from plcvec.cases.common import Operands, hexw, signed_boundaries, top_head
+from plcvec.cases.model_cases import model_cases
 from plcvec.cases.random_cases import draw_compare
 from plcvec.engine.words import split_address
 
@@ -346,6 +347,65 @@ class CompareCases:
                             description=f"{self.first} is the calendar/clock area {area['words'][0]} (present time), {rel} {self.second}.",
                             s1=self.ops.words(now), s2=self.ops.words(other), sel=self.all_fields())
 
+    # -- the coverage model's rows -----------------------------------------------------------------
+    def selector_of(self, cls, clock):
+        """A selector word of the class `cls` (plcvec.coverage.compare_cells.selector_classes)."""
+        names, reserved = self.names, self.sel["reserved_bits"]
+        if cls == "reserved":   # the reserved bit and no field bit (with mask polarity: every field compared)
+            return (1 << reserved[0]) | ((1 << self.clock_bit["bit"]) if clock else 0)
+        if cls == "reserved+fields":
+            return self.selector(names[:1], clock, extra=1 << reserved[-1])
+        chosen = {"all": names, "none": [], "some": names[::2][:2]}.get(cls)
+        if chosen is None:
+            chosen = [n for n in names if n != cls[len("all-but-"):]] if cls.startswith("all-but-") else cls.split("+")
+        return self.selector(chosen, clock)
+
+    def from_row(self, row, key):
+        """The vector of one row of the coverage model: {derivation: class}, or None if it cannot be built."""
+        clock = row.get("source-bit") == "current-clock"
+        sel = self.selector_of(row["selector-classes"], clock)
+        want = 1 if self.sel["polarity"] == "select" else 0
+        chosen = [n for n in self.names if (sel >> self.sel["field_bits"][n] & 1) == want]
+        data = row.get("data-validity", "valid")
+        owner, bad_field, kind = (data.split(".") + [None, None])[:3] if data.count(".") == 2 else (None, None, None)
+        ordering = row.get("orderings", "eq")
+        deciders = [n for n in chosen if n != bad_field] or chosen
+        a, b = self.pair_with(deciders[0] if deciders and ordering in ("lt", "gt") else None,
+                              ordering if ordering in ("lt", "gt") else "eq")
+        if data == "nonexistent":
+            date = self.doc["nonexistent_dates"]["dates"][0]
+            shift = {n: b[n] - a[n] for n in self.names}
+            a = dict(date)
+            b = {n: min(max(date[n] + shift[n], f["min"]), f["max"]) for n, f in zip(self.names, self.fields)}
+        s1, s2 = self.ops.words(a), self.ops.words(b)
+        heads = {}
+        if owner is not None:
+            f = self.ops.by_name[bad_field]
+            raw = {"below": f["min"] - 1, "above": f["max"] + 1}.get(kind)
+            if f["encoding"] == "bcd":
+                raw = self._invalid_raw(f) if raw is None else self.ops.codec.pack({bad_field: raw})[f["word"]] >> f["lsb"]
+            target = a if owner == self.first else b
+            words = self.ops.words(target, raw={bad_field: raw})
+            if owner == self.first:
+                s1 = words
+            else:
+                s2 = words
+        elif data.endswith(".device-range"):
+            op = data.split(".")[0]
+            prefix = split_address(self.place[op])[0]
+            heads[op] = top_head(prefix, self.b.sizes[prefix], self.words, 1)
+            if op == self.first:
+                s1 = s1[:self.words - 1]
+            else:
+                s2 = s2[:self.words - 1]
+        logic = row.get("preceding-logic")
+        form = row["forms"]
+        extra = {self.error_device: row.get("error-device") == "on"}
+        return self.case(form, row["conditions"], key, tags=["model"] + (["current-clock"] if clock else []),
+                         description=f"Coverage model row: {', '.join(f'{k} {v}' for k, v in row.items() if v is not None)}.",
+                         s1=s1, s2=s2, sel=sel, clock=b if clock else None, heads=heads, extra_devices=extra,
+                         rlo_in=None if logic is None else logic == "on")
+
     def random(self):
         gen = self.doc["generation"]
         for draw in draw_compare(self, gen["seed"], gen["random_examples"]):
@@ -356,6 +416,8 @@ class CompareCases:
 
 def masked_compare_cases(fam, builder):
     c = CompareCases(fam, builder)
+    vectors = []
     for family in (c.manual_examples, c.orderings, c.forms_and_logic, c.selector_classes, c.boundaries,
                    c.nonexistent_dates, c.device_range, c.current_clock, c.latching, c.clock_area, c.random):
-        yield from family()
+        vectors += family()
+    return vectors + model_cases(builder, vectors, c.from_row, ("forms", "conditions"))

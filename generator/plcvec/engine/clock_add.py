@@ -19,11 +19,15 @@ class ClockAdd:
     def execute(self, instr, operands, state, step, ctx, trace):
         en = bool(step["en"])
         previous, ctx["en"] = ctx.get("en", False), en
+        # What this execution did, for the coverage model (plcvec.coverage).
+        record = {"en_before": previous, "executed": False, "total": None, "error": None}
+        ctx.setdefault("exercised", []).append(record)
         if not en:
             return None
         trace.add(instr["clause"])
         if instr["execution"] == "rising_edge" and previous:
             return None  # the pulse form executes on the rising edge only
+        record["executed"] = True
         values = {}
         for check in self.errors["checks"]:
             failed = self._failed(check, operands, state, values, ctx["device_sizes"])
@@ -35,10 +39,11 @@ class ClockAdd:
                     trace.add(registers.get("device_clauses", {}).get(register))
                 trace.add(registers["clause"])
                 ctx["error"] = {"code": check["code"]}
+                record["error"] = check["check"]
                 if self.errors["on_error"] == "computed" and check["check"] == "field_range":
-                    self._add(values, operands, state, trace)
+                    record["total"] = self._add(values, operands, state, trace)
                 return None
-        self._add(values, operands, state, trace)
+        record["total"] = self._add(values, operands, state, trace)
         return None
 
     def _failed(self, check, operands, state, values, device_sizes):
@@ -77,3 +82,4 @@ class ClockAdd:
                 if self.flags["written"] == "always" or on:
                     state[device] = on
                     trace.add(self.flags[name].get("device_clauses", {}).get(device))
+        return total

@@ -22,6 +22,9 @@ class HourMeter:
         trace.add(instr["clause"])
         d1 = operands[self.measured]["device"]
         d2 = operands[self.output]["device"]
+        # What this execution did, for the coverage model (plcvec.coverage).
+        record = {"whole": 0, "wrapped": False, "reach": None, "error": False}
+        ctx.setdefault("exercised", []).append(record)
         if not step["input"]:
             if self.knobs["input_off"] == "reset":
                 self.codec.write(state, d1, self.codec.from_units(0))
@@ -30,6 +33,7 @@ class HourMeter:
             return None
         fraction = ctx.get("fraction", 0) + step["elapsed_ms"]
         whole, ctx["fraction"] = divmod(fraction, self.units)
+        record["whole"] = whole
         if whole and state[d2]:
             trace.add(self.doc["data"].get("keep_measuring_clause"))  # D1 goes on growing past the preset
         total = self.codec.to_units(self.codec.read(state, d1)) + whole
@@ -37,6 +41,7 @@ class HourMeter:
         if total >= modulus:
             trace.add(self.doc["wrap"]["clause"])
             ctx["wrapped_since_on"] = True
+            record["wrapped"] = True
         total %= modulus
         self.codec.write(state, d1, self.codec.from_units(total))
 
@@ -45,11 +50,13 @@ class HourMeter:
             trace.add(self.error["clause"])
             state[self.error["device"]] = True
             ctx["error"] = {"device": self.error["device"]}
+            record["error"] = True
             if state[d2]:
                 trace.add(self.error["output_off_clause"])
                 state[d2] = False
             return None
         reached = total >= self.codec.to_units(preset)
+        record["reach"] = "below" if not reached else "at" if total == self.codec.to_units(preset) else "above"
         if self.codec.to_units(preset) == 0 and self.knobs["zero_preset"] == "never":
             reached = False
         if reached:

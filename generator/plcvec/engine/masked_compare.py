@@ -43,11 +43,15 @@ class MaskedCompare:
         err = self.validity["error"]
         if state[err["device"]] and err.get("latch", True):
             trace.add(err.get("latch_clause"))
+        # What this execution did, for the coverage model (plcvec.coverage): executed, ordering, error.
+        record = {"executed": False, "ordering": None, "error": False}
+        ctx.setdefault("exercised", []).append(record)
         skip = logic.skipped(form["logic"], rlo_in, self.logic)
         if skip is not None:
             return skip
         trace.add(cond["clause"])
         outcome = self.evaluate(operands, state, step, ctx, trace)
+        record.update(executed=True, error=outcome == ERROR, ordering=None if outcome == ERROR else outcome)
         return logic.combine(form["logic"], rlo_in, self.contact(cond["symbol"], outcome))
 
     def evaluate(self, operands, state, step, ctx, trace):

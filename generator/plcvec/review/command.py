@@ -25,7 +25,8 @@ def register(sub, spec_parent):
     r.add_argument("--manual-dir", metavar="DIR",
                    help="the manual text files; every provenance quote of the spec must be found in them")
     r.add_argument("--check", action="store_true",
-                   help="exit 1 on a missing quote, an uncovered clause, or an audit disagreement no erratum records")
+                   help="exit 1 on a missing quote, an uncovered clause, a combination of the coverage model no "
+                        "vector exercises, or an audit disagreement no erratum records")
     r.add_argument("--no-write", action="store_true", help="with --check: only check, write no report")
     r.set_defaults(func=run)
 
@@ -46,8 +47,9 @@ def run(args):
     quotes = check_quotes(families, manual) if manual is not None else None
     # The vectors this spec generates, built in process (not read from vectors/), so the review always
     # describes the spec given by --spec-dir; the files' serialization is not needed here.
-    vectors = {fam.name: family_vectors(fam) for fam in families}
-    model = build_model(families, vectors, quotes=quotes, audit=run_audit(families))
+    cells = {fam.name: {} for fam in families}
+    vectors = {fam.name: family_vectors(fam, cells[fam.name]) for fam in families}
+    model = build_model(families, vectors, quotes=quotes, audit=run_audit(families), cells=cells)
     out = Path(args.out)
     if not args.no_write:
         if out.exists() and not out.is_dir():
@@ -69,4 +71,5 @@ def _headline(s, spec_dir):
         f"{s['quotes_missing']} of {s['quotes_checked']} quotes missing"
     audit = f"{s['audit_unrecorded']} unrecorded audit disagreements" if s["audit_available"] else "audit not available"
     return (f"plcvec review of {spec_dir}: {s['families']} families, {s['clauses']} clauses, {s['vectors']} vectors; {quotes}; "
-            f"{s['uncovered']} uncovered clauses; {audit}")
+            f"{s['uncovered']} uncovered clauses; {s['model_missing']} of {s['model_required']} coverage-model "
+            f"combinations with no vector; {audit}")

@@ -98,3 +98,65 @@ def category_counts(vectors):
     for vector in vectors:
         counts[category(vector)] += 1
     return counts
+
+
+# How many missing combinations the report lists per family (the check names every one).
+MODEL_SHOWN = 50
+
+
+def model_coverage(fam, cells, problems, link):
+    """The family's coverage model beside what its vectors exercise (None when the spec has no model).
+
+    Each requirement (a pair of classes of two dimensions, or a cell of a product) is met by the
+    vectors whose executions fall in it, as the engine's record classifies them; a requirement no
+    vector meets is a problem, reported at the line of the model in the spec.
+    """
+    from plcvec.coverage.model import model_of
+
+    model = model_of(fam)
+    if model is None:
+        return None
+    spec = model.spec
+    report = model.report(cells)
+    missing = [(req, spec_line(fam, req)) for req, ids in report if not ids]
+    for req, line in missing:
+        what = "pair of classes (strength pairwise)" if req.kind == "pair" else f"cell of product {req.source[1] + 1}"
+        problems.add("model", fam, line, f"coverage model: no vector exercises {req.text()} ({what})",
+                     link("family", None) + "-model")
+    counts = {}
+    for req, ids in report:
+        c = counts.setdefault(req.kind, {"required": 0, "met": 0})
+        c["required"] += 1
+        c["met"] += bool(ids)
+    per_class = {}
+    for vid, cs in cells.items():
+        for cell in cs:
+            for d, c in cell:
+                if c is not None:
+                    per_class.setdefault((d, c), set()).add(vid)
+    dims = [{"id": d["id"], "says": d["says"], "derive": d["derive"],
+             "when": ", ".join(f"{k} in {', '.join(v)}" for k, v in d.get("when", {}).items()),
+             "classes": [{"name": c, "vectors": len(per_class.get((d["id"], c), ()))}
+                         for c in model.by_id[d["id"]].classes]}
+            for d in spec["dimensions"]]
+    return {
+        "strength": spec["strength"], "anchor": link("family", None) + "-model", "line": fam.line_of("coverage", "model"),
+        "dimensions": dims,
+        "products": [{"dimensions": " × ".join(p["dimensions"]), "why": p["why"],
+                      "cells": sum(1 for r, _ in report if r.source == ("products", i)),
+                      "met": sum(1 for r, ids in report if r.source == ("products", i) and ids)}
+                     for i, p in enumerate(spec.get("products", []))],
+        "exclude": [{"classes": "; ".join(f"{k} = {v if isinstance(v, str) else ', '.join(v)}" for k, v in e["classes"].items()),
+                     "why": e["why"]} for e in spec.get("exclude", [])],
+        "counts": counts,
+        "required": len(report),
+        "missing": [req.text() for req, _ in missing],
+        "missing_shown": [req.text() for req, _ in missing[:MODEL_SHOWN]],
+    }
+
+
+def spec_line(fam, req):
+    """The line of the spec a requirement comes from: its product, or the model's strength."""
+    if req.kind == "product":
+        return fam.line_of("coverage", "model", *req.source)
+    return fam.line_of("coverage", "model", "strength")

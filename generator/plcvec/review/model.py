@@ -58,7 +58,7 @@ def run_audit(families):
     return importlib.import_module("plcvec.audit").audit_families(families)
 
 
-def build_model(families, vectors_by_family, *, quotes=None, audit=None):
+def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=None):
     """The whole review.
 
     quotes: None when no manual folder was given, else (checked quotes, missing quotes) from
@@ -73,8 +73,8 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None):
         kind, _, ident = q.owner.partition(" ")
         problems.add("quote", by_name[q.family], q.line, m.message(),
                      anchor(kind, q.family, ident) if kind in _ANCHOR_PREFIX else anchor("family", q.family))
-    fams = [_FamilyView(fam, vectors_by_family[fam.name], quotes is not None, missing, problems).build(audit)
-            for fam in families]
+    fams = [_FamilyView(fam, vectors_by_family[fam.name], quotes is not None, missing, problems).build(
+                audit, (cells or {}).get(fam.name)) for fam in families]
     all_vectors = [v for fam in families for v in vectors_by_family[fam.name]]
     audit_rows = [f for fm in fams for f in fm["audit"]]
     coverage_rows = [r for fm in fams for r in fm["coverage"]]
@@ -95,6 +95,8 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None):
         "audit_headline": audit.headline() if audit is not None else None,
         "audit_findings": len(audit_rows),
         "audit_unrecorded": sum(f["problem"] for f in audit_rows),
+        "model_required": sum(fm["model"]["required"] for fm in fams if fm["model"]),
+        "model_missing": sum(len(fm["model"]["missing"]) for fm in fams if fm["model"]),
         "problems": len(problems.items),
     }
     return {"summary": summary, "problems": problems.items, "problem_lines": problems.lines(),
@@ -120,7 +122,7 @@ class _FamilyView:
         return {"quote": node["quote"], "file": node.get("file") or self.doc["manual"], "section": node.get("section", ""),
                 "line": line, "status": status, "reason": reason}
 
-    def build(self, audit):
+    def build(self, audit, cells=None):
         fam, doc = self.fam, self.doc
         coverage = cov.family_coverage(fam, self.vectors)
         audit_rows = _audit_rows(fam, audit, self.problems, self.link)
@@ -143,6 +145,7 @@ class _FamilyView:
             "audit": audit_rows,
             "audit_available": audit is not None,
             "coverage": self.coverage(coverage),
+            "model": cov.model_coverage(fam, cells, self.problems, self.link) if cells is not None else None,
         }
 
     def clauses(self, coverage):

@@ -1,5 +1,6 @@
 """Consistency checks a JSON Schema cannot express: references, ranges, bit layouts, unique ids."""
 from plcvec.output.tags import TAGS
+from plcvec.spec.model_checks import check_model
 
 # The value range each word encoding can hold at all, by field width; a field range outside it is a typo.
 _ENCODING_LIMITS = {
@@ -36,6 +37,7 @@ def check_family(fam):
     _unique(fam, doc.get("examples", []), ("examples",), "example")
     _check_references(fam)
     _check_coverage(fam)
+    check_model(fam)
     _check_interpretations(fam)
     _check_fields(fam)
     if fam.kind == "masked_compare":
