@@ -101,7 +101,8 @@ def test_same_vectors_as_every_combination_on_the_whole_set(families, generated,
     for name, fam in families.items():
         vectors = build(fam, monkeypatch, CheckedBuilder)
         assert vectors == generated[1][name], name
-    assert CheckedBuilder.checked == sum(len(v) for v in generated[1].values())
+    # Every vector is checked; the coverage model's construction also builds candidates it then drops.
+    assert CheckedBuilder.checked >= sum(len(v) for v in generated[1].values())
     assert not CheckedBuilder.differences, CheckedBuilder.differences[:3]
 
 
@@ -166,7 +167,9 @@ def test_an_interpretation_few_vectors_consult_does_not_multiply_the_executions(
     assert len(base_builder.cases) == len(extra_builder.cases)
     for (before, _), (after, reads) in zip(base_builder.cases, extra_builder.cases):
         assert after <= 4 * before if reads else after == before
-    assert base_builder.executions < extra_builder.executions < 1.1 * base_builder.executions
+    # The coverage model asks for a selector of no field beside every class of every other dimension,
+    # so more vectors read the parameter than the hand-made cases alone; still far from 4 times.
+    assert base_builder.executions < extra_builder.executions < 1.25 * base_builder.executions
 
 
 def test_consulted_names_only_what_the_execution_read(families):
