@@ -15,13 +15,15 @@ from plcvec_verify import InProcess, Selection, StdioAdapter, Suite, run
 from plcvec_reference import MACHINES
 from plcvec_reference.adapter import ReferenceAdapter
 from plcvec_reference.mutants import MUTANTS
-from plcvec_reference.mutants.report import run_mutant
+from plcvec_reference.mutants.report import dimensions, run_mutant
 
 from conftest import REPO
 
 DOC = REPO / "verifiers" / "python" / "plcvec_reference" / "MUTANTS.md"
 SHOW = 5
-ROW = re.compile(r"^\| `(?P<name>[^`]+)` \| (?P<families>[^|]+) \| (?P<bug>.+) \| (?P<ids>.+) \|$")
+ROW = re.compile(r"^\| `(?P<name>[^`]+)` \| (?P<families>[^|]+) \| (?P<bug>.+) \| (?P<dims>[^|]+) \| (?P<ids>[^|]+) \|$")
+# Every mutant is caught by at least this many vectors: one vector is an accident of how it was built.
+MIN_CATCHING = 3
 
 
 @pytest.fixture(scope="module")
@@ -47,7 +49,7 @@ def doc_rows():
         m = ROW.match(line)
         if m:
             rows[m["name"]] = {"families": tuple(f.strip() for f in m["families"].split(",")),
-                               "bug": m["bug"], "ids": re.findall(r"`([^`]+)`", m["ids"])}
+                               "bug": m["bug"], "dims": m["dims"], "ids": re.findall(r"`([^`]+)`", m["ids"])}
     return rows
 
 
@@ -109,6 +111,7 @@ def test_doc_lists_every_mutant():
     for name, row in rows.items():
         assert row["families"] == MUTANTS[name].families, name
         assert row["bug"] == MUTANTS[name].description, name
+        assert row["dims"] == dimensions(MUTANTS[name]), name
         assert row["ids"], f"MUTANTS.md names no vector that catches {name}"
 
 
@@ -119,3 +122,48 @@ def test_doc_vectors_catch_their_mutant(name, in_process):
         pytest.fail(f"{name} is not in MUTANTS.md")
     caught = {r.id for r in in_process(name).failed}
     assert set(row["ids"]) <= caught, f"MUTANTS.md says {sorted(set(row['ids']) - caught)} catch {name}; they do not"
+
+
+@pytest.mark.parametrize("name", list(MUTANTS))
+def test_mutant_is_caught_by_at_least_three_vectors(name, in_process):
+    caught = [r.id for r in in_process(name).failed]
+    assert len(caught) >= MIN_CATCHING, f"{name} is caught by only {len(caught)} vectors: {caught}"
+
+
+def test_every_model_dimension_has_a_mutant():
+    """Each dimension of each family's coverage model has a mutant whose bug lives in it."""
+    from plcvec.spec.loader import load_spec
+
+    for fam in load_spec(REPO / "spec"):
+        dims = [d["id"] for d in fam.doc["coverage"]["model"]["dimensions"]]
+        named = {dim for m in MUTANTS.values() if fam.name in m.families for dim, _ in m.exercises}
+        assert set(dims) <= named, f"{fam.name}: no mutant lives in {sorted(set(dims) - named)}"
+        assert named <= set(dims), f"{fam.name}: mutants name dimensions the model lacks: {sorted(named - set(dims))}"
+
+
+@pytest.fixture(scope="module")
+def cells():
+    """{vector id: the coverage-model cells it exercises}, from the engine's record of each execution."""
+    from plcvec.output.golden import family_vectors
+    from plcvec.spec.loader import load_spec
+
+    out = {}
+    for fam in load_spec(REPO / "spec"):
+        family_vectors(fam, out)
+    return out
+
+
+@pytest.mark.parametrize("name", [n for n, m in MUTANTS.items() if m.exercises])
+def test_only_its_dimensions_vectors_catch_the_mutant(name, in_process, cells):
+    """Every vector that catches the mutant exercises, in each dimension the bug lives in, one of the
+    classes it names: the bug is invisible to the vectors of every other class of that dimension."""
+    import fnmatch
+
+    m = MUTANTS[name]
+    outside = []
+    for r in in_process(name).failed:
+        for dim, patterns in m.exercises:
+            got = {dict(cell)[dim] for cell in cells[r.id]} - {None}
+            if not any(fnmatch.fnmatchcase(g, p) for g in got for p in patterns):
+                outside.append((r.id, dim, sorted(got)))
+    assert not outside, f"{name}: caught by vectors outside {m.exercises}: {outside[:SHOW]}"

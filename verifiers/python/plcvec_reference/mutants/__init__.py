@@ -26,6 +26,10 @@ class Mutant:
     families: tuple        # the instruction families whose machine carries the bug
     description: str       # the bug, in the manual's words
     cls: type              # the buggy subclass of the families' reference machine class
+    # The dimensions of the families' coverage models (spec: coverage.model) the bug lives in:
+    # ((dimension, (class patterns, ...)), ...); every vector that catches the mutant exercises, in
+    # each of them, a class the patterns match (tests/test_mutants.py checks it).
+    exercises: tuple = ()
 
     def make_machine(self, family: str, devices: dict, device_sizes: dict, choices: dict | None = None):
         """Like plcvec_reference.make_machine; the plain reference for the other families."""
@@ -33,15 +37,17 @@ class Mutant:
                             cls=self.cls if family in self.families else None)
 
 
-def mutant(name: str, families: tuple, description: str):
-    """Class decorator: register the class as the mutant `name` of `families`."""
+def mutant(name: str, families: tuple, description: str, exercises: dict | None = None):
+    """Class decorator: register the class as the mutant `name` of `families`; `exercises` maps a
+    coverage-model dimension to the class patterns every catching vector exercises in it."""
     def register(cls):
         if name in MUTANTS:
             raise ValueError(f"mutant {name} defined twice")
         for family in families:
             if not issubclass(cls, MACHINES[family][0]):
                 raise TypeError(f"mutant {name}: {cls.__name__} is not a {MACHINES[family][0].__name__}")
-        MUTANTS[name] = Mutant(name, tuple(families), description, cls)
+        MUTANTS[name] = Mutant(name, tuple(families), description, cls,
+                               tuple((d, tuple(p)) for d, p in (exercises or {}).items()))
         return cls
     return register
 

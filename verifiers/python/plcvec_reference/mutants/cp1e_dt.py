@@ -1,7 +1,7 @@
 """Mutants of the CP1E time comparisons LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT."""
 from __future__ import annotations
 
-from ..cp1e_dt import CP1ETimeCompare
+from ..cp1e_dt import ERROR_FLAG, FLAG_TABLE, CP1ETimeCompare
 from ..machine import operand_value
 from . import mutant, with_operand
 
@@ -10,14 +10,16 @@ FAMILY = ("cp1e-time-compare",)
 
 @mutant("cp1e-bcd-read-as-binary", FAMILY,
         "The time bytes are taken as plain binary without checking that they are BCD, so a "
-        "byte such as 1AH is compared instead of turning P_ER on.")
+        "byte such as 1AH is compared instead of turning P_ER on.",
+        exercises={"data": ["*.non-bcd"]})
 class BCDReadAsBinary(CP1ETimeCompare):
     is_bcd = staticmethod(lambda byte: True)
 
 
 @mutant("cp1e-mask-bit-shifted", FAMILY,
         "The mask bits of C are counted from 1: bit 01 masks the seconds ... bit 06 the year, "
-        "instead of 'Bits 00 to 05 of C mask the seconds, minutes, hours, day, month, and year'.")
+        "instead of 'Bits 00 to 05 of C mask the seconds, minutes, hours, day, month, and year'.",
+        exercises={"mask": ["year", "month", "day", "hour", "minute", "second", "all-but-*", "some", "none", "reserved+fields", "reserved"]})
 class MaskBitShifted(CP1ETimeCompare):
     FIELDS = [field[:-1] + (field[-1] + 1,) for field in CP1ETimeCompare.FIELDS]
 
@@ -34,13 +36,15 @@ class MaskInverted(CP1ETimeCompare):
 
 @mutant("cp1e-seconds-first", FAMILY,
         "The unmasked fields are compared from S1 (seconds) up instead of from the year down, so "
-        "a later field decides before an earlier one.")
+        "a later field decides before an earlier one.",
+        exercises={"mask": ["all", "all-but-*", "some", "reserved", "reserved+fields"]})
 class SecondsFirst(CP1ETimeCompare):
     FIELDS = CP1ETimeCompare.FIELDS[::-1]
 
 
 @mutant("cp1e-and-as-or", FAMILY,
-        "AND =DT … AND >=DT combine the comparison with the preceding logic as OR does.")
+        "AND =DT … AND >=DT combine the comparison with the preceding logic as OR does.",
+        exercises={"form": ["AND"]})
 class AndAsOr(CP1ETimeCompare):
     def execute(self, instruction, operands, step):
         form, _, symbol = instruction.partition(" ")
@@ -49,7 +53,53 @@ class AndAsOr(CP1ETimeCompare):
 
 @mutant("cp1e-flags-not-reflected", FAMILY,
         "The arithmetic flags (=, <>, <, <=, >, >=) are left alone, although 'the result of a "
-        "time comparison instruction is reflected in the arithmetic flags'.")
+        "time comparison instruction is reflected in the arithmetic flags'.",
+        exercises={"ordering": ["lt", "eq", "gt"]})
 class FlagsNotReflected(CP1ETimeCompare):
     def reflect_flags(self, order):
         pass
+
+
+@mutant("cp1e-or-ignores-on", FAMILY,
+        "OR =DT … OR >=DT pass on only their own comparison, dropping an execution condition that "
+        "is already ON, instead of combining the two as OR does.",
+        exercises={"logic": ["on"]})
+class OrIgnoresOn(CP1ETimeCompare):
+    def execute(self, instruction, operands, step):
+        form, _, symbol = instruction.partition(" ")
+        if form == "OR":
+            return self.evaluate(symbol[:-2], operands)
+        return super().execute(instruction, operands, step)
+
+
+@mutant("cp1e-ne-as-gt", FAMILY,
+        "<>DT gives ON only when S1 > S2, as >DT does, instead of whenever S1 and S2 differ.",
+        exercises={"condition": ["<>DT"]})
+class NeAsGt(CP1ETimeCompare):
+    def evaluate(self, condition, operands):
+        return super().evaluate(">" if condition == "<>" else condition, operands)
+
+
+@mutant("cp1e-equal-as-less", FAMILY,
+        "Equal unmasked data are taken as S1 < S2, so =DT never gives ON and the flags show '<'.",
+        exercises={"ordering": ["eq"]})
+class EqualAsLess(CP1ETimeCompare):
+    def reflect_flags(self, order):
+        self.order = order or -1
+        super().reflect_flags(self.order)
+
+    def evaluate(self, condition, operands):
+        self.order = None
+        result = super().evaluate(condition, operands)
+        return result if self.order is None else FLAG_TABLE[self.order][condition]
+
+
+@mutant("cp1e-error-flag-blocks", FAMILY,
+        "With P_ER already ON the comparison is not executed at all (execution condition OFF, flags "
+        "and P_ER left as they were), as if an earlier error stopped the instruction.",
+        exercises={"error-before": ["on"]})
+class ErrorFlagBlocks(CP1ETimeCompare):
+    def evaluate(self, condition, operands):
+        if self.mem.read(ERROR_FLAG):
+            return False
+        return super().evaluate(condition, operands)

@@ -1,14 +1,15 @@
 """Mutants of the FC6A hour meter HOUR."""
 from __future__ import annotations
 
-from ..fc6a_hour import HourMeter, to_seconds
+from ..fc6a_hour import ERROR_FLAG, HourMeter, to_seconds
 from . import mutant
 
 FAMILY = ("fc6a-hour-meter",)
 
 
 @mutant("hour-output-above-preset", FAMILY,
-        "D2 turns on only once D1 is past S1, not when 'the D1 value reaches the S1 value'.")
+        "D2 turns on only once D1 is past S1, not when 'the D1 value reaches the S1 value'.",
+        exercises={"reach": ["at"]})
 class OutputAbovePreset(HourMeter):
     @staticmethod
     def reached(total, preset):
@@ -33,7 +34,8 @@ class WrapEarly(HourMeter):
 
 @mutant("hour-wrap-clears-d2", FAMILY,
         "When D1 returns to 0 hours 0 minutes 0 seconds D2 is turned off with it, instead of "
-        "'with the comparison output remaining on'.")
+        "'with the comparison output remaining on'.",
+        exercises={"wrap": ["yes"]})
 class WrapClearsD2(HourMeter):
     def execute(self, instruction, operands, step):
         d1 = operands["D1"]["device"]
@@ -58,7 +60,8 @@ class _OnInvalidPreset(HourMeter):
 
 @mutant("hour-invalid-preset-stops-measuring", FAMILY,
         "An out-of-range S1 cancels the execution and D1 stops, although the manual says "
-        "'but the input ON duration is measured'.")
+        "'but the input ON duration is measured'.",
+        exercises={"preset": ["*.above"]})
 class InvalidPresetStopsMeasuring(_OnInvalidPreset):
     def keep(self, operands):
         return self.mem.read_block(operands["D1"]["device"], 3), self.fraction_ms
@@ -70,10 +73,66 @@ class InvalidPresetStopsMeasuring(_OnInvalidPreset):
 
 @mutant("hour-invalid-preset-keeps-d2", FAMILY,
         "When S1 'is changed to an invalid value after the comparison output has turned on', "
-        "D2 stays on instead of 'the comparison output is turned off'.")
+        "D2 stays on instead of 'the comparison output is turned off'.",
+        exercises={"preset": ["*.above"], "output-before": ["on"]})
 class InvalidPresetKeepsD2(_OnInvalidPreset):
     def keep(self, operands):
         return self.mem.read(operands["D2"]["device"])
 
     def restore(self, operands, kept):
         self.mem.write(operands["D2"]["device"], kept)
+
+
+@mutant("hour-measures-while-off", FAMILY,
+        "The elapsed time is added to D1 while the input is off too, although 'While input is on, "
+        "the ON duration of the input is measured'.",
+        exercises={"input": ["off"]})
+class MeasuresWhileOff(HourMeter):
+    def execute(self, instruction, operands, step):
+        return super().execute(instruction, operands, dict(step, input=True))
+
+
+@mutant("hour-constant-in-minutes", FAMILY,
+        "A constant S1 is taken as minutes, not as 'the preset value ... in hours, then minutes and "
+        "seconds are set to 0'.",
+        exercises={"preset-operand": ["constant"]})
+class ConstantInMinutes(HourMeter):
+    def preset(self, operand):
+        if "constant" in operand:
+            hours, minutes = divmod(operand["constant"] & 0xFFFF, 60)
+            return [hours, minutes, 0]
+        return super().preset(operand)
+
+
+@mutant("hour-stops-when-output-on", FAMILY,
+        "D1 stops once D2 is on, although 'As long as the input remains on, the measured input ON "
+        "duration value continues to increase'.",
+        exercises={"output-before": ["on"]})
+class StopsWhenOutputOn(HourMeter):
+    def execute(self, instruction, operands, step):
+        if step["input"] and self.mem.read(operands["D2"]["device"]):
+            return super().execute(instruction, operands, dict(step, elapsed_ms=0))
+        return super().execute(instruction, operands, step)
+
+
+@mutant("hour-error-flag-cleared", FAMILY,
+        "An execution with a valid preset turns M8004 off, as if the user program execution error "
+        "flag reported only the latest execution.",
+        exercises={"error-before": ["on"]})
+class ErrorFlagCleared(HourMeter):
+    def execute(self, instruction, operands, step):
+        result = super().execute(instruction, operands, step)
+        if step["input"] and self.preset_valid(self.preset(operands["S1"])):
+            self.mem.write(ERROR_FLAG, False)
+        return result
+
+
+@mutant("hour-one-second-per-scan", FAMILY,
+        "A scan adds at most one second to D1, however long it was, so a slow scan loses ON time "
+        "the 'measured input ON duration' should hold.",
+        exercises={"whole-seconds": ["several"]})
+class OneSecondPerScan(HourMeter):
+    def execute(self, instruction, operands, step):
+        if step["input"]:
+            self.fraction_ms = min(self.fraction_ms + int(step["elapsed_ms"]), 1999) - int(step["elapsed_ms"])
+        return super().execute(instruction, operands, step)

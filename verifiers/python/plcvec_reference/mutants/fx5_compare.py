@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import calendar
 
-from ..fx5_compare import CONDITIONS, SM709, FX5CompareMachine
+from ..fx5_compare import CONDITIONS, SM709, FX5CompareMachine, parse_mnemonic
 from ..machine import operand_value, to_signed16
 from . import DeviceRangeUnchecked, mutant, with_operand
 
@@ -39,7 +39,8 @@ class LowFieldFirst(_FieldsMisread):
 
 @mutant("fx5-selector-bits-reversed", BOTH,
         "The (s3) bit configuration is read from the other end: b0 selects hour (year) and b2 "
-        "second (day), instead of '(1) Set \"second\" as comparison target' for b0.")
+        "second (day), instead of '(1) Set \"second\" as comparison target' for b0.",
+        exercises={"selector": ["hour", "second", "year", "day", "*+minute", "minute+*", "*+month", "month+*"]})
 class SelectorBitsReversed(_FieldsMisread):
     @staticmethod
     def misread(fields):
@@ -61,7 +62,8 @@ class _S3Misread(FX5CompareMachine):
 
 @mutant("fx5-clock-bit-ignored", BOTH,
         "Bit 15 of (s3) is ignored: (s1) is always compared with (s2), never with the current "
-        "time or date.")
+        "time or date.",
+        exercises={"source": ["current-clock"]})
 class ClockBitIgnored(_S3Misread):
     @staticmethod
     def misread(s3):
@@ -70,7 +72,8 @@ class ClockBitIgnored(_S3Misread):
 
 @mutant("fx5-reserved-bits-ignored", BOTH,
         "Bits 3 to 14 of (s3) are masked off instead of '(4) Set 0. If a value other than 0 is "
-        "set, the operation result will be non-continuity'.")
+        "set, the operation result will be non-continuity'.",
+        exercises={"selector": ["reserved", "reserved+fields"]})
 class ReservedBitsIgnored(_S3Misread):
     @staticmethod
     def misread(s3):
@@ -79,7 +82,8 @@ class ReservedBitsIgnored(_S3Misread):
 
 @mutant("fx5-empty-selector-equal", BOTH,
         "When 0 is set to the 0 to 2 bits no field differs, so the data count as equal (TM=/DT= "
-        "conducts) instead of 'the operation result will be non-continuity'.")
+        "conducts) instead of 'the operation result will be non-continuity'.",
+        exercises={"selector": ["none"]})
 class EmptySelectorEqual(FX5CompareMachine):
     def evaluate(self, condition, operands, clock):
         if operand_value(self.mem, operands["s3"]) & ~CLOCK_BIT == 0:
@@ -89,7 +93,8 @@ class EmptySelectorEqual(FX5CompareMachine):
 
 @mutant("fx5-sm709-not-latched", BOTH,
         "SM709 is written on every execution, off when the data are good, although 'Once SM709 "
-        "turns on, the on state is held until the CPU module is powered off or reset'.")
+        "turns on, the on state is held until the CPU module is powered off or reset'.",
+        exercises={"error-before": ["on"]})
 class SM709NotLatched(FX5CompareMachine):
     def evaluate(self, condition, operands, clock):
         self.raised = False
@@ -105,14 +110,16 @@ class SM709NotLatched(FX5CompareMachine):
 
 @mutant("fx5-device-range-unchecked", BOTH,
         "(s1) to (s1)+2 and (s2) to (s2)+2 are not checked against the device range, although 'If "
-        "the device areas ... exceed the corresponding device range, SM709 turns on'.")
+        "the device areas ... exceed the corresponding device range, SM709 turns on'.",
+        exercises={"data": ["*.device-range"]})
 class DeviceRangeUncheckedFX5(DeviceRangeUnchecked, FX5CompareMachine):
     pass
 
 
 @mutant("fx5-time-hour-24-accepted", (TIME,),
         "The hour range check is off by one ('within the range 0 to 23' taken as 0 to 24), so "
-        "hour 24 is compared instead of turning SM709 on.")
+        "hour 24 is compared instead of turning SM709 on.",
+        exercises={"data": ["*.hour.above"]})
 class Hour24Accepted(_FieldsMisread):
     @staticmethod
     def misread(fields):
@@ -149,3 +156,45 @@ class NonexistentRejected(FX5CompareMachine):
         if not operand_value(self.mem, operands["s3"]) & CLOCK_BIT:
             dates.append(self.mem.read_block(operands["s2"]["device"], 3))
         return result and not any(nonexistent(d) for d in dates)
+
+
+@mutant("fx5-or-in-series", BOTH,
+        "ORTM□/ORDT□ combine the comparison with the preceding logic in series, as ANDTM□/ANDDT□ do, "
+        "although the contact is connected in parallel.",
+        exercises={"form": ["OR"]})
+class OrInSeries(FX5CompareMachine):
+    def execute(self, instruction, operands, step):
+        form, condition = parse_mnemonic(instruction, self.kind)
+        if form != "OR":
+            return super().execute(instruction, operands, step)
+        rlo = bool(step["rlo_in"])
+        return rlo and self.evaluate(condition, operands, step.get("clock"))
+
+
+@mutant("fx5-and-ignores-preceding-off", BOTH,
+        "ANDTM□/ANDDT□ pass their own comparison on whatever the preceding logic, as if it were "
+        "always on, so a rung that is off conducts.",
+        exercises={"logic": ["off"]})
+class AndIgnoresPrecedingOff(FX5CompareMachine):
+    def execute(self, instruction, operands, step):
+        form, condition = parse_mnemonic(instruction, self.kind)
+        if form == "AND":
+            return self.evaluate(condition, operands, step.get("clock"))
+        return super().execute(instruction, operands, step)
+
+
+@mutant("fx5-le-as-lt", BOTH,
+        "TM<=/DT<= conducts only when (s1) < (s2), as TM</DT< does, instead of '(s1)≤(s2)'.",
+        exercises={"condition": ["<="]})
+class LeAsLt(FX5CompareMachine):
+    def evaluate(self, condition, operands, clock):
+        return super().evaluate("<" if condition == "<=" else condition, operands, clock)
+
+
+@mutant("fx5-equal-counts-as-less", BOTH,
+        "When every selected field is equal the comparison answers (s1) < (s2) instead of "
+        "(s1) = (s2), so TM=/DT= never conducts and TM</DT< does.",
+        exercises={"ordering": ["eq"]})
+class EqualCountsAsLess(FX5CompareMachine):
+    def _compare(self, s1, s2, s3):
+        return super()._compare(s1, s2, s3) or -1

@@ -1,7 +1,8 @@
 """Mutants of the FX5 clock addition TADD / TADDP."""
 from __future__ import annotations
 
-from ..fx5_tadd import DAY, TADDMachine
+from ..fx5_tadd import DAY, ZERO_FLAG, TADDMachine
+from ..machine import to_signed16
 from . import DeviceRangeUnchecked, mutant
 
 FAMILY = ("fx5-time-add",)
@@ -9,7 +10,8 @@ FAMILY = ("fx5-time-add",)
 
 @mutant("tadd-no-wrap-at-24", FAMILY,
         "'If the sum of two values exceeds 24:00:00' read literally: a sum of exactly 24:00:00 "
-        "is stored as 24:00:00 with neither flag, not as 0:00:00 with carry and zero.")
+        "is stored as 24:00:00 with neither flag, not as 0:00:00 with carry and zero.",
+        exercises={"sum": ["exact-wrap"]})
 class NoWrapAt24(TADDMachine):
     def wrap(self, total):
         if total == DAY:
@@ -32,7 +34,8 @@ class SM8022NotWritten(TADDMachine):
 
 
 @mutant("taddp-every-scan", FAMILY,
-        "TADDP adds on every scan while EN is on, like TADD, instead of once on its rising edge.")
+        "TADDP adds on every scan while EN is on, like TADD, instead of once on its rising edge.",
+        exercises={"instruction": ["TADDP"], "en": ["held"]})
 class TADDPEveryScan(TADDMachine):
     def execute(self, instruction, operands, step):
         return super().execute("TADD" if instruction == "TADDP" else instruction, operands, step)
@@ -40,13 +43,53 @@ class TADDPEveryScan(TADDMachine):
 
 @mutant("tadd-hour-24-accepted", FAMILY,
         "The hour range check is off by one ('0 to 23' taken as 0 to 24), so hour 24 in (s1) or "
-        "(s2) is added instead of raising error 3405H.")
+        "(s2) is added instead of raising error 3405H.",
+        exercises={"data": ["*.hour.above"]})
 class Hour24Accepted(TADDMachine):
     RANGES = [(TADDMachine.RANGES[0][0], TADDMachine.RANGES[0][1] + 1)] + TADDMachine.RANGES[1:]
 
 
 @mutant("tadd-device-range-unchecked", FAMILY,
         "(s1), (s2) and (d) are not checked against the device range, so error 2820H ('The device "
-        "range specified by (s1), (s2), and (d) exceeds the corresponding device range') never occurs.")
+        "range specified by (s1), (s2), and (d) exceeds the corresponding device range') never occurs.",
+        exercises={"data": ["*.device-range"]})
 class DeviceRangeUncheckedTADD(DeviceRangeUnchecked, TADDMachine):
     pass
+
+
+@mutant("tadd-d-cleared-first", FAMILY,
+        "(d) is cleared to 0:00:00 before (s1) and (s2) are read, so a source that is also the "
+        "destination is added as 0.",
+        exercises={"aliasing": ["s1=d", "s2=d"]})
+class DClearedFirst(TADDMachine):
+    def add(self, operands):
+        devices = [operands[k]["device"] for k in ("s1", "s2", "d")]
+        if all(self.mem.block_in_range(dev, 3) for dev in devices):
+            words = [to_signed16(w) for dev in devices[:2] for w in self.mem.read_block(dev, 3)]
+            if all(lo <= v <= hi for v, (lo, hi) in zip(words, self.RANGES * 2)):
+                self.mem.write_block(devices[2], [0, 0, 0])   # the checks passed: (d) is "prepared"
+        super().add(operands)
+
+
+@mutant("tadd-runs-while-en-off", FAMILY,
+        "TADD adds while its execution condition is off too, as if EN were not an execution condition.",
+        exercises={"en": ["off"]})
+class RunsWhileEnOff(TADDMachine):
+    def execute(self, instruction, operands, step):
+        if instruction == "TADD" and not step["en"]:
+            self.previous_en = False
+            self.add(operands)
+            return None
+        return super().execute(instruction, operands, step)
+
+
+@mutant("tadd-zero-flag-set-only", FAMILY,
+        "The zero flag SM8020 is only ever turned on: a result that is not 0:00:00 leaves it on, "
+        "although every execution writes the carry flags.",
+        exercises={"flags-before": ["on"]})
+class ZeroFlagSetOnly(TADDMachine):
+    def _set_flags(self, carry, zero):
+        was = self.mem.read(ZERO_FLAG)
+        super()._set_flags(carry, zero)
+        if was:
+            self.mem.write(ZERO_FLAG, True)

@@ -23,10 +23,16 @@ def examples(failed_ids, families, n: int = EXAMPLES) -> list[str]:
     return picked[:n]
 
 
+def dimensions(m) -> str:
+    """The coverage-model dimensions a mutant's bug lives in, with the classes its catchers exercise."""
+    return "<br>".join(f"{dim}: {', '.join(f'`{p}`' for p in patterns)}" for dim, patterns in m.exercises) or "—"
+
+
 def table(suite: Suite) -> str:
-    lines = ["| mutant | family | the bug | caught by (examples) |", "|---|---|---|---|"]
+    lines = ["| mutant | family | the bug | model dimension (classes every catching vector exercises) | caught by (examples) |",
+             "|---|---|---|---|---|"]
     for name, m in MUTANTS.items():
         failed = [r.id for r in run_mutant(suite, name).failed]
         ids = "<br>".join(f"`{vid}`" for vid in examples(failed, m.families)) or "**nothing: it survives**"
-        lines.append(f"| `{name}` | {', '.join(m.families)} | {m.description} | {ids} |")
+        lines.append(f"| `{name}` | {', '.join(m.families)} | {m.description} | {dimensions(m)} | {ids} |")
     return "\n".join(lines) + "\n"
