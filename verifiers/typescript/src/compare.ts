@@ -35,16 +35,19 @@ export function problemLine(p: Problem): string {
 }
 
 /** The problems of one vector's reported steps; an empty list means it passed. */
-export function compare(expected: Expected, steps: readonly StepResult[]): Problem[] {
+/** The problems of a vector that passed: one shared, frozen empty list. */
+export const NO_PROBLEMS: readonly Problem[] = Object.freeze([]);
+
+export function compare(expected: Expected, steps: readonly StepResult[]): readonly Problem[] {
   if (steps.length !== expected.states.length) {
     return [{ step: undefined, field: "steps", expected: `${expected.states.length} steps`, actual: `${steps.length} steps` }];
   }
-  const problems: Problem[] = [];
+  let problems: Problem[] | undefined; // made only for a vector that fails: most pass
   for (let i = 0; i < steps.length; i++) {
     const step = steps[i]!;
     const wantResult = expected.results[i];
     if (wantResult !== undefined && step.result !== wantResult) {
-      problems.push({ step: i, field: "result", expected: wantResult, actual: step.result ?? NOT_REPORTED });
+      (problems ??= []).push({ step: i, field: "result", expected: wantResult, actual: step.result ?? NOT_REPORTED });
     }
     const want = expected.states[i]!;
     let got = step.devices;
@@ -58,8 +61,8 @@ export function compare(expected: Expected, steps: readonly StepResult[]): Probl
     for (const dev of names) {
       const w = Object.prototype.hasOwnProperty.call(want, dev) ? want[dev]! : NOT_IN_VECTOR;
       const g = Object.prototype.hasOwnProperty.call(got, dev) ? got[dev]! : NOT_REPORTED;
-      if (w !== g) problems.push({ step: i, field: dev, expected: w, actual: g, before: before[dev] });
+      if (w !== g) (problems ??= []).push({ step: i, field: dev, expected: w, actual: g, before: before[dev] });
     }
   }
-  return problems;
+  return problems ?? NO_PROBLEMS;
 }

@@ -1,7 +1,7 @@
 /**
  * Running vectors against an implementation and judging them, exactly as CONTRACT.md says.
  */
-import { compare, problemLine, type Problem } from "./compare.js";
+import { compare, NO_PROBLEMS, problemLine, type Problem } from "./compare.js";
 import { PlcvecError } from "./errors.js";
 import { expectedOf, type Expected } from "./expect.js";
 import type { KnownFailures } from "./known.js";
@@ -92,20 +92,20 @@ export function prepare(vector: Vector, choices: Readonly<Record<string, string>
 export function judge(p: Prepared, impl: Implementation): VectorResult {
   const { vector, expected } = p;
   if (impl.instructions !== undefined && !impl.instructions.includes(vector.instruction)) {
-    return verdict(p, SKIP, NONE, `${vector.instruction} is not implemented`);
+    return verdict(p, SKIP, NO_PROBLEMS, `${vector.instruction} is not implemented`);
   }
   let outcome: RunOutcome;
   try {
     outcome = impl.run(p.request);
   } catch (err) {
-    return verdict(p, ERROR, NONE, `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}`);
+    return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}`);
   }
   if ("steps" in outcome) {
     const problems = compare(expected, outcome.steps);
     return verdict(p, problems.length ? FAIL : PASS, problems);
   }
-  if ("skip" in outcome) return verdict(p, SKIP, NONE, outcome.skip);
-  return verdict(p, ERROR, NONE, outcome.error);
+  if ("skip" in outcome) return verdict(p, SKIP, NO_PROBLEMS, outcome.skip);
+  return verdict(p, ERROR, NO_PROBLEMS, outcome.error);
 }
 
 function verdict(p: Prepared, status: Status, problems: readonly Problem[], message?: string): VectorResult {
@@ -113,7 +113,6 @@ function verdict(p: Prepared, status: Status, problems: readonly Problem[], mess
   return message === undefined ? result : { ...result, message };
 }
 
-const NONE: readonly Problem[] = Object.freeze([]);
 
 /** Turn a listed failure into xfail and a listed pass into stale. */
 export function applyKnown(result: VectorResult, known: KnownFailures | undefined): VectorResult {

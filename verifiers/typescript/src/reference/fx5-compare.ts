@@ -62,9 +62,12 @@ export class Fx5CompareMachine extends BaseMachine {
   }
 
   protected outOfRange(words: readonly number[], selected: number | undefined): boolean {
-    return this.fields.some(
-      (f) => (selected === undefined || ((selected >> f.bit) & 1) === 1) && !(f.min <= signed16(words[f.offset]!) && signed16(words[f.offset]!) <= f.max),
-    );
+    for (const f of this.fields) {
+      if (selected !== undefined && ((selected >> f.bit) & 1) === 0) continue;
+      const v = signed16(words[f.offset]!);
+      if (v < f.min || v > f.max) return true;
+    }
+    return false;
   }
 
   /** -1/0/1, field by field, the most significant selected field first. */
