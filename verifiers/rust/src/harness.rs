@@ -24,7 +24,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::sync::Arc;
 
-use libtest_mimic::{Arguments, Completion, Failed, Trial};
+pub use libtest_mimic::{Arguments, Conclusion};
+use libtest_mimic::{Completion, Failed, Trial};
 
 use crate::compare::{describe, judge, Status};
 use crate::error::{Error, Result};
@@ -177,22 +178,31 @@ where
     /// Parse the arguments, run the tests, and give the exit code (101 on a failure, 2 when the
     /// vectors, the selection or the expectations file cannot be used).
     pub fn run(self) -> ExitCode {
-        let args = self.args.clone().unwrap_or_else(Arguments::from_args);
-        let listing = args.list;
-        let trials = match self.trials() {
-            Ok(t) => t,
+        let listing = self.args.as_ref().map_or_else(|| Arguments::from_args().list, |a| a.list);
+        match self.conclude() {
+            Ok(conclusion) if !listing && judged_nothing(&conclusion) => {
+                eprintln!("plcvec: nothing was judged: every test that ran was skipped or ignored");
+                ExitCode::from(101)
+            }
+            Ok(conclusion) => conclusion.exit_code(),
             Err(e) => {
                 eprintln!("plcvec: {e}");
-                return ExitCode::from(2);
+                ExitCode::from(2)
             }
-        };
-        let conclusion = libtest_mimic::run(&args, trials);
-        if !listing && conclusion.num_passed == 0 && conclusion.num_failed == 0 && conclusion.num_ignored > 0 {
-            eprintln!("plcvec: nothing was judged: every test that ran was skipped or ignored");
-            return ExitCode::from(101);
         }
-        conclusion.exit_code()
     }
+
+    /// Run the tests and give libtest-mimic's conclusion (for a caller that decides itself).
+    pub fn conclude(self) -> Result<Conclusion> {
+        let args = self.args.clone().unwrap_or_else(Arguments::from_args);
+        let trials = self.trials()?;
+        Ok(libtest_mimic::run(&args, trials))
+    }
+}
+
+/// Whether a run judged nothing: no test passed or failed, and some were skipped or ignored.
+pub fn judged_nothing(conclusion: &Conclusion) -> bool {
+    conclusion.num_passed == 0 && conclusion.num_failed == 0 && conclusion.num_ignored > 0
 }
 
 impl<I, F> Shared<F>

@@ -14,8 +14,23 @@ fn crate_dir() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }
 
+/// A scratch folder, removed when dropped.
+struct Scratch(PathBuf);
+
+impl Drop for Scratch {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
+}
+
+impl AsRef<Path> for Scratch {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
 /// A scratch folder holding a copy of the exported vectors, edited by `edit(file name, text)`.
-fn edited_copy(name: &str, edit: impl Fn(&str, String) -> String) -> PathBuf {
+fn edited_copy(name: &str, edit: impl Fn(&str, String) -> String) -> Scratch {
     let dir = std::env::temp_dir().join(format!("plcvec-rust-test-{}-{name}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
@@ -25,7 +40,7 @@ fn edited_copy(name: &str, edit: impl Fn(&str, String) -> String) -> PathBuf {
         let text = std::fs::read_to_string(&path).unwrap();
         std::fs::write(dir.join(&file), edit(&file, text)).unwrap();
     }
-    dir
+    Scratch(dir)
 }
 
 #[test]
