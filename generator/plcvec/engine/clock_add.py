@@ -71,7 +71,8 @@ class ClockAdd:
             v = values.get(op) or self.codec.read(state, operands[op]["device"])
             total += self.codec.to_units(v)
         modulus = self.codec.modulus()
-        carry = total >= modulus if self.flags["carry_at_wrap"] else total > modulus
+        # Whether the carry is set at the wrap itself or only past it decides something only at the wrap.
+        carry = total > modulus or (total == modulus and self.flags["carry_at_wrap"])
         result = total % modulus
         self.codec.write(state, operands[self.result]["device"], self.codec.from_units(result))
         zero = result == 0
