@@ -183,3 +183,18 @@ def test_review_check_names_a_combination_no_vector_exercises(tmp_path):
     assert "coverage model: no vector exercises selector=none × ordering=lt (pair of classes" in done.stderr
     assert "9 problems" in done.stderr   # none, reserved, reserved+fields, each with lt, eq, gt
     assert "fx5-time-compare.yaml:" in done.stderr and "Traceback" not in done.stderr
+
+
+def test_a_date_past_its_month_end_is_nonexistent(families):
+    """The manual's 2006/02/30 and a 31 June, each field in range: nonexistent, whether or not listed."""
+    fam = families["fx5-date-compare"]
+    builder = VectorBuilder(fam)
+    c = CompareCases(fam, builder)
+    for key, date in (("feb-30", {"year": 2006, "month": 2, "day": 30}), ("jun-31", {"year": 2029, "month": 6, "day": 31})):
+        v = c.case("LD", "=", f"test/{key}", tags=["model"], description="t", s1=c.ops.words(date),
+                   s2=c.ops.words(date), sel=0x0007)
+        assert classes(builder, v, "data") == {"nonexistent"}, key
+        assert classes(builder, v, "ordering") == {"eq"}, key   # compared as it is, no SM709
+    v = c.case("LD", "=", "test/jun-30", tags=["model"], description="t", s1=c.ops.words({"year": 2029, "month": 6, "day": 30}),
+               s2=c.ops.words({"year": 2029, "month": 6, "day": 30}), sel=0x0007)
+    assert classes(builder, v, "data") == {"valid"}

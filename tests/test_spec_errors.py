@@ -176,6 +176,7 @@ CASES = [
     ("model-exclude-pattern-matches-nothing", TC, replace(261, '"dummy-*"', '"dummy-s3.*"'), 261,
      "'dummy-s3.*' names no class of dimension 'data'"),
     ("model-unknown-strength", TC, replace(246, "strength: pairwise", "strength: triples"), 246, "strength"),
+    ("nonexistent-calendar-unknown-field", DC, replace(270, "day: day}", "day: date}"), 270, "calendar day names no field 'date'"),
     ("model-duplicate-dimension", TC, replace(249, "{id: logic,", "{id: form,"), 249, "dimension 'form' is defined twice"),
 ]
 

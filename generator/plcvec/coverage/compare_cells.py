@@ -1,5 +1,6 @@
 """Coverage dimensions of `masked_compare` families: the classes each derives from the spec, and the
 class an execution falls in, read from the vector's inputs and the engine's record of it."""
+import calendar
 import itertools
 
 from plcvec.engine.words import FieldCodec, in_device_range
@@ -86,7 +87,9 @@ class CompareClassifier:
         self.reserved = sum(1 << b for b in self.sel["reserved_bits"])
         self.field_mask = sum(1 << b for b in self.sel["field_bits"].values())
         self.error_device = doc["validity"]["error"]["device"]
-        self.nonexistent = [tuple(d[n] for n in self.names) for d in doc.get("nonexistent_dates", {}).get("dates", [])]
+        dates = doc.get("nonexistent_dates", {})
+        self.nonexistent = [tuple(d[n] for n in self.names) for d in dates.get("dates", [])]
+        self.calendar = dates.get("calendar")
         self.words = doc["operands"][self.first]["words"]
 
     def classify(self, instr, operands, before, step, record):
@@ -143,6 +146,13 @@ class CompareClassifier:
         if self.nonexistent:
             for op in (self.first,) if clock else (self.first, self.second):
                 values = self.codec.read(before, operands[op]["device"])
-                if tuple(values[n] for n in self.names) in self.nonexistent:
+                if tuple(values[n] for n in self.names) in self.nonexistent or self.past_month_end(values):
                     return "nonexistent"
         return "valid"
+
+    def past_month_end(self, values):
+        """A date of the spec's calendar fields whose day is past the end of its month (2006/02/30)."""
+        if not self.calendar:
+            return False
+        year, month, day = (values[self.calendar[k]] for k in ("year", "month", "day"))
+        return day > calendar.monthrange(year, month)[1]

@@ -48,6 +48,9 @@ def check_family(fam):
             for j, op in enumerate(check["operands"]):
                 if op not in doc["operands"]:
                     raise fam.error(("errors", "checks", i, "operands", j), f"unknown operand {op!r}")
+    for key, name in doc.get("nonexistent_dates", {}).get("calendar", {}).items():
+        if name not in {f["name"] for f in doc["data"]["fields"]}:
+            raise fam.error(("nonexistent_dates", "calendar", key), f"calendar {key} names no field {name!r}")
     placement = doc["generation"]["placement"]
     for op in doc["operands"]:
         if op not in placement:

@@ -138,7 +138,8 @@ def nonexistent(words) -> bool:
 @mutant("fx5-date-calendar-check", (DATE,),
         "A date that does not exist but is within the setting range (2006/02/30) turns SM709 on, "
         "although 'Even if the data are not recognized as date data, SM709 does not turn on if "
-        "the data are within the setting range'.")
+        "the data are within the setting range'.",
+        exercises={"data": ["nonexistent"]})
 class CalendarCheck(FX5CompareMachine):
     def _out_of_range(self, words, selected_only_bits) -> bool:
         day_bit = next(bit for _o, name, *_, bit in self.fields if name == "day")
@@ -148,7 +149,8 @@ class CalendarCheck(FX5CompareMachine):
 
 @mutant("fx5-date-nonexistent-rejected", (DATE,),
         "A date that does not exist (2008/02/31) makes the result non-continuity, although the "
-        "manual says it 'can be set' and 'the comparison operation is performed'.")
+        "manual says it 'can be set' and 'the comparison operation is performed'.",
+        exercises={"data": ["nonexistent", "*.day.above"]})
 class NonexistentRejected(FX5CompareMachine):
     def evaluate(self, condition, operands, clock):
         result = super().evaluate(condition, operands, clock)
