@@ -142,6 +142,7 @@ const char *const plcvec_tag_names[PLCVEC_TAG_COUNT] = {
     "latch",
     "logic",
     "manual-example",
+    "model",
     "nonexistent-date",
     "pulse",
     "random",

@@ -8,8 +8,8 @@
 #define PLCVEC_SUITE_VERSION "0.1.0"
 #define PLCVEC_SCHEMA_VERSION "1.0.0"
 #define PLCVEC_SCHEMA_MAJOR 1
-#define PLCVEC_SPEC_SHA256 "90c2e2a0e8b4a5d89805b7e473f0bd4ec243612a5aa1faeca464e99c0de22e12"
-#define PLCVEC_TOTAL_VECTORS 2899
+#define PLCVEC_SPEC_SHA256 "eeebc7716a61c31944fb14759ce8fb6dd04049ff5dc98bed49f4cf9a2a69a4a5"
+#define PLCVEC_TOTAL_VECTORS 3678
 
 /* Instruction families, in the order of the manifest. */
 typedef enum plcvec_family {
@@ -96,6 +96,7 @@ typedef enum plcvec_tag {
     PLCVEC_TAG_LATCH,  /* latch */
     PLCVEC_TAG_LOGIC,  /* logic */
     PLCVEC_TAG_MANUAL_EXAMPLE,  /* manual-example */
+    PLCVEC_TAG_MODEL,  /* model */
     PLCVEC_TAG_NONEXISTENT_DATE,  /* nonexistent-date */
     PLCVEC_TAG_PULSE,  /* pulse */
     PLCVEC_TAG_RANDOM,  /* random */

@@ -25,6 +25,8 @@ public enum Tag {
     LOGIC("logic", "AND/OR forms with the preceding logic on and off."),
     /** Reproduces an example printed in the manual; `printed` holds the manual's own expectation. */
     MANUAL_EXAMPLE("manual-example", "Reproduces an example printed in the manual; `printed` holds the manual's own expectation."),
+    /** Exercises combinations of the family's coverage model (spec: coverage.model) that no other vector does; its id names the classes of its row. */
+    MODEL("model", "Exercises combinations of the family's coverage model (spec: coverage.model) that no other vector does; its id names the classes of its row."),
     /** A date no calendar has, whose fields are each within range. */
     NONEXISTENT_DATE("nonexistent-date", "A date no calendar has, whose fields are each within range."),
     /** Execution on the rising edge of the execution condition, over a sequence of scans. */
