@@ -1,13 +1,13 @@
 """`plcvec export --lang L`: write (or `--check`) a native verifier's generated files."""
 from __future__ import annotations
 
-import sys
 from pathlib import Path
 
 from plcvec.errors import PlcvecError
 from plcvec.export.model import load_model
 from plcvec.export.targets import languages, render
 from plcvec.output.atomic import write_atomic
+from plcvec.output.drift import report_drift
 
 
 
@@ -72,11 +72,8 @@ def run(args):
                 stale.unlink()
                 print(f"plcvec export: removed stale {stale}")
     if args.check:
-        if differ:
-            print("plcvec export --check: the exported files are not what the vectors give:", file=sys.stderr)
-            for line in differ:
-                print(f"  {line}", file=sys.stderr)
-            print("run `plcvec export --all` and commit the result", file=sys.stderr)
+        if report_drift("plcvec export --check", "the exported files are not what the vectors give", differ,
+                        "plcvec export --all"):
             return 1
         print(f"plcvec export --check: {total} files of {len(chosen)} language(s) match the vectors")
         return 0
