@@ -4,28 +4,77 @@ Changing one vector changes a few lines of its file. Keys inside values are sort
 vector's own keys is the order the builder gives, which is fixed in code.
 """
 import json
+from json.encoder import encode_basestring, encode_basestring_ascii
 
+try:
+    from json.encoder import c_make_encoder
+except ImportError:  # a Python without the _json accelerator
+    c_make_encoder = None
 
 # One encoder for every value: json.dumps with these options would build a new one per call.
 _ENCODER = json.JSONEncoder(sort_keys=True, ensure_ascii=False, separators=(", ", ": "))
+# JSONEncoder.encode builds a fresh C encoder for each value it is given; the golden set encodes
+# tens of thousands of values, so the C encoder is built once, with the arguments encode() gives it
+# (the same since Python 3.10). `_MARKERS` keeps the circular-reference check; it is empty between calls.
+_MARKERS = {}
+_C_ENCODE = None if c_make_encoder is None else c_make_encoder(
+    _MARKERS, _ENCODER.default, encode_basestring, None, _ENCODER.key_separator, _ENCODER.item_separator,
+    _ENCODER.sort_keys, _ENCODER.skipkeys, _ENCODER.allow_nan)
 
 
 def dumps_value(value):
-    return _ENCODER.encode(value)
+    """The canonical text of a value: sorted keys, ", " and ": ", non-ASCII characters as they are."""
+    if _C_ENCODE is None or isinstance(value, str):
+        return _ENCODER.encode(value)
+    try:
+        return "".join(_C_ENCODE(value, 0))
+    except BaseException:
+        _MARKERS.clear()   # an encoding that failed half-way leaves its marks behind
+        raise
 
 
-def dumps_object_lines(obj, indent):
+def dumps_object(obj, known=None):
+    """dumps_value(obj) of a dict with string keys, taking the text of a value from `known` (key ->
+    text already encoded) where it is there, so a value other output also needs is encoded once."""
+    known = known or {}
+    return "{" + ", ".join(f"{encode_basestring(k)}: {known[k] if k in known else dumps_value(obj[k])}"
+                           for k in sorted(obj)) + "}"
+
+
+def _key(k):
+    """The text json.dumps gives a top-level key (ASCII-escaped)."""
+    return encode_basestring_ascii(k)
+
+
+def vector_texts(vector):
+    """The canonical text of each of a vector's own values, by key, and of the operands and devices of
+    its initial and final states, by (key, part): the CSV export (plcvec.output.golden.csv_export)
+    writes those again, from these texts, so each is encoded once."""
+    texts = {}
+    for k, v in vector.items():
+        if k in ("initial", "final") and isinstance(v, dict):
+            parts = {p: dumps_value(x) for p, x in v.items() if p in ("operands", "devices")}
+            texts[k] = dumps_object(v, parts)
+            texts.update(((k, p), text) for p, text in parts.items())
+        else:
+            texts[k] = dumps_value(v)
+    return texts
+
+
+def dumps_object_lines(obj, indent, texts=None):
     pad = " " * indent
-    items = [f"{pad} {json.dumps(k)}: {dumps_value(v)}" for k, v in obj.items()]
+    texts = texts or {k: dumps_value(v) for k, v in obj.items()}
+    items = [f"{pad} {_key(k)}: {texts[k]}" for k in obj]
     return pad + "{" + (",\n".join(items))[indent + 1:] + "}"
 
 
-def dumps_vector_file(header, vectors):
+def dumps_vector_file(header, vectors, texts=None):
+    """The text of a vector file; `texts`, when given, holds vector_texts() of each vector."""
     lines = ["{"]
     for k, v in header.items():
-        lines.append(f" {json.dumps(k)}: {dumps_value(v)},")
+        lines.append(f" {_key(k)}: {dumps_value(v)},")
     lines.append(' "vectors": [')
-    lines.append(",\n".join(dumps_object_lines(v, 2) for v in vectors))
+    lines.append(",\n".join(dumps_object_lines(v, 2, t) for v, t in zip(vectors, texts or [None] * len(vectors))))
     lines.append(" ]")
     lines.append("}")
     return "\n".join(lines) + "\n"

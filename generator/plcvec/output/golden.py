@@ -9,7 +9,7 @@ from plcvec import SCHEMA_VERSION, __version__
 from plcvec.cases import CASE_FAMILIES
 from plcvec.cases.build import VectorBuilder
 from plcvec.cases.regression_cases import regression_cases
-from plcvec.output.canonical import dumps_value, dumps_vector_file
+from plcvec.output.canonical import dumps_value, dumps_vector_file, vector_texts
 from plcvec.output.tags import TAGS
 from plcvec.spec.loader import spec_hash
 
@@ -46,26 +46,34 @@ def family_header(fam, vectors):
     }
 
 
-def csv_export(all_vectors):
+def csv_export(all_vectors, texts=None):
+    """The CSV of every vector; `texts`, when given, holds vector_texts() of each (encoded once for the
+    vector files and reused here)."""
     out = io.StringIO()
     w = csv.writer(out, lineterminator="\n")
     w.writerow(["id", "family", "instruction", "tags", "outcome", "clauses", "operands", "initial_devices", "steps", "final_devices"])
-    for v in all_vectors:
+    for v, t in zip(all_vectors, texts or [None] * len(all_vectors)):
+        if t is None:
+            t = {("initial", "operands"): dumps_value(v["initial"]["operands"]),
+                 ("initial", "devices"): dumps_value(v["initial"]["devices"]),
+                 "steps": dumps_value(v["steps"]), ("final", "devices"): dumps_value(v["final"]["devices"])}
         w.writerow([v["id"], v["family"], v["instruction"], " ".join(v["tags"]), v["outcome"]["category"],
-                    " ".join(v["clauses"]), dumps_value(v["initial"]["operands"]), dumps_value(v["initial"]["devices"]),
-                    dumps_value(v["steps"]), dumps_value(v["final"]["devices"])])
+                    " ".join(v["clauses"]), t["initial", "operands"], t["initial", "devices"], t["steps"],
+                    t["final", "devices"]])
     return out.getvalue()
 
 
 def build_golden(families):
     """{relative path: text} for every file of the golden set, and the vectors by family."""
-    files, by_family = {}, {}
+    files, by_family, texts = {}, {}, {}
     for fam in families:
         vectors = family_vectors(fam)
         by_family[fam.name] = vectors
-        files[f"{fam.name}.json"] = dumps_vector_file(family_header(fam, vectors), vectors)
+        # Each value's text, encoded once for the family's file and the CSV.
+        texts[fam.name] = [vector_texts(v) for v in vectors]
+        files[f"{fam.name}.json"] = dumps_vector_file(family_header(fam, vectors), vectors, texts[fam.name])
     everything = [v for fam in families for v in by_family[fam.name]]
-    files["vectors.csv"] = csv_export(everything)
+    files["vectors.csv"] = csv_export(everything, [t for fam in families for t in texts[fam.name]])
     manifest = {
         "generated": GENERATED_NOTE,
         "schema_version": SCHEMA_VERSION,

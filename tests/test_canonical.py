@@ -1,0 +1,62 @@
+"""The canonical JSON writer: its texts are json.dumps' with the canonical options, however they are
+put together (one C encoder built once, an object from texts already encoded, a vector's texts
+reused for the CSV)."""
+import json
+
+import pytest
+
+from plcvec.output.canonical import dumps_object, dumps_value, dumps_vector_file, vector_texts
+
+
+def reference(value):
+    return json.dumps(value, sort_keys=True, ensure_ascii=False, separators=(", ", ": "))
+
+
+VALUES = [
+    {"b": 1, "a": [True, None, -3, 2.5, 1e16, float("inf")], "é": "naïve \"quoted\"\n\t\u0001"},
+    [], {}, "plain", "ünïcode", 7, 0.1, None, False,
+    {"z": {"y": {"x": [{"b": 2, "a": 1}]}}, "D100": 0x1234, "D2": 65535},
+]
+
+
+@pytest.mark.parametrize("value", VALUES)
+def test_dumps_value_is_json_dumps_with_the_canonical_options(value):
+    assert dumps_value(value) == reference(value)
+
+
+def test_a_circular_value_is_refused_and_the_encoder_still_works_after():
+    loop = {"a": []}
+    loop["a"].append(loop)
+    with pytest.raises(ValueError, match="Circular"):
+        dumps_value(loop)
+    shared = [1]
+    assert dumps_value({"x": shared, "y": shared}) == '{"x": [1], "y": [1]}'
+    with pytest.raises(TypeError):
+        dumps_value({"set": {1}})
+    assert dumps_value([shared, shared]) == "[[1], [1]]"
+
+
+def test_an_object_from_texts_already_encoded_is_the_object_encoded_whole():
+    obj = {"operands": {"s1": {"device": "D0"}}, "devices": {"D1": 2, "D0": 1}, "scratch": ["D9"]}
+    assert dumps_object(obj) == reference(obj)
+    assert dumps_object(obj, {"devices": reference(obj["devices"])}) == reference(obj)
+    assert dumps_object({}) == "{}"
+
+
+def test_a_vectors_texts_are_its_values_and_their_parts_encoded():
+    vector = {"id": "f/I/k", "initial": {"operands": {"s1": {"constant": 3}}, "devices": {"D1": 1, "D0": 0}},
+              "steps": [{"expect": {"devices": {}}}], "final": {"devices": {"D0": 0}}, "tags": ["é"]}
+    texts = vector_texts(vector)
+    for key, value in vector.items():
+        assert texts[key] == reference(value)
+    assert texts["initial", "operands"] == reference(vector["initial"]["operands"])
+    assert texts["initial", "devices"] == reference(vector["initial"]["devices"])
+    assert texts["final", "devices"] == reference(vector["final"]["devices"])
+    header = {"family": "f", "count": 1}
+    assert dumps_vector_file(header, [vector], [texts]) == dumps_vector_file(header, [vector])
+    # The file's lines: one per top-level key, in the vector's own order, each value canonical; the
+    # vector's "{" opens its first line and its "}" closes its last.
+    lines = dumps_vector_file(header, [vector]).splitlines()
+    body = [f'"{k}": {reference(v)}' for k, v in vector.items()]
+    assert lines[4:9] == ["  {" + body[0] + ","] + [f"   {b}," for b in body[1:-1]] + [f"   {body[-1]}}}"]
+    assert json.loads(dumps_vector_file(header, [vector])) == dict(header, vectors=[vector])
