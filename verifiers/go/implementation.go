@@ -101,6 +101,7 @@ type Request struct {
 	Steps       []Inputs
 	addrs       []Addr         // parallel to Devices
 	keys        []uint64       // parallel to Devices: addrKey of each
+	initial     []Value        // parallel to Devices: the initial image every memory copies
 	operands    []namedOperand // Operands by name, their addresses parsed once
 	sizes       []kindSize     // DeviceSizes as a list: a few entries, read on every range check
 }
@@ -165,6 +166,9 @@ func NewRequest(id, family, instruction string, sizes map[string]int, devices ma
 	operands map[string]Operand, scratch []string, steps []Inputs) *Request {
 	r := &Request{ID: id, Family: family, Instruction: instruction, DeviceSizes: sizes,
 		Operands: operands, Scratch: scratch, Steps: steps}
+	for i := range steps {
+		steps[i].prepare()
+	}
 	r.Devices = make([]Device, 0, len(devices))
 	for name, v := range devices {
 		r.Devices = append(r.Devices, Device{name, v})

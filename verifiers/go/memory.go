@@ -1,6 +1,9 @@
 package plcvec
 
-import "sync"
+import (
+	"math"
+	"sync/atomic"
+)
 
 // Memory is a vector's device image for the Emulator helper: the devices the vector lists,
 // each by name and address, and the writes to any device it does not list (which the runner
@@ -9,10 +12,11 @@ import "sync"
 // A device the vector does not list reads as 0 (false): CONTRACT.md leaves its value to the
 // implementation, and an instruction that depends on it is wrong whatever it reads.
 type Memory struct {
-	req     *Request
-	vals    []Value   // parallel to req.Devices
-	small   [16]Value // vals' storage for a vector of up to 16 devices: one allocation, not two
-	outside []Device  // devices written that the vector does not list, in the order first written
+	req          *Request
+	vals         []Value   // parallel to req.Devices
+	small        [16]Value // vals' storage for a vector of up to 16 devices: one allocation, not two
+	outside      []Device  // devices written that the vector does not list, in the order first written
+	outsideAddrs []Addr    // parallel to outside: looked up without building names
 }
 
 // NewMemory is the initial device image of req.
@@ -22,40 +26,66 @@ func NewMemory(req *Request) *Memory {
 	return m
 }
 
-// reset makes m the initial device image of req.
+// reset makes m the initial device image of req: a copy of the image worked out when the
+// request was built.
 func (m *Memory) reset(req *Request) {
-	m.req, m.outside = req, m.outside[:0]
+	if req.addrs == nil {
+		req.prepareAddrs()
+	}
+	m.req, m.outside, m.outsideAddrs = req, m.outside[:0], m.outsideAddrs[:0]
 	if len(req.Devices) <= len(m.small) {
 		m.vals = m.small[:len(req.Devices)]
 	} else {
 		m.vals = make([]Value, len(req.Devices))
 	}
-	for i, d := range req.Devices {
-		m.vals[i] = d.Value
-	}
-	if req.addrs == nil {
-		req.prepareAddrs()
-	}
+	copy(m.vals, req.initial)
 }
 
+// prepareAddrs works out once, for the whole run, what every memory of the request starts
+// from: each device's address, its lookup key, and the initial image as a flat list of values.
 func (r *Request) prepareAddrs() {
 	r.addrs = make([]Addr, len(r.Devices))
 	r.keys = make([]uint64, len(r.Devices))
+	r.initial = make([]Value, len(r.Devices))
 	for i, d := range r.Devices {
 		r.addrs[i] = ParseAddr(d.Name)
-		r.keys[i] = addrKey(r.addrs[i])
+		r.keys[i], _ = addrKey(r.addrs[i])
+		r.initial[i] = d.Value
 	}
 }
 
-// addrKey folds an address into one integer (its number, and an FNV-1a hash of its kind), so a
-// lookup compares integers and compares strings only on a match: names without a number
-// (P_EQ, P_NE, ...) all have N = -1 and would otherwise each cost a string comparison.
-func addrKey(a Addr) uint64 {
-	h := uint32(2166136261)
-	for i := 0; i < len(a.Kind); i++ {
-		h = (h ^ uint32(a.Kind[i])) * 16777619
+// addrKey folds an address into one integer, its number above its kind, so that a lookup
+// compares integers, not strings. For the device names of PLCs (a kind of 1 to 4 ASCII
+// characters, D, SM, P_EQ, and a number that fits 31 bits, or none) the kind's bytes are the
+// key's low half and the key is exact: equal keys are equal addresses. Any other address gets a
+// hash of its kind with the top bit of the low half set, which no exact key has, and a lookup
+// compares the addresses themselves on a match.
+func addrKey(a Addr) (key uint64, exact bool) {
+	if a.N < -1 || a.N > math.MaxInt32 {
+		return uint64(uint32(a.N))<<32 | kindHash(a.Kind), false
 	}
-	return uint64(uint32(a.N))<<32 | uint64(h)
+	high := uint64(uint32(a.N)) << 32
+	if len(a.Kind) == 0 || len(a.Kind) > 4 {
+		return high | kindHash(a.Kind), false
+	}
+	var packed uint64
+	for i := 0; i < len(a.Kind); i++ {
+		c := a.Kind[i]
+		if c == 0 || c >= 0x80 {
+			return high | kindHash(a.Kind), false
+		}
+		packed |= uint64(c) << (8 * i)
+	}
+	return high | packed, true
+}
+
+// kindHash is an FNV-1a hash of a device kind, with bit 31 set: never an exact key's low half.
+func kindHash(kind string) uint64 {
+	h := uint32(2166136261)
+	for i := 0; i < len(kind); i++ {
+		h = (h ^ uint32(kind[i])) * 16777619
+	}
+	return uint64(h | 1<<31)
 }
 
 // resultBuffer is what Emulate needs for one vector: its memory and its results. It is reused
@@ -67,8 +97,6 @@ type resultBuffer struct {
 	steps  []StepResult
 }
 
-var results = sync.Pool{New: func() any { return new(resultBuffer) }}
-
 func grow(v []Value, n int) []Value {
 	if cap(v) < n {
 		return make([]Value, n)
@@ -76,17 +104,35 @@ func grow(v []Value, n int) []Value {
 	return v[:n]
 }
 
-func (emulated) recycle(steps []StepResult) {
+func (em *emulated) recycle(steps []StepResult) {
 	if len(steps) > 0 && steps[0].buf != nil {
-		results.Put(steps[0].buf)
+		em.spare.Store(steps[0].buf)
 	}
 }
 
-func (m *Memory) index(a Addr) int {
-	key, keys := addrKey(a), m.req.keys
+// slot is a's index in the vector's devices, or -1. hint is the index to try first: the words
+// of a multi-word operand (D100, D101, D102) are usually next to each other in name order.
+func (m *Memory) slot(a Addr, hint int) int {
+	key, exact := addrKey(a)
+	keys, addrs := m.req.keys, m.req.addrs
+	if uint(hint) < uint(len(keys)) && keys[hint] == key && (exact || addrs[hint] == a) {
+		return hint
+	}
 	for i := range keys {
-		if keys[i] == key && m.req.addrs[i] == a {
+		if keys[i] == key && (exact || addrs[i] == a) {
 			return i
+		}
+	}
+	return -1
+}
+
+func (m *Memory) index(a Addr) int { return m.slot(a, -1) }
+
+// outsideIndex is a's index among the writes outside the vector, or -1.
+func (m *Memory) outsideIndex(a Addr) int {
+	for k := range m.outsideAddrs {
+		if m.outsideAddrs[k] == a {
+			return k
 		}
 	}
 	return -1
@@ -97,11 +143,12 @@ func (m *Memory) Get(a Addr) (Value, bool) {
 	if i := m.index(a); i >= 0 {
 		return m.vals[i], true
 	}
-	name := a.String()
-	for _, d := range m.outside {
-		if d.Name == name {
-			return d.Value, true
-		}
+	return m.getOutside(a)
+}
+
+func (m *Memory) getOutside(a Addr) (Value, bool) {
+	if k := m.outsideIndex(a); k >= 0 {
+		return m.outside[k].Value, true
 	}
 	return 0, false
 }
@@ -121,8 +168,15 @@ func (m *Memory) Words(a Addr, n int) []uint16 {
 
 // ReadWords fills dst with len(dst) consecutive words from a, without allocating.
 func (m *Memory) ReadWords(a Addr, dst []uint16) {
+	i := -1
 	for k := range dst {
-		dst[k] = m.Word(a.Offset(k))
+		w := a.Offset(k)
+		if i = m.slot(w, i+1); i >= 0 {
+			dst[k] = m.vals[i].Word()
+		} else {
+			v, _ := m.getOutside(w)
+			dst[k] = v.Word()
+		}
 	}
 }
 
@@ -138,14 +192,16 @@ func (m *Memory) Set(a Addr, v Value) {
 		m.vals[i] = v
 		return
 	}
-	name := a.String()
-	for k := range m.outside {
-		if m.outside[k].Name == name {
-			m.outside[k].Value = v
-			return
-		}
+	m.setOutside(a, v)
+}
+
+func (m *Memory) setOutside(a Addr, v Value) {
+	if k := m.outsideIndex(a); k >= 0 {
+		m.outside[k].Value = v
+		return
 	}
-	m.outside = append(m.outside, Device{name, v})
+	m.outside = append(m.outside, Device{a.String(), v})
+	m.outsideAddrs = append(m.outsideAddrs, a)
 }
 
 // SetWord writes a word device.
@@ -153,8 +209,14 @@ func (m *Memory) SetWord(a Addr, w uint16) { m.Set(a, Word(w)) }
 
 // SetWords writes consecutive words from a.
 func (m *Memory) SetWords(a Addr, words ...uint16) {
+	i := -1
 	for k, w := range words {
-		m.Set(a.Offset(k), Word(w))
+		d := a.Offset(k)
+		if i = m.slot(d, i+1); i >= 0 {
+			m.vals[i] = Word(w)
+		} else {
+			m.setOutside(d, Word(w))
+		}
 	}
 }
 
@@ -184,9 +246,15 @@ func (m *Memory) Operand(name string) uint16 {
 func (m *Memory) Request() *Request { return m.req }
 
 // apply writes a step's `set` (values written by the outside world before the step).
-func (m *Memory) apply(set map[string]Value) {
-	for name, v := range set {
-		m.Set(ParseAddr(name), v)
+func (m *Memory) apply(step *Inputs) {
+	if step.sets == nil { // a step NewRequest did not prepare
+		for name, v := range step.Set {
+			m.Set(ParseAddr(name), v)
+		}
+		return
+	}
+	for _, d := range step.sets {
+		m.Set(d.addr, d.value)
 	}
 }
 
@@ -208,19 +276,37 @@ type CPU interface {
 	Execute(mem *Memory, step *Inputs) (Result, error)
 }
 
+// Releaser is a CPU that Emulate hands back with Release once its vector is done (its last
+// step run, or an error), so that the emulator can reuse it for the next vector instead of
+// allocating one. Optional: an emulator whose NewCPU simply allocates needs nothing of it.
+type Releaser interface {
+	Release()
+}
+
 // Emulate is the Implementation that runs an Emulator.
-func Emulate(e Emulator) Implementation { return emulated{e} }
+func Emulate(e Emulator) Implementation { return &emulated{e: e} }
 
-type emulated struct{ e Emulator }
+type emulated struct {
+	e Emulator
+	// spare is the buffer of the vector judged last, handed back (recycle) for the next one to
+	// reuse; a swap, so vectors run in parallel each get their own.
+	spare atomic.Pointer[resultBuffer]
+}
 
-func (em emulated) Hello() Hello { return em.e.Hello() }
+func (em *emulated) Hello() Hello { return em.e.Hello() }
 
-func (em emulated) Run(req *Request) ([]StepResult, error) {
+func (em *emulated) Run(req *Request) ([]StepResult, error) {
 	cpu, err := em.e.NewCPU(req)
 	if err != nil {
 		return nil, err
 	}
-	buf := results.Get().(*resultBuffer)
+	if r, ok := cpu.(Releaser); ok {
+		defer r.Release()
+	}
+	buf := em.spare.Swap(nil)
+	if buf == nil {
+		buf = new(resultBuffer)
+	}
 	mem := &buf.mem
 	mem.reset(req)
 	n := len(req.Devices)
@@ -234,7 +320,7 @@ func (em emulated) Run(req *Request) ([]StepResult, error) {
 	for i := range req.Steps {
 		step := &req.Steps[i]
 		if step.Set != nil {
-			mem.apply(step.Set)
+			mem.apply(step)
 		}
 		r, err := cpu.Execute(mem, step)
 		if err != nil {

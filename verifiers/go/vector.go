@@ -1,6 +1,9 @@
 package plcvec
 
-import "encoding/json"
+import (
+	"encoding/json"
+	"sort"
+)
 
 // Vector is one test vector as the vector files hold it (vectors/schema/vector-file.schema.json).
 // Fields a later minor schema version adds are ignored, as CONTRACT.md asks.
@@ -61,6 +64,53 @@ type Inputs struct {
 	EN        bool             `json:"en"`
 	Input     bool             `json:"input"`
 	ElapsedMS int64            `json:"elapsed_ms"`
+	clock     []clockField     // Clock as a list, made once by NewRequest: a scan reads it, no map
+	sets      []setDevice      // Set with each address parsed, made once by NewRequest
+}
+
+type clockField struct {
+	name  string
+	value int
+}
+
+type setDevice struct {
+	addr  Addr
+	value Value
+}
+
+// ClockField is one field of the step's current clock ("hour", "year", as `clock` names them)
+// and whether the step gives it.
+func (in *Inputs) ClockField(name string) (int, bool) {
+	if in.clock == nil {
+		v, ok := in.Clock[name]
+		return v, ok
+	}
+	for _, f := range in.clock {
+		if f.name == name {
+			return f.value, true
+		}
+	}
+	return 0, false
+}
+
+// prepare makes the lists a scan reads in place of the maps.
+func (in *Inputs) prepare() {
+	in.clock, in.sets = nil, nil
+	if len(in.Clock) > 0 {
+		in.clock = make([]clockField, 0, len(in.Clock))
+		for name, v := range in.Clock {
+			in.clock = append(in.clock, clockField{name, v})
+		}
+	}
+	if len(in.Set) > 0 {
+		in.sets = make([]setDevice, 0, len(in.Set))
+		for name, v := range in.Set {
+			in.sets = append(in.sets, setDevice{ParseAddr(name), v})
+		}
+		// The order a map gives is random; writes to distinct devices commute, but the same
+		// order every run keeps a run repeatable.
+		sort.Slice(in.sets, func(a, b int) bool { return in.sets[a].addr.String() < in.sets[b].addr.String() })
+	}
 }
 
 // VectorStep is one step of a vector: its inputs and what it expects.

@@ -104,12 +104,19 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 }
 
 // Judge runs one case through impl and judges it (before known failures are applied).
-func (c *Case) Judge(impl Implementation) (verdict Verdict) {
+func (c *Case) Judge(impl Implementation) Verdict {
+	var verdict Verdict
+	c.judge(impl, &verdict)
+	return verdict
+}
+
+// judge writes the verdict in place: a run fills its report's verdicts without copying each.
+func (c *Case) judge(impl Implementation, verdict *Verdict) {
 	v := c.Vector
-	verdict = Verdict{ID: v.ID, Family: v.Family, Instruction: v.Instruction, Vector: v}
+	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector = v.ID, v.Family, v.Instruction, v
 	if c.expect == nil {
 		verdict.Status, verdict.Message = StatusSkip, "the implementation does not run "+v.Instruction
-		return verdict
+		return
 	}
 	verdict.Choices = c.expect.choices
 	defer func() {
@@ -126,7 +133,7 @@ func (c *Case) Judge(impl Implementation) (verdict Verdict) {
 		} else {
 			verdict.Status, verdict.Message = StatusError, "the implementation reported an error: "+err.Error()
 		}
-		return verdict
+		return
 	}
 	if verdict.Problems = c.expect.compare(c.Request, steps); verdict.Problems != nil {
 		verdict.Status = StatusFail
@@ -136,7 +143,6 @@ func (c *Case) Judge(impl Implementation) (verdict Verdict) {
 	if r, ok := impl.(recycler); ok {
 		r.recycle(steps)
 	}
-	return verdict
 }
 
 // recycler is an implementation of this package (Emulate's) whose step results the runner
@@ -178,7 +184,7 @@ func Verify(impl Implementation, opts Options) (*Report, error) {
 func (p *Plan) Verify(impl Implementation) *Report {
 	r := &Report{Plan: p, Verdicts: make([]Verdict, len(p.Cases))}
 	for i, c := range p.Cases {
-		r.Verdicts[i] = c.Judge(impl)
+		c.judge(impl, &r.Verdicts[i])
 	}
 	if p.Known != nil {
 		for i := range r.Verdicts {
