@@ -5,7 +5,6 @@ package reference
 
 import (
 	"fmt"
-	"strings"
 
 	"plcvec"
 	"plcvec/spec"
@@ -16,11 +15,11 @@ var pER = plcvec.Addr{Kind: "P_ER", N: -1}
 // The arithmetic flags: "the result of a time comparison instruction is reflected in the
 // arithmetic flags (=, <>, <, <=, >, >=)."
 var cp1eFlags = []struct {
-	condition string
+	condition condition
 	addr      plcvec.Addr
-}{{"=", plcvec.Addr{Kind: "P_EQ", N: -1}}, {"<>", plcvec.Addr{Kind: "P_NE", N: -1}},
-	{"<", plcvec.Addr{Kind: "P_LT", N: -1}}, {"<=", plcvec.Addr{Kind: "P_LE", N: -1}},
-	{">", plcvec.Addr{Kind: "P_GT", N: -1}}, {">=", plcvec.Addr{Kind: "P_GE", N: -1}}}
+}{{condEQ, plcvec.Addr{Kind: "P_EQ", N: -1}}, {condNE, plcvec.Addr{Kind: "P_NE", N: -1}},
+	{condLT, plcvec.Addr{Kind: "P_LT", N: -1}}, {condLE, plcvec.Addr{Kind: "P_LE", N: -1}},
+	{condGT, plcvec.Addr{Kind: "P_GT", N: -1}}, {condGE, plcvec.Addr{Kind: "P_GE", N: -1}}}
 
 // cp1eField is one byte of the Calendar/Clock Area layout, most significant first:
 // "A351.00 to A351.07 Second (00 to 59, BCD)  A351.08 to A351.15 Minute (00 to 59, BCD)
@@ -48,13 +47,15 @@ type cp1eConfig struct {
 	nonBCDError, rangeError bool   // CP1E-NON-BCD, CP1E-OUT-OF-RANGE
 	highBitsErr, erEach     bool   // CP1E-C-HIGH-BITS, CP1E-ER-FLAG
 	allMasked, andOrWhenOff string // CP1E-ALL-MASKED, CP1E-AND-OR-WHEN-OFF
+	cpus                    *spare[cp1e]
 }
 
 type cp1e struct {
 	*cp1eConfig
-	form, condition string
-	s1, s2          plcvec.Addr
-	c               plcvec.Operand
+	form      form
+	condition condition
+	s1, s2    plcvec.Addr
+	c         plcvec.Operand
 }
 
 func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
@@ -62,13 +63,12 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if err != nil {
 		return nil, err
 	}
-	c := &cp1e{cp1eConfig: cfg}
-	form, symbol, _ := strings.Cut(req.Instruction, " ")
-	if (form != "LD" && form != "AND" && form != "OR") || !strings.HasSuffix(symbol, "DT") ||
-		!knownCondition(strings.TrimSuffix(symbol, "DT")) {
+	in, ok := cp1eContact(req.Instruction)
+	if !ok {
 		return nil, fmt.Errorf("not a CP1E time comparison: %s", req.Instruction)
 	}
-	c.form, c.condition = form, strings.TrimSuffix(symbol, "DT")
+	c := cfg.cpus.get()
+	*c = cp1e{cp1eConfig: cfg, form: in.form, condition: in.condition}
 	if err := deviceOperands(req, []string{"S1", "S2"}, &c.s1, &c.s2); err != nil {
 		return nil, err
 	}
@@ -78,9 +78,12 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	return c, nil
 }
 
+// Release hands the CPU back for the next vector, which overwrites all of it.
+func (c *cp1e) Release() { c.cpus.put(c) }
+
 // configureCP1E: the CPU as the alternatives of the CP1E comparisons configure it.
 func configureCP1E(r *Reference) (c cp1eConfig, err error) {
-	c.parts = &r.parts
+	c.parts, c.cpus = &r.parts, &r.cp1eCPUs
 	for _, q := range []struct {
 		id, when, other string
 		flag            *bool
@@ -111,9 +114,9 @@ func configureCP1E(r *Reference) (c cp1eConfig, err error) {
 // instructions to control the execution of subsequent instructions."
 func (c *cp1e) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
 	switch c.form {
-	case "LD":
+	case formLD:
 		return plcvec.Contact(c.evaluate(mem)), nil
-	case "AND":
+	case formAND:
 		if !step.RLOIn && c.andOrWhenOff != spec.Cp1eAndOrWhenOffAlwaysExecuted {
 			return plcvec.Contact(false), nil
 		}

@@ -6,7 +6,6 @@ package reference
 
 import (
 	"fmt"
-	"strings"
 
 	"plcvec"
 	"plcvec/spec"
@@ -36,14 +35,15 @@ type fx5Config struct {
 	scope        string // FX5-SM709-SCOPE
 	andOrWhenOff string // FX5-AND-OR-WHEN-OFF
 	checkClockS2 bool   // FX5-CLOCK-S2-DEVICE-RANGE
+	cpus         *spare[fx5Compare]
 }
 
 type fx5Compare struct {
 	*fx5Config
 	fields    *[3]field
 	date      bool
-	form      string // LD, AND, OR
-	condition string // =, <>, >, <=, <, >=
+	form      form
+	condition condition
 	s1, s2    plcvec.Addr
 	s3        plcvec.Operand
 }
@@ -57,17 +57,12 @@ func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.
 	if err != nil {
 		return nil, err
 	}
-	c := &fx5Compare{fx5Config: cfg, fields: fields, date: kind == "DT"}
-	for _, form := range [3]string{"LD", "AND", "OR"} {
-		rest, ok := strings.CutPrefix(req.Instruction, form)
-		if ok && strings.HasPrefix(rest, kind) {
-			c.form, c.condition = form, rest[len(kind):]
-			break
-		}
-	}
-	if c.form == "" || !knownCondition(c.condition) {
+	in, ok := fx5Contact(req.Instruction)
+	if !ok || in.kind != kind {
 		return nil, fmt.Errorf("not an FX5 %s comparison: %s", kind, req.Instruction)
 	}
+	c := cfg.cpus.get()
+	*c = fx5Compare{fx5Config: cfg, fields: fields, date: kind == "DT", form: in.form, condition: in.condition}
 	if err := deviceOperands(req, []string{"s1", "s2"}, &c.s1, &c.s2); err != nil {
 		return nil, err
 	}
@@ -77,9 +72,12 @@ func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.
 	return c, nil
 }
 
+// Release hands the CPU back for the next vector, which overwrites all of it.
+func (c *fx5Compare) Release() { c.cpus.put(c) }
+
 // configureFX5: the CPU as the alternatives of the FX5 comparisons configure it.
 func configureFX5(r *Reference) (c fx5Config, err error) {
-	c.parts = &r.parts
+	c.parts, c.cpus = &r.parts, &r.fx5CPUs
 	if c.scope, err = r.choice(spec.InterpFx5Sm709Scope, spec.Fx5Sm709ScopeSelectedFields,
 		spec.Fx5Sm709ScopeAllWords, spec.Fx5Sm709ScopeComparedOperands); err != nil {
 		return c, err
@@ -96,42 +94,14 @@ func configureFX5(r *Reference) (c fx5Config, err error) {
 	return c, nil
 }
 
-// "The following table lists the comparison operation results of each instruction."
-// TM=/DT= (s1)=(s2), <> (s1)≠(s2), > (s1)>(s2), <= (s1)≤(s2), < (s1)<(s2), >= (s1)≥(s2).
-func holds(condition string, order int) bool {
-	switch condition {
-	case "=":
-		return order == 0
-	case "<>":
-		return order != 0
-	case ">":
-		return order > 0
-	case "<=":
-		return order <= 0
-	case "<":
-		return order < 0
-	case ">=":
-		return order >= 0
-	}
-	return false
-}
-
-func knownCondition(c string) bool {
-	switch c {
-	case "=", "<>", ">", "<=", "<", ">=":
-		return true
-	}
-	return false
-}
-
 // Execute is one scan of one LD/AND/OR contact. "(Devices are used as a normally open
 // contact.)" NOTES.md (iQ-R processing times): an AND/OR comparison is not executed while the
 // preceding logic decides it (FX5-AND-OR-WHEN-OFF).
 func (c *fx5Compare) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
 	switch c.form {
-	case "LD":
+	case formLD:
 		return plcvec.Contact(c.evaluate(mem, step)), nil
-	case "AND":
+	case formAND:
 		if !step.RLOIn && c.andOrWhenOff != spec.Fx5AndOrWhenOffAlwaysExecuted {
 			return plcvec.Contact(false), nil
 		}
@@ -166,7 +136,7 @@ func (c *fx5Compare) evaluate(mem *plcvec.Memory, step *plcvec.Inputs) bool {
 	}
 	if useClock {
 		for k, f := range c.fields {
-			s2[k] = step.Clock[f.name] // the current time or date
+			s2[k], _ = step.ClockField(f.name) // the current time or date
 		}
 	} else {
 		mem.ReadWords(c.s2, raw[:])

@@ -24,6 +24,7 @@ type hourMeter struct {
 	zeroNever  bool   // HOUR-PRESET-ZERO
 	fractionMS int64
 	wrapped    bool // for "recompared": D2 stays on across a wrap
+	cpus       *spare[hourMeter]
 }
 
 func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
@@ -34,7 +35,7 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if err != nil {
 		return nil, err
 	}
-	h := new(hourMeter)
+	h := base.cpus.get()
 	*h = *base
 	if h.s1, err = operand(req, "S1"); err != nil {
 		return nil, err
@@ -49,9 +50,12 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	return h, nil
 }
 
+// Release hands the CPU back for the next vector, which overwrites all of it.
+func (h *hourMeter) Release() { h.cpus.put(h) }
+
 // configureHour: the CPU as the alternatives of HOUR configure it.
 func configureHour(r *Reference) (h hourMeter, err error) {
-	h.parts = &r.parts
+	h.parts, h.cpus = &r.parts, &r.hourCPUs
 	output, err := r.choice(spec.InterpHourOutputOff, spec.HourOutputOffLatched, spec.HourOutputOffRecompared)
 	if err != nil {
 		return h, err

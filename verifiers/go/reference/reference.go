@@ -9,6 +9,7 @@ import (
 	"sort"
 	"strings"
 	"sync"
+	"sync/atomic"
 
 	"plcvec"
 	"plcvec/spec"
@@ -31,6 +32,11 @@ type Reference struct {
 	tadd configured[tadd]
 	hour configured[hourMeter]
 	cp1e configured[cp1eConfig]
+	// One CPU of each family handed back by Release, for the next vector to reuse.
+	fx5CPUs  spare[fx5Compare]
+	taddCPUs spare[tadd]
+	hourCPUs spare[hourMeter]
+	cp1eCPUs spare[cp1e]
 }
 
 type configured[T any] struct {
@@ -43,6 +49,20 @@ func (c *configured[T]) get(configure func() (T, error)) (*T, error) {
 	c.once.Do(func() { c.cpu, c.err = configure() })
 	return &c.cpu, c.err
 }
+
+// spare keeps one CPU that its vector is done with (Release) for the next vector of the same
+// family, so that running a vector allocates nothing; NewCPU overwrites all of it, so nothing
+// carries over. A swap, not a plain field: vectors run in parallel each get their own CPU.
+type spare[T any] struct{ p atomic.Pointer[T] }
+
+func (s *spare[T]) get() *T {
+	if p := s.p.Swap(nil); p != nil {
+		return p
+	}
+	return new(T)
+}
+
+func (s *spare[T]) put(p *T) { s.p.Store(p) }
 
 // New is the reference following the given alternatives (interpretation id -> alternative);
 // every other interpretation takes its default. An unknown interpretation or alternative is an

@@ -33,6 +33,7 @@ type tadd struct {
 	carryAt24    bool // TADD-EXACT-24
 	computeOnErr bool // TADD-ON-ERROR: computed
 	previousEN   bool // TADDP: the state before the first scan is off
+	cpus         *spare[tadd]
 }
 
 func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
@@ -40,7 +41,7 @@ func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if err != nil {
 		return nil, err
 	}
-	t := new(tadd)
+	t := base.cpus.get()
 	*t = *base
 	switch req.Instruction {
 	case spec.InstrTadd:
@@ -55,9 +56,12 @@ func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	return t, nil
 }
 
+// Release hands the CPU back for the next vector, which overwrites all of it.
+func (t *tadd) Release() { t.cpus.put(t) }
+
 // configureTADD: the CPU as the alternatives of TADD configure it.
 func configureTADD(r *Reference) (t tadd, err error) {
-	t.parts = &r.parts
+	t.parts, t.cpus = &r.parts, &r.taddCPUs
 	flags, err := r.choice(spec.InterpTaddFlagsOff, spec.TaddFlagsOffWrittenEachExecution, spec.TaddFlagsOffSetOnly)
 	if err != nil {
 		return t, err
