@@ -2,6 +2,7 @@ package plcvec
 
 import (
 	"fmt"
+	"slices"
 	"sort"
 )
 
@@ -46,26 +47,19 @@ func show(v Value) string {
 
 // compare judges reported steps against the expectation: nil when everything matches exactly.
 func (e *expected) compare(req *Request, steps []StepResult) []Problem {
-	if len(steps) != len(e.states) {
-		return []Problem{{Step: -1, Field: "steps", Expected: fmt.Sprintf("%d steps", len(e.states)),
+	if len(steps) != len(e.results) {
+		return []Problem{{Step: -1, Field: "steps", Expected: fmt.Sprintf("%d steps", len(e.results)),
 			Actual: fmt.Sprintf("%d steps", len(steps))}}
 	}
 	var problems []Problem
 	for i := range steps {
-		want := e.states[i]
+		want := e.state(i)
 		if r := e.results[i]; r != NoResult && steps[i].Result != r {
 			problems = append(problems, Problem{Step: i, Field: "result", Expected: r.String(), Actual: steps[i].Result.String()})
 		}
 		if vals := steps[i].Values; vals != nil && len(steps[i].Devices) == 0 && len(vals) == len(e.names) {
 			// The fast form, aligned with the request's devices, which are all the vector's.
-			same := true
-			for j := range vals {
-				if e.compared[j] && vals[j] != want[j] {
-					same = false
-					break
-				}
-			}
-			if same {
+			if e.scratch && sameCompared(vals, want, e.compared) || !e.scratch && slices.Equal(vals, want) {
 				continue
 			}
 		}
@@ -94,9 +88,19 @@ func (e *expected) compare(req *Request, steps []StepResult) []Problem {
 	return problems
 }
 
+// sameCompared reports whether got and want hold the same value wherever compared says so.
+func sameCompared(got, want []Value, compared []bool) bool {
+	for j := range got {
+		if compared[j] && got[j] != want[j] {
+			return false
+		}
+	}
+	return true
+}
+
 // deviceProblems compares one step's image device by device, in name order.
 func (e *expected) deviceProblems(step int, got []Device) []Problem {
-	want, before := e.states[step], e.befores[step]
+	want, before := e.state(step), e.before(step)
 	reported := make(map[string]Value, len(got))
 	var problems []Problem
 	for _, d := range got {

@@ -15,16 +15,28 @@ const absent Value = 1 << 31
 // So the full expected state after each step is worked out here once, and checked against the
 // vector's own `final`, so that an inconsistent vector file is caught, not trusted.
 type expected struct {
-	names    []string  // every device of the vector, sorted (usually just the initial ones)
-	compared []bool    // parallel to names: false for scratch words
-	states   [][]Value // per step, parallel to names; absent where the state has no such device
-	befores  [][]Value // per step: the state the step started from (after `set`), for messages
-	results  []Result  // per step: the contact result expected, NoResult when none
+	names    []string // every device of the vector, sorted (usually just the initial ones)
+	compared []bool   // parallel to names: false for scratch words
+	scratch  bool     // whether any device is a scratch word (not compared)
+	states   []Value  // step after step, each parallel to names; absent where the state has no such device
+	befores  []Value  // likewise: the state each step started from (after `set`), for messages
+	results  []Result // per step: the contact result expected, NoResult when none
 	choices  map[string]string
 	category string
 }
 
-func expectationOf(v *Vector, choices map[string]Choice, req *Request) (*expected, error) {
+// state is the full state expected after step i; before, the state the step started from.
+func (e *expected) state(i int) []Value {
+	n := len(e.names)
+	return e.states[i*n : (i+1)*n : (i+1)*n]
+}
+
+func (e *expected) before(i int) []Value {
+	n := len(e.names)
+	return e.befores[i*n : (i+1)*n : (i+1)*n]
+}
+
+func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request) (*expected, error) {
 	touched := v.Outcome.Interpretations
 	applied := make(map[string]string, len(touched))
 	isDefault := true
@@ -113,14 +125,19 @@ func expectationOf(v *Vector, choices map[string]Choice, req *Request) (*expecte
 			index[n] = i
 		}
 	}
-	e := &expected{names: names, compared: make([]bool, len(names)), choices: applied, category: category}
-	state := make([]Value, len(names))
+	e := a.expects.one(a.chunk)
+	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: applied, category: category}
+	n, steps := len(names), len(v.Steps)
+	e.states, e.befores = a.values.take(n*steps, a.chunk), a.values.take(n*steps, a.chunk)
+	e.results = a.results.take(steps, a.chunk)
+	state := make([]Value, n)
 	for i := range state {
 		state[i] = absent
 	}
-	for i, n := range names {
-		e.compared[i] = !scratch[n]
-		if val, ok := v.Initial.Devices[n]; ok {
+	for i, name := range names {
+		e.compared[i] = !scratch[name]
+		e.scratch = e.scratch || scratch[name]
+		if val, ok := v.Initial.Devices[name]; ok {
 			state[i] = val
 		}
 	}
@@ -128,18 +145,17 @@ func expectationOf(v *Vector, choices map[string]Choice, req *Request) (*expecte
 		for name, val := range st.Set {
 			state[index[name]] = val
 		}
-		e.befores = append(e.befores, append([]Value(nil), state...))
+		copy(e.before(i), state)
 		for name, val := range stepExpects[i].Devices {
 			state[index[name]] = val
 		}
-		e.states = append(e.states, append([]Value(nil), state...))
-		r := NoResult
+		copy(e.state(i), state)
+		e.results[i] = NoResult
 		if stepExpects[i].Result != nil {
-			r = Contact(*stepExpects[i].Result)
+			e.results[i] = Contact(*stepExpects[i].Result)
 		}
-		e.results = append(e.results, r)
 	}
-	last := e.states[len(e.states)-1]
+	last := e.state(steps - 1)
 	for i, n := range names {
 		if scratch[n] {
 			continue

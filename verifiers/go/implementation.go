@@ -102,6 +102,8 @@ type Request struct {
 	addrs       []Addr         // parallel to Devices
 	keys        []uint64       // parallel to Devices: addrKey of each
 	initial     []Value        // parallel to Devices: the initial image every memory copies
+	table       []uint16       // keys hashed: index + 1 of each device, 0 empty (Memory.slot)
+	shift       uint           // 64 - log2(len(table))
 	operands    []namedOperand // Operands by name, their addresses parsed once
 	sizes       []kindSize     // DeviceSizes as a list: a few entries, read on every range check
 }
@@ -124,11 +126,14 @@ func (r *Request) DeviceSize(kind string) (int, bool) {
 	return 0, false
 }
 
-func (r *Request) prepareSizes() {
-	r.sizes = make([]kindSize, 0, len(r.DeviceSizes))
+func (r *Request) prepareSizes() { r.prepareSizesIn(&arena{}) }
+
+func (r *Request) prepareSizesIn(a *arena) {
+	r.sizes = a.sizes.take(len(r.DeviceSizes), a.chunk)[:0]
 	for k, n := range r.DeviceSizes {
-		r.sizes = append(r.sizes, kindSize{k, n})
+		r.sizes = append(r.sizes, kindSize{a.intern(k), n})
 	}
+	sort.Slice(r.sizes, func(i, j int) bool { return r.sizes[i].kind < r.sizes[j].kind })
 }
 
 type namedOperand struct {
@@ -140,7 +145,7 @@ type namedOperand struct {
 // Operands[name] holds, with the device address parsed once for the whole run.
 func (r *Request) Operand(name string) (Operand, bool) {
 	if r.operands == nil {
-		r.prepareOperands()
+		r.prepareOperands(&arena{})
 	}
 	for i := range r.operands {
 		if r.operands[i].name == name {
@@ -150,42 +155,56 @@ func (r *Request) Operand(name string) (Operand, bool) {
 	return Operand{}, false
 }
 
-func (r *Request) prepareOperands() {
-	r.operands = make([]namedOperand, 0, len(r.Operands))
+func (r *Request) prepareOperands(a *arena) {
+	r.operands = a.operands.take(len(r.Operands), a.chunk)[:0]
 	for name, op := range r.Operands {
 		if op.Device != "" {
-			a := ParseAddr(op.Device)
-			op.addr = &a
+			op.addr = a.operandAddrs.one(a.chunk)
+			*op.addr = ParseAddr(op.Device)
+			op.addr.Kind = a.intern(op.addr.Kind)
 		}
-		r.operands = append(r.operands, namedOperand{name, op})
+		if op.Constant != nil { // a copy beside the others, not the decoder's own
+			c := a.ints.one(a.chunk)
+			*c = *op.Constant
+			op.Constant = c
+		}
+		r.operands = append(r.operands, namedOperand{a.intern(name), op})
 	}
+	sort.Slice(r.operands, func(i, j int) bool { return r.operands[i].name < r.operands[j].name })
 }
 
 // NewRequest builds the request of a vector (or of a run message received over stdio).
 func NewRequest(id, family, instruction string, sizes map[string]int, devices map[string]Value,
 	operands map[string]Operand, scratch []string, steps []Inputs) *Request {
-	r := &Request{ID: id, Family: family, Instruction: instruction, DeviceSizes: sizes,
+	return newRequest(&arena{}, id, family, instruction, sizes, devices, operands, scratch, steps)
+}
+
+// newRequest builds a request in the arena, with everything a run reads worked out once.
+func newRequest(a *arena, id, family, instruction string, sizes map[string]int, devices map[string]Value,
+	operands map[string]Operand, scratch []string, steps []Inputs) *Request {
+	r := a.requests.one(a.chunk)
+	*r = Request{ID: id, Family: a.intern(family), Instruction: a.intern(instruction), DeviceSizes: sizes,
 		Operands: operands, Scratch: scratch, Steps: steps}
 	for i := range steps {
-		steps[i].prepare()
+		steps[i].prepare(a)
 	}
-	r.Devices = make([]Device, 0, len(devices))
+	r.Devices = a.devices.take(len(devices), a.chunk)[:0]
 	for name, v := range devices {
 		r.Devices = append(r.Devices, Device{name, v})
 	}
-	sort.Slice(r.Devices, func(a, b int) bool { return r.Devices[a].Name < r.Devices[b].Name })
-	r.prepareAddrs()
-	r.prepareOperands()
-	r.prepareSizes()
+	sort.Slice(r.Devices, func(i, j int) bool { return r.Devices[i].Name < r.Devices[j].Name })
+	r.prepareAddrs(a)
+	r.prepareOperands(a)
+	r.prepareSizesIn(a)
 	return r
 }
 
-func requestOf(v *Vector) *Request {
-	steps := make([]Inputs, len(v.Steps))
+func requestOf(a *arena, v *Vector) *Request {
+	steps := a.inputs.take(len(v.Steps), a.chunk)
 	for i, st := range v.Steps {
 		steps[i] = st.Inputs
 	}
-	return NewRequest(v.ID, v.Family, v.Instruction, v.Assumes.DeviceSizes, v.Initial.Devices,
+	return newRequest(a, v.ID, v.Family, v.Instruction, v.Assumes.DeviceSizes, v.Initial.Devices,
 		v.Initial.Operands, v.Initial.Scratch, steps)
 }
 

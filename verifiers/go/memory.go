@@ -30,7 +30,7 @@ func NewMemory(req *Request) *Memory {
 // request was built.
 func (m *Memory) reset(req *Request) {
 	if req.addrs == nil {
-		req.prepareAddrs()
+		req.prepareAddrs(&arena{})
 	}
 	m.req, m.outside, m.outsideAddrs = req, m.outside[:0], m.outsideAddrs[:0]
 	if len(req.Devices) <= len(m.small) {
@@ -43,15 +43,17 @@ func (m *Memory) reset(req *Request) {
 
 // prepareAddrs works out once, for the whole run, what every memory of the request starts
 // from: each device's address, its lookup key, and the initial image as a flat list of values.
-func (r *Request) prepareAddrs() {
-	r.addrs = make([]Addr, len(r.Devices))
-	r.keys = make([]uint64, len(r.Devices))
-	r.initial = make([]Value, len(r.Devices))
+func (r *Request) prepareAddrs(a *arena) {
+	r.addrs = a.addrs.take(len(r.Devices), a.chunk)
+	r.keys = a.keys.take(len(r.Devices), a.chunk)
+	r.initial = a.values.take(len(r.Devices), a.chunk)
 	for i, d := range r.Devices {
 		r.addrs[i] = ParseAddr(d.Name)
+		r.addrs[i].Kind = a.intern(r.addrs[i].Kind)
 		r.keys[i], _ = addrKey(r.addrs[i])
 		r.initial[i] = d.Value
 	}
+	r.prepareTable(a)
 }
 
 // addrKey folds an address into one integer, its number above its kind, so that a lookup
@@ -110,23 +112,58 @@ func (em *emulated) recycle(steps []StepResult) {
 	}
 }
 
-// slot is a's index in the vector's devices, or -1. hint is the index to try first: the words
-// of a multi-word operand (D100, D101, D102) are usually next to each other in name order.
-func (m *Memory) slot(a Addr, hint int) int {
+// slot is a's index in the vector's devices, or -1: its key looked up in the request's table
+// (a linear scan for a request too large for one).
+func (m *Memory) slot(a Addr) int {
 	key, exact := addrKey(a)
-	keys, addrs := m.req.keys, m.req.addrs
-	if uint(hint) < uint(len(keys)) && keys[hint] == key && (exact || addrs[hint] == a) {
-		return hint
+	r := m.req
+	if r.table == nil {
+		for i := range r.keys {
+			if r.keys[i] == key && (exact || r.addrs[i] == a) {
+				return i
+			}
+		}
+		return -1
 	}
-	for i := range keys {
-		if keys[i] == key && (exact || addrs[i] == a) {
-			return i
+	mask := uint64(len(r.table) - 1)
+	for h := key * fibonacci >> r.shift; ; h = (h + 1) & mask {
+		s := int(r.table[h]) - 1
+		if s < 0 {
+			return -1
+		}
+		if r.keys[s] == key && (exact || r.addrs[s] == a) {
+			return s
 		}
 	}
-	return -1
 }
 
-func (m *Memory) index(a Addr) int { return m.slot(a, -1) }
+// fibonacci is 2^64 divided by the golden ratio: multiplying a key by it and keeping the top
+// bits spreads keys that differ only in their number (D100, D101) over the table.
+const fibonacci = 0x9E3779B97F4A7C15
+
+// prepareTable makes the request's lookup table: open addressing, at most half full, each
+// entry a device's index + 1 (0 is empty).
+func (r *Request) prepareTable(a *arena) {
+	r.table = nil
+	if len(r.keys) >= math.MaxUint16 {
+		return
+	}
+	bits := uint(3)
+	for 1<<bits < 2*len(r.keys) {
+		bits++
+	}
+	r.table, r.shift = a.slots.take(1<<bits, a.chunk), 64-bits
+	mask := uint64(len(r.table) - 1)
+	for i, key := range r.keys {
+		h := key * fibonacci >> r.shift
+		for r.table[h] != 0 {
+			h = (h + 1) & mask
+		}
+		r.table[h] = uint16(i + 1)
+	}
+}
+
+func (m *Memory) index(a Addr) int { return m.slot(a) }
 
 // outsideIndex is a's index among the writes outside the vector, or -1.
 func (m *Memory) outsideIndex(a Addr) int {
@@ -168,10 +205,9 @@ func (m *Memory) Words(a Addr, n int) []uint16 {
 
 // ReadWords fills dst with len(dst) consecutive words from a, without allocating.
 func (m *Memory) ReadWords(a Addr, dst []uint16) {
-	i := -1
 	for k := range dst {
 		w := a.Offset(k)
-		if i = m.slot(w, i+1); i >= 0 {
+		if i := m.slot(w); i >= 0 {
 			dst[k] = m.vals[i].Word()
 		} else {
 			v, _ := m.getOutside(w)
@@ -209,10 +245,9 @@ func (m *Memory) SetWord(a Addr, w uint16) { m.Set(a, Word(w)) }
 
 // SetWords writes consecutive words from a.
 func (m *Memory) SetWords(a Addr, words ...uint16) {
-	i := -1
 	for k, w := range words {
 		d := a.Offset(k)
-		if i = m.slot(d, i+1); i >= 0 {
+		if i := m.slot(d); i >= 0 {
 			m.vals[i] = Word(w)
 		} else {
 			m.setOutside(d, Word(w))

@@ -16,6 +16,17 @@ func TestMemoryFindsEveryDevice(t *testing.T) {
 		"LONGKIND7": Word(8), "LONGKINE7": Word(9), "Dé5": Word(10), "D\x005": Word(11), // kinds past 4 bytes, not ASCII, a NUL
 	}
 	req := NewRequest("t", "f", "I", nil, devices, map[string]Operand{}, nil, []Inputs{{}})
+	if req.table == nil {
+		t.Fatal("no lookup table")
+	}
+	t.Run("table", func(t *testing.T) { checkMemory(t, req, devices) })
+	// A request too large for a table is scanned instead.
+	req = NewRequest("t", "f", "I", nil, devices, map[string]Operand{}, nil, []Inputs{{}})
+	req.table = nil
+	t.Run("scan", func(t *testing.T) { checkMemory(t, req, devices) })
+}
+
+func checkMemory(t *testing.T, req *Request, devices map[string]Value) {
 	mem := NewMemory(req)
 	for name, want := range devices {
 		if got, ok := mem.Get(ParseAddr(name)); !ok || got != want {

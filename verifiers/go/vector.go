@@ -94,18 +94,21 @@ func (in *Inputs) ClockField(name string) (int, bool) {
 }
 
 // prepare makes the lists a scan reads in place of the maps.
-func (in *Inputs) prepare() {
+func (in *Inputs) prepare(a *arena) {
 	in.clock, in.sets = nil, nil
 	if len(in.Clock) > 0 {
 		in.clock = make([]clockField, 0, len(in.Clock))
 		for name, v := range in.Clock {
-			in.clock = append(in.clock, clockField{name, v})
+			in.clock = append(in.clock, clockField{a.intern(name), v})
 		}
+		sort.Slice(in.clock, func(i, j int) bool { return in.clock[i].name < in.clock[j].name })
 	}
 	if len(in.Set) > 0 {
 		in.sets = make([]setDevice, 0, len(in.Set))
 		for name, v := range in.Set {
-			in.sets = append(in.sets, setDevice{ParseAddr(name), v})
+			d := setDevice{ParseAddr(name), v}
+			d.addr.Kind = a.intern(d.addr.Kind)
+			in.sets = append(in.sets, d)
 		}
 		// The order a map gives is random; writes to distinct devices commute, but the same
 		// order every run keeps a run repeatable.

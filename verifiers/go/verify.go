@@ -62,6 +62,9 @@ type Case struct {
 	Vector  *Vector
 	Request *Request
 	expect  *expected // nil when the implementation does not run the instruction
+	// The vector's names as a verdict gives them, beside the rest of the case: a run reads
+	// nothing else of the vector unless it fails.
+	id, family, instruction string
 }
 
 // Prepare builds the plan of a run of impl: handshake, selection, expectations.
@@ -86,10 +89,12 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 		return nil, err
 	}
 	p := &Plan{Suite: suite, Hello: hello, Choices: choices, Cases: make([]*Case, len(vectors))}
+	a := runArena()
 	for i, v := range vectors {
-		c := &Case{Vector: v, Request: requestOf(v)}
+		c := a.cases.one(a.chunk)
+		*c = Case{Vector: v, Request: requestOf(a, v), id: v.ID, family: a.intern(v.Family), instruction: a.intern(v.Instruction)}
 		if hello.supports(v.Instruction) {
-			if c.expect, err = expectationOf(v, choices, c.Request); err != nil {
+			if c.expect, err = expectationOf(a, v, choices, c.Request); err != nil {
 				return nil, fmt.Errorf("%s: %w", suite.Source, err)
 			}
 		}
@@ -112,10 +117,9 @@ func (c *Case) Judge(impl Implementation) Verdict {
 
 // judge writes the verdict in place: a run fills its report's verdicts without copying each.
 func (c *Case) judge(impl Implementation, verdict *Verdict) {
-	v := c.Vector
-	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector = v.ID, v.Family, v.Instruction, v
+	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector = c.id, c.family, c.instruction, c.Vector
 	if c.expect == nil {
-		verdict.Status, verdict.Message = StatusSkip, "the implementation does not run "+v.Instruction
+		verdict.Status, verdict.Message = StatusSkip, "the implementation does not run "+c.instruction
 		return
 	}
 	verdict.Choices = c.expect.choices
