@@ -34,12 +34,28 @@ export const FIELDS: readonly BcdField[] = [
   { offset: 0, byte: 0, name: "second", min: 0, max: 59, mask: 0 },
 ];
 
-/** The flag table: rows S1 = S2, S1 > S2, S1 < S2. */
-const FLAG_TABLE: Readonly<Record<number, Readonly<Record<string, boolean>>>> = {
-  0: { "=": true, "<>": false, "<": false, "<=": true, ">": false, ">=": true },
-  1: { "=": false, "<>": true, "<": false, "<=": false, ">": true, ">=": true },
-  [-1]: { "=": false, "<>": true, "<": true, "<=": true, ">": false, ">=": false },
-};
+/**
+ * The flag table, rows S1 = S2, S1 > S2, S1 < S2: each flag is on exactly when its condition holds
+ * for the ordering of S1 against S2 (-1, 0, 1), and the contact is the flag of the instruction's condition.
+ */
+export function conditionHolds(condition: string, order: number): boolean {
+  switch (condition) {
+    case "=":
+      return order === 0;
+    case "<>":
+      return order !== 0;
+    case "<":
+      return order < 0;
+    case "<=":
+      return order <= 0;
+    case ">":
+      return order > 0;
+    case ">=":
+      return order >= 0;
+    default:
+      throw new Error(`not a CP1E comparison condition: ${condition}`);
+  }
+}
 
 export function isBcd(b: number): boolean {
   return b >> 4 <= 9 && (b & 0xf) <= 9;
@@ -74,8 +90,7 @@ export class Cp1eTimeCompare extends BaseMachine {
 
   /** "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <, <=, >, >=)". */
   protected reflectFlags(order: number): void {
-    const row = FLAG_TABLE[order]!;
-    for (const [symbol, flag] of FLAGS) this.mem.write(flag, row[symbol]!);
+    for (const [symbol, flag] of FLAGS) this.mem.write(flag, conditionHolds(symbol, order));
   }
 
   protected evaluate(condition: string, operands: Operands): boolean {
@@ -85,7 +100,8 @@ export class Cp1eTimeCompare extends BaseMachine {
     const c = mem.operand(operands["C"]!);
     if (c & 0xffc0 && this.choice("CP1E-C-HIGH-BITS") === "error") return this.error();
     // "To mask a time value, set the corresponding bit in the control word (C) to 1."
-    const allMasked = this.fields.every((f) => ((c >> f.mask) & 1) === 1);
+    let allMasked = true;
+    for (const f of this.fields) if (((c >> f.mask) & 1) === 0) allMasked = false;
     if (allMasked && this.choice("CP1E-ALL-MASKED") === "error") return this.error();
     if (allMasked && this.choice("CP1E-ALL-MASKED") === "not-compared") {
       // Nothing compared, no result: OFF, the flags untouched, no error.
@@ -97,19 +113,20 @@ export class Cp1eTimeCompare extends BaseMachine {
       if ((c >> f.mask) & 1) continue;
       const a = (s1[f.offset]! >> (8 * f.byte)) & 0xff;
       const b = (s2[f.offset]! >> (8 * f.byte)) & 0xff;
-      for (const raw of [a, b]) {
-        if (!this.isBcd(raw)) {
-          if (this.choice("CP1E-NON-BCD") === "error") return this.error();
-        } else if (bcdValue(raw) < f.min || bcdValue(raw) > f.max) {
-          if (this.choice("CP1E-OUT-OF-RANGE") === "error") return this.error();
-        }
-      }
+      if (this.invalidByte(a, f) || this.invalidByte(b, f)) return this.error();
       // "limited to comparing 8-bit time values": valid BCD bytes order as their numbers do.
       if (order === 0 && a !== b) order = a < b ? -1 : 1;
     }
     this.reflectFlags(order);
     if (this.choice("CP1E-ER-FLAG") === "reflects-each-execution") mem.write(ERROR_FLAG, false);
-    return FLAG_TABLE[order]![condition]!;
+    return conditionHolds(condition, order);
+  }
+
+  /** Whether a compared byte is an error under the declared alternatives: not BCD, or BCD outside the field's range. */
+  protected invalidByte(raw: number, f: BcdField): boolean {
+    if (!this.isBcd(raw)) return this.choice("CP1E-NON-BCD") === "error";
+    const v = bcdValue(raw);
+    return (v < f.min || v > f.max) && this.choice("CP1E-OUT-OF-RANGE") === "error";
   }
 
   execute(instruction: string, operands: Operands, step: StepInputs): boolean {

@@ -38,6 +38,7 @@ export function signed16(word: number): number {
 }
 
 export function deviceOf(op: Operand | undefined, name: string): string {
-  if (op === undefined || !("device" in op)) throw new Error(`operand ${name} must be a device`);
-  return op.device;
+  const device = (op as { readonly device?: unknown } | undefined)?.device;
+  if (typeof device !== "string") throw new Error(`operand ${name} must be a device`);
+  return device;
 }
