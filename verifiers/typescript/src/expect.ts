@@ -7,21 +7,34 @@
  * vector's own `final`, so that an inconsistent vector file is caught rather than trusted.
  */
 import { PlcvecError } from "./errors.js";
-import type { Devices, Outcome, StepExpect, Vector } from "./types.js";
+import { interned, internedResults } from "./intern.js";
+import { layoutOf, type Layout } from "./layout.js";
+import type { Devices, Outcome, StepExpect, Value, Vector } from "./types.js";
 
 export interface Expected {
-  readonly id: string;
+  // What judging a passing vector reads comes first, so that it shares a cache line.
   /** Per step: the contact result, or undefined for instructions that give none. */
   readonly results: readonly (boolean | undefined)[];
+  /** The vector's devices as slots (see layout.ts). */
+  readonly layout: Layout;
+  /** The value expected in each slot after each step, step after step (undefined: not listed yet). */
+  readonly image: readonly (Value | undefined)[];
+  /** The slots compared: all but scratch. */
+  readonly checked: readonly number[];
+  readonly scratch: ReadonlySet<string>;
+  /** The alternative applied for each interpretation the vector depends on. */
+  readonly applied: Readonly<Record<string, string>>;
+  /** Per step: the same as `image`, as the lists the runner checks a report's `devices` against. */
+  readonly checks: readonly DeviceCheck[];
+  readonly id: string;
   /** Per step: every listed device after the step, scratch left out. */
   readonly states: readonly Devices[];
   /** Per step: the state the step started from (after `set`), for messages. */
   readonly befores: readonly Devices[];
-  readonly scratch: ReadonlySet<string>;
   readonly outcome: Outcome;
-  /** The alternative applied for each interpretation the vector depends on. */
-  readonly applied: Readonly<Record<string, string>>;
 }
+
+const NO_SCRATCH: ReadonlySet<string> = new Set();
 
 export function expectedOf(
   vector: Vector,
@@ -63,7 +76,62 @@ export function expectedOf(
       `vector ${vector.id}: the per-step changes do not add up to \`final\` (the vector file is inconsistent; regenerate it)`,
     );
   }
-  return { id: vector.id, results, states, befores, scratch, outcome, applied };
+  const layout = expectedLayout(vector);
+  const has = Object.prototype.hasOwnProperty;
+  const image = states.flatMap((state) => layout.names.map((name) => (has.call(state, name) ? state[name] : undefined)));
+  const checked = interned([...layout.names.keys()].filter((slot) => !scratch.has(layout.names[slot]!)));
+  return {
+    results: internedResults(results),
+    layout,
+    image,
+    checked,
+    scratch: scratch.size === 0 ? NO_SCRATCH : scratch,
+    applied: interned(applied),
+    checks: states.map(deviceCheck),
+    id: vector.id,
+    states,
+    befores,
+    outcome,
+  };
+}
+
+/**
+ * Every device a vector names, initial state first: the slots of its device image. Devices named
+ * only by a later step, an alternative or `final` get a slot too, so that one layout serves the
+ * request and every expectation of the vector.
+ */
+export function expectedLayout(vector: Vector): Layout {
+  const names = [...Object.keys(vector.initial.devices), ...(vector.initial.scratch ?? [])];
+  for (const step of vector.steps) names.push(...Object.keys(step.set ?? {}), ...Object.keys(step.expect.devices));
+  for (const alt of vector.alternatives ?? []) for (const e of alt.expect) names.push(...Object.keys(e.devices));
+  names.push(...Object.keys(vector.final.devices));
+  return layoutOf(names);
+}
+
+/** The devices one step must leave, as parallel lists: the names are interned strings, looked up as they are. */
+export interface DeviceCheck {
+  readonly names: readonly string[];
+  readonly values: readonly Value[];
+}
+
+function deviceCheck(devices: Devices): DeviceCheck {
+  const names = Object.keys(devices);
+  return { names, values: names.map((k) => devices[k]!) };
+}
+
+/**
+ * Whether `got` holds exactly the checked devices with the same values and JSON types (true is
+ * not 1), leaving out devices in `skip` (scratch). This runs once per step of every vector: no
+ * key arrays, no allocation.
+ */
+export function holds(got: Devices, check: DeviceCheck, skip: ReadonlySet<string>): boolean {
+  const names = check.names;
+  const values = check.values;
+  for (let i = 0; i < names.length; i++) if (got[names[i]!] !== values[i]) return false;
+  let n = 0;
+  if (skip.size === 0) for (const _ in got) n++;
+  else for (const k in got) if (!skip.has(k)) n++;
+  return n === names.length;
 }
 
 /** Same devices, same values, same JSON types (true is not 1). */

@@ -4,89 +4,109 @@
  * done here, as CONTRACT.md says.
  */
 import type { Implementation } from "./run.js";
-import type { Devices, Operand, RunOutcome, StepInputs, Value, VectorRequest } from "./types.js";
+import { inspect } from "node:util";
 
-const ADDRESS = /^([A-Za-z_]+?)(\d+)$/;
+import { deviceOffset, InitialImage, layoutOf, parseAddress, type Layout } from "./layout.js";
+import { initialImageOf } from "./request.js";
+import type { Devices, Operand, RunOutcome, StepInputs, StepResult, Value, VectorRequest } from "./types.js";
 
-/** Parsed device addresses, `D100` -> ["D", 100]: a program names few devices, so each is parsed once. */
-const parsed = new Map<string, readonly [string, number] | null>();
-
-function parse(address: string): readonly [string, number] | null {
-  let p = parsed.get(address);
-  if (p === undefined) {
-    const m = ADDRESS.exec(address);
-    p = m === null ? null : [m[1] as string, Number(m[2])];
-    parsed.set(address, p);
-  }
-  return p;
+/** A device's value read as a word: a bit is 1 or 0, a device holding nothing reads 0. */
+function asWord(v: Value | undefined): number {
+  return typeof v === "number" ? v : v === true ? 1 : 0;
 }
 
-/** `D100` -> ["D100", "D101", ...], filled as they are asked for. */
-const following = new Map<string, string[]>();
-
-/** A device image: word devices hold 0..65535, bit devices true/false. */
+/**
+ * A device image: word devices hold 0..65535, bit devices true/false.
+ *
+ * The devices the vector lists live in slots of an array (see layout.ts), copied from the
+ * prepared initial image; a device written that the vector does not list is kept apart, so that
+ * a snapshot reports it and the runner can call it a write outside the vector.
+ */
 export class Memory {
-  /** Device address -> value. A Map: every vector names other devices, and objects of ever-new shapes would make every access megamorphic. */
-  readonly values: Map<string, Value>;
   /** Points of each device type, e.g. {D: 8000} means D0..D7999. */
   readonly sizes: Readonly<Record<string, number>>;
+  private readonly layout: Layout;
+  private readonly slots: ReadonlyMap<string, number>;
+  /** Slot -> value; undefined while a device named only by a later step is not yet set or written. */
+  private readonly image: (Value | undefined)[];
+  /** Devices written or set that have no slot, in the order first written. */
+  private others: Map<string, Value> | undefined;
 
-  constructor(devices: Devices, sizes: Readonly<Record<string, number>> = {}) {
-    this.values = new Map();
-    for (const k in devices) this.values.set(k, devices[k]!);
+  /** From a vector's devices, or from a prepared initial image (Memory.forRequest). */
+  constructor(devices: Devices | InitialImage, sizes: Readonly<Record<string, number>> = {}) {
+    const initial = devices instanceof InitialImage ? devices : InitialImage.of(layoutOf(Object.keys(devices)), devices);
+    this.layout = initial.layout;
+    this.slots = initial.layout.slots;
+    this.image = initial.values.slice();
+    this.others = undefined;
     this.sizes = sizes;
+  }
+
+  /** The image a request starts from: its `initial.devices` with its `assumes.device_sizes`. */
+  static forRequest(request: VectorRequest): Memory {
+    return new Memory(initialImageOf(request), request.assumes.device_sizes);
+  }
+
+  /** The value a device holds, or undefined when it holds none (neither listed, set nor written). */
+  value(address: string): Value | undefined {
+    const slot = this.slots.get(address);
+    return slot !== undefined ? this.image[slot] : this.others?.get(address);
   }
 
   /** A word (an unlisted device reads 0). */
   word(address: string): number {
-    const v = this.values.get(address);
-    return typeof v === "number" ? v : v === true ? 1 : 0;
+    return asWord(this.value(address));
   }
 
   bit(address: string): boolean {
-    const v = this.values.get(address);
+    const v = this.value(address);
     return v === true || (typeof v === "number" && v !== 0);
+  }
+
+  /** Store a value as it is. */
+  private store(address: string, value: Value): void {
+    const slot = this.slots.get(address);
+    if (slot !== undefined) this.image[slot] = value;
+    else (this.others ??= new Map()).set(address, value);
   }
 
   /** Write a word (stored as its raw 16 bits) or a bit. */
   write(address: string, value: Value): void {
-    this.values.set(address, typeof value === "number" ? value & 0xffff : value);
+    this.store(address, typeof value === "number" ? value & 0xffff : value);
   }
 
   /** Apply values written by the outside world (a step's `set`). */
   set(values: Devices | undefined): void {
-    if (values !== undefined) for (const k in values) this.values.set(k, values[k]!);
+    if (values !== undefined) for (const k in values) this.store(k, values[k]!);
   }
 
-  /** `D100`, 2 -> `D102` (each name built once: a new string would be hashed afresh on every lookup). */
+  /** `D100`, 2 -> `D102`. */
   static offset(base: string, offset: number): string {
-    let names = following.get(base);
-    if (names === undefined) {
-      names = [base];
-      following.set(base, names);
-    }
-    let name = names[offset];
-    if (name === undefined) {
-      const p = parse(base);
-      if (p === null) throw new Error(`${base} is not a numbered device`);
-      name = names[offset] = `${p[0]}${p[1] + offset}`;
-    }
-    return name;
+    return deviceOffset(base, offset);
   }
 
   words(base: string, count: number): number[] {
-    const out: number[] = [];
-    for (let i = 0; i < count; i++) out.push(this.word(Memory.offset(base, i)));
+    const run = this.layout.run(base, count);
+    const out = new Array<number>(count);
+    for (let i = 0; i < count; i++) {
+      const slot = run[i]!;
+      out[i] = asWord(slot >= 0 ? this.image[slot] : this.others?.get(deviceOffset(base, i)));
+    }
     return out;
   }
 
   writeWords(base: string, words: readonly number[]): void {
-    for (let i = 0; i < words.length; i++) this.write(Memory.offset(base, i), words[i]!);
+    const run = this.layout.run(base, words.length);
+    for (let i = 0; i < words.length; i++) {
+      const slot = run[i]!;
+      if (slot >= 0) this.image[slot] = words[i]! & 0xffff;
+      else this.write(deviceOffset(base, i), words[i]!);
+    }
   }
 
   /** True when base .. base+count-1 all exist (a device type of unstated size is assumed to). */
   inRange(base: string, count: number): boolean {
-    const p = parse(base);
+    const p = parseAddress(base);
     if (p === null) return false;
     const size = this.sizes[p[0]];
     return size === undefined || p[1] + count <= size;
@@ -97,10 +117,76 @@ export class Memory {
     return "constant" in op ? op.constant & 0xffff : this.word(op.device);
   }
 
+  /** Every device that holds a value: the listed ones in the vector's order, then any other written. */
   snapshot(): Devices {
-    const out: Record<string, Value> = {};
-    for (const [k, v] of this.values) out[k] = v;
-    return out;
+    return devicesOf(this.layout.names, this.image, this.others);
+  }
+
+  /**
+   * What an implementation reports after a step: the contact result (undefined for TADD and HOUR)
+   * and this image as it is now. The image is copied as slots; `devices` is built from them when
+   * first read, so a runner that compares slots never builds an object of device names.
+   */
+  report(result: boolean | undefined): StepResult {
+    return new MemoryStep(result, this.layout, this.image.slice(), this.others === undefined ? undefined : new Map(this.others));
+  }
+}
+
+function devicesOf(names: readonly string[], image: readonly (Value | undefined)[], others: ReadonlyMap<string, Value> | undefined): Devices {
+  const out: Record<string, Value> = {};
+  for (let i = 0; i < image.length; i++) {
+    const v = image[i];
+    if (v !== undefined) out[names[i]!] = v;
+  }
+  if (others !== undefined) for (const [k, v] of others) out[k] = v;
+  return out;
+}
+
+/**
+ * A step reported from a Memory. It reads like any StepResult (`devices` is built on first read
+ * and kept, and JSON.stringify writes it), but a runner comparing against the same layout checks
+ * its slots instead, as long as nobody has read, and so perhaps changed, `devices`. Spreading or
+ * cloning one gives an object without `devices`, which a runner reports as every device missing.
+ */
+export class MemoryStep implements StepResult {
+  declare readonly result?: boolean;
+  #devices: Devices | undefined = undefined;
+
+  constructor(
+    result: boolean | undefined,
+    private readonly layout: Layout,
+    private readonly image: readonly (Value | undefined)[],
+    private readonly others: ReadonlyMap<string, Value> | undefined,
+  ) {
+    if (result !== undefined) (this as { result?: boolean }).result = result;
+  }
+
+  get devices(): Devices {
+    return (this.#devices ??= devicesOf(this.layout.names, this.image, this.others));
+  }
+
+  /**
+   * True when this step's slots of `layout` equal `want` (from index `from` on) at every slot in `checked` (undefined on
+   * both sides: a device neither listed yet nor written) and nothing outside the layout was
+   * written. False whenever that cannot be said from the slots alone: `devices` was read, the
+   * layout is another, or any value differs; the caller then compares `devices`.
+   */
+  sameSlots(layout: Layout, want: readonly (Value | undefined)[], from: number, checked: readonly number[]): boolean {
+    if (this.#devices !== undefined || layout !== this.layout || this.others !== undefined) return false;
+    const image = this.image;
+    for (let i = 0; i < checked.length; i++) {
+      const slot = checked[i]!;
+      if (image[slot] !== want[from + slot]) return false;
+    }
+    return true;
+  }
+
+  toJSON(): StepResult {
+    return this.result === undefined ? { devices: this.devices } : { result: this.result, devices: this.devices };
+  }
+
+  [inspect.custom](): StepResult {
+    return this.toJSON();
   }
 }
 
@@ -128,12 +214,11 @@ export function executeOnMemory(impl: MemoryImplementation): Implementation {
     ...(impl.instructions !== undefined ? { instructions: impl.instructions } : {}),
     ...(impl.choices !== undefined ? { choices: impl.choices } : {}),
     run(request: VectorRequest): RunOutcome {
-      const memory = new Memory(request.initial.devices, request.assumes.device_sizes);
+      const memory = Memory.forRequest(request);
       const state: Record<string, unknown> = {};
       const steps = request.steps.map((step) => {
         memory.set(step.set);
-        const result = impl.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state });
-        return result === undefined ? { devices: memory.snapshot() } : { result, devices: memory.snapshot() };
+        return memory.report(impl.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state }));
       });
       return { steps };
     },

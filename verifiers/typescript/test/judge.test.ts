@@ -12,7 +12,9 @@ import {
   loadSuite,
   parseKnownFailures,
   PlcvecError,
+  requestOf,
   runVectors,
+  type StepResult,
   type Implementation,
   type VectorRequest,
 } from "../src/index.js";
@@ -29,7 +31,7 @@ function edited(id: string, edit: (steps: { result?: boolean; devices: Record<st
     run(request: VectorRequest) {
       const answer = ref.run(request);
       if (request.id !== id || !("steps" in answer)) return answer;
-      const steps = structuredClone(answer.steps) as { result?: boolean; devices: Record<string, unknown> }[];
+      const steps = answer.steps.map((s) => ({ ...s, devices: { ...s.devices } })) as { result?: boolean; devices: Record<string, unknown> }[];
       edit(steps);
       return { steps } as ReturnType<Implementation["run"]>;
     },
@@ -77,6 +79,48 @@ test("a contact result is compared after every step, and the number of steps", (
   assert.match(describeResult(flipped.results[0]!), /step 0 result: expected (true|false), got (true|false)/);
   const short = runVectors(edited(id, (s) => { s.pop(); }), only(id));
   assert.match(describeResult(short.results[0]!), /steps: expected 1 steps, got 0 steps/);
+});
+
+test("a reported step whose devices were read and then changed is judged by what they now hold", () => {
+  const inPlace: Implementation = {
+    name: "changed in place",
+    run(request: VectorRequest) {
+      const answer = ref.run(request);
+      if ("steps" in answer) (answer.steps[0]!.devices as Record<string, unknown>)["D31"] = 41;
+      return answer;
+    },
+  };
+  assert.match(describeResult(runVectors(inPlace, only(MANUAL_TADD)).results[0]!), /step 0 D31: expected 40, got 41/);
+});
+
+test("a step of the memory helper reads and serializes with its devices; a spread copy has none and fails", () => {
+  const answer = ref.run(requestOf(suite.byId.get(MANUAL_TADD)!));
+  assert.ok("steps" in answer);
+  const step = answer.steps[0]!;
+  assert.deepEqual([step.devices["D30"], step.devices["D31"], step.devices["D32"]], [13, 40, 15]);
+  assert.deepEqual((JSON.parse(JSON.stringify(step)) as { devices: unknown }).devices, { ...step.devices });
+  const spread: Implementation = {
+    name: "spread",
+    run(request: VectorRequest) {
+      const a = ref.run(request);
+      return "steps" in a ? { steps: a.steps.map((s) => ({ ...s }) as StepResult) } : a;
+    },
+  };
+  assert.match(describeResult(runVectors(spread, only(MANUAL_TADD)).results[0]!), /step 0 D31: expected 40, got <not reported>/);
+});
+
+test("the parts a request shares with other vectors cannot be written", () => {
+  const writer: Implementation = {
+    name: "writer",
+    run(request: VectorRequest) {
+      (request.initial.operands as Record<string, unknown>)["s1"] = { device: "D0" };
+      return ref.run(request);
+    },
+  };
+  const report = runVectors(writer, only(MANUAL_TADD));
+  assert.equal(report.counts.error, 1);
+  assert.match(describeResult(report.results[0]!), /writer threw TypeError/);
+  assert.equal(runVectors(ref, only(MANUAL_TADD)).passed, true);
 });
 
 test("an implementation that throws errors that vector; one that skips is skipped", () => {

@@ -2,7 +2,7 @@
 import assert from "node:assert/strict";
 import { describe, test } from "node:test";
 
-import { FAMILIES, loadSuite, runVectors } from "../src/index.js";
+import { FAMILIES, loadSuite, runVectors, type Implementation } from "../src/index.js";
 import { MUTANTS, mutant, type Aspect } from "../src/mutants/index.js";
 
 const suite = loadSuite();
@@ -48,4 +48,27 @@ test("a write outside the vector is reported as such", () => {
   const report = runVectors(mutant("tadd-writes-past-range"), { suite, selection: { families: ["fx5-time-add"] } });
   const problems = report.results.flatMap((r) => r.problems);
   assert.ok(problems.some((p) => p.expected === "<not in the vector>"), JSON.stringify(problems.slice(0, 3)));
+});
+
+/** The same implementation, its steps copied into plain objects: what a runner gets from an implementation of its own. */
+function asPlainObjects(impl: Implementation): Implementation {
+  return {
+    name: impl.name,
+    run(request) {
+      const answer = impl.run(request);
+      return "steps" in answer ? { steps: answer.steps.map((s) => ({ ...s, devices: { ...s.devices } })) } : answer;
+    },
+  };
+}
+
+test("every mutant is judged alike whether its steps are compared by slot or as plain objects", () => {
+  for (const name of Object.keys(MUTANTS)) {
+    const bySlot = runVectors(mutant(name), { suite }).results;
+    const byObject = runVectors(asPlainObjects(mutant(name)), { suite }).results;
+    assert.deepEqual(
+      byObject.map((r) => [r.id, r.status, r.problems]),
+      bySlot.map((r) => [r.id, r.status, r.problems]),
+      name,
+    );
+  }
 });

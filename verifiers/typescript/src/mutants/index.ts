@@ -40,9 +40,9 @@ class LeAsLt extends Fx5CompareMachine {
 /** SM709 cleared by an execution without error, though the manual holds it until power-off. */
 class Sm709Cleared extends Fx5CompareMachine {
   protected override evaluate(condition: string, operands: Operands, clock: StepInputs["clock"]): boolean {
-    const before = this.mem.values.get("SM709");
+    const before = this.mem.value("SM709");
     const result = super.evaluate(condition, operands, clock);
-    if (this.mem.values.get("SM709") === before) this.mem.write("SM709", false);
+    if (this.mem.value("SM709") === before) this.mem.write("SM709", false);
     return result;
   }
 }
@@ -141,7 +141,7 @@ class FlagsNotReflected extends Cp1eTimeCompare {
 /** P_ER held from an earlier error, whatever the declared alternative (the "held" reading forced). */
 class ErHeld extends Cp1eTimeCompare {
   protected override evaluate(condition: string, operands: Operands): boolean {
-    const before = this.mem.values.get("P_ER");
+    const before = this.mem.value("P_ER");
     const result = super.evaluate(condition, operands);
     if (before === true) this.mem.write("P_ER", true);
     return result;

@@ -3,7 +3,7 @@
  * manual pages the way an emulator author would, that must pass every vector under every
  * combination of alternatives. It is also what the mutants break, one bug each.
  */
-import { FAMILIES } from "../generated/names.js";
+import { FAMILIES, INTERPRETATIONS, type InterpretationId } from "../generated/names.js";
 import { Memory } from "../memory.js";
 import type { Implementation } from "../run.js";
 import type { RunOutcome, StepResult, VectorRequest } from "../types.js";
@@ -30,19 +30,22 @@ export function machineImplementation(
   machines: Readonly<Record<string, MachineFactory>>,
   choices: Readonly<Record<string, string>> = {},
 ): Implementation {
+  // Every interpretation's alternative looked up once here, so that a machine's `choice` finds each on one object.
+  const followed: Record<string, string> = {};
+  for (const id of Object.keys(INTERPRETATIONS) as InterpretationId[]) followed[id] = choices[id] ?? INTERPRETATIONS[id].default;
   return {
     name,
     choices,
     run(request: VectorRequest): RunOutcome {
       const factory = machines[request.family];
       if (factory === undefined) return { skip: `no machine for family ${request.family}` };
-      const mem = new Memory(request.initial.devices, request.assumes.device_sizes);
-      const machine = factory(mem, choices);
+      const mem = Memory.forRequest(request);
+      const machine = factory(mem, followed);
       const steps: StepResult[] = [];
       for (const step of request.steps) {
         mem.set(step.set);
         const result = machine.execute(request.instruction, request.initial.operands, step);
-        steps.push(machine.contact ? { result: result === true, devices: mem.snapshot() } : { devices: mem.snapshot() });
+        steps.push(mem.report(machine.contact ? result === true : undefined));
       }
       return { steps };
     },

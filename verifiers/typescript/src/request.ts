@@ -1,0 +1,52 @@
+/**
+ * What an implementation receives for a vector: the vector without its expectations
+ * (CONTRACT.md), prepared once per vector with what running it needs resolved.
+ */
+import { expectedLayout } from "./expect.js";
+import { internString, interned } from "./intern.js";
+import { InitialImage, layoutOf } from "./layout.js";
+import type { Initial, StepInputs, Vector, VectorRequest } from "./types.js";
+
+/**
+ * A request prepared from a vector. Its fields are the contract's and nothing else (it prints,
+ * serializes and spreads as them); it also carries, privately, the vector's initial device image,
+ * whose layout covers every device the vector names, so that Memory.forRequest copies an array.
+ * The parts equal across vectors (operands, steps, device sizes) are shared and frozen.
+ */
+class PreparedRequest implements VectorRequest {
+  readonly id: string;
+  readonly family: string;
+  readonly instruction: string;
+  readonly assumes: VectorRequest["assumes"];
+  readonly initial: Initial;
+  readonly steps: readonly StepInputs[];
+  readonly #image: InitialImage;
+
+  constructor(vector: Vector) {
+    this.#image = InitialImage.of(expectedLayout(vector), vector.initial.devices);
+    this.id = vector.id;
+    this.family = internString(vector.family);
+    this.instruction = internString(vector.instruction);
+    this.assumes = interned(vector.assumes);
+    const { devices, operands, scratch } = vector.initial;
+    this.initial = scratch === undefined ? { devices, operands: interned(operands) } : { devices, operands: interned(operands), scratch: interned(scratch) };
+    this.steps = interned(vector.steps.map(({ expect: _expect, ...inputs }) => inputs));
+  }
+
+  static imageOf(request: VectorRequest): InitialImage | undefined {
+    return #image in request ? request.#image : undefined;
+  }
+}
+
+/** The part of a vector an implementation receives: everything needed to run it, no expectation. */
+export function requestOf(vector: Vector): VectorRequest {
+  return new PreparedRequest(vector);
+}
+
+/** The initial image of a request: the one it was prepared with, or one worked out now (a request from elsewhere). */
+export function initialImageOf(request: VectorRequest): InitialImage {
+  const prepared = PreparedRequest.imageOf(request);
+  if (prepared !== undefined) return prepared;
+  const devices = request.initial.devices;
+  return InitialImage.of(layoutOf(Object.keys(devices)), devices);
+}
