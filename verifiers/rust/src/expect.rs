@@ -9,18 +9,21 @@ use std::collections::BTreeMap;
 
 use crate::choices::Choices;
 use crate::error::{Error, Result};
+use crate::small::Small;
 use crate::value::Value;
-use crate::vector::{Expectation, Vector};
+use crate::vector::{Expectation, Vector, INLINE_SLOTS};
 use crate::Suite;
 
 /// The expectation of one vector under one set of alternatives.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Expected {
     /// Per step: the contact result, for contact instructions.
-    pub results: Vec<Option<bool>>,
-    /// Per step: every slot's value after the step (scratch slots hold their initial value and
-    /// are never compared).
-    pub states: Vec<Vec<Value>>,
+    results: Small<Option<bool>, 4>,
+    /// Every slot's value after each step, the steps one after the other (scratch slots hold
+    /// their initial value and are never compared): one flat table, inline for a short vector.
+    states: Small<Value, INLINE_SLOTS>,
+    /// Slots per step.
+    slots: usize,
     /// The interpretations the vector depends on, with the alternative it is judged by.
     pub choices: Vec<(String, String)>,
     /// The outcome category under these alternatives (`value`, `error`, `implementation-defined`).
@@ -57,7 +60,7 @@ impl Expected {
                 })?
         };
         let mut state = vector.initial().to_vec();
-        let mut states = Vec::with_capacity(chosen.steps.len());
+        let mut states = Vec::with_capacity(chosen.steps.len() * state.len());
         let mut results = Vec::with_capacity(chosen.steps.len());
         for (step, expect) in vector.steps().iter().zip(&chosen.steps) {
             for &(slot, v) in step.set() {
@@ -66,10 +69,10 @@ impl Expected {
             for &(slot, v) in &expect.devices {
                 state[slot] = v;
             }
-            states.push(state.clone());
+            states.extend_from_slice(&state);
             results.push(expect.result);
         }
-        let last = states.last().expect("a vector has at least one step");
+        let last = &state;
         let scratch = vector.scratch();
         let listed = vector.devices().iter().zip(last).zip(scratch).filter(|(_, &s)| !s);
         let consistent = listed.clone().count() == chosen.final_devices.len()
@@ -80,11 +83,34 @@ impl Expected {
                 vector.id()
             )));
         }
-        Ok(Expected { results, states, choices: applied, category: chosen.category.clone() })
+        Ok(Expected {
+            results: Small::from_slice(&results),
+            states: Small::from_slice(&states),
+            slots: state.len(),
+            choices: applied,
+            category: chosen.category.clone(),
+        })
     }
-}
 
-impl Expected {
+    /// How many steps the vector has.
+    pub fn steps(&self) -> usize {
+        self.results.len()
+    }
+
+    /// Per step: the contact result the vector expects (`None` for an instruction that is no
+    /// contact).
+    pub fn results(&self) -> &[Option<bool>] {
+        &self.results
+    }
+
+    /// Every slot's value after step `step`, slot-aligned with [`Vector::devices`].
+    pub fn state(&self, step: usize) -> Option<&[Value]> {
+        if step >= self.steps() {
+            return None;
+        }
+        self.states.get(step * self.slots..(step + 1) * self.slots)
+    }
+
     /// A slot's value before step `step` executed (after its `set`): shown beside a difference.
     /// Worked out only for a failure, so a passing run never pays for it.
     pub fn before(&self, vector: &Vector, step: usize, slot: usize) -> Value {
@@ -92,7 +118,7 @@ impl Expected {
         match (set, step) {
             (Some(&(_, v)), _) => v,
             (None, 0) => vector.initial()[slot],
-            (None, _) => self.states[step - 1][slot],
+            (None, _) => self.state(step - 1).map_or(vector.initial()[slot], |s| s[slot]),
         }
     }
 }

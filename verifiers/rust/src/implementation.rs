@@ -7,8 +7,9 @@ use crate::choices::Choices;
 use crate::compare::{Field, Problem};
 use crate::expect::Expected;
 use crate::memory::Memory;
+use crate::small::Small;
 use crate::value::Value;
-use crate::vector::{Step, Vector};
+use crate::vector::{Step, Vector, INLINE_SLOTS};
 
 /// Why an implementation did not run a vector.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -165,8 +166,8 @@ impl<'a> Steps<'a> {
         self.count += 1;
         match &mut self.mode {
             Mode::Judge { expected, problems } => {
-                let Some(want) = expected.states.get(step) else { return };
-                check_result(step, expected.results[step], result, problems);
+                let Some(want) = expected.state(step) else { return };
+                check_result(step, expected.results()[step], result, problems);
                 let got = memory.values();
                 if got.len() != want.len() {
                     problems.push(Problem::new(
@@ -178,7 +179,7 @@ impl<'a> Steps<'a> {
                     ));
                     return;
                 }
-                if got != want.as_slice() {
+                if got != want {
                     let scratch = self.vector.scratch();
                     for (i, (g, w)) in got.iter().zip(want).enumerate() {
                         if g != w && !scratch[i] {
@@ -218,9 +219,9 @@ impl<'a> Steps<'a> {
         self.count += 1;
         match &mut self.mode {
             Mode::Judge { expected, problems } => {
-                let Some(want) = expected.states.get(step) else { return };
-                check_result(step, expected.results[step], result, problems);
-                let mut got: Vec<Option<Value>> = vec![None; want.len()];
+                let Some(want) = expected.state(step) else { return };
+                check_result(step, expected.results()[step], result, problems);
+                let mut got: Small<Option<Value>, INLINE_SLOTS> = Small::filled(None, want.len());
                 for (name, v) in devices {
                     match self.vector.slot(name) {
                         Some(i) => got[i] = Some(v),
@@ -256,13 +257,13 @@ impl<'a> Steps<'a> {
     pub(crate) fn into_problems(self) -> Vec<Problem> {
         match self.mode {
             Mode::Judge { expected, mut problems } => {
-                if self.count != expected.states.len() {
+                if self.count != expected.steps() {
                     problems.insert(
                         0,
                         Problem::new(
                             None,
                             "steps",
-                            Field::Text(format!("{} steps", expected.states.len())),
+                            Field::Text(format!("{} steps", expected.steps())),
                             Field::Text(format!("{} steps", self.count)),
                             None,
                         ),

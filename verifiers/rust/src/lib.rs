@@ -35,6 +35,7 @@ pub mod reference;
 mod runner;
 mod select;
 pub mod serve;
+mod small;
 mod suite;
 mod value;
 mod vector;

@@ -5,34 +5,24 @@
 //! reporting and the comparison to [`OnMemory`](crate::OnMemory). A write to a device the vector
 //! does not list is kept apart, so the runner can report it (the contract forbids it).
 
+use crate::small::Small;
 use crate::value::{Address, Value};
-use crate::vector::{Step, Vector};
+use crate::vector::{Step, Vector, INLINE_SLOTS};
 
 /// The devices of one vector, slot-aligned with [`Vector::devices`], plus any device written
-/// outside the vector.
+/// outside the vector. The image of a vector of the usual size lives inline (building one
+/// allocates nothing).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Memory<'v> {
     vector: &'v Vector,
-    values: Vec<Value>,
+    values: Small<Value, INLINE_SLOTS>,
     outside: Vec<(String, Value)>,
 }
 
 impl<'v> Memory<'v> {
     /// The vector's initial devices.
     pub fn new(vector: &'v Vector) -> Memory<'v> {
-        Memory::reusing(vector, Vec::new())
-    }
-
-    /// The vector's initial devices, in a buffer kept from an earlier vector (no allocation).
-    pub fn reusing(vector: &'v Vector, mut buffer: Vec<Value>) -> Memory<'v> {
-        buffer.clear();
-        buffer.extend_from_slice(vector.initial());
-        Memory { vector, values: buffer, outside: Vec::new() }
-    }
-
-    /// The buffer, for the next vector's [`Memory::reusing`].
-    pub fn into_buffer(self) -> Vec<Value> {
-        self.values
+        Memory { vector, values: Small::from_slice(vector.initial()), outside: Vec::new() }
     }
 
     /// The vector this image belongs to.
@@ -41,6 +31,7 @@ impl<'v> Memory<'v> {
     }
 
     /// Every listed device's value, slot by slot.
+    #[inline]
     pub fn values(&self) -> &[Value] {
         &self.values
     }
@@ -51,6 +42,7 @@ impl<'v> Memory<'v> {
     }
 
     /// Apply a step's `set` (values written by the outside world before the execution).
+    #[inline]
     pub fn apply_set(&mut self, step: &Step) {
         for &(slot, v) in step.set() {
             self.values[slot] = v;
@@ -59,6 +51,7 @@ impl<'v> Memory<'v> {
 
     /// The device `base` + `offset` (D100 + 2 is D102), if it holds a value. A device without a
     /// number is found by name at offset 0.
+    #[inline]
     pub fn get_at(&self, base: &Address, offset: u32) -> Option<Value> {
         match base.number() {
             Some(n) => match self.vector.slot_at(base, offset) {
@@ -72,6 +65,7 @@ impl<'v> Memory<'v> {
     }
 
     /// A device by name, if it holds a value.
+    #[inline]
     pub fn get(&self, name: &str) -> Option<Value> {
         match self.vector.slot(name) {
             Some(i) => Some(self.values[i]),
@@ -85,6 +79,7 @@ impl<'v> Memory<'v> {
     }
 
     /// Write a device by name.
+    #[inline]
     pub fn set(&mut self, name: &str, value: Value) {
         match self.vector.slot(name) {
             Some(i) => self.values[i] = value,
@@ -100,6 +95,7 @@ impl<'v> Memory<'v> {
     }
 
     /// Write the device `base` + `offset`.
+    #[inline]
     pub fn set_at(&mut self, base: &Address, offset: u32, value: Value) {
         match base.number() {
             Some(n) => match self.vector.slot_at(base, offset) {
@@ -112,6 +108,7 @@ impl<'v> Memory<'v> {
 
     /// The word at `base` + `offset`. A device the vector does not list reads as 0 (the contract
     /// leaves it to the implementation); a bit reads as 0 or 1.
+    #[inline]
     pub fn word(&self, base: &Address, offset: u32) -> u16 {
         match self.get_at(base, offset) {
             Some(Value::Word(w)) => w,
@@ -121,11 +118,13 @@ impl<'v> Memory<'v> {
     }
 
     /// Write the word at `base` + `offset`.
+    #[inline]
     pub fn set_word(&mut self, base: &Address, offset: u32, word: u16) {
         self.set_at(base, offset, Value::Word(word));
     }
 
     /// The bit `name` (an unlisted bit reads as off; a word as "not zero").
+    #[inline]
     pub fn bit(&self, name: &str) -> bool {
         match self.get(name) {
             Some(Value::Bit(b)) => b,
@@ -135,14 +134,16 @@ impl<'v> Memory<'v> {
     }
 
     /// Write the bit `name`.
+    #[inline]
     pub fn set_bit(&mut self, name: &str, on: bool) {
         self.set(name, Value::Bit(on));
     }
 
     /// Whether `base` .. `base + words - 1` all exist, by the vector's `assumes.device_sizes`.
     /// A device type whose size the vector does not state is taken to exist.
+    #[inline]
     pub fn in_range(&self, base: &Address, words: u32) -> bool {
-        match (base.number(), self.vector.device_size(base.kind())) {
+        match (base.number(), self.vector.size_of_kind(base)) {
             (Some(n), Some(size)) => u64::from(n) + u64::from(words) <= u64::from(size),
             _ => true,
         }

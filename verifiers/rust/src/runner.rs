@@ -2,8 +2,6 @@
 //! reads at the end: each failing vector with its field diff, then the totals, with the suite
 //! version, the spec hash, and the alternative followed for every interpretation.
 
-use std::collections::HashMap;
-
 use crate::choices::Choices;
 use crate::compare::{describe, judge, Status, Verdict};
 use crate::error::Result;
@@ -86,12 +84,13 @@ pub fn run<'s, I: Implementation + ?Sized>(
 
 /// Judge every vector of a plan (the benchmark's loop): unsupported instructions are skipped.
 pub fn judge_plan<I: Implementation + ?Sized>(plan: &Plan<'_>, implementation: &mut I) -> Vec<Verdict> {
-    // Ask once per instruction the build knows (an unknown one is asked every time).
-    let mut asked: HashMap<Instruction, bool> = HashMap::new();
+    // Ask once per instruction the build knows (an unknown one is asked every time), by the
+    // enum's index: no hashing per vector.
+    let mut asked: Vec<Option<bool>> = vec![None; Instruction::ALL.len()];
     plan.iter()
         .map(|(v, expected)| {
-            let supported = match v.known_instruction() {
-                Some(i) => *asked.entry(i).or_insert_with(|| implementation.supports(v.instruction())),
+            let supported = match v.known_instruction().and_then(|i| asked.get_mut(i as usize)) {
+                Some(answer) => *answer.get_or_insert_with(|| implementation.supports(v.instruction())),
                 None => implementation.supports(v.instruction()),
             };
             if supported {

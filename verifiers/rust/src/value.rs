@@ -70,6 +70,7 @@ impl From<u16> for Value {
 
 /// Up to 8 bytes of a name packed into an integer, so that names compare as integers on the hot
 /// path of every device access; 0 (no key) for a longer name, which is compared as text.
+#[inline]
 pub(crate) fn pack(name: &str) -> u64 {
     let bytes = name.as_bytes();
     if bytes.is_empty() || bytes.len() > 8 {
@@ -115,6 +116,7 @@ impl Address {
     }
 
     /// The device number, if the name has one.
+    #[inline]
     pub fn number(&self) -> Option<u32> {
         self.number
     }
@@ -125,6 +127,7 @@ impl Address {
     }
 
     /// The device type packed as an integer (0 when it is longer than 8 bytes).
+    #[inline]
     pub(crate) fn kind_key(&self) -> u64 {
         self.kind_key
     }

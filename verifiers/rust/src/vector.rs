@@ -11,7 +11,12 @@ use serde::Deserialize;
 
 use crate::error::{Error, Result};
 use crate::generated::names::{Family, Instruction};
+use crate::small::Small;
 use crate::value::{pack, Address, Value};
+
+/// How many devices a vector's tables hold inline (the golden set's vectors list 6 to 14); a
+/// vector with more keeps them on the heap.
+pub(crate) const INLINE_SLOTS: usize = 16;
 
 type Json = serde_json::Value;
 
@@ -38,12 +43,22 @@ impl Operand {
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Clock {
     fields: Vec<(String, i64)>,
+    /// The fields again, by packed name (`value::pack`; 0 for a name longer than 8 bytes).
+    keys: Small<(u64, i64), 6>,
 }
 
 impl Clock {
+    fn new(fields: Vec<(String, i64)>) -> Clock {
+        let keys = fields.iter().map(|(n, v)| (pack(n), *v)).collect();
+        Clock { fields, keys }
+    }
+
     /// The field (`hour`, `year`), if the step gives it.
     pub fn get(&self, field: &str) -> Option<i64> {
-        self.fields.iter().find(|(name, _)| name == field).map(|&(_, v)| v)
+        match pack(field) {
+            0 => self.fields.iter().find(|(name, _)| name == field).map(|&(_, v)| v),
+            key => self.keys.iter().find(|&&(k, _)| k == key).map(|&(_, v)| v),
+        }
     }
 
     /// Every field as given, sorted by name.
@@ -100,12 +115,14 @@ pub(crate) struct Expectations {
     pub alternatives: Vec<Expectation>,
 }
 
-/// A slot's name and address as integers (`value::pack`; 0 when a name is longer than 8 bytes).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-struct SlotKey {
-    name: u64,
-    kind: u64,
-    number: u32,
+/// A device's type and number as one integer: the packed type (`value::pack`) above the number;
+/// 0 (no key) when the name has no number or its type is longer than 4 bytes.
+#[inline]
+fn address_key(kind_key: u64, number: Option<u32>) -> u64 {
+    match number {
+        Some(n) if kind_key != 0 && kind_key >> 32 == 0 => kind_key << 32 | u64::from(n),
+        _ => 0,
+    }
 }
 
 /// One test vector.
@@ -118,15 +135,20 @@ pub struct Vector {
     tags: Vec<String>,
     clauses: Vec<String>,
     device_sizes: Vec<(String, u32)>,
+    /// `device_sizes` by packed device type (0 for a type longer than 8 bytes).
+    size_keys: Small<(u64, u32), 4>,
     devices: Vec<Address>,
-    /// Each slot's packed name, device type and number, side by side: every device access of
-    /// an implementation searches these, so they are kept small and contiguous.
-    keys: Vec<SlotKey>,
-    initial: Vec<Value>,
+    /// Each slot's packed name (`value::pack`; 0 when longer than 8 bytes) and address key
+    /// (`address_key`): every device access of an implementation searches one of these, so
+    /// they are plain integers, contiguous and inline.
+    name_keys: Small<u64, INLINE_SLOTS>,
+    address_keys: Small<u64, INLINE_SLOTS>,
+    initial: Small<Value, INLINE_SLOTS>,
     scratch: Vec<bool>,
-    operands: Vec<(String, Operand)>,
-    operand_keys: Vec<u64>,
-    steps: Vec<Step>,
+    operands: Small<(String, Operand), 4>,
+    operand_keys: Small<u64, 4>,
+    /// Inline when there is one step (most vectors).
+    steps: Small<Step, 1>,
     known_family: Option<Family>,
     known_instruction: Option<Instruction>,
     pub(crate) expectations: Option<Expectations>,
@@ -178,6 +200,15 @@ impl Vector {
     pub fn device_size(&self, kind: &str) -> Option<u32> {
         self.device_sizes.iter().find(|(k, _)| k == kind).map(|&(_, n)| n)
     }
+
+    /// The number of points of `address`'s device type, if the vector states it (no text
+    /// compared: the hot path of every range check).
+    pub(crate) fn size_of_kind(&self, address: &Address) -> Option<u32> {
+        match address.kind_key() {
+            0 => self.device_size(address.kind()),
+            kind => self.size_keys.iter().find(|&&(k, _)| k == kind).map(|&(_, n)| n),
+        }
+    }
     /// Every device the vector lists (its slots), sorted by name.
     pub fn devices(&self) -> &[Address] {
         &self.devices
@@ -191,19 +222,21 @@ impl Vector {
         &self.scratch
     }
     /// The slot of a listed device.
+    #[inline]
     pub fn slot(&self, name: &str) -> Option<usize> {
         match pack(name) {
             0 => self.devices.binary_search_by(|a| a.name().cmp(name)).ok(),
-            key => self.keys.iter().position(|k| k.name == key),
+            key => self.name_keys.iter().position(|&k| k == key),
         }
     }
 
     /// The slot of the device `base` + `offset` (D100 + 2 is D102), if the vector lists it.
+    #[inline]
     pub fn slot_at(&self, base: &Address, offset: u32) -> Option<usize> {
         let number = base.number()?.checked_add(offset)?;
-        match base.kind_key() {
+        match address_key(base.kind_key(), Some(number)) {
             0 => self.devices.iter().position(|a| a.number() == Some(number) && a.same_kind(base)),
-            kind => self.keys.iter().position(|k| k.number == number && k.kind == kind),
+            key => self.address_keys.iter().position(|&k| k == key),
         }
     }
     /// The operands by name (`s1`, `d`, `S1`, `D2`), sorted.
@@ -211,6 +244,7 @@ impl Vector {
         &self.operands
     }
     /// One operand.
+    #[inline]
     pub fn operand(&self, name: &str) -> Option<&Operand> {
         match pack(name) {
             0 => self.operands.iter().find(|(n, _)| n == name).map(|(_, o)| o),
@@ -231,7 +265,7 @@ impl Vector {
     /// The request the runner sends for this vector (PROTOCOL.md, run-request).
     pub fn to_request(&self) -> Json {
         let devices: serde_json::Map<String, Json> =
-            self.devices.iter().zip(&self.initial).map(|(a, v)| (a.name().to_owned(), v.to_json())).collect();
+            self.devices.iter().zip(self.initial.iter()).map(|(a, v)| (a.name().to_owned(), v.to_json())).collect();
         let operands: serde_json::Map<String, Json> = self
             .operands
             .iter()
@@ -338,7 +372,7 @@ impl Vector {
                 let e = s.expect.ok_or_else(|| bad(format!("steps[{n}] has no `expect`")))?;
                 own_expects.push(step_expect(&e, &format!("steps[{n}].expect"), &listed)?);
             }
-            let clock = s.clock.map(|c| Clock { fields: c.into_iter().collect() });
+            let clock = s.clock.map(|c| Clock::new(c.into_iter().collect()));
             steps.push(Step { set, rlo_in: s.rlo_in, en: s.en, input: s.input, elapsed_ms: s.elapsed_ms, clock });
         }
         let expectations = if with_expectations {
@@ -380,6 +414,7 @@ impl Vector {
         let known_family = Family::from_name(&raw.family);
         let known_instruction = Instruction::from_name(&raw.instruction).filter(|i| Some(i.family()) == known_family);
         let operand_keys = operands.iter().map(|(n, _)| pack(n)).collect();
+        let size_keys = device_sizes.iter().map(|(k, n)| (pack(k), *n)).collect();
         Ok(Vector {
             operand_keys,
             known_family,
@@ -391,15 +426,14 @@ impl Vector {
             tags: raw.tags,
             clauses: raw.clauses,
             device_sizes,
-            keys: devices
-                .iter()
-                .map(|a| SlotKey { name: pack(a.name()), kind: a.kind_key(), number: a.number().unwrap_or(u32::MAX) })
-                .collect(),
+            size_keys,
+            name_keys: devices.iter().map(|a| pack(a.name())).collect(),
+            address_keys: devices.iter().map(|a| address_key(a.kind_key(), a.number())).collect(),
             devices,
-            initial,
+            initial: Small::from_slice(&initial),
             scratch,
-            operands,
-            steps,
+            operands: operands.into(),
+            steps: steps.into(),
             expectations,
         })
     }

@@ -103,7 +103,8 @@ impl Execute for Reference {
     }
 
     fn execute(&mut self, vector: &Vector, step: &Step, memory: &mut Memory<'_>) -> Result<Option<bool>, Refusal> {
-        let instruction = vector.instruction();
+        // The generated name is a static string: no read of the vector's own copy.
+        let instruction = vector.known_instruction().map_or(vector.instruction(), |i| i.as_str());
         match self.family {
             Some(Family::Fx5TimeCompare) => {
                 self.fx5_compare.execute(fx5_compare::Kind::Time, instruction, vector, step, memory).map(Some)
