@@ -2,13 +2,15 @@
 
 An answer is built from each vector's own expectation, as a conforming adapter would report it; the
 fast path must accept it, and must refuse every answer that differs from it in a value or in a JSON
-type that Python's equality does not see (1 for true, 0 for false).
+type that Python's equality does not see (1 for true, 0 for false, 2105.0 for the word 2105), and
+the full comparison must refuse it too.
 """
 import pytest
 
 from plcvec_verify import Suite
 from plcvec_verify.compare import compare, passes
-from plcvec_verify.runner import Plan
+from plcvec_verify.runner import Plan, run
+from plcvec_verify.adapters import InProcess
 
 from conftest import REPO
 
@@ -36,13 +38,22 @@ def with_scratch(exp, msg):
 
 
 def test_a_conforming_answer_passes_at_once(plan):
-    fast = 0
+    scratch = 0
     for exp in plan.expected.values():
         msg = with_scratch(exp, answer(exp))
         assert compare(exp, msg["steps"]) == [], exp.id
-        fast += passes(exp, msg)
-        assert passes(exp, msg) is (not exp.scratch), exp.id   # scratch devices go the long way
-    assert fast > len(plan.expected) * 0.9
+        assert passes(exp, msg), exp.id
+        scratch += bool(exp.scratch)
+    assert scratch > 100      # the HOUR vectors, whose scratch words are the implementation's own
+
+
+def test_a_scratch_device_that_is_not_a_word_goes_the_long_way(plan):
+    exps = [exp for exp in plan.expected.values() if exp.scratch]
+    for bad in (70000, -1, 2.0, "0", None, True):
+        for exp in exps[::10]:
+            msg = answer(exp)
+            msg["steps"][0]["devices"][sorted(exp.scratch)[0]] = bad
+            assert not passes(exp, msg), f"{exp.id}: scratch = {bad!r}"
 
 
 def wrong_answers(exp):
@@ -58,14 +69,14 @@ def wrong_answers(exp):
             yield f"step {i} result inverted", msg
         for dev, value in state.items():
             if isinstance(value, bool):
-                swapped = int(value)
-            elif value in (0, 1):
-                swapped = bool(value)
+                near = [int(value), float(value)]
             else:
-                swapped = value + 1
-            msg = answer(exp)
-            msg["steps"][i]["devices"][dev] = swapped
-            yield f"step {i} {dev} = {swapped!r}", msg
+                near = [bool(value)] if value in (0, 1) else []
+                near += [value + 1, float(value)]
+            for swapped in near:
+                msg = answer(exp)
+                msg["steps"][i]["devices"][dev] = swapped
+                yield f"step {i} {dev} = {swapped!r}", msg
     msg = answer(exp)
     msg["steps"][last]["devices"]["D9999"] = 0
     yield "an extra device", msg
@@ -80,9 +91,46 @@ def wrong_answers(exp):
 def test_a_near_miss_never_passes_at_once(plan):
     checked = 0
     for exp in list(plan.expected.values())[::7]:
-        if exp.scratch:
-            continue
         for what, msg in wrong_answers(exp):
+            msg = with_scratch(exp, msg)
             assert not passes(exp, msg), f"{exp.id}: {what}"
+            assert compare(exp, msg["steps"]) or "key" in what, f"{exp.id}: {what}"
             checked += 1
     assert checked > 1000
+
+
+class _Words:
+    """An in-process adapter that reports the conforming answer with one change to every word."""
+
+    def __init__(self, plan, change):
+        self.plan, self.change = plan, change
+
+    def hello(self, request):
+        return {"adapter": {"name": "words", "version": "0"},
+                "instructions": sorted(self.plan.instructions), "interpretations": {}}
+
+    def run(self, request):
+        msg = with_scratch(self.plan.expected[request["id"]], answer(self.plan.expected[request["id"]]))
+        for step in msg["steps"]:
+            step["devices"] = {k: self.change(v) if type(v) is int and v > 1 else v for k, v in step["devices"].items()}
+        return {"steps": msg["steps"]}
+
+
+def test_a_run_fails_every_vector_whose_words_are_reported_as_floats(plan):
+    """2105.0 is equal to 2105 in Python, but it is not a JSON integer: each such vector fails, by name."""
+    suite = Suite.load(REPO / "vectors")
+    report = run(suite, InProcess(_Words(plan, float)), plan=plan)
+    with_words = {exp.id for exp in plan.expected.values() if any(type(v) is int and v > 1 for st in exp.states
+                                                                  for v in st.values())}
+    failed = {r.id for r in report.results if r.status == "fail"}
+    assert len(with_words) > 1000 and failed == with_words
+    assert report.exit_code == 1
+    example = next(r for r in report.results if r.status == "fail")
+    assert any(type(p.actual) is float and p.actual == p.expected for p in example.problems)
+
+
+def test_the_same_answer_as_ints_passes_every_vector(plan):
+    """The control for the test above: the same adapter reporting ints passes everything."""
+    suite = Suite.load(REPO / "vectors")
+    report = run(suite, InProcess(_Words(plan, int)), plan=plan)
+    assert report.counts["pass"] == len(suite.vectors) and report.exit_code == 0

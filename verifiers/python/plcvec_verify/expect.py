@@ -21,14 +21,15 @@ class Expected:
     results: tuple          # per step: True/False for contact instructions, None otherwise
     states: tuple           # per step: {device: value} after the step, scratch left out
     befores: tuple          # per step: the state the step started from (after `set`), for messages
-    typed: tuple            # per step: ((device, type), ...) for values equal to 0 or 1, see compare.py
+    typed: tuple            # per step: (devices, their types) of the values equal to 0 or 1, see compare.py
     scratch: frozenset
     outcome: dict           # the outcome category under the chosen alternatives
     choices: dict           # interpretation -> alternative applied (only those the vector depends on)
     # The answer's steps exactly as a passing adapter reports them, for compare.passes(): None when
     # scratch devices make the reported state differ from `states`.
     wire: list | None = None
-    typed_columns: tuple = ()   # per step: `typed` as (devices, types), for one comparison of the types
+    family: str = ""
+    instruction: str = ""
 
 
 def request_of(vector: dict) -> dict:
@@ -74,10 +75,10 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
     if states[-1] != final:
         raise VerifyError(f"vector {vector['id']}: the per-step changes do not add up to `final` "
                           "(the vector file is inconsistent; regenerate it)")
-    # Python's 1 == True: only values equal to 0 or 1 can compare equal under the wrong JSON type.
-    typed = tuple(tuple((k, type(v)) for k, v in st.items() if v in (0, 1)) for st in states)
+    # Python's 1 == True: of equal values, those equal to 0 or 1 can be of the wrong JSON type.
+    typed = tuple((tuple(k for k, v in st.items() if v in (0, 1)), tuple(type(v) for v in st.values() if v in (0, 1)))
+                  for st in states)
     wire = None if scratch else [{"devices": st} if r is None else {"devices": st, "result": r}
                                   for st, r in zip(states, results)]
-    columns = tuple((tuple(k for k, _ in t), tuple(ty for _, ty in t)) for t in typed)
     return Expected(vector["id"], tuple(results), tuple(states), tuple(befores), typed, scratch, category, applied,
-                    wire, columns)
+                    wire, vector["family"], vector["instruction"])

@@ -77,18 +77,18 @@ class KnownFailures:
         """Turn listed failures into xfail, listed passes into stale; add unknown ids as stale."""
         from .runner import ERROR, FAIL, PASS, STALE, XFAIL, VectorResult
 
-        for r in results:
+        for i, r in enumerate(results):
             entry = self.entries.get(r.id)
             if entry is None:
                 continue
             where = f"{self.path}:{entry.line}"
             if r.status in (FAIL, ERROR):
-                r.status = XFAIL
-                r.message = f"known failure ({where}): {entry.reason}" + (f"; {r.message}" if r.message else "")
+                results[i] = r._replace(status=XFAIL, message=f"known failure ({where}): {entry.reason}"
+                                                              + (f"; {r.message}" if r.message else ""))
             elif r.status == PASS:
-                r.status = STALE
-                r.message = (f"listed as a known failure ({where}: {entry.reason}) but it passes; "
-                             "remove it from the expectations file")
+                results[i] = r._replace(status=STALE, message=(
+                    f"listed as a known failure ({where}: {entry.reason}) but it passes; "
+                    "remove it from the expectations file"))
         for vid, entry in sorted(self.entries.items()):
             if vid not in suite.by_id:
                 results.append(VectorResult(vid, "", "", STALE, message=(

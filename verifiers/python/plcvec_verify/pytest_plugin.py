@@ -195,7 +195,7 @@ def _run(session):
     if report.aborted:
         for r in report.results:
             if r.status == "not-run":
-                r.message = f"{r.message}: {report.aborted}"
+                results[r.id] = r._replace(message=f"{r.message}: {report.aborted}")
     return results
 
 

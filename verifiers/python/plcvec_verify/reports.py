@@ -104,7 +104,7 @@ def jsonl_lines(report: RunReport):
         if r.message:
             item["message"] = r.message
         if r.notes:
-            item["notes"] = r.notes
+            item["notes"] = list(r.notes)
         yield item
     yield {"type": "summary", "counts": report.counts, "seconds": round(report.seconds, 3),
            "aborted": report.aborted or None, "shortfall": report.shortfall or None, "notes": report.notes,
@@ -142,7 +142,7 @@ def junit_xml(report: RunReport) -> str:
                           value=d["alternative"] + ("" if d["declared"] else " (default)"))
         for r in results:
             case = ET.SubElement(suite, "testcase", classname=f"plcvec.{family}", name=r.id)
-            detail = "\n".join([p.line() for p in r.problems] + ([r.message] if r.message else []) + r.notes
+            detail = "\n".join([p.line() for p in r.problems] + ([r.message] if r.message else []) + list(r.notes)
                                + (["spec clauses: " + ", ".join(by_id[r.id]["clauses"])] if r.id in by_id else []))
             if r.status == FAIL:
                 ET.SubElement(case, "failure", message=f"{len(r.problems)} field(s) differ", type="mismatch").text = detail

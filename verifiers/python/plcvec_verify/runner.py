@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
+from functools import partial
+from operator import itemgetter
+from typing import NamedTuple
 
 from .adapters import AdapterAbort
-from .compare import Problem, compare, passes
+from .compare import Problem, compare, passes, steps_pass
 from .errors import VerifyError
 from .expect import expected_of, request_of
 from .gate import NOTHING_TESTED, Gate
@@ -26,17 +29,26 @@ FAIL, ERROR, STALE, NOT_RUN = "fail", "error", "stale", "not-run"
 STATUSES = (PASS, FAIL, ERROR, SKIP, XFAIL, STALE, NOT_RUN)
 FAILING = frozenset((FAIL, ERROR, STALE, NOT_RUN))
 
+# The per-vector bookkeeping of a run is done with map() over these where it can: a run over the
+# golden set is a few microseconds a vector, and a Python-level loop is a good part of that.
+_ID, _FAMILY, _INSTRUCTION = itemgetter("id"), itemgetter("family"), itemgetter("instruction")
 
-@dataclass(slots=True)
-class VectorResult:
+
+class VectorResult(NamedTuple):
+    """The verdict on one vector. Immutable: a change (a known failure applied) makes a new one."""
+
     id: str
     family: str
     instruction: str
     status: str
-    problems: list = field(default_factory=list)      # [Problem] for fail
-    message: str = ""                                 # error/skip/xfail/stale reason
-    notes: list = field(default_factory=list)         # e.g. what the adapter wrote to stderr
-    choices: dict = field(default_factory=dict)       # interpretation -> alternative the vector was judged by
+    problems: tuple = ()       # (Problem, ...) for fail
+    message: str = ""          # error/skip/xfail/stale reason
+    notes: tuple = ()          # e.g. what the adapter wrote to stderr
+    choices: dict = {}         # interpretation -> alternative the vector was judged by; never mutated
+
+
+# A passing vector's result made without a Python-level __init__: the usual case of every run.
+_result = partial(tuple.__new__, VectorResult)
 
 
 @dataclass
@@ -98,6 +110,12 @@ class Plan:
         self.requests = {v["id"]: request_of(v) for v in vectors}
         self.expected = {v["id"]: expected_of(v, choices, defaults) for v in vectors}
         self.wire: dict[str, bytes] = {}   # encoded requests, filled by a process adapter
+        # For a run of exactly `vectors` (the same list): the requests in order, the families and
+        # instructions, worked out once rather than by a pass over the vectors in every run.
+        self.ids = list(self.requests)
+        self.request_list = list(self.requests.values())
+        self.families = sorted(set(map(_FAMILY, vectors)))
+        self.instructions = frozenset(map(_INSTRUCTION, vectors))
 
 
 def resolve_choices(suite: Suite, families, declared: dict, cli: dict) -> dict:
@@ -138,57 +156,63 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     started = time.perf_counter()
     if vectors is None:
         selection.check(suite)
-        vectors = selection.apply(suite.vectors)
-    families = sorted({v["family"] for v in vectors}) or sorted(suite.headers)
+        vectors = suite.vectors if selection.everything else selection.apply(suite.vectors)
+    planned = plan is not None and vectors is plan.vectors
+    families = (plan.families if planned else sorted(set(map(_FAMILY, vectors)))) or sorted(suite.headers)
     hello = adapter.hello(hello_request(suite, families))
     interpretations = resolve_choices(suite, families, hello.get("interpretations", {}), choose or {})
     choices = {i: d["alternative"] for i, d in interpretations.items()}
     supported = set(hello["instructions"])
 
     results: dict[str, VectorResult] = {}
-    runnable = []
-    for v in vectors:
-        if v["instruction"] in supported:
-            runnable.append(v)
-        else:
-            results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], SKIP,
-                                            message=f"the adapter does not support {v['instruction']}")
+    if supported.issuperset(plan.instructions if planned else map(_INSTRUCTION, vectors)):
+        runnable = vectors
+    else:
+        runnable = []
+        for v in vectors:
+            if v["instruction"] in supported:
+                runnable.append(v)
+            else:
+                results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], SKIP,
+                                                message=f"the adapter does not support {v['instruction']}")
     if plan is None:
         plan = Plan(suite, runnable, choices)
-    by_id = suite.by_id
+    by_id, expected, requests = suite.by_id, plan.expected, plan.requests
     report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate())
     total, done, failed = len(runnable), 0, 0
     try:
-        for answer in adapter.answers([plan.requests[v["id"]] for v in runnable], plan.wire):
-            v = by_id[answer.id]
-            exp = plan.expected[answer.id]
-            msg = answer.message
-            if not answer.fault and passes(exp, msg):     # the usual case: equal at one comparison
-                # Every field given by position: keyword and default handling cost as much as the check.
-                results[answer.id] = VectorResult(v["id"], v["family"], v["instruction"], PASS, [], "", [],
-                                                  exp.choices)
+        to_send = plan.request_list if runnable is plan.vectors else list(map(requests.__getitem__, map(_ID, runnable)))
+        for vid, msg, fault, bare in adapter.answers(to_send, plan.wire):
+            exp = expected[vid]
+            # The usual case, decided at one comparison: an in-process adapter's answer (`bare`, the
+            # result message without `type` and `id`) or a process's result message that passes.
+            if fault is None and (steps_pass(exp, msg.get("steps")) if bare and len(msg) == 1 else passes(exp, msg)):
+                results[vid] = _result((vid, exp.family, exp.instruction, PASS, (), "", (), exp.choices))
                 done += 1
                 if progress:
                     progress(done, total, failed)
                 continue
+            if bare:
+                msg = dict(msg, type="result", id=vid)
+            v = by_id[vid]
             problems = None
-            if not answer.fault and result_shape_ok(msg):
+            if not fault and result_shape_ok(msg):
                 problems = compare(exp, msg["steps"])     # shape fine: compare at once
-            errors = () if answer.fault or problems == [] else result_errors(msg)
-            if answer.fault or errors:
-                fault = answer.fault or "the result does not match result.schema.json: " + "; ".join(errors)
+            errors = () if fault or problems == [] else result_errors(msg)
+            if fault or errors:
+                fault = fault or "the result does not match result.schema.json: " + "; ".join(errors)
                 r = VectorResult(v["id"], v["family"], v["instruction"], ERROR, message=fault, choices=exp.choices)
             elif "steps" in msg:
                 if problems is None:
                     problems = compare(exp, msg["steps"])
                 r = VectorResult(v["id"], v["family"], v["instruction"], FAIL if problems else PASS,
-                                 problems, choices=exp.choices)
+                                 tuple(problems), choices=exp.choices)
             elif "skip" in msg:
                 r = VectorResult(v["id"], v["family"], v["instruction"], SKIP, message=msg["skip"], choices=exp.choices)
             else:
                 r = VectorResult(v["id"], v["family"], v["instruction"], ERROR,
                                  message=f"the adapter reported an error: {msg['error']}", choices=exp.choices)
-            results[answer.id] = r
+            results[vid] = r
             done += 1
             failed += r.status in FAILING
             if progress:
@@ -211,16 +235,17 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
             _end(adapter)
         except Exception as exc:  # closing must never lose the results
             report.notes.append(f"closing the adapter: {type(exc).__name__}: {exc}")
-    for v in runnable:
-        if v["id"] not in results:
-            results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], NOT_RUN,
-                                            message="not run: the adapter stopped before it")
+    if len(results) < len(vectors):
+        for v in runnable:
+            if v["id"] not in results:
+                results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], NOT_RUN,
+                                                message="not run: the adapter stopped before it")
     for vid, text in getattr(adapter, "notes", ()):
         if vid in results:
-            results[vid].notes.append(text)
+            results[vid] = results[vid]._replace(notes=(*results[vid].notes, text))
         else:
             report.notes.append(text)
-    report.results = [results[v["id"]] for v in vectors]
+    report.results = list(map(results.__getitem__, plan.ids if vectors is plan.vectors else map(_ID, vectors)))
     if known is not None:
         known.apply(report.results, suite)
     report.seconds = time.perf_counter() - started
