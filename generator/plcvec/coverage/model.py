@@ -43,10 +43,16 @@ class CoverageModel:
         self.by_id = {d.id: d for d in self.dims}
         self.derive_of = {d["id"]: d["derive"] for d in self.spec["dimensions"]}
         self.order = {d.id: i for i, d in enumerate(self.dims)}
+        # What a pair's exclusion is and what a cell exercises depend on the spec alone, and the greedy
+        # search and the classification ask the same ones thousands of times: each is worked out once.
+        self._excluded, self._cell_pairs, self._cell_products = {}, {}, {}
 
     # -- what is required -------------------------------------------------------------------------
     def excluded(self, p):
-        return self.exclusion_of(p) is not None
+        hit = self._excluded.get(p)
+        if hit is None:
+            hit = self._excluded[p] = self.exclusion_of(p) is not None
+        return hit
 
     def exclusion_of(self, p):
         """The index of the `exclude` entry that rules pair `p` out, or None."""
@@ -91,17 +97,27 @@ class CoverageModel:
         return tuple((d.id, row[d.id] if d.applies(row) else None) for d in self.dims)
 
     def cell_pairs(self, cell):
-        return row_pairs(dict(cell), self.dims)
+        """The pairs of classes an execution cell holds (a frozenset, shared: do not change it)."""
+        got = self._cell_pairs.get(cell)
+        if got is None:
+            got = self._cell_pairs[cell] = frozenset(row_pairs(dict(cell), self.dims))
+        return got
+
+    def cell_products(self, cell):
+        """The cell of each product an execution cell falls in."""
+        got = self._cell_products.get(cell)
+        if got is None:
+            row = dict(cell)
+            got = self._cell_products[cell] = tuple(tuple((d, row.get(d)) for d in p["dimensions"])
+                                                    for p in self.spec.get("products", []))
+        return got
 
     def exercised(self, cells):
         """(pairs, product cells) exercised by a set of execution cells (tuples of (dimension, class))."""
         pairs, prods = set(), set()
-        products = self.spec.get("products", [])
         for cell in cells:
             pairs |= self.cell_pairs(cell)
-            row = dict(cell)
-            for p in products:
-                prods.add(tuple((d, row.get(d)) for d in p["dimensions"]))
+            prods.update(self.cell_products(cell))
         return pairs, prods
 
     def report(self, cells_by_vector):

@@ -27,11 +27,6 @@ class Dimension:
         return gov is None or gov in self.when[1]
 
 
-def pair(a, b, order):
-    """The pair of two (dimension, class) items, ordered by the dimensions' model order."""
-    return (a, b) if order[a[0]] < order[b[0]] else (b, a)
-
-
 def row_pairs(row, dims):
     """Every pair of classes a complete row (dimension -> class or None) holds."""
     order = {d.id: i for i, d in enumerate(dims)}
@@ -72,10 +67,8 @@ def cover(dims, required, covered=frozenset(), realize=None, excluded=lambda p: 
     sort_key = lambda p: (order[p[0][0]], order[p[1][0]], dims[order[p[0][0]]].classes.index(p[0][1]),
                           dims[order[p[1][0]]].classes.index(p[1][1]))
     uncovered = set(required) - set(covered)
-    queue = sorted(uncovered, key=sort_key)
     result, failed = Cover(), []
-    while queue:
-        seed = queue.pop(0)
+    for seed in sorted(uncovered, key=sort_key):
         if seed not in uncovered:
             continue
         row = grow(dims, dict(seed), uncovered, order, excluded)
@@ -85,7 +78,7 @@ def cover(dims, required, covered=frozenset(), realize=None, excluded=lambda p: 
             for d in dims:
                 if d.id in dict(seed) or row[d.id] is None:
                     continue
-                for c in _allowed(d, dims, {k: v for k, v in row.items() if k != d.id}, excluded):
+                for c in _allowed(d, dims, {k: v for k, v in row.items() if k != d.id}, excluded, order):
                     if c == row[d.id]:
                         continue
                     other = _conditions_applied(dims, dict(row, **{d.id: c}))
@@ -125,9 +118,10 @@ def grow(dims, row, uncovered, order, excluded):
         if not d.applies(row):
             row[d.id] = None
             continue
+        pairs_with = _pairs_with(d, row, order)
         best, best_gain = None, -1
-        for c in _allowed(d, dims, row, excluded):
-            gain = sum(pair((d.id, c), (e, ce), order) in uncovered for e, ce in row.items() if ce is not None)
+        for c in _allowed(d, dims, row, excluded, order):
+            gain = sum(p in uncovered for p in pairs_with(c))
             if gain > best_gain:
                 best, best_gain = c, gain
         row[d.id] = best
@@ -135,18 +129,31 @@ def grow(dims, row, uncovered, order, excluded):
     return _conditions_applied(dims, row)
 
 
-def _allowed(d, dims, row, excluded):
+def _pairs_with(d, row, order):
+    """pairs_with(c): the pairs class c of dimension d (not in the row) makes with the row's classes,
+    each with its two dimensions in model order."""
+    mine = order[d.id]
+    earlier = [(e, ce) for e, ce in row.items() if ce is not None and order[e] < mine]
+    later = [(e, ce) for e, ce in row.items() if ce is not None and order[e] > mine]
+
+    def pairs_with(c):
+        item = (d.id, c)
+        return [(other, item) for other in earlier] + [(item, other) for other in later]
+    return pairs_with
+
+
+def _allowed(d, dims, row, excluded, order=None):
     """The classes of `d` compatible with the row so far: conditions of fixed dimensions and exclusions."""
-    order = {x.id: i for i, x in enumerate(dims)}
+    if order is None:
+        order = {x.id: i for i, x in enumerate(dims)}
+    # Dimensions that depend on d and are already given a class: d must take a class under which they apply.
+    dependents = [e.when[1] for e in dims if e.when and e.when[0] == d.id and row.get(e.id) is not None]
+    pairs_with = _pairs_with(d, row, order)
     out = []
     for c in d.classes:
-        ok = True
-        for e in dims:
-            # e depends on d and is already given a class: d must take a class under which e applies.
-            if e.when and e.when[0] == d.id and row.get(e.id) is not None and c not in e.when[1]:
-                ok = False
-        if ok and any(excluded(pair((d.id, c), (e, ce), order)) for e, ce in row.items() if ce is not None):
-            ok = False
-        if ok:
-            out.append(c)
+        if any(c not in classes for classes in dependents):
+            continue
+        if any(excluded(p) for p in pairs_with(c)):
+            continue
+        out.append(c)
     return out or list(d.classes)
