@@ -11,7 +11,7 @@ from typing import NamedTuple
 from plcvec.coverage.derive import CLASSIFIERS
 from plcvec.coverage.model import model_of
 from plcvec.engine import make_engine
-from plcvec.spec.knobs import resolve
+from plcvec.spec.knobs import Resolver
 
 STEP_INPUTS = ("set", "rlo_in", "clock", "en", "input", "elapsed_ms")
 
@@ -53,6 +53,7 @@ class VectorBuilder:
         self.fam = fam
         self.sizes = {k: v for k, v in fam.doc["assumptions"]["device_sizes"].items() if k != "why"}
         self.instructions = {i["name"]: i for i in instruction_list(fam)}
+        self._resolver = Resolver(fam.doc)   # the spec resolved under each set of choices an engine needs
         self._engines = {}
         self._consulting = {}
         self.executions = 0   # runs of a case under one set of choices, for the benchmark and its tests
@@ -75,17 +76,17 @@ class VectorBuilder:
         """The engine under `choices` (interpretation id -> alternative id), as plain as it can be."""
         key = tuple(sorted(choices.items()))
         if key not in self._engines:
-            self._engines[key] = make_engine(resolve(self.fam.doc, dict(choices)))
+            self._engines[key] = make_engine(self._resolver.resolve(dict(choices)))
         return self._engines[key]
 
     def _consulting_engine(self, choices):
         """(engine, sink, interpretations read while it was built) for `choices`: the engine reads its
         parameters from a document that records each chosen value read into `sink`."""
-        key = tuple(sorted(choices.items()))
+        key = tuple(choices.items())   # the builder's own runs name every interpretation, in one order
         entry = self._consulting.get(key)
         if entry is None:
             sink = set()
-            engine = make_engine(resolve(self.fam.doc, dict(choices), consulted=sink))
+            engine = make_engine(self._resolver.resolve(dict(choices), consulted=sink))
             entry = self._consulting[key] = (engine, sink, frozenset(sink))
         return entry
 
@@ -137,9 +138,14 @@ class VectorBuilder:
             fixed = pending.pop()
             run = self.execute(instr, operands, devices, steps, scratch, dict(defaults, **fixed))
             open_ = [i for i in order if i in run.consulted and i not in fixed]
+            if not open_:   # nothing unfixed was read: the run stands for every combination of the rest
+                done.append((dict(fixed), run))
+                continue
+            ran = tuple(defaults[i] for i in open_)
             for combo in itertools.product(*(options[i] for i in open_)):
-                choice = dict(fixed, **dict(zip(open_, combo)))
-                if all(c == defaults[i] for i, c in zip(open_, combo)):
+                choice = dict(fixed)
+                choice.update(zip(open_, combo))
+                if combo == ran:
                     done.append((choice, run))  # the choices just run: nothing unfixed was read
                 else:
                     pending.append(choice)
@@ -147,7 +153,9 @@ class VectorBuilder:
 
     def _cell(self, index, instr, operands, before, step, record):
         """The model cell of one execution; the same inputs recur under every reading of a vector."""
-        key = (index, tuple(before.items()), tuple(record.values()))
+        # The memo is emptied for each vector, and before its first step every reading starts from the
+        # same state: there the record alone tells executions apart.
+        key = (0, tuple(record.values())) if index == 0 else (index, tuple(before.items()), tuple(record.values()))
         if key not in self._cell_memo:
             self._cell_memo[key] = self.model.cell(self.classifier.classify(instr, operands, before, step, record))
         return self._cell_memo[key]

@@ -83,34 +83,72 @@ def resolve(doc, choices, consulted=None):
 
     `choices` maps interpretation id to alternative id; interpretations not named take their default.
     With a set `consulted`, reading a chosen value from the copy adds its interpretation to that set.
+    The parts of the document no interpretation chooses are the document's own (see Resolver).
     """
-    alts = {}
-    for interp in doc["interpretations"]:
-        chosen = choices.get(interp["id"], interp["default"])
-        alts[interp["id"]] = next(a for a in interp["alternatives"] if a["id"] == chosen)
+    return Resolver(doc).resolve(choices, consulted)
 
-    def chosen_value(iid, key):
-        value = copy.deepcopy(alts[iid]["sets"][key])
-        if consulted is not None and isinstance(value, dict):
-            return Consulting(value, {k: iid for k in value}, consulted, whole=iid)
-        return value
 
-    def walk(node, key):
+class Resolver:
+    """resolve() of one document under many sets of choices.
+
+    Which parts of the document hold a choice is found once; only those are copied for each set of
+    choices, and every other part is the document's own, shared by every copy: a resolved document
+    is read, never changed (an engine keeps no state in it, see plcvec.engine), so a copy of what no
+    choice changes would only cost time (the specs are large; a family is resolved a few dozen times).
+    """
+
+    def __init__(self, doc):
+        self.doc = doc
+        self._top = {k: v for k, v in doc.items() if k != "interpretations"}
+        self._holds = set()   # ids of the dicts and lists of `doc` with a choice somewhere inside
+        self._find(self._top)
+
+    def _find(self, node):
+        """Whether `node` holds a choice; the containers that do are recorded in _holds."""
         if isinstance(node, dict):
-            if len(node) == 1 and "interpretation" in node:
-                return chosen_value(node["interpretation"], key)
-            out = {k: walk(v, k) for k, v in node.items()}
-            if consulted is None:
-                return out
-            # A chosen mapping records its own reads; any other chosen value is recorded when read from here.
-            by_key = {k: v["interpretation"] for k, v in node.items()
-                      if _is_choice(v) and not isinstance(out[k], Consulting)}
-            return Consulting(out, by_key, consulted) if by_key else out
-        if isinstance(node, list):
-            return [walk(v, key) for v in node]
-        return node
+            if _is_choice(node):
+                return True
+            inside = [self._find(v) for v in node.values()]
+        elif isinstance(node, list):
+            inside = [self._find(v) for v in node]
+        else:
+            return False
+        if any(inside):
+            self._holds.add(id(node))
+            return True
+        return False
 
-    return walk({k: v for k, v in doc.items() if k != "interpretations"}, None)
+    def resolve(self, choices, consulted=None):
+        doc, holds = self.doc, self._holds
+        alts = {}
+        for interp in doc["interpretations"]:
+            chosen = choices.get(interp["id"], interp["default"])
+            alts[interp["id"]] = next(a for a in interp["alternatives"] if a["id"] == chosen)
+
+        def chosen_value(iid, key):
+            value = copy.deepcopy(alts[iid]["sets"][key])
+            if consulted is not None and isinstance(value, dict):
+                return Consulting(value, {k: iid for k in value}, consulted, whole=iid)
+            return value
+
+        def walk(node, key):
+            if isinstance(node, dict):
+                if len(node) == 1 and "interpretation" in node:
+                    return chosen_value(node["interpretation"], key)
+                if id(node) not in holds:
+                    return node
+                out = {k: walk(v, k) for k, v in node.items()}
+                if consulted is None:
+                    return out
+                # A chosen mapping records its own reads; any other chosen value is recorded when read from here.
+                by_key = {k: v["interpretation"] for k, v in node.items()
+                          if _is_choice(v) and not isinstance(out[k], Consulting)}
+                return Consulting(out, by_key, consulted) if by_key else out
+            if isinstance(node, list):
+                return [walk(v, key) for v in node] if id(node) in holds else node
+            return node
+
+        return walk(self._top, None)
 
 
 def _is_choice(node):
