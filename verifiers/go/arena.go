@@ -10,9 +10,12 @@ package plcvec
 type arena struct {
 	chunk  int // elements per array; 0: each piece its own allocation (a lone request)
 	values slab[Value]
-	keys   slab[uint64]
-	addrs  slab[Addr]
-	slots  slab[uint16]
+	// befores are read only for a failure's message: apart from the values a pass reads
+	befores slab[Value]
+	keys    slab[uint64]
+	addrs   slab[Addr]
+	slots   slab[uint16]
+	runs    slab[uint16]
 	// operandAddrs apart from addrs: a CPU reads its operands' addresses, rarely the devices'
 	operandAddrs slab[Addr]
 	devices      slab[Device]

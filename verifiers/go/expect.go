@@ -128,7 +128,7 @@ func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request)
 	e := a.expects.one(a.chunk)
 	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: applied, category: category}
 	n, steps := len(names), len(v.Steps)
-	e.states, e.befores = a.values.take(n*steps, a.chunk), a.values.take(n*steps, a.chunk)
+	e.states, e.befores = a.values.take(n*steps, a.chunk), a.befores.take(n*steps, a.chunk)
 	e.results = a.results.take(steps, a.chunk)
 	state := make([]Value, n)
 	for i := range state {

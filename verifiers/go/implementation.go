@@ -99,13 +99,16 @@ type Request struct {
 	Operands    map[string]Operand // s1, s2, d, S1, D1, C, ...
 	Scratch     []string           // work-area words: start at 0, never compared
 	Steps       []Inputs
-	addrs       []Addr         // parallel to Devices
-	keys        []uint64       // parallel to Devices: addrKey of each
-	initial     []Value        // parallel to Devices: the initial image every memory copies
-	table       []uint16       // keys hashed: index + 1 of each device, 0 empty (Memory.slot)
-	shift       uint           // 64 - log2(len(table))
-	operands    []namedOperand // Operands by name, their addresses parsed once
-	sizes       []kindSize     // DeviceSizes as a list: a few entries, read on every range check
+	// What a run reads of every vector, together: keys, table and initial for its memory,
+	// operands and sizes for its CPU. addrs only when a name's key is not exact.
+	keys     []uint64       // parallel to Devices: addrKey of each
+	table    []uint16       // keys hashed: index + 1 of each device, 0 empty (Memory.slot)
+	shift    uint           // 64 - log2(len(table))
+	runs     []uint16       // parallel to Devices: how many devices from this one are consecutive words
+	initial  []Value        // parallel to Devices: the initial image every memory copies
+	operands []namedOperand // Operands by name, their addresses parsed once
+	sizes    []kindSize     // DeviceSizes as a list: a few entries, read on every range check
+	addrs    []Addr         // parallel to Devices
 }
 
 type kindSize struct {
@@ -148,11 +151,25 @@ func (r *Request) Operand(name string) (Operand, bool) {
 		r.prepareOperands(&arena{})
 	}
 	for i := range r.operands {
-		if r.operands[i].name == name {
+		if sameShort(r.operands[i].name, name) {
 			return r.operands[i].op, true
 		}
 	}
 	return Operand{}, false
+}
+
+// sameShort is a == b for short strings such as operand names, compared in place: most
+// differ in their last character (s1, s2, s3), and most that match are a few bytes long.
+func sameShort(a, b string) bool {
+	if len(a) != len(b) {
+		return false
+	}
+	for i := len(a) - 1; i >= 0; i-- {
+		if a[i] != b[i] {
+			return false
+		}
+	}
+	return true
 }
 
 func (r *Request) prepareOperands(a *arena) {

@@ -29,7 +29,7 @@ func NewMemory(req *Request) *Memory {
 // reset makes m the initial device image of req: a copy of the image worked out when the
 // request was built.
 func (m *Memory) reset(req *Request) {
-	if req.addrs == nil {
+	if req.keys == nil {
 		req.prepareAddrs(&arena{})
 	}
 	m.req, m.outside, m.outsideAddrs = req, m.outside[:0], m.outsideAddrs[:0]
@@ -54,6 +54,21 @@ func (r *Request) prepareAddrs(a *arena) {
 		r.initial[i] = d.Value
 	}
 	r.prepareTable(a)
+	r.prepareRuns(a)
+}
+
+// prepareRuns counts, for each device, the devices after it that continue it word by word
+// (D100, D101, D102 sort together): a multi-word operand is read or written in one go.
+func (r *Request) prepareRuns(a *arena) {
+	r.runs = a.runs.take(len(r.keys), a.chunk)
+	for i := len(r.keys) - 1; i >= 0; i-- {
+		r.runs[i] = 1
+		_, exact := addrKey(r.addrs[i])
+		if i+1 < len(r.keys) && exact && r.addrs[i].N >= 0 && r.addrs[i].N < math.MaxInt32 &&
+			r.keys[i+1] == r.keys[i]+1<<32 && r.runs[i+1] < math.MaxUint16 {
+			r.runs[i] = r.runs[i+1] + 1
+		}
+	}
 }
 
 // addrKey folds an address into one integer, its number above its kind, so that a lookup
@@ -63,23 +78,31 @@ func (r *Request) prepareAddrs(a *arena) {
 // hash of its kind with the top bit of the low half set, which no exact key has, and a lookup
 // compares the addresses themselves on a match.
 func addrKey(a Addr) (key uint64, exact bool) {
-	if a.N < -1 || a.N > math.MaxInt32 {
-		return uint64(uint32(a.N))<<32 | kindHash(a.Kind), false
+	k := a.Kind
+	if uint(a.N+1) > math.MaxInt32+1 {
+		return inexactKey(a), false
 	}
-	high := uint64(uint32(a.N)) << 32
-	if len(a.Kind) == 0 || len(a.Kind) > 4 {
-		return high | kindHash(a.Kind), false
+	var packed, pad uint64 // pad: 0x01 in each byte past the kind, so that none reads as NUL
+	switch len(k) {
+	case 1:
+		packed, pad = uint64(k[0]), 0x01010100
+	case 2:
+		packed, pad = uint64(k[0])|uint64(k[1])<<8, 0x01010000
+	case 3:
+		packed, pad = uint64(k[0])|uint64(k[1])<<8|uint64(k[2])<<16, 0x01000000
+	case 4:
+		packed = uint64(k[0]) | uint64(k[1])<<8 | uint64(k[2])<<16 | uint64(k[3])<<24
+	default:
+		return inexactKey(a), false
 	}
-	var packed uint64
-	for i := 0; i < len(a.Kind); i++ {
-		c := a.Kind[i]
-		if c == 0 || c >= 0x80 {
-			return high | kindHash(a.Kind), false
-		}
-		packed |= uint64(c) << (8 * i)
+	// Every byte of the kind ASCII and none NUL (the zero-byte test of "Bit Twiddling Hacks").
+	if v := packed | pad; packed&0x80808080 != 0 || (v-0x01010101)&^v&0x80808080 != 0 {
+		return inexactKey(a), false
 	}
-	return high | packed, true
+	return uint64(uint32(a.N))<<32 | packed, true
 }
+
+func inexactKey(a Addr) uint64 { return uint64(uint32(a.N))<<32 | kindHash(a.Kind) }
 
 // kindHash is an FNV-1a hash of a device kind, with bit 31 set: never an exact key's low half.
 func kindHash(kind string) uint64 {
@@ -112,11 +135,15 @@ func (em *emulated) recycle(steps []StepResult) {
 	}
 }
 
-// slot is a's index in the vector's devices, or -1: its key looked up in the request's table
-// (a linear scan for a request too large for one).
+// slot is a's index in the vector's devices, or -1.
 func (m *Memory) slot(a Addr) int {
 	key, exact := addrKey(a)
-	r := m.req
+	return m.req.find(key, exact, a)
+}
+
+// find is the index of the device of this key (and address, unless the key is exact), or -1:
+// the key looked up in the request's table, or a scan for a request too large for one.
+func (r *Request) find(key uint64, exact bool, a Addr) int {
 	if r.table == nil {
 		for i := range r.keys {
 			if r.keys[i] == key && (exact || r.addrs[i] == a) {
@@ -205,14 +232,14 @@ func (m *Memory) Words(a Addr, n int) []uint16 {
 
 // ReadWords fills dst with len(dst) consecutive words from a, without allocating.
 func (m *Memory) ReadWords(a Addr, dst []uint16) {
-	for k := range dst {
-		w := a.Offset(k)
-		if i := m.slot(w); i >= 0 {
-			dst[k] = m.vals[i].Word()
-		} else {
-			v, _ := m.getOutside(w)
+	if i := m.slot(a); i >= 0 && int(m.req.runs[i]) >= len(dst) {
+		for k, v := range m.vals[i : i+len(dst)] {
 			dst[k] = v.Word()
 		}
+		return
+	}
+	for k := range dst {
+		dst[k] = m.Word(a.Offset(k))
 	}
 }
 
@@ -245,13 +272,14 @@ func (m *Memory) SetWord(a Addr, w uint16) { m.Set(a, Word(w)) }
 
 // SetWords writes consecutive words from a.
 func (m *Memory) SetWords(a Addr, words ...uint16) {
-	for k, w := range words {
-		d := a.Offset(k)
-		if i := m.slot(d); i >= 0 {
-			m.vals[i] = Word(w)
-		} else {
-			m.setOutside(d, Word(w))
+	if i := m.slot(a); i >= 0 && int(m.req.runs[i]) >= len(words) {
+		for k, w := range words {
+			m.vals[i+k] = Word(w)
 		}
+		return
+	}
+	for k, w := range words {
+		m.Set(a.Offset(k), Word(w))
 	}
 }
 

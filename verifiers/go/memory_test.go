@@ -11,6 +11,7 @@ import (
 func TestMemoryFindsEveryDevice(t *testing.T) {
 	devices := map[string]Value{
 		"D100": Word(1), "D101": Word(2), "D102": Word(3), "D1000": Word(4), // D1000 sorts between D100 and D101
+		"D200": Word(12), "D201": Word(13), "D202": Word(14), "SM201": Bit(false), // a run of words, then another kind
 		"D0": Word(5), "D4294967296": Word(6), "D8589934592": Word(7), // numbers past 32 bits
 		"SM709": Bit(true), "P_EQ": Bit(false), "P_NE": Bit(true), // names without a number
 		"LONGKIND7": Word(8), "LONGKINE7": Word(9), "Dé5": Word(10), "D\x005": Word(11), // kinds past 4 bytes, not ASCII, a NUL
@@ -43,6 +44,15 @@ func checkMemory(t *testing.T, req *Request, devices map[string]Value) {
 		if got := mem.Word(ParseAddr(name)); got != want {
 			t.Errorf("after SetWords(D100, 7, 8, 9): %s = %d; want %d", name, got, want)
 		}
+	}
+	mem.ReadWords(ParseAddr("D200"), words)
+	if words[0] != 12 || words[1] != 13 || words[2] != 14 {
+		t.Errorf("ReadWords(D200, 3) = %v; want [12 13 14]", words)
+	}
+	mem.SetWords(ParseAddr("D201"), 30, 31)
+	mem.ReadWords(ParseAddr("D200"), words)
+	if words[0] != 12 || words[1] != 30 || words[2] != 31 || mem.Bit(ParseAddr("SM201")) {
+		t.Errorf("after SetWords(D201, 30, 31): D200.. = %v, SM201 = %v; want [12 30 31], false", words, mem.Bit(ParseAddr("SM201")))
 	}
 	// Words past the vector's devices are writes outside it, kept apart.
 	mem.SetWords(ParseAddr("D101"), 20, 21, 22)
@@ -138,5 +148,29 @@ func TestEmulateReleasesCPUs(t *testing.T) {
 	}
 	if e.made != 2 || e.released != 2 {
 		t.Errorf("%d CPUs made, %d released; want 2 and 2", e.made, e.released)
+	}
+}
+
+// BenchmarkMemory is what a CP1E comparison does to its memory in one scan: read two
+// three-word operands and the control word, write the seven flags.
+func BenchmarkMemory(b *testing.B) {
+	devices := map[string]Value{"D100": Word(1), "D101": Word(2), "D102": Word(3),
+		"D200": Word(1), "D201": Word(2), "D202": Word(3), "D300": Word(0)}
+	flags := []Addr{{"P_EQ", -1}, {"P_NE", -1}, {"P_LT", -1}, {"P_LE", -1}, {"P_GT", -1}, {"P_GE", -1}, {"P_ER", -1}}
+	for _, f := range flags {
+		devices[f.Kind] = Bit(false)
+	}
+	req := NewRequest("t", "f", "I", map[string]int{"D": 8000}, devices, map[string]Operand{}, nil, []Inputs{{}})
+	mem := NewMemory(req)
+	s1, s2, c := Addr{"D", 100}, Addr{"D", 200}, Addr{"D", 300}
+	var w [3]uint16
+	for range b.N {
+		mem.ReadWords(s1, w[:])
+		mem.ReadWords(s2, w[:])
+		_ = mem.Word(c)
+		_ = mem.InRange(s1, 3)
+		for _, f := range flags {
+			mem.SetBit(f, true)
+		}
 	}
 }
