@@ -27,8 +27,13 @@ export class Memory {
   readonly sizes: Readonly<Record<string, number>>;
   private readonly layout: Layout;
   private readonly slots: ReadonlyMap<string, number>;
-  /** Slot -> value; undefined while a device named only by a later step is not yet set or written. */
-  private readonly image: (Value | undefined)[];
+  /**
+   * Slot -> value; undefined while a device named only by a later step is not yet set or written.
+   * Shared, read-only, with the prepared initial image or the last step reported until the next
+   * write copies it: most vectors are one step, and many a step writes nothing.
+   */
+  private image: readonly (Value | undefined)[];
+  private shared: boolean;
   /** Devices written or set that have no slot, in the order first written. */
   private others: Map<string, Value> | undefined;
 
@@ -37,7 +42,8 @@ export class Memory {
     const initial = devices instanceof InitialImage ? devices : InitialImage.of(layoutOf(Object.keys(devices)), devices);
     this.layout = initial.layout;
     this.slots = initial.layout.slots;
-    this.image = initial.values.slice();
+    this.image = initial.values;
+    this.shared = true;
     this.others = undefined;
     this.sizes = sizes;
   }
@@ -66,8 +72,17 @@ export class Memory {
   /** Store a value as it is. */
   private store(address: string, value: Value): void {
     const slot = this.slots.get(address);
-    if (slot !== undefined) this.image[slot] = value;
+    if (slot !== undefined) this.writable()[slot] = value;
     else (this.others ??= new Map()).set(address, value);
+  }
+
+  /** The image, copied first if it is shared. */
+  private writable(): (Value | undefined)[] {
+    if (this.shared) {
+      this.image = this.image.slice();
+      this.shared = false;
+    }
+    return this.image as (Value | undefined)[];
   }
 
   /** Write a word (stored as its raw 16 bits) or a bit. */
@@ -99,7 +114,7 @@ export class Memory {
     const run = this.layout.run(base, words.length);
     for (let i = 0; i < words.length; i++) {
       const slot = run[i]!;
-      if (slot >= 0) this.image[slot] = words[i]! & 0xffff;
+      if (slot >= 0) this.writable()[slot] = words[i]! & 0xffff;
       else this.write(deviceOffset(base, i), words[i]!);
     }
   }
@@ -124,11 +139,13 @@ export class Memory {
 
   /**
    * What an implementation reports after a step: the contact result (undefined for TADD and HOUR)
-   * and this image as it is now. The image is copied as slots; `devices` is built from them when
-   * first read, so a runner that compares slots never builds an object of device names.
+   * and this image as it is now. The step keeps the slots (the next write copies them first);
+   * `devices` is built from them when first read, so a runner that compares slots never builds an
+   * object of device names.
    */
   report(result: boolean | undefined): StepResult {
-    return new MemoryStep(result, this.layout, this.image.slice(), this.others === undefined ? undefined : new Map(this.others));
+    this.shared = true;
+    return new MemoryStep(result, this.layout, this.image, this.others === undefined ? undefined : new Map(this.others));
   }
 }
 

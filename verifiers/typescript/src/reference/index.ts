@@ -41,12 +41,11 @@ export function machineImplementation(
       if (factory === undefined) return { skip: `no machine for family ${request.family}` };
       const mem = Memory.forRequest(request);
       const machine = factory(mem, followed);
-      const steps: StepResult[] = [];
-      for (const step of request.steps) {
+      const steps = request.steps.map((step): StepResult => {
         mem.set(step.set);
         const result = machine.execute(request.instruction, request.initial.operands, step);
-        steps.push(mem.report(machine.contact ? result === true : undefined));
-      }
+        return mem.report(machine.contact ? result === true : undefined);
+      });
       return { steps };
     },
   };
