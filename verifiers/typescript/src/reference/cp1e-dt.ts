@@ -1,6 +1,6 @@
 /** Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT, from cp1e-time-compare-DT.txt. */
 import type { StepInputs } from "../types.js";
-import { BaseMachine, deviceOf, type Operands } from "./machine.js";
+import { BaseMachine, conditionHolds, CONDITIONS, deviceOf, type Operands } from "./machine.js";
 
 const ERROR_FLAG = "P_ER";
 const FLAGS: readonly (readonly [string, string])[] = [
@@ -34,28 +34,8 @@ export const FIELDS: readonly BcdField[] = [
   { offset: 0, byte: 0, name: "second", min: 0, max: 59, mask: 0 },
 ];
 
-/**
- * The flag table, rows S1 = S2, S1 > S2, S1 < S2: each flag is on exactly when its condition holds
- * for the ordering of S1 against S2 (-1, 0, 1), and the contact is the flag of the instruction's condition.
- */
-export function conditionHolds(condition: string, order: number): boolean {
-  switch (condition) {
-    case "=":
-      return order === 0;
-    case "<>":
-      return order !== 0;
-    case "<":
-      return order < 0;
-    case "<=":
-      return order <= 0;
-    case ">":
-      return order > 0;
-    case ">=":
-      return order >= 0;
-    default:
-      throw new Error(`not a CP1E comparison condition: ${condition}`);
-  }
-}
+// The flag table, rows S1 = S2, S1 > S2, S1 < S2: each flag is on exactly when its condition holds
+// for the ordering of S1 against S2, and the contact is the flag of the instruction's condition.
 
 export function isBcd(b: number): boolean {
   return b >> 4 <= 9 && (b & 0xf) <= 9;
@@ -63,6 +43,7 @@ export function isBcd(b: number): boolean {
 
 const bcdValue = (b: number): number => (b >> 4) * 10 + (b & 0xf);
 
+const FORMS: readonly string[] = ["LD", "AND", "OR"];
 const mnemonics = new Map<string, readonly [string, string]>();
 
 /** "AND <=DT" -> ["AND", "<="] (parsed once per mnemonic). */
@@ -71,7 +52,8 @@ function parseMnemonic(instruction: string): readonly [string, string] {
   if (parsed === undefined) {
     const m = /^(LD|AND|OR) (=|<>|<|<=|>|>=)DT$/.exec(instruction);
     if (m === null) throw new Error(`not a CP1E time comparison: ${instruction}`);
-    parsed = [m[1] as string, m[2] as string];
+    // The literals, not the matched text: comparing them is comparing pointers.
+    parsed = [FORMS.find((f) => f === m[1])!, CONDITIONS.find((c) => c === m[2])!];
     mnemonics.set(instruction, parsed);
   }
   return parsed;

@@ -4,7 +4,7 @@
  * the same text with hour/minute/second replaced by year/month/day, so one class serves both.
  */
 import type { StepInputs } from "../types.js";
-import { BaseMachine, deviceOf, signed16, type Operands } from "./machine.js";
+import { BaseMachine, conditionHolds, CONDITIONS, deviceOf, signed16, type Operands } from "./machine.js";
 
 export interface Field {
   readonly offset: number;
@@ -31,17 +31,8 @@ export const DATE_FIELDS: readonly Field[] = [
 
 const SM709 = "SM709";
 
-/** The condition table: = <> > <= < >= on the ordering of (s1) against (s2). */
-export const CONDITIONS: Readonly<Record<string, (order: number) => boolean>> = {
-  "=": (c) => c === 0,
-  "<>": (c) => c !== 0,
-  ">": (c) => c > 0,
-  "<=": (c) => c <= 0,
-  "<": (c) => c < 0,
-  ">=": (c) => c >= 0,
-};
-
-const mnemonics = new Map<string, { form: string; condition: string }>();
+/** Parsed mnemonics of each kind ("LDTM<=" is not a date comparison). */
+const mnemonics = { TM: new Map<string, { form: string; condition: string }>(), DT: new Map<string, { form: string; condition: string }>() };
 
 export class Fx5CompareMachine extends BaseMachine {
   readonly contact = true;
@@ -116,7 +107,7 @@ export class Fx5CompareMachine extends BaseMachine {
       if (this.outOfRange(s1, s3) || (!useClock && this.outOfRange(s2, s3))) return this.error();
     }
     // Date page: "SM709 does not turn on if the data are within the setting range": 02/30 is compared as is.
-    return CONDITIONS[condition]!(this.order(s1, s2, s3));
+    return conditionHolds(condition, this.order(s1, s2, s3));
   }
 
   execute(instruction: string, operands: Operands, step: StepInputs): boolean {
@@ -137,15 +128,15 @@ export class Fx5CompareMachine extends BaseMachine {
 
   /** "ANDTM<=" -> {form: "AND", condition: "<="} (parsed once per mnemonic). */
   protected parse(instruction: string): { form: string; condition: string } {
-    const key = `${this.kind} ${instruction}`;
-    let parsed = mnemonics.get(key);
+    const parsedOfKind = mnemonics[this.kind];
+    let parsed = parsedOfKind.get(instruction);
     if (parsed === undefined) {
       for (const form of ["LD", "AND", "OR"]) {
         const prefix = form + this.kind;
-        const condition = instruction.slice(prefix.length);
-        if (instruction.startsWith(prefix) && Object.prototype.hasOwnProperty.call(CONDITIONS, condition)) {
+        const condition = CONDITIONS.find((c) => instruction === prefix + c);
+        if (condition !== undefined) {
           parsed = { form, condition };
-          mnemonics.set(key, parsed);
+          parsedOfKind.set(instruction, parsed);
           return parsed;
         }
       }

@@ -42,3 +42,26 @@ export function deviceOf(op: Operand | undefined, name: string): string {
   if (typeof device !== "string") throw new Error(`operand ${name} must be a device`);
   return device;
 }
+
+/** The six comparison conditions of the FX5 and CP1E pages, in the manuals' order. */
+export const CONDITIONS: readonly string[] = ["=", "<>", ">", "<=", "<", ">="];
+
+/** Whether `condition` holds for an ordering of the first operand against the second (-1, 0, 1). */
+export function conditionHolds(condition: string, order: number): boolean {
+  switch (condition) {
+    case "=":
+      return order === 0;
+    case "<>":
+      return order !== 0;
+    case ">":
+      return order > 0;
+    case "<=":
+      return order <= 0;
+    case "<":
+      return order < 0;
+    case ">=":
+      return order >= 0;
+    default:
+      throw new Error(`not a comparison condition: ${condition}`);
+  }
+}
