@@ -101,11 +101,30 @@ export function expectedOf(
  * request and every expectation of the vector.
  */
 export function expectedLayout(vector: Vector): Layout {
-  const names = [...Object.keys(vector.initial.devices), ...(vector.initial.scratch ?? [])];
-  for (const step of vector.steps) names.push(...Object.keys(step.set ?? {}), ...Object.keys(step.expect.devices));
-  for (const alt of vector.alternatives ?? []) for (const e of alt.expect) names.push(...Object.keys(e.devices));
-  names.push(...Object.keys(vector.final.devices));
-  return layoutOf(names);
+  let layout = layouts.get(vector);
+  if (layout === undefined) {
+    layout = layoutOf(namedDevices(vector));
+    layouts.set(vector, layout);
+  }
+  return layout;
+}
+
+/** Worked out once per vector: the request and each expectation of it share it. */
+const layouts = new WeakMap<Vector, Layout>();
+
+function namedDevices(vector: Vector): Set<string> {
+  const names = new Set(Object.keys(vector.initial.devices));
+  const add = (devices: Devices | undefined): void => {
+    for (const name in devices) names.add(name);
+  };
+  for (const name of vector.initial.scratch ?? []) names.add(name);
+  for (const step of vector.steps) {
+    add(step.set);
+    add(step.expect.devices);
+  }
+  for (const alt of vector.alternatives ?? []) for (const e of alt.expect) add(e.devices);
+  add(vector.final.devices);
+  return names;
 }
 
 /** The devices one step must leave, as parallel lists: the names are interned strings, looked up as they are. */

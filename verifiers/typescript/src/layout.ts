@@ -73,7 +73,7 @@ const interned = new Map<string, Layout>();
 
 /** The layout of these device addresses (each once, in the order first given). */
 export function layoutOf(names: Iterable<string>): Layout {
-  const unique = [...new Set(names)];
+  const unique = [...(names instanceof Set ? (names as Set<string>) : new Set(names))];
   const key = unique.join("\n"); // a device address never holds a newline (validate.ts)
   let layout = interned.get(key);
   if (layout === undefined) {

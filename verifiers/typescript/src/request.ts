@@ -11,7 +11,8 @@ import type { Initial, StepInputs, Vector, VectorRequest } from "./types.js";
  * A request prepared from a vector. Its fields are the contract's and nothing else (it prints,
  * serializes and spreads as them); it also carries, privately, the vector's initial device image,
  * whose layout covers every device the vector names, so that Memory.forRequest copies an array.
- * The parts equal across vectors (operands, steps, device sizes) are shared and frozen.
+ * The parts equal across vectors (operands, steps, device sizes) are shared; all but the vector's
+ * own `initial.devices` is frozen.
  */
 class PreparedRequest implements VectorRequest {
   readonly id: string;
@@ -31,6 +32,8 @@ class PreparedRequest implements VectorRequest {
     const { devices, operands, scratch } = vector.initial;
     this.initial = scratch === undefined ? { devices, operands: interned(operands) } : { devices, operands: interned(operands), scratch: interned(scratch) };
     this.steps = interned(vector.steps.map(({ expect: _expect, ...inputs }) => inputs));
+    Object.freeze(this.initial);
+    Object.freeze(this);
   }
 
   static imageOf(request: VectorRequest): InitialImage | undefined {
@@ -38,10 +41,20 @@ class PreparedRequest implements VectorRequest {
   }
 }
 
-/** The part of a vector an implementation receives: everything needed to run it, no expectation. */
+/**
+ * The part of a vector an implementation receives: everything needed to run it, no expectation.
+ * Frozen, so one request per vector serves every run of it in a process.
+ */
 export function requestOf(vector: Vector): VectorRequest {
-  return new PreparedRequest(vector);
+  let request = requests.get(vector);
+  if (request === undefined) {
+    request = new PreparedRequest(vector);
+    requests.set(vector, request);
+  }
+  return request;
 }
+
+const requests = new WeakMap<Vector, VectorRequest>();
 
 /** The initial image of a request: the one it was prepared with, or one worked out now (a request from elsewhere). */
 export function initialImageOf(request: VectorRequest): InitialImage {
