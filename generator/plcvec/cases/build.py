@@ -224,6 +224,9 @@ class VectorBuilder:
                 same = len(distinct)
                 distinct.append(run)
             classes.append(same)
+        if len(distinct) == 1:   # every combination gives one result: none touches it
+            root = next(run for choice, run in runs if all(choice[i] == defaults[i] for i in choice))
+            return root.expects, root.final, root.outcome, set(root.trace), [], []
         grid = {}
         for (choice, run), cls in zip(runs, classes):
             free = [k for k, i in enumerate(consulted) if i not in choice]

@@ -45,7 +45,7 @@ class CoverageModel:
         self.order = {d.id: i for i, d in enumerate(self.dims)}
         # What a pair's exclusion is and what a cell exercises depend on the spec alone, and the greedy
         # search and the classification ask the same ones thousands of times: each is worked out once.
-        self._excluded, self._cell_pairs, self._cell_products = {}, {}, {}
+        self._excluded, self._cells, self._cell_pairs, self._cell_products = {}, {}, {}, {}
 
     # -- what is required -------------------------------------------------------------------------
     def excluded(self, p):
@@ -93,8 +93,12 @@ class CoverageModel:
     # -- what vectors exercise --------------------------------------------------------------------
     def cell(self, classes):
         """The model's cell for a classifier's {derivation: class}: ((dimension, class), ...)."""
-        row = {d.id: classes[self.derive_of[d.id]] for d in self.dims}
-        return tuple((d.id, row[d.id] if d.applies(row) else None) for d in self.dims)
+        key = tuple(classes.items())
+        got = self._cells.get(key)
+        if got is None:
+            row = {d.id: classes[self.derive_of[d.id]] for d in self.dims}
+            got = self._cells[key] = tuple((d.id, row[d.id] if d.applies(row) else None) for d in self.dims)
+        return got
 
     def cell_pairs(self, cell):
         """The pairs of classes an execution cell holds (a frozenset, shared: do not change it)."""

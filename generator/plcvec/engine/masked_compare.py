@@ -33,6 +33,13 @@ class MaskedCompare:
         self._field_bits = [(f, self.sel["field_bits"][f["name"]]) for f in self.fields]
         self._field_clauses = [self.sel["field_clauses"][f["name"]] for f in self.fields]
         self._ranges = [(f["name"], f["min"], f["max"]) for f in self.fields]
+        # Parts of the document read on every execution that no interpretation sets (reading them here
+        # consults nothing; the values an interpretation may set inside them are still read in place).
+        self._error = self.validity["error"]
+        self._error_device = self._error["device"]
+        self._device_range = self.validity["device_range"]
+        self._sel_operand = self.sel["operand"]
+        self._source_bit = self.sel.get("source_bit")
 
     # -- the instruction ---------------------------------------------------------------------------
     def execute(self, instr, operands, state, step, ctx, trace):
@@ -40,8 +47,8 @@ class MaskedCompare:
         form, cond = instr["form"], self.conditions[instr["symbol"]]
         trace.add(form["clause"])
         rlo_in = step.get("rlo_in")
-        err = self.validity["error"]
-        if state[err["device"]] and err.get("latch", True):
+        err = self._error
+        if state[self._error_device] and err.get("latch", True):
             trace.add(err.get("latch_clause"))
         # What this execution did, for the coverage model (plcvec.coverage): executed, ordering, error.
         record = {"executed": False, "ordering": None, "error": False}
@@ -62,16 +69,15 @@ class MaskedCompare:
         try:
             ordering = self.compare(operands, state, step, ctx, trace)
         except _Error:
-            err = self.validity["error"]
-            state[err["device"]] = True
+            err, device = self._error, self._error_device
+            state[device] = True
             trace.add(err.get("clause"))
-            ctx["error"] = {"device": err["device"]}
+            ctx["error"] = {"device": device}
             return ERROR
-        err = self.validity["error"]
         # An error flag that reports each execution, not a latch, is turned off; whether it latches is
         # only asked when there is something to turn off.
-        if state[err["device"]] is not False and not err.get("latch", True):
-            state[err["device"]] = False
+        if state[self._error_device] is not False and not self._error.get("latch", True):
+            state[self._error_device] = False
         if ordering is not None and self.flags:
             trace.add(self.flags["clause"])
             trace.add(self.flags.get("written_clause"))
@@ -82,7 +88,7 @@ class MaskedCompare:
     def contact(self, symbol, outcome):
         """The contact state a condition symbol gives for an outcome of evaluate()."""
         if outcome == ERROR:
-            return self.validity["error"]["result"]
+            return self._error["result"]
         return outcome is not None and outcome in self.conditions[symbol]["true_when"]
 
     def selector_value(self, operand, state):
@@ -90,15 +96,15 @@ class MaskedCompare:
 
     def compare(self, operands, state, step, ctx, trace):
         """The ordering of the selected fields of the first data operand against the second (or the clock)."""
-        sel = self.selector_value(operands[self.sel["operand"]], state)
-        source_bit = self.sel.get("source_bit")
+        sel = self.selector_value(operands[self._sel_operand], state)
+        source_bit = self._source_bit
         clock_mode = bool(source_bit) and bool(sel >> source_bit["bit"] & 1)
         if clock_mode:
             trace.add(source_bit["clause"])
         first, second = self.data_ops
         compared_ops = [first] if clock_mode else [first, second]
 
-        device_range = self.validity["device_range"]
+        device_range = self._device_range
         if device_range["check"]:
             checked = compared_ops + ([second] if clock_mode and device_range["s2_in_clock_mode"] else [])
             for op in checked:
