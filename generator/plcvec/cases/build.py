@@ -111,15 +111,12 @@ class VectorBuilder:
                 self._cells_seen.add(self._cell(index, instr, operands, before, step, ctx["exercised"][-1]))
             if len(state) != len(before):
                 raise GeneratorBug(f"engine wrote {sorted(set(state) - set(before))} not in the initial state")
-            expect = {}
-            if result is not None:
-                expect["result"] = result
-            changed = sorted(k for k, v in state.items() if v != before[k] and k not in scratch)
-            expect["devices"] = {k: state[k] for k in changed}
-            expects.append(expect)
+            changed = sorted([k for k, v in state.items() if v != before[k] and k not in scratch])
+            devices_changed = {k: state[k] for k in changed}
+            expects.append({"devices": devices_changed} if result is None else {"result": result, "devices": devices_changed})
             if "error" in ctx:
                 errors.append(dict(step=index, **ctx.pop("error")))
-        final = {k: state[k] for k in sorted(state) if k not in scratch}
+        final = {k: state[k] for k in sorted(state) if k not in scratch} if scratch else dict(sorted(state.items()))
         outcome = {"category": "error", "errors": errors} if errors else {"category": "value"}
         trace.discard(None)
         return Run(expects, final, outcome, trace, frozenset(sink) | at_build)
@@ -185,7 +182,7 @@ class VectorBuilder:
             "st": instr.get("st", instruction),
             "description": description,
             "tags": sorted(set(tags)),
-            "clauses": sorted(self.fam.clause_ref(c) for c in trace | set(clauses) | self._cited(instr, operands, tags)),
+            "clauses": sorted(map(self.fam.clause_ref, trace.union(clauses, self._cited(instr, operands, tags)))),
             "assumes": {"device_sizes": self.sizes},
             "initial": {"operands": operands, "devices": dict(sorted(devices.items()))},
             "steps": [dict({k: s[k] for k in STEP_INPUTS if k in s}, expect=e) for s, e in zip(steps, expects)],

@@ -5,7 +5,7 @@ case builder turns each row into a vector (`from_row`), and the row counts only 
 vector really exercises, as the engine's record classifies it. Random draws are left out of what is
 already covered, so these vectors do not change when the draws do. Each id is the row itself.
 """
-from plcvec.coverage.pairwise import cover, grow
+from plcvec.coverage.pairwise import cover, exclusions, grow
 
 
 def model_cases(builder, vectors, from_row, instruction_dims):
@@ -38,11 +38,12 @@ def model_cases(builder, vectors, from_row, instruction_dims):
         covered_products |= payload[0][1]
     # Cells of the products the pairs did not reach: each is a row of its own, the rest filled greedily.
     order = {d.id: i for i, d in enumerate(model.dims)}
+    clashes = exclusions(model.dims, model.excluded)
     for i, _ in enumerate(model.spec.get("products", [])):
         for cells in model.product_cells(i):
             if cells in covered_products:
                 continue
-            row = grow(model.dims, {d: c for d, c in cells if c is not None}, set(), order, model.excluded)
+            row = grow(model.dims, {d: c for d, c in cells if c is not None}, set(), order, model.excluded, clashes)
             got = realize(row)
             if got is not None and cells in got[1][0][1] and got[1][1] not in out:
                 out.append(got[1][1])

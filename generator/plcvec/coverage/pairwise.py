@@ -67,18 +67,19 @@ def cover(dims, required, covered=frozenset(), realize=None, excluded=lambda p: 
     sort_key = lambda p: (order[p[0][0]], order[p[1][0]], dims[order[p[0][0]]].classes.index(p[0][1]),
                           dims[order[p[1][0]]].classes.index(p[1][1]))
     uncovered = set(required) - set(covered)
+    clashes = exclusions(dims, excluded)
     result, failed = Cover(), []
     for seed in sorted(uncovered, key=sort_key):
         if seed not in uncovered:
             continue
-        row = grow(dims, dict(seed), uncovered, order, excluded)
+        row = grow(dims, dict(seed), uncovered, order, excluded, clashes)
         shown, payload = _realize(row, dims, realize)
         if seed not in shown:
             # The rules rule the row out: change one other dimension at a time until one shows the seed.
             for d in dims:
                 if d.id in dict(seed) or row[d.id] is None:
                     continue
-                for c in _allowed(d, dims, {k: v for k, v in row.items() if k != d.id}, excluded, order):
+                for c in _allowed(d, dims, {k: v for k, v in row.items() if k != d.id}, clashes):
                     if c == row[d.id]:
                         continue
                     other = _conditions_applied(dims, dict(row, **{d.id: c}))
@@ -110,8 +111,24 @@ def _conditions_applied(dims, row):
     return {d.id: (None if d.when and row.get(d.when[0]) not in d.when[1] else row[d.id]) for d in dims}
 
 
-def grow(dims, row, uncovered, order, excluded):
-    """Complete a partial row greedily (see the module's docstring)."""
+def exclusions(dims, excluded):
+    """{(dimension, class): the (dimension, class) items `excluded` rules out in a pair with it}, each
+    pair asked once: the greedy search checks a candidate class against every class of its row."""
+    order = {d.id: i for i, d in enumerate(dims)}
+    items = [(d.id, c) for d in dims for c in d.classes]
+    out = {item: set() for item in items}
+    for i, a in enumerate(items):
+        for b in items[i + 1:]:
+            if a[0] != b[0] and excluded((a, b) if order[a[0]] < order[b[0]] else (b, a)):
+                out[a].add(b)
+                out[b].add(a)
+    return {item: frozenset(partners) for item, partners in out.items()}
+
+
+def grow(dims, row, uncovered, order, excluded, clashes=None):
+    """Complete a partial row greedily (see the module's docstring); `clashes` is exclusions(dims, excluded)."""
+    if clashes is None:
+        clashes = exclusions(dims, excluded)
     for d in dims:
         if d.id in row:
             continue
@@ -120,8 +137,8 @@ def grow(dims, row, uncovered, order, excluded):
             continue
         pairs_with = _pairs_with(d, row, order)
         best, best_gain = None, -1
-        for c in _allowed(d, dims, row, excluded, order):
-            gain = sum(p in uncovered for p in pairs_with(c))
+        for c in _allowed(d, dims, row, clashes):
+            gain = len(uncovered.intersection(pairs_with(c)))
             if gain > best_gain:
                 best, best_gain = c, gain
         row[d.id] = best
@@ -142,18 +159,17 @@ def _pairs_with(d, row, order):
     return pairs_with
 
 
-def _allowed(d, dims, row, excluded, order=None):
-    """The classes of `d` compatible with the row so far: conditions of fixed dimensions and exclusions."""
-    if order is None:
-        order = {x.id: i for i, x in enumerate(dims)}
+def _allowed(d, dims, row, clashes):
+    """The classes of `d` compatible with the row so far: conditions of fixed dimensions and exclusions
+    (`clashes`, see exclusions())."""
     # Dimensions that depend on d and are already given a class: d must take a class under which they apply.
     dependents = [e.when[1] for e in dims if e.when and e.when[0] == d.id and row.get(e.id) is not None]
-    pairs_with = _pairs_with(d, row, order)
+    fixed = [(e, ce) for e, ce in row.items() if ce is not None]
     out = []
     for c in d.classes:
         if any(c not in classes for classes in dependents):
             continue
-        if any(excluded(p) for p in pairs_with(c)):
+        if not clashes[d.id, c].isdisjoint(fixed):
             continue
         out.append(c)
     return out or list(d.classes)
