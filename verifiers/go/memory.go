@@ -135,15 +135,11 @@ func (em *emulated) recycle(steps []StepResult) {
 	}
 }
 
-// slot is a's index in the vector's devices, or -1.
+// slot is a's index in the vector's devices, or -1: its key looked up in the request's table,
+// or a scan for a request too large for one.
 func (m *Memory) slot(a Addr) int {
 	key, exact := addrKey(a)
-	return m.req.find(key, exact, a)
-}
-
-// find is the index of the device of this key (and address, unless the key is exact), or -1:
-// the key looked up in the request's table, or a scan for a request too large for one.
-func (r *Request) find(key uint64, exact bool, a Addr) int {
+	r := m.req
 	if r.table == nil {
 		for i := range r.keys {
 			if r.keys[i] == key && (exact || r.addrs[i] == a) {
@@ -154,12 +150,12 @@ func (r *Request) find(key uint64, exact bool, a Addr) int {
 	}
 	mask := uint64(len(r.table) - 1)
 	for h := key * fibonacci >> r.shift; ; h = (h + 1) & mask {
-		s := int(r.table[h]) - 1
-		if s < 0 {
+		i := int(r.table[h]) - 1
+		if i < 0 {
 			return -1
 		}
-		if r.keys[s] == key && (exact || r.addrs[s] == a) {
-			return s
+		if r.keys[i] == key && (exact || r.addrs[i] == a) {
+			return i
 		}
 	}
 }
@@ -190,8 +186,6 @@ func (r *Request) prepareTable(a *arena) {
 	}
 }
 
-func (m *Memory) index(a Addr) int { return m.slot(a) }
-
 // outsideIndex is a's index among the writes outside the vector, or -1.
 func (m *Memory) outsideIndex(a Addr) int {
 	for k := range m.outsideAddrs {
@@ -204,7 +198,7 @@ func (m *Memory) outsideIndex(a Addr) int {
 
 // Get returns a device's value and whether the image holds the device.
 func (m *Memory) Get(a Addr) (Value, bool) {
-	if i := m.index(a); i >= 0 {
+	if i := m.slot(a); i >= 0 {
 		return m.vals[i], true
 	}
 	return m.getOutside(a)
@@ -251,7 +245,7 @@ func (m *Memory) Bit(a Addr) bool {
 
 // Set writes a device.
 func (m *Memory) Set(a Addr, v Value) {
-	if i := m.index(a); i >= 0 {
+	if i := m.slot(a); i >= 0 {
 		m.vals[i] = v
 		return
 	}
