@@ -24,8 +24,6 @@ export interface Expected {
   readonly scratch: ReadonlySet<string>;
   /** The alternative applied for each interpretation the vector depends on. */
   readonly applied: Readonly<Record<string, string>>;
-  /** Per step: the same as `image`, as the lists the runner checks a report's `devices` against. */
-  readonly checks: readonly DeviceCheck[];
   readonly id: string;
   /** Per step: every listed device after the step, scratch left out. */
   readonly states: readonly Devices[];
@@ -35,6 +33,22 @@ export interface Expected {
 }
 
 const NO_SCRATCH: ReadonlySet<string> = new Set();
+const NONE_APPLIED: Readonly<Record<string, string>> = Object.freeze({});
+
+/** The slots of a layout compared: all but scratch (one list per layout and scratch list). */
+function checkedSlots(layout: Layout, scratch: readonly string[]): readonly number[] {
+  let byScratch = checkedByLayout.get(layout);
+  if (byScratch === undefined) checkedByLayout.set(layout, (byScratch = new Map()));
+  const key = scratch.join("\n");
+  let checked = byScratch.get(key);
+  if (checked === undefined) {
+    checked = [...layout.names.keys()].filter((slot) => !scratch.includes(layout.names[slot]!));
+    byScratch.set(key, checked);
+  }
+  return checked;
+}
+
+const checkedByLayout = new WeakMap<Layout, Map<string, readonly number[]>>();
 
 export function expectedOf(
   vector: Vector,
@@ -79,15 +93,14 @@ export function expectedOf(
   const layout = expectedLayout(vector);
   const has = Object.prototype.hasOwnProperty;
   const image = states.flatMap((state) => layout.names.map((name) => (has.call(state, name) ? state[name] : undefined)));
-  const checked = interned([...layout.names.keys()].filter((slot) => !scratch.has(layout.names[slot]!)));
+  const checked = checkedSlots(layout, vector.initial.scratch ?? []);
   return {
     results: internedResults(results),
     layout,
     image,
     checked,
     scratch: scratch.size === 0 ? NO_SCRATCH : scratch,
-    applied: interned(applied),
-    checks: states.map(deviceCheck),
+    applied: touched.length === 0 ? NONE_APPLIED : interned(applied),
     id: vector.id,
     states,
     befores,
@@ -127,30 +140,27 @@ function namedDevices(vector: Vector): Set<string> {
   return names;
 }
 
-/** The devices one step must leave, as parallel lists: the names are interned strings, looked up as they are. */
-export interface DeviceCheck {
-  readonly names: readonly string[];
-  readonly values: readonly Value[];
-}
-
-function deviceCheck(devices: Devices): DeviceCheck {
-  const names = Object.keys(devices);
-  return { names, values: names.map((k) => devices[k]!) };
-}
-
 /**
- * Whether `got` holds exactly the checked devices with the same values and JSON types (true is
- * not 1), leaving out devices in `skip` (scratch). This runs once per step of every vector: no
- * key arrays, no allocation.
+ * Whether `got` holds exactly the devices expected after step `step` (the slots of `expected.image`
+ * for that step, scratch left out), with the same values and JSON types (true is not 1). This runs
+ * once per step of every vector an implementation reports as plain objects: no key arrays, no
+ * allocation.
  */
-export function holds(got: Devices, check: DeviceCheck, skip: ReadonlySet<string>): boolean {
-  const names = check.names;
-  const values = check.values;
-  for (let i = 0; i < names.length; i++) if (got[names[i]!] !== values[i]) return false;
+export function holds(got: Devices, expected: Expected, step: number): boolean {
+  const { layout, image, checked, scratch } = expected;
+  const names = layout.names;
+  const from = step * names.length;
+  let listed = 0;
+  for (let i = 0; i < checked.length; i++) {
+    const slot = checked[i]!;
+    const want = image[from + slot];
+    if (got[names[slot]!] !== want) return false; // a device not listed yet must be absent: undefined both sides
+    if (want !== undefined) listed++;
+  }
   let n = 0;
-  if (skip.size === 0) for (const _ in got) n++;
-  else for (const k in got) if (!skip.has(k)) n++;
-  return n === names.length;
+  if (scratch.size === 0) for (const _ in got) n++;
+  else for (const k in got) if (!scratch.has(k)) n++;
+  return n === listed;
 }
 
 /** Same devices, same values, same JSON types (true is not 1). */
