@@ -14,8 +14,10 @@ use crate::value::Value;
 use crate::vector::{Expectation, Vector, INLINE_SLOTS};
 use crate::Suite;
 
-/// The expectation of one vector under one set of alternatives.
+/// The expectation of one vector under one set of alternatives (what a run reads first, first:
+/// `#[repr(C)]` keeps the order).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[repr(C)]
 pub struct Expected {
     /// Per step: the contact result, for contact instructions.
     results: Small<Option<bool>, 4>,

@@ -178,4 +178,20 @@ mod tests {
         assert!(m.bit("M10"));
         assert_eq!(m.values()[2], Value::Bit(true));
     }
+
+    #[test]
+    fn a_device_spelt_with_leading_zeros_is_found_by_address() {
+        let v = Vector::from_request(&serde_json::json!({
+            "id": "t", "family": "f", "instruction": "I",
+            "initial": {"devices": {"D0100": 5, "D101": 6}, "operands": {}},
+            "steps": [{}],
+        }))
+        .unwrap();
+        let mut m = Memory::new(&v);
+        let base = Address::parse("D99");
+        assert_eq!((m.word(&base, 1), m.word(&base, 2)), (5, 6));
+        m.set_word(&base, 1, 7);
+        assert_eq!(m.get("D0100"), Some(Value::Word(7)));
+        assert!(m.outside().is_empty());
+    }
 }

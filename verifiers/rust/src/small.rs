@@ -43,6 +43,23 @@ impl<T: Clone, const N: usize> Small<T, N> {
     }
 }
 
+impl<const N: usize> Small<u64, N> {
+    /// The index of `key`'s first occurrence. An inline list compares all `N` places at once,
+    /// without a branch per item (the unused places repeat the first item, so they never give a
+    /// lower index than a real one): a look-up costs no mispredicted branch, wherever it stops.
+    #[inline]
+    pub(crate) fn find(&self, key: u64) -> Option<usize> {
+        match self {
+            Small::Inline { items, .. } => {
+                const { assert!(N <= 64, "one bit per place") };
+                let hits = items.iter().enumerate().fold(0u64, |hits, (i, &k)| hits | u64::from(k == key) << i);
+                (hits != 0).then(|| hits.trailing_zeros() as usize)
+            }
+            Small::Heap(items) => items.iter().position(|&k| k == key),
+        }
+    }
+}
+
 impl<T: Clone, const N: usize> Default for Small<T, N> {
     fn default() -> Small<T, N> {
         Small::Heap(Vec::new())
@@ -120,6 +137,10 @@ mod tests {
         assert_eq!(*short, *long); // the same items, whichever the storage
         assert_eq!(&*Small::<u16, 2>::filled(5, 3), &[5, 5, 5]);
         assert_eq!(&*Small::<u16, 4>::filled(5, 2), &[5, 5]);
+        let keys: Small<u64, 8> = Small::from_slice(&[7, 3, 9]);
+        assert_eq!((keys.find(7), keys.find(3), keys.find(9), keys.find(4)), (Some(0), Some(1), Some(2), None));
+        let spilled: Small<u64, 2> = Small::from_slice(&[7, 3, 9]);
+        assert_eq!((spilled.find(9), spilled.find(4)), (Some(2), None));
         let names: Small<String, 2> = Small::from_slice(&["s1".to_owned()]);
         assert_eq!(&*names, &["s1".to_owned()]);
     }

@@ -85,7 +85,7 @@ pub(crate) fn pack(name: &str) -> u64 {
 /// a number (Omron's `P_EQ`) have none.
 #[derive(Clone, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Address {
-    name: String,
+    name: Box<str>,
     kind_len: usize,
     number: Option<u32>,
     kind_key: u64,
@@ -102,7 +102,7 @@ impl Address {
             None
         };
         let kind_len = if number.is_some() { kind_len } else { name.len() };
-        Address { name: name.to_owned(), kind_len, number, kind_key: pack(&name[..kind_len]) }
+        Address { name: name.into(), kind_len, number, kind_key: pack(&name[..kind_len]) }
     }
 
     /// The address as written (`D100`).
@@ -130,6 +130,24 @@ impl Address {
     #[inline]
     pub(crate) fn kind_key(&self) -> u64 {
         self.kind_key
+    }
+
+    /// The packed name (`pack`) of the device `offset` further on, spelled as a name is (two on
+    /// from `D100` is `D102`, no leading zeros), without building the text; 0 when there is no
+    /// such device or its name is longer than 8 bytes.
+    #[inline]
+    pub(crate) fn key_at(&self, offset: u32) -> u64 {
+        let Some(number) = self.number.and_then(|n| n.checked_add(offset)) else { return 0 };
+        let digits = number.checked_ilog10().unwrap_or(0) as usize + 1;
+        if self.kind_key == 0 || self.kind_len + digits > 8 {
+            return 0;
+        }
+        let (mut key, mut n) = (self.kind_key, number);
+        for i in (0..digits).rev() {
+            key |= u64::from(b'0' + (n % 10) as u8) << (8 * (self.kind_len + i));
+            n /= 10;
+        }
+        key
     }
 
     /// Whether `other` is of the same device type (`D100` and `D7999`).
@@ -160,6 +178,19 @@ mod tests {
         assert_eq!((p.kind(), p.number()), ("P_EQ", None));
         assert!(Address::parse("D100").is("D", 100));
         assert!(!Address::parse("D100").is("SD", 100));
+    }
+
+    #[test]
+    fn the_key_of_a_later_device_is_its_packed_name() {
+        let d = Address::parse("D99");
+        assert_eq!(d.key_at(0), pack("D99"));
+        assert_eq!(d.key_at(1), pack("D100"));
+        assert_eq!(Address::parse("SD8067").key_at(0), pack("SD8067"));
+        assert_eq!(Address::parse("SM0").key_at(10), pack("SM10"));
+        assert_eq!(Address::parse("D0100").key_at(0), pack("D100")); // as a name is spelled
+        assert_eq!(Address::parse("D9999999").key_at(1), 0); // D10000000: 9 bytes
+        assert_eq!(Address::parse("D4294967295").key_at(1), 0);
+        assert_eq!(Address::parse("P_EQ").key_at(0), 0);
     }
 
     #[test]

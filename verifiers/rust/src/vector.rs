@@ -42,28 +42,30 @@ impl Operand {
 /// The current clock a current-time comparison reads (only the fields the family compares).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
 pub struct Clock {
-    fields: Vec<(String, i64)>,
-    /// The fields again, by packed name (`value::pack`; 0 for a name longer than 8 bytes).
-    keys: Small<(u64, i64), 6>,
+    /// The fields by packed name (`value::pack`; 0 for a name longer than 8 bytes), inline for
+    /// the three an FX5 comparison reads.
+    keys: Small<(u64, i64), 3>,
+    named: Vec<(String, i64)>,
 }
 
 impl Clock {
-    fn new(fields: Vec<(String, i64)>) -> Clock {
-        let keys = fields.iter().map(|(n, v)| (pack(n), *v)).collect();
-        Clock { fields, keys }
+    fn new(named: Vec<(String, i64)>) -> Clock {
+        let keys = named.iter().map(|(n, v)| (pack(n), *v)).collect();
+        Clock { keys, named }
     }
 
     /// The field (`hour`, `year`), if the step gives it.
+    #[inline]
     pub fn get(&self, field: &str) -> Option<i64> {
         match pack(field) {
-            0 => self.fields.iter().find(|(name, _)| name == field).map(|&(_, v)| v),
+            0 => self.named.iter().find(|(name, _)| name == field).map(|&(_, v)| v),
             key => self.keys.iter().find(|&&(k, _)| k == key).map(|&(_, v)| v),
         }
     }
 
     /// Every field as given, sorted by name.
     pub fn fields(&self) -> impl Iterator<Item = (&str, i64)> {
-        self.fields.iter().map(|(n, v)| (n.as_str(), *v))
+        self.named.iter().map(|(n, v)| (n.as_str(), *v))
     }
 }
 
@@ -115,19 +117,31 @@ pub(crate) struct Expectations {
     pub alternatives: Vec<Expectation>,
 }
 
-/// A device's type and number as one integer: the packed type (`value::pack`) above the number;
-/// 0 (no key) when the name has no number or its type is longer than 4 bytes.
-#[inline]
-fn address_key(kind_key: u64, number: Option<u32>) -> u64 {
-    match number {
-        Some(n) if kind_key != 0 && kind_key >> 32 == 0 => kind_key << 32 | u64::from(n),
-        _ => 0,
-    }
-}
-
 /// One test vector.
+///
+/// The fields every step reads come first, in the order a run reads them, and lie inline: the
+/// hot part of a vector is a few adjacent cache lines, and the vectors of a suite follow each
+/// other in one array (`#[repr(C)]` keeps that order).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[repr(C)]
 pub struct Vector {
+    known_instruction: Option<Instruction>,
+    known_family: Option<Family>,
+    /// Whether every numbered device is spelled as `Address::key_at` spells it (`D100`, not
+    /// `D0100`); if not, look-ups by address compare the parsed addresses instead.
+    keys_spell_addresses: bool,
+    /// Inline when there is one step (most vectors).
+    steps: Small<Step, 1>,
+    initial: Small<Value, INLINE_SLOTS>,
+    operand_keys: Small<u64, 4>,
+    operands: Small<(String, Operand), 4>,
+    /// Each slot's packed name (`value::pack`; 0 when longer than 8 bytes): every device access
+    /// of an implementation searches these, by name or by address (`Address::key_at`), so they
+    /// are plain integers, contiguous and inline.
+    name_keys: Small<u64, INLINE_SLOTS>,
+    /// `device_sizes` by packed device type (0 for a type longer than 8 bytes).
+    size_keys: Small<(u64, u32), 4>,
+    // Read only to report, to serve the protocol, or on a failure.
     id: String,
     family: String,
     instruction: String,
@@ -135,22 +149,8 @@ pub struct Vector {
     tags: Vec<String>,
     clauses: Vec<String>,
     device_sizes: Vec<(String, u32)>,
-    /// `device_sizes` by packed device type (0 for a type longer than 8 bytes).
-    size_keys: Small<(u64, u32), 4>,
     devices: Vec<Address>,
-    /// Each slot's packed name (`value::pack`; 0 when longer than 8 bytes) and address key
-    /// (`address_key`): every device access of an implementation searches one of these, so
-    /// they are plain integers, contiguous and inline.
-    name_keys: Small<u64, INLINE_SLOTS>,
-    address_keys: Small<u64, INLINE_SLOTS>,
-    initial: Small<Value, INLINE_SLOTS>,
     scratch: Vec<bool>,
-    operands: Small<(String, Operand), 4>,
-    operand_keys: Small<u64, 4>,
-    /// Inline when there is one step (most vectors).
-    steps: Small<Step, 1>,
-    known_family: Option<Family>,
-    known_instruction: Option<Instruction>,
     pub(crate) expectations: Option<Expectations>,
 }
 
@@ -226,17 +226,19 @@ impl Vector {
     pub fn slot(&self, name: &str) -> Option<usize> {
         match pack(name) {
             0 => self.devices.binary_search_by(|a| a.name().cmp(name)).ok(),
-            key => self.name_keys.iter().position(|&k| k == key),
+            key => self.name_keys.find(key),
         }
     }
 
     /// The slot of the device `base` + `offset` (D100 + 2 is D102), if the vector lists it.
     #[inline]
     pub fn slot_at(&self, base: &Address, offset: u32) -> Option<usize> {
-        let number = base.number()?.checked_add(offset)?;
-        match address_key(base.kind_key(), Some(number)) {
-            0 => self.devices.iter().position(|a| a.number() == Some(number) && a.same_kind(base)),
-            key => self.address_keys.iter().position(|&k| k == key),
+        match base.key_at(offset) {
+            key if key != 0 && self.keys_spell_addresses => self.name_keys.find(key),
+            _ => {
+                let number = base.number()?.checked_add(offset)?;
+                self.devices.iter().position(|a| a.number() == Some(number) && a.same_kind(base))
+            }
         }
     }
     /// The operands by name (`s1`, `d`, `S1`, `D2`), sorted.
@@ -248,7 +250,7 @@ impl Vector {
     pub fn operand(&self, name: &str) -> Option<&Operand> {
         match pack(name) {
             0 => self.operands.iter().find(|(n, _)| n == name).map(|(_, o)| o),
-            key => self.operand_keys.iter().position(|&k| k == key).map(|i| &self.operands[i].1),
+            key => self.operand_keys.find(key).map(|i| &self.operands[i].1),
         }
     }
     /// The executions, in order.
@@ -428,7 +430,7 @@ impl Vector {
             device_sizes,
             size_keys,
             name_keys: devices.iter().map(|a| pack(a.name())).collect(),
-            address_keys: devices.iter().map(|a| address_key(a.kind_key(), a.number())).collect(),
+            keys_spell_addresses: devices.iter().all(|a| a.number().is_none() || a.key_at(0) == pack(a.name())),
             devices,
             initial: Small::from_slice(&initial),
             scratch,
