@@ -29,6 +29,7 @@ type arena struct {
 	expects      slab[expected]
 	cases        slab[Case]
 	strings      map[string]string // nil: no interning
+	parsed       []Addr            // a request's addresses while its keys are worked out
 }
 
 // runArena is the arena of a whole run's preparation.

@@ -44,28 +44,45 @@ func (m *Memory) reset(req *Request) {
 // prepareAddrs works out once, for the whole run, what every memory of the request starts
 // from: each device's address, its lookup key, and the initial image as a flat list of values.
 func (r *Request) prepareAddrs(a *arena) {
-	r.addrs = a.addrs.take(len(r.Devices), a.chunk)
-	r.keys = a.keys.take(len(r.Devices), a.chunk)
-	r.initial = a.values.take(len(r.Devices), a.chunk)
+	n := len(r.Devices)
+	if cap(a.parsed) < n {
+		a.parsed = make([]Addr, n)
+	}
+	addrs := a.parsed[:n]
+	r.keys = a.keys.take(n, a.chunk)
+	r.initial = a.values.take(n, a.chunk)
+	r.addrs = nil
 	for i, d := range r.Devices {
-		r.addrs[i] = ParseAddr(d.Name)
-		r.addrs[i].Kind = a.intern(r.addrs[i].Kind)
-		r.keys[i], _ = addrKey(r.addrs[i])
+		addrs[i] = ParseAddr(d.Name)
+		var exact bool
+		r.keys[i], exact = addrKey(addrs[i])
 		r.initial[i] = d.Value
+		if !exact && r.addrs == nil {
+			r.addrs = a.addrs.take(n, a.chunk)
+		}
+	}
+	// The addresses are kept only for a request with a name whose key is not exact: an exact
+	// key never equals an inexact one, so a look-up compares addresses only in such a request.
+	if r.addrs != nil {
+		copy(r.addrs, addrs)
+		for i := range r.addrs {
+			r.addrs[i].Kind = a.intern(r.addrs[i].Kind)
+		}
 	}
 	r.prepareTable(a)
 	r.prepareRuns(a)
 }
 
 // prepareRuns counts, for each device, the devices after it that continue it word by word
-// (D100, D101, D102 sort together): a multi-word operand is read or written in one go.
+// (D100, D101, D102 sort together): a multi-word operand is read or written in one go. Only
+// exact keys with a number (not P_EQ) continue: the next word's key is the key plus 1 << 32.
 func (r *Request) prepareRuns(a *arena) {
 	r.runs = a.runs.take(len(r.keys), a.chunk)
 	for i := len(r.keys) - 1; i >= 0; i-- {
 		r.runs[i] = 1
-		_, exact := addrKey(r.addrs[i])
-		if i+1 < len(r.keys) && exact && r.addrs[i].N >= 0 && r.addrs[i].N < math.MaxInt32 &&
-			r.keys[i+1] == r.keys[i]+1<<32 && r.runs[i+1] < math.MaxUint16 {
+		key := r.keys[i]
+		numbered := key&(1<<31) == 0 && key>>32 < math.MaxInt32
+		if numbered && i+1 < len(r.keys) && r.keys[i+1] == key+1<<32 && r.runs[i+1] < math.MaxUint16 {
 			r.runs[i] = r.runs[i+1] + 1
 		}
 	}
@@ -373,7 +390,6 @@ func (em *emulated) Run(req *Request) ([]StepResult, error) {
 		buf.steps = make([]StepResult, len(req.Steps))
 	}
 	values, out := buf.values, buf.steps[:len(req.Steps)]
-	clear(out)
 	for i := range req.Steps {
 		step := &req.Steps[i]
 		if step.Set != nil {

@@ -73,6 +73,27 @@ func checkMemory(t *testing.T, req *Request, devices map[string]Value) {
 	}
 }
 
+// A request of PLC names alone keeps no addresses: its keys say it all, and a look-up of any
+// other name finds nothing.
+func TestMemoryOfExactNames(t *testing.T) {
+	devices := map[string]Value{"D100": Word(1), "D101": Word(2), "SM709": Bit(true), "P_EQ": Bit(false)}
+	req := NewRequest("t", "f", "I", nil, devices, map[string]Operand{}, nil, []Inputs{{}})
+	if req.addrs != nil {
+		t.Errorf("addresses kept for exact names: %v", req.addrs)
+	}
+	mem := NewMemory(req)
+	for name, want := range devices {
+		if got, ok := mem.Get(ParseAddr(name)); !ok || got != want {
+			t.Errorf("Get(%s) = %v, %v; want %v", name, got, ok, want)
+		}
+	}
+	for _, name := range []string{"LONGKIND100", "D4294967396", "P_EQX", "D102"} {
+		if got, ok := mem.Get(ParseAddr(name)); ok {
+			t.Errorf("Get(%s) = %v; want nothing", name, got)
+		}
+	}
+}
+
 // An exact key (a PLC name) never equals the key of an address that needs comparing.
 func TestAddrKeys(t *testing.T) {
 	exact := []Addr{{"D", 0}, {"D", 100}, {"SM", 709}, {"P_EQ", -1}, {"ABCD", 1<<31 - 1}}
