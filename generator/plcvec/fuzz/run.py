@@ -73,7 +73,7 @@ class Target:
     def _verdict(self, vector, answer):
         if answer.fault:
             return Verdict(True, [answer.fault])
-        msg = answer.message
+        msg = answer.result_message()
         errors = result_errors(msg)
         if errors:
             return Verdict(True, ["the result does not match result.schema.json: " + "; ".join(errors)])

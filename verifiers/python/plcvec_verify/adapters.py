@@ -20,6 +20,7 @@ from __future__ import annotations
 import importlib
 import sys
 import traceback
+from functools import partial
 from pathlib import Path
 from typing import NamedTuple
 
@@ -38,6 +39,14 @@ class Answer(NamedTuple):
     message: dict | None
     fault: str | None = None
     bare: bool = False
+
+    def result_message(self) -> dict | None:
+        """The result message, with `type` and `id`, whichever kind of adapter answered."""
+        return dict(self.message, type="result", id=self.id) if self.bare else self.message
+
+
+# An in-process answer made without a Python-level __new__: one per vector of every run.
+_answer = partial(tuple.__new__, Answer)
 
 
 class AdapterAbort(VerifyError):
@@ -87,7 +96,7 @@ class InProcess:
             if type(body) is not dict:
                 yield Answer(vid, None, f"{self.label}.run() returned {type(body).__name__}, not a dict")
                 continue
-            yield vid, body, None, True     # an Answer's fields: a plain tuple is made fastest
+            yield _answer((vid, body, None, True))
 
     def close(self):
         close = getattr(self.adapter, "close", None)

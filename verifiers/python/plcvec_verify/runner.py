@@ -182,7 +182,8 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     total, done, failed = len(runnable), 0, 0
     try:
         to_send = plan.request_list if runnable is plan.vectors else list(map(requests.__getitem__, map(_ID, runnable)))
-        for vid, msg, fault, bare in adapter.answers(to_send, plan.wire):
+        for answer in adapter.answers(to_send, plan.wire):
+            vid, msg, fault, bare = answer
             exp = expected[vid]
             # The usual case, decided at one comparison: an in-process adapter's answer (`bare`, the
             # result message without `type` and `id`) or a process's result message that passes.
@@ -192,8 +193,7 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
                 if progress:
                     progress(done, total, failed)
                 continue
-            if bare:
-                msg = dict(msg, type="result", id=vid)
+            msg = answer.result_message()
             v = by_id[vid]
             problems = None
             if not fault and result_shape_ok(msg):
