@@ -75,7 +75,7 @@ func holds(c condition, order int) bool {
 type contact struct {
 	form      form
 	condition condition
-	kind      string // FX5: TM (time) or DT (date); CP1E: DT
+	date      bool // FX5: DT (date) rather than TM (time); CP1E: always DT
 }
 
 // fx5Contact decodes an FX5 name: form, then TM or DT, then the condition (LDTM<=, ORDT<>).
@@ -86,7 +86,7 @@ func fx5Contact(instruction string) (contact, bool) {
 			continue
 		}
 		c, ok := conditionOf(rest[2:])
-		return contact{form(f), c, rest[:2]}, ok
+		return contact{form(f), c, rest[:2] == "DT"}, ok
 	}
 	return contact{}, false
 }
@@ -98,7 +98,7 @@ func cp1eContact(instruction string) (contact, bool) {
 	c, ok := conditionOf(symbol)
 	for f := range forms {
 		if forms[f] == name && isDT && ok {
-			return contact{form(f), c, "DT"}, true
+			return contact{form(f), c, true}, true
 		}
 	}
 	return contact{}, false

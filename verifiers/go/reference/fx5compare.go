@@ -49,20 +49,21 @@ type fx5Compare struct {
 }
 
 func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.CPU, error) {
-	kind := "TM"
-	if fields == &dateFields {
-		kind = "DT"
-	}
+	date := fields == &dateFields
 	cfg, err := r.fx5.get(func() (fx5Config, error) { return configureFX5(r) })
 	if err != nil {
 		return nil, err
 	}
 	in, ok := fx5Contact(req.Instruction)
-	if !ok || in.kind != kind {
-		return nil, fmt.Errorf("not an FX5 %s comparison: %s", kind, req.Instruction)
+	if !ok || in.date != date {
+		what := "time"
+		if date {
+			what = "date"
+		}
+		return nil, fmt.Errorf("not an FX5 %s comparison: %s", what, req.Instruction)
 	}
 	c := cfg.cpus.get()
-	*c = fx5Compare{fx5Config: cfg, fields: fields, date: kind == "DT", form: in.form, condition: in.condition}
+	*c = fx5Compare{fx5Config: cfg, fields: fields, date: date, form: in.form, condition: in.condition}
 	if err := deviceOperands(req, []string{"s1", "s2"}, &c.s1, &c.s2); err != nil {
 		return nil, err
 	}
