@@ -1,7 +1,17 @@
 import json
+import os
+import sys
 from pathlib import Path
 
 import pytest
+
+# The suite starts about a hundred Python processes (the CLI, stdio adapters, pytest itself). Where
+# the environment forbids bytecode caches (PYTHONDONTWRITEBYTECODE, common in CI images), each of
+# them compiled every module it imported, and pytest rewrote every test module in every worker:
+# about a second a process. The caches (__pycache__, ignored by git) are written as Python
+# normally does for the processes this session starts.
+os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
+sys.dont_write_bytecode = False
 
 REPO = Path(__file__).resolve().parents[1]
 MANUAL_DIR = REPO.parent / "shared" / "manual"

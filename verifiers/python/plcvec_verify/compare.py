@@ -131,7 +131,7 @@ def compare(expected: Expected, steps: list) -> list[Problem]:
         # vectors pass, and this is where a run spends its time.
         if got == want_state and _same_types(got, typed):
             continue
-        before = expected.befores[i]
+        before = expected.before(i)
         for dev in sorted(set(want_state) | set(got)):
             want, have = want_state.get(dev, _UNLISTED), got.get(dev, _MISSING)
             if not _same(want, have):

@@ -20,7 +20,8 @@ class Expected:
     id: str
     results: tuple          # per step: True/False for contact instructions, None otherwise
     states: tuple           # per step: {device: value} after the step, scratch left out
-    befores: tuple          # per step: the state the step started from (after `set`), for messages
+    initial: dict           # the state before the first step, scratch left out
+    sets: tuple             # per step: its `set` (scratch left out), for `before`
     typed: tuple            # per step: (devices, their types) of the values equal to 0 or 1, see compare.py
     scratch: frozenset
     outcome: dict           # the outcome category under the chosen alternatives
@@ -30,6 +31,12 @@ class Expected:
     wire: list | None = None
     family: str = ""
     instruction: str = ""
+
+    def before(self, step: int) -> dict:
+        """The state step `step` started from (after its `set`): only a failure's message needs it."""
+        state = dict(self.states[step - 1] if step else self.initial)
+        state.update(self.sets[step])
+        return state
 
 
 def request_of(vector: dict) -> dict:
@@ -62,11 +69,15 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
                               + ", ".join(f"{i}={a}" for i, a in sorted(applied.items()))
                               + " (the vector file lists no such alternative)")
     scratch = frozenset(vector["initial"].get("scratch", ()))
-    state = {k: v for k, v in vector["initial"]["devices"].items() if k not in scratch}
-    states, befores, results = [], [], []
+    devices = vector["initial"]["devices"]
+    initial = {k: v for k, v in devices.items() if k not in scratch} if scratch else dict(devices)
+    state, states, sets, results = dict(initial), [], [], []
     for step, expect in zip(vector["steps"], steps_expect):
-        state.update((k, v) for k, v in (step.get("set") or {}).items() if k not in scratch)
-        befores.append(dict(state))
+        written = step.get("set") or {}
+        if scratch:
+            written = {k: v for k, v in written.items() if k not in scratch}
+        sets.append(written)
+        state.update(written)
         state.update(expect.get("devices", {}))
         states.append(dict(state))
         results.append(expect.get("result"))
@@ -76,9 +87,11 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
         raise VerifyError(f"vector {vector['id']}: the per-step changes do not add up to `final` "
                           "(the vector file is inconsistent; regenerate it)")
     # Python's 1 == True: of equal values, those equal to 0 or 1 can be of the wrong JSON type.
-    typed = tuple((tuple(k for k, v in st.items() if v in (0, 1)), tuple(type(v) for v in st.values() if v in (0, 1)))
-                  for st in states)
+    typed = []
+    for st in states:
+        keys = tuple(k for k, v in st.items() if v in (0, 1))
+        typed.append((keys, tuple(map(type, map(st.__getitem__, keys)))))
     wire = None if scratch else [{"devices": st} if r is None else {"devices": st, "result": r}
                                   for st, r in zip(states, results)]
-    return Expected(vector["id"], tuple(results), tuple(states), tuple(befores), typed, scratch, category, applied,
-                    wire, vector["family"], vector["instruction"])
+    return Expected(vector["id"], tuple(results), tuple(states), initial, tuple(sets), tuple(typed), scratch,
+                    category, applied, wire, vector["family"], vector["instruction"])
