@@ -233,10 +233,12 @@ export function executeOnMemory(impl: MemoryImplementation): Implementation {
     run(request: VectorRequest): RunOutcome {
       const memory = Memory.forRequest(request);
       const state: Record<string, unknown> = {};
-      const steps = request.steps.map((step) => {
+      const steps = new Array<StepResult>(request.steps.length);
+      for (let i = 0; i < steps.length; i++) {
+        const step = request.steps[i]!;
         memory.set(step.set);
-        return memory.report(impl.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state }));
-      });
+        steps[i] = memory.report(impl.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state }));
+      }
       return { steps };
     },
   };

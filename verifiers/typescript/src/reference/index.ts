@@ -41,11 +41,13 @@ export function machineImplementation(
       if (factory === undefined) return { skip: `no machine for family ${request.family}` };
       const mem = Memory.forRequest(request);
       const machine = factory(mem, followed);
-      const steps = request.steps.map((step): StepResult => {
+      const steps = new Array<StepResult>(request.steps.length);
+      for (let i = 0; i < steps.length; i++) {
+        const step = request.steps[i]!;
         mem.set(step.set);
         const result = machine.execute(request.instruction, request.initial.operands, step);
-        return mem.report(machine.contact ? result === true : undefined);
-      });
+        steps[i] = mem.report(machine.contact ? result === true : undefined);
+      }
       return { steps };
     },
   };
