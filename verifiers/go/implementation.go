@@ -147,7 +147,7 @@ type namedOperand struct {
 // Operand is the named operand (s1, d, C, ...) and whether the vector has it. It is what
 // Operands[name] holds, with the device address parsed once for the whole run.
 func (r *Request) Operand(name string) (Operand, bool) {
-	if r.operands == nil {
+	if r.operands == nil && len(r.Operands) > 0 {
 		r.prepareOperands(&arena{})
 	}
 	for i := range r.operands {

@@ -29,7 +29,7 @@ func NewMemory(req *Request) *Memory {
 // reset makes m the initial device image of req: a copy of the image worked out when the
 // request was built.
 func (m *Memory) reset(req *Request) {
-	if req.keys == nil {
+	if req.keys == nil && len(req.Devices) > 0 {
 		req.prepareAddrs(&arena{})
 	}
 	m.req, m.outside, m.outsideAddrs = req, m.outside[:0], m.outsideAddrs[:0]
