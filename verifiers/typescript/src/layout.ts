@@ -83,12 +83,27 @@ export function layoutOf(names: Iterable<string>): Layout {
   return layout;
 }
 
-/** A device image's starting point: a layout and the value in each slot (undefined: not listed yet). */
+/**
+ * A device image's starting point: a layout and the value in each slot (undefined: not listed
+ * yet). Kept in private fields, so that a class extending it (a prepared request, which is its
+ * own initial image) shows only its own fields.
+ */
 export class InitialImage {
-  constructor(
-    readonly layout: Layout,
-    readonly values: readonly (Value | undefined)[],
-  ) {}
+  readonly #layout: Layout;
+  readonly #values: readonly (Value | undefined)[];
+
+  constructor(layout: Layout, values: readonly (Value | undefined)[]) {
+    this.#layout = layout;
+    this.#values = values;
+  }
+
+  get layout(): Layout {
+    return this.#layout;
+  }
+
+  get values(): readonly (Value | undefined)[] {
+    return this.#values;
+  }
 
   static of(layout: Layout, devices: Devices): InitialImage {
     const has = Object.prototype.hasOwnProperty;

@@ -9,22 +9,22 @@ import type { Initial, StepInputs, Vector, VectorRequest } from "./types.js";
 
 /**
  * A request prepared from a vector. Its fields are the contract's and nothing else (it prints,
- * serializes and spreads as them); it also carries, privately, the vector's initial device image,
- * whose layout covers every device the vector names, so that Memory.forRequest copies an array.
+ * serializes and spreads as them); it is also, privately, the vector's initial device image, whose
+ * layout covers every device the vector names, so that Memory.forRequest copies an array.
  * The parts equal across vectors (operands, steps, device sizes) are shared; all but the vector's
  * own `initial.devices` is frozen.
  */
-class PreparedRequest implements VectorRequest {
+class PreparedRequest extends InitialImage implements VectorRequest {
   readonly id: string;
   readonly family: string;
   readonly instruction: string;
   readonly assumes: VectorRequest["assumes"];
   readonly initial: Initial;
   readonly steps: readonly StepInputs[];
-  readonly #image: InitialImage;
 
   constructor(vector: Vector) {
-    this.#image = InitialImage.of(expectedLayout(vector), vector.initial.devices);
+    const image = InitialImage.of(expectedLayout(vector), vector.initial.devices);
+    super(image.layout, image.values);
     this.id = vector.id;
     this.family = internString(vector.family);
     this.instruction = internString(vector.instruction);
@@ -34,10 +34,6 @@ class PreparedRequest implements VectorRequest {
     this.steps = interned(vector.steps.map(({ expect: _expect, ...inputs }) => inputs));
     Object.freeze(this.initial);
     Object.freeze(this);
-  }
-
-  static imageOf(request: VectorRequest): InitialImage | undefined {
-    return #image in request ? request.#image : undefined;
   }
 }
 
@@ -58,8 +54,7 @@ const requests = new WeakMap<Vector, VectorRequest>();
 
 /** The initial image of a request: the one it was prepared with, or one worked out now (a request from elsewhere). */
 export function initialImageOf(request: VectorRequest): InitialImage {
-  const prepared = PreparedRequest.imageOf(request);
-  if (prepared !== undefined) return prepared;
+  if (request instanceof PreparedRequest) return request;
   const devices = request.initial.devices;
   return InitialImage.of(layoutOf(Object.keys(devices)), devices);
 }
