@@ -16,6 +16,9 @@ def signed_boundaries(field):
     return sorted(v for v in {lo, hi, lo - 1, hi + 1, -1, 0, word_lo, word_hi} if word_lo <= v <= word_hi)
 
 
+_PACKED_MAX = 4096
+
+
 class Operands:
     """Builds operand words from field values, with raw overrides for invalid encodings."""
 
@@ -23,6 +26,9 @@ class Operands:
         self.codec = FieldCodec(fields)
         self.fields = fields
         self.by_name = {f["name"]: f for f in fields}
+        # Field values -> words: the golden cases pack the same few values over and over. Bounded, as a
+        # fuzzing run packs new values without end.
+        self._packed = {}
 
     def mid(self, name, offset=0):
         f = self.by_name[name]
@@ -35,7 +41,13 @@ class Operands:
 
     def words(self, values, raw=None):
         """Words holding `values`; `raw` maps a field to raw bits placed as they are (e.g. non-BCD)."""
-        words = self.codec.pack(values)
+        key = tuple(values.items())
+        packed = self._packed.get(key)
+        if packed is None:
+            if len(self._packed) >= _PACKED_MAX:
+                self._packed.clear()
+            packed = self._packed[key] = self.codec.pack(values)
+        words = list(packed)
         for name, bits in (raw or {}).items():
             f = self.by_name[name]
             mask = ((1 << f["width"]) - 1) << f["lsb"]

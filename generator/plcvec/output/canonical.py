@@ -24,7 +24,9 @@ _C_ENCODE = None if c_make_encoder is None else c_make_encoder(
 
 def dumps_value(value):
     """The canonical text of a value: sorted keys, ", " and ": ", non-ASCII characters as they are."""
-    if _C_ENCODE is None or isinstance(value, str):
+    if isinstance(value, str):
+        return encode_basestring(value)   # what _ENCODER.encode does with a string
+    if _C_ENCODE is None:
         return _ENCODER.encode(value)
     try:
         return "".join(_C_ENCODE(value, 0))
@@ -41,9 +43,8 @@ def dumps_object(obj, known=None):
                            for k in sorted(obj)) + "}"
 
 
-def _key(k):
-    """The text json.dumps gives a top-level key (ASCII-escaped)."""
-    return encode_basestring_ascii(k)
+# The text json.dumps gives a top-level key (ASCII-escaped).
+_key = encode_basestring_ascii
 
 
 def vector_texts(vector):
@@ -62,10 +63,10 @@ def vector_texts(vector):
 
 
 def dumps_object_lines(obj, indent, texts=None):
+    """An object a key per line, its "{" opening the first and its "}" closing the last."""
     pad = " " * indent
     texts = texts or {k: dumps_value(v) for k, v in obj.items()}
-    items = [f"{pad} {_key(k)}: {texts[k]}" for k in obj]
-    return pad + "{" + (",\n".join(items))[indent + 1:] + "}"
+    return pad + "{" + (",\n" + pad + " ").join([f"{_key(k)}: {texts[k]}" for k in obj]) + "}"
 
 
 def dumps_vector_file(header, vectors, texts=None):
