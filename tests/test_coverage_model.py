@@ -76,6 +76,17 @@ def test_excluded_pairs_are_not_required():
     assert required_pairs(dims, lambda p: p == ruled_out) == all_pairs(dims) - {ruled_out}
 
 
+def test_rows_keep_out_the_pairs_excluded():
+    dims = [Dimension("a", ("0", "1", "2")), Dimension("b", ("0", "1")), Dimension("c", ("0", "1", "2"))]
+    ruled_out = {(("b", "1"), ("c", "2")), (("a", "0"), ("c", "0"))}
+    excluded = ruled_out.__contains__
+    req = required_pairs(dims, excluded)
+    result = cover(dims, req, excluded=excluded)
+    shown = [row_pairs(r, dims) for r, _ in result.rows]
+    assert set().union(*shown) >= req and not result.missing
+    assert not any(pairs & ruled_out for pairs in shown), [r for r, _ in result.rows]
+
+
 def test_a_pair_no_row_can_show_is_returned_as_missing():
     dims = [Dimension("a", ("0", "1")), Dimension("b", ("0", "1"))]
     impossible = (("a", "1"), ("b", "1"))

@@ -91,6 +91,7 @@ class CompareClassifier:
         self.nonexistent = [tuple(d[n] for n in self.names) for d in dates.get("dates", [])]
         self.calendar = dates.get("calendar")
         self.words = doc["operands"][self.first]["words"]
+        self._selector_classes = {}   # selector word -> class: a pure function of a 16-bit word
 
     def classify(self, instr, operands, before, step, record):
         """{derivation name: class} for one execution (None: the dimension does not apply)."""
@@ -111,6 +112,12 @@ class CompareClassifier:
         }
 
     def selector_class(self, value):
+        got = self._selector_classes.get(value)
+        if got is None:
+            got = self._selector_classes[value] = self._selector_class(value)
+        return got
+
+    def _selector_class(self, value):
         if value & self.reserved:
             return "reserved+fields" if value & self.field_mask else "reserved"
         want = 1 if self.sel["polarity"] == "select" else 0

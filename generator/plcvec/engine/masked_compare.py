@@ -40,6 +40,10 @@ class MaskedCompare:
         self._device_range = self.validity["device_range"]
         self._sel_operand = self.sel["operand"]
         self._source_bit = self.sel.get("source_bit")
+        self._range_check = self._device_range["check"]
+        self._range_clause = self._device_range["clause"] if self._range_check else None
+        self._valid_clause, self._unselected_clause = self.sel.get("valid_clause"), self.sel.get("unselected_clause")
+        self._order_clause = doc["data"]["order_clause"]
 
     # -- the instruction ---------------------------------------------------------------------------
     def execute(self, instr, operands, state, step, ctx, trace):
@@ -104,12 +108,11 @@ class MaskedCompare:
         first, second = self.data_ops
         compared_ops = [first] if clock_mode else [first, second]
 
-        device_range = self._device_range
-        if device_range["check"]:
-            checked = compared_ops + ([second] if clock_mode and device_range["s2_in_clock_mode"] else [])
+        if self._range_check:
+            checked = compared_ops + ([second] if clock_mode and self._device_range["s2_in_clock_mode"] else [])
             for op in checked:
                 if not in_device_range(operands[op]["device"], self.words[op], ctx["device_sizes"]):
-                    trace.add(device_range["clause"])
+                    trace.add(self._range_clause)
                     raise _Error
         values = {op: self.codec.read(state, operands[op]["device"]) for op in compared_ops}
         if clock_mode:
@@ -141,9 +144,9 @@ class MaskedCompare:
         # Reached with at least one field selected: a selector value the manual lists as valid when no
         # reserved bit is set; a field left out is the masking the manual describes.
         if not sel & self.reserved_mask:
-            trace.add(self.sel.get("valid_clause"))
+            trace.add(self._valid_clause)
         if len(selected) < len(self.fields):
-            trace.add(self.sel.get("unselected_clause"))
+            trace.add(self._unselected_clause)
         # Checked only now that a comparison is made: the selected fields, or every field of each
         # compared operand (scope "compared"); scope "all" was checked before the selector. The scope
         # decides something only when some value is invalid, so only then is it asked.
@@ -151,7 +154,7 @@ class MaskedCompare:
             scope = self.validity["scope"]
             if scope in ("selected", "compared"):
                 self._check(values, compared_ops, selected if scope == "selected" else self.fields, trace)
-        trace.add(self.doc["data"]["order_clause"])
+        trace.add(self._order_clause)
         for f in selected:
             trace.add(f["clause"])
             a, b = values[first][f["name"]], values[second][f["name"]]
