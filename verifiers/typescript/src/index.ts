@@ -15,7 +15,7 @@ export { PlcvecError } from "./errors.js";
 export { expectedOf, type Expected } from "./expect.js";
 export { loadKnownFailures, parseKnownFailures, type KnownFailure, type KnownFailures } from "./known.js";
 export { defaultVectorsPath, interpretationsOf, loadSuite, PACKAGED_VECTORS, SCHEMA_MAJOR, type Interpretation, type Suite } from "./load.js";
-export { executeOnMemory, Memory, type Execution, type MemoryImplementation } from "./memory.js";
+export { executeOnMemory, Memory, MemoryStep, type Execution, type MemoryImplementation } from "./memory.js";
 export {
   applyKnown,
   describeResult,
