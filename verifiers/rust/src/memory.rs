@@ -7,7 +7,7 @@
 
 use crate::small::Small;
 use crate::value::{Address, Value};
-use crate::vector::{Step, Vector, INLINE_SLOTS};
+use crate::vector::{Step, Vector, INLINE_SLOTS, NO_SLOT};
 
 /// The devices of one vector, slot-aligned with [`Vector::devices`], plus any device written
 /// outside the vector. The image of a vector of the usual size lives inline (building one
@@ -22,7 +22,8 @@ pub struct Memory<'v> {
 impl<'v> Memory<'v> {
     /// The vector's initial devices.
     pub fn new(vector: &'v Vector) -> Memory<'v> {
-        Memory { vector, values: Small::from_slice(vector.initial()), outside: Vec::new() }
+        // A copy of the whole inline table: a fixed size, no loop over the slots.
+        Memory { vector, values: vector.initial_image().clone(), outside: Vec::new() }
     }
 
     /// The vector this image belongs to.
@@ -110,10 +111,32 @@ impl<'v> Memory<'v> {
     /// leaves it to the implementation); a bit reads as 0 or 1.
     #[inline]
     pub fn word(&self, base: &Address, offset: u32) -> u16 {
-        match self.get_at(base, offset) {
-            Some(Value::Word(w)) => w,
-            Some(Value::Bit(b)) => u16::from(b),
-            None => 0,
+        self.get_at(base, offset).map_or(0, word_of)
+    }
+
+    /// The word `offset` words into the device operand `operand` (`s1` and 1 for (s1)+1), as
+    /// [`Memory::word`] reads it; `None` when the vector has no device operand of that name.
+    #[inline]
+    pub fn operand_word(&self, operand: &str, offset: u32) -> Option<u16> {
+        let (base, slots) = self.vector.operand_device(operand)?;
+        Some(self.word_with(base, slots, offset as usize))
+    }
+
+    /// The first `N` words of the device operand `operand` ((s1), (s1)+1, ...), as
+    /// [`Memory::word`] reads them; `None` when the vector has no device operand of that name.
+    /// The slots of an operand's first words are found when the vector is loaded, so this is
+    /// the quick way to read an instruction's operands.
+    #[inline]
+    pub fn operand_words<const N: usize>(&self, operand: &str) -> Option<[u16; N]> {
+        let (base, slots) = self.vector.operand_device(operand)?;
+        Some(std::array::from_fn(|k| self.word_with(base, slots, k)))
+    }
+
+    #[inline]
+    fn word_with(&self, base: &Address, slots: &[u8], offset: usize) -> u16 {
+        match slots.get(offset) {
+            Some(&slot) if slot != NO_SLOT => word_of(self.values[usize::from(slot)]),
+            _ => self.word(base, offset as u32),
         }
     }
 
@@ -150,6 +173,15 @@ impl<'v> Memory<'v> {
     }
 }
 
+/// A device's value read as a word (a bit as 0 or 1).
+#[inline]
+fn word_of(value: Value) -> u16 {
+    match value {
+        Value::Word(w) => w,
+        Value::Bit(b) => u16::from(b),
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -177,6 +209,28 @@ mod tests {
         m.set_bit("M10", true);
         assert!(m.bit("M10"));
         assert_eq!(m.values()[2], Value::Bit(true));
+    }
+
+    #[test]
+    fn operands_read_their_words_found_at_load() {
+        let v = Vector::from_request(&serde_json::json!({
+            "id": "t", "family": "f", "instruction": "I",
+            "initial": {"devices": {"D100": 1, "D101": 2, "D99": 9}, "operands": {"s1": {"device": "D100"}, "s2": {"device": "D98"}, "s3": {"constant": 7}}},
+            "steps": [{}],
+        }))
+        .unwrap();
+        let mut m = Memory::new(&v);
+        let s1: Vec<u16> = (0..4).map(|k| m.operand_word("s1", k).unwrap()).collect();
+        assert_eq!(s1, [1, 2, 0, 0]); // D102, D103: not listed, read as 0
+        assert_eq!(
+            (m.operand_word("s2", 0), m.operand_word("s2", 1), m.operand_word("s2", 2)),
+            (Some(0), Some(9), Some(1))
+        );
+        assert_eq!((m.operand_word("s3", 0), m.operand_word("nope", 0)), (None, None));
+        assert_eq!((m.operand_words::<4>("s1"), m.operand_words::<2>("s3")), (Some([1, 2, 0, 0]), None));
+        m.set_word(&Address::parse("D100"), 2, 5); // outside the vector
+        m.set_word(&Address::parse("D100"), 1, 6);
+        assert_eq!((m.operand_word("s1", 2), m.operand_word("s1", 1)), (Some(5), Some(6)));
     }
 
     #[test]

@@ -70,15 +70,21 @@ impl From<u16> for Value {
 
 /// Up to 8 bytes of a name packed into an integer, so that names compare as integers on the hot
 /// path of every device access; 0 (no key) for a longer name, which is compared as text.
+/// Byte by byte, not through a copy of a slice of variable length (a call to `memcpy` and its
+/// branches on every device access), and at compile time for a constant name.
 #[inline]
-pub(crate) fn pack(name: &str) -> u64 {
+pub(crate) const fn pack(name: &str) -> u64 {
     let bytes = name.as_bytes();
     if bytes.is_empty() || bytes.len() > 8 {
         return 0;
     }
-    let mut b = [0u8; 8];
-    b[..bytes.len()].copy_from_slice(bytes);
-    u64::from_le_bytes(b)
+    let mut key = 0;
+    let mut i = 0;
+    while i < bytes.len() {
+        key |= (bytes[i] as u64) << (8 * i);
+        i += 1;
+    }
+    key
 }
 
 /// A device address split into its device type and number: `D100` is (`D`, 100). Names without

@@ -18,6 +18,12 @@ use crate::value::{pack, Address, Value};
 /// vector with more keeps them on the heap.
 pub(crate) const INLINE_SLOTS: usize = 16;
 
+/// How many words of each device operand have their slots found at load (the instructions of
+/// the suite read at most three consecutive words of an operand).
+const OPERAND_WORDS: usize = 3;
+/// In `Vector::operand_slots`: the word is not a listed device (or the operand is a constant).
+pub(crate) const NO_SLOT: u8 = u8::MAX;
+
 type Json = serde_json::Value;
 
 /// An operand: a device (the first of its words for a multi-word operand) or a K/H constant.
@@ -134,6 +140,9 @@ pub struct Vector {
     steps: Small<Step, 1>,
     initial: Small<Value, INLINE_SLOTS>,
     operand_keys: Small<u64, 4>,
+    /// Per operand, the slots of its device's first words (`NO_SLOT` where there is none), found
+    /// once at load: an instruction reads its operands without searching the slot keys.
+    operand_slots: Small<[u8; OPERAND_WORDS], 4>,
     operands: Small<(String, Operand), 4>,
     /// Each slot's packed name (`value::pack`; 0 when longer than 8 bytes): every device access
     /// of an implementation searches these, by name or by address (`Address::key_at`), so they
@@ -217,6 +226,9 @@ impl Vector {
     pub fn initial(&self) -> &[Value] {
         &self.initial
     }
+    pub(crate) fn initial_image(&self) -> &Small<Value, INLINE_SLOTS> {
+        &self.initial
+    }
     /// Whether each slot is a scratch word (the implementation's own work area, never compared).
     pub fn scratch(&self) -> &[bool] {
         &self.scratch
@@ -248,10 +260,23 @@ impl Vector {
     /// One operand.
     #[inline]
     pub fn operand(&self, name: &str) -> Option<&Operand> {
+        self.operand_index(name).map(|i| &self.operands[i].1)
+    }
+
+    #[inline]
+    fn operand_index(&self, name: &str) -> Option<usize> {
         match pack(name) {
-            0 => self.operands.iter().find(|(n, _)| n == name).map(|(_, o)| o),
-            key => self.operand_keys.find(key).map(|i| &self.operands[i].1),
+            0 => self.operands.iter().position(|(n, _)| n == name),
+            key => self.operand_keys.find(key),
         }
+    }
+
+    /// The device of operand `name` and the slots of its first words found at load (`NO_SLOT`
+    /// where there is none).
+    #[inline]
+    pub(crate) fn operand_device(&self, name: &str) -> Option<(&Address, &[u8; OPERAND_WORDS])> {
+        let i = self.operand_index(name)?;
+        Some((self.operands[i].1.device()?, &self.operand_slots[i]))
     }
     /// The executions, in order.
     pub fn steps(&self) -> &[Step] {
@@ -417,8 +442,9 @@ impl Vector {
         let known_instruction = Instruction::from_name(&raw.instruction).filter(|i| Some(i.family()) == known_family);
         let operand_keys = operands.iter().map(|(n, _)| pack(n)).collect();
         let size_keys = device_sizes.iter().map(|(k, n)| (pack(k), *n)).collect();
-        Ok(Vector {
+        let mut vector = Vector {
             operand_keys,
+            operand_slots: Small::default(),
             known_family,
             known_instruction,
             id,
@@ -437,7 +463,19 @@ impl Vector {
             operands: operands.into(),
             steps: steps.into(),
             expectations,
-        })
+        };
+        vector.operand_slots = vector
+            .operands
+            .iter()
+            .map(|(_, o)| {
+                let slot = |offset: usize| {
+                    let slot = o.device().and_then(|a| vector.slot_at(a, offset as u32));
+                    slot.and_then(|s| u8::try_from(s).ok()).filter(|&s| s != NO_SLOT).unwrap_or(NO_SLOT)
+                };
+                std::array::from_fn(slot)
+            })
+            .collect();
+        Ok(vector)
     }
 }
 

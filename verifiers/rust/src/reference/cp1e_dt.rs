@@ -8,7 +8,7 @@
 
 use std::cmp::Ordering;
 
-use super::{device, read3, rlo_in, word_operand, Condition, Mutant};
+use super::{read3, rlo_in, word_operand, Condition, Mutant};
 use crate::choices::Choices;
 use crate::generated::names::{Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eNonBcd, Cp1eOutOfRange};
 use crate::implementation::Refusal;
@@ -122,8 +122,8 @@ impl TimeCompare {
     }
 
     fn evaluate(&self, condition: Condition, vector: &Vector, mem: &mut Memory<'_>) -> Result<bool, Refusal> {
-        let s1 = read3(mem, device(vector, "S1")?);
-        let s2 = read3(mem, device(vector, "S2")?);
+        let s1 = read3(vector, mem, "S1")?;
+        let s2 = read3(vector, mem, "S2")?;
         let c = word_operand(vector, mem, "C")?;
         // Error: P_ER on, the execution condition off, the six arithmetic flags untouched.
         let error = |mem: &mut Memory<'_>| {

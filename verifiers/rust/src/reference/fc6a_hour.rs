@@ -83,7 +83,7 @@ impl HourMeter {
         self.fraction_ms += elapsed;
         let whole = self.fraction_ms / 1000;
         self.fraction_ms %= 1000;
-        let mut total = seconds(read3(mem, d1)) + whole;
+        let mut total = seconds(read3(vector, mem, "D1")?) + whole;
         // "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds,
         // the value returns to 0 hours 0 minutes 0 seconds to repeat another measuring cycle,
         // with the comparison output remaining on."
@@ -101,7 +101,7 @@ impl HourMeter {
         // consecutive data registers ... hour, minute, and second data."
         let preset = match vector.operand("S1") {
             Some(Operand::Constant(c)) => [*c as u16, 0, 0],
-            Some(Operand::Device(a)) => read3(mem, a),
+            Some(Operand::Device(_)) => read3(vector, mem, "S1")?,
             None => return Err(Refusal::Error("HOUR: no operand S1".to_owned())),
         };
         // "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."

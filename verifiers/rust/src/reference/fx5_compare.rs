@@ -167,7 +167,7 @@ impl Fx5Compare {
             return Ok(Contact::Error);
         }
 
-        let s1 = read3(mem, s1_dev);
+        let s1 = read3(vector, mem, "s1")?;
         let s2 = if use_clock {
             let clock = step
                 .clock
@@ -181,7 +181,7 @@ impl Fx5Compare {
             }
             words
         } else {
-            read3(mem, s2_dev)
+            read3(vector, mem, "s2")?
         };
 
         // "(4) Set 0. If a value other than 0 is set, the operation result will be

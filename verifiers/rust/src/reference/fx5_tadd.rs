@@ -79,8 +79,8 @@ impl TimeAdd {
             error(mem, ERR_DEVICE_RANGE);
             return Ok(());
         }
-        let s1 = read3(mem, s1_dev).map(signed);
-        let s2 = read3(mem, s2_dev).map(signed);
+        let s1 = read3(vector, mem, "s1")?.map(signed);
+        let s2 = read3(vector, mem, "s2")?.map(signed);
         // "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)", the same for (s2).
         let ranges = [(0, 23), (0, 59), (0, 59)];
         let bad = [s1, s2].iter().any(|data| data.iter().zip(ranges).any(|(v, (lo, hi))| !(lo..=hi).contains(v)));

@@ -122,24 +122,27 @@ impl Execute for Reference {
 
 /// An operand that must be a device.
 fn device<'v>(vector: &'v Vector, operand: &str) -> Result<&'v Address, Refusal> {
-    vector
-        .operand(operand)
-        .and_then(|o| o.device())
-        .ok_or_else(|| Refusal::Error(format!("{}: operand {operand} must be a device", vector.instruction())))
+    vector.operand(operand).and_then(|o| o.device()).ok_or_else(|| not_a_device(vector, operand))
+}
+
+fn not_a_device(vector: &Vector, operand: &str) -> Refusal {
+    Refusal::Error(format!("{}: operand {operand} must be a device", vector.instruction()))
 }
 
 /// A one-word operand: a K/H constant or the word in a device.
 fn word_operand(vector: &Vector, memory: &Memory<'_>, operand: &str) -> Result<u16, Refusal> {
     match vector.operand(operand) {
         Some(crate::vector::Operand::Constant(c)) => Ok(*c as u16), // the low 16 bits, as the CPU stores K/H
-        Some(crate::vector::Operand::Device(a)) => Ok(memory.word(a, 0)),
+        Some(crate::vector::Operand::Device(_)) => {
+            memory.operand_word(operand, 0).ok_or_else(|| not_a_device(vector, operand))
+        }
         None => Err(Refusal::Error(format!("{}: no operand {operand}", vector.instruction()))),
     }
 }
 
-/// Three consecutive words from `base`.
-fn read3(memory: &Memory<'_>, base: &Address) -> [u16; 3] {
-    [memory.word(base, 0), memory.word(base, 1), memory.word(base, 2)]
+/// Three consecutive words of the device operand `operand` ((s1), (s1)+1, (s1)+2).
+fn read3(vector: &Vector, memory: &Memory<'_>, operand: &str) -> Result<[u16; 3], Refusal> {
+    memory.operand_words(operand).ok_or_else(|| not_a_device(vector, operand))
 }
 
 /// A word read as "16-bit signed binary".

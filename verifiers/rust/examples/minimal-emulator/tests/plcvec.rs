@@ -1,5 +1,5 @@
 //! Every plcvec vector of TADD/TADDP run against the emulator, one test each: `cargo test`.
-use plcvec::{Address, Execute, Memory, Refusal, Step, Vector};
+use plcvec::{Execute, Memory, Refusal, Step, Vector};
 
 fn main() -> std::process::ExitCode {
     plcvec::harness::run(|| plcvec::OnMemory(Glue::default()))
@@ -33,8 +33,9 @@ impl Execute for Glue {
         let code = if [s1, s2, d].iter().any(|a| !mem.in_range(a, 3)) {
             Some(0x2820) // the device range is exceeded: nothing is read or written
         } else {
-            let read = |a: &Address| [0, 1, 2].map(|i| mem.word(a, i));
-            match minimal_emulator::tadd(read(s1), read(s2)) {
+            // (s1), (s1)+1, (s1)+2: the operand's words, found once when the vector was loaded
+            let read = |name| mem.operand_words::<3>(name).ok_or(Refusal::Error(format!("{name}?")));
+            match minimal_emulator::tadd(read("s1")?, read("s2")?) {
                 Ok(sum) => {
                     for (i, w) in sum.time.into_iter().enumerate() {
                         mem.set_word(d, i as u32, w);
