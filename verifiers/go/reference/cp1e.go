@@ -148,9 +148,10 @@ func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
 	}
 	// "To mask a time value, set the corresponding bit in the control word (C) to 1."
 	// "compares the unmasked values (corresponding bit of C set to 0)"
+	var masked [len(cp1eFields)]bool
 	unmasked := 0
-	for _, f := range cp1eFields {
-		if !c.parts.CP1EMasked(ctl, f.bit) {
+	for i, f := range cp1eFields {
+		if masked[i] = c.parts.CP1EMasked(ctl, f.bit); !masked[i] {
 			unmasked++
 		}
 	}
@@ -166,8 +167,8 @@ func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
 		return false
 	}
 	order := 0
-	for _, f := range cp1eFields {
-		if c.parts.CP1EMasked(ctl, f.bit) {
+	for i, f := range cp1eFields {
+		if masked[i] {
 			continue
 		}
 		a, b := int(s1[f.word]>>f.shift&0xFF), int(s2[f.word]>>f.shift&0xFF)
