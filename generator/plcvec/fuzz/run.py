@@ -7,6 +7,7 @@ is exactly a failure `plcvec verify` would report for the same vector.
 import random
 from dataclasses import dataclass, field
 
+from plcvec_verify.adapters import result_message
 from plcvec_verify.compare import compare
 from plcvec_verify.expect import expected_of, request_of
 from plcvec_verify.protocol import hello_request, result_errors
@@ -66,14 +67,16 @@ class Target:
             sent[request["id"]] = (vector, request)
         verdicts = {}
         for answer in self.adapter.answers([request for _, request in sent.values()]):
-            if answer.id in sent:
-                verdicts[answer.id] = self._verdict(sent[answer.id][0], answer)
+            rid = answer[0]     # an Answer, or a plain tuple of its fields (adapters.result_message)
+            if rid in sent:
+                verdicts[rid] = self._verdict(sent[rid][0], answer)
         return [verdicts.get(rid) or Verdict(True, ["the adapter gave no answer"]) for rid in sent]
 
     def _verdict(self, vector, answer):
-        if answer.fault:
-            return Verdict(True, [answer.fault])
-        msg = answer.result_message()
+        fault = answer[2]
+        if fault:
+            return Verdict(True, [fault])
+        msg = result_message(answer)
         errors = result_errors(msg)
         if errors:
             return Verdict(True, ["the result does not match result.schema.json: " + "; ".join(errors)])

@@ -13,7 +13,7 @@ from functools import partial
 from operator import itemgetter
 from typing import NamedTuple
 
-from .adapters import AdapterAbort
+from .adapters import AdapterAbort, result_message
 from .compare import Problem, compare, passes, steps_pass
 from .errors import VerifyError
 from .expect import expected_of, request_of
@@ -193,7 +193,7 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
                 if progress:
                     progress(done, total, failed)
                 continue
-            msg = answer.result_message()
+            msg = result_message(answer)
             v = by_id[vid]
             problems = None
             if not fault and result_shape_ok(msg):
