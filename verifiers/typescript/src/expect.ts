@@ -92,7 +92,8 @@ export function expectedOf(
   }
   const layout = expectedLayout(vector);
   const has = Object.prototype.hasOwnProperty;
-  const image = states.flatMap((state) => layout.names.map((name) => (has.call(state, name) ? state[name] : undefined)));
+  const image: (Value | undefined)[] = [];
+  for (const state of states) for (const name of layout.names) image.push(has.call(state, name) ? state[name] : undefined);
   const checked = checkedSlots(layout, vector.initial.scratch ?? []);
   return {
     results: internedResults(results),
@@ -116,7 +117,7 @@ export function expectedOf(
 export function expectedLayout(vector: Vector): Layout {
   let layout = layouts.get(vector);
   if (layout === undefined) {
-    layout = layoutOf(namedDevices(vector));
+    layout = layoutOf(namedDevices(vector), true);
     layouts.set(vector, layout);
   }
   return layout;
@@ -125,12 +126,13 @@ export function expectedLayout(vector: Vector): Layout {
 /** Worked out once per vector: the request and each expectation of it share it. */
 const layouts = new WeakMap<Vector, Layout>();
 
-function namedDevices(vector: Vector): Set<string> {
-  const names = new Set(Object.keys(vector.initial.devices));
+/** Each device the vector names, once, in the order first named (a list: a vector names a dozen or so). */
+function namedDevices(vector: Vector): string[] {
+  const names = Object.keys(vector.initial.devices);
   const add = (devices: Devices | undefined): void => {
-    for (const name in devices) names.add(name);
+    if (devices !== undefined) for (const name of Object.keys(devices)) if (!names.includes(name)) names.push(name);
   };
-  for (const name of vector.initial.scratch ?? []) names.add(name);
+  for (const name of vector.initial.scratch ?? []) if (!names.includes(name)) names.push(name);
   for (const step of vector.steps) {
     add(step.set);
     add(step.expect.devices);

@@ -71,13 +71,13 @@ export function deviceOffset(base: string, offset: number): string {
 
 const interned = new Map<string, Layout>();
 
-/** The layout of these device addresses (each once, in the order first given). */
-export function layoutOf(names: Iterable<string>): Layout {
-  const unique = [...(names instanceof Set ? (names as Set<string>) : new Set(names))];
-  const key = unique.join("\n"); // a device address never holds a newline (validate.ts)
+/** The layout of these device addresses (each once, in the order first given; `unique`: they already are). */
+export function layoutOf(names: Iterable<string>, unique = false): Layout {
+  const list = unique ? [...names] : [...new Set(names)];
+  const key = list.join("\n"); // a device address never holds a newline (validate.ts)
   let layout = interned.get(key);
   if (layout === undefined) {
-    layout = new Layout(unique);
+    layout = new Layout(list);
     interned.set(key, layout);
   }
   return layout;
