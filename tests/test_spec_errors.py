@@ -255,6 +255,36 @@ def test_loader_uses_safe_yaml():
     data, lines = yaml_lines.load_with_lines("x.yaml", "a: 1\nb: [x, y]\n")
     assert data == {"a": 1, "b": ["x", "y"]} and lines[("b",)] == 2
     assert issubclass(yaml_lines._SpecLoader, yaml.SafeLoader)
+    # libyaml only composes (nodes); values are built by SafeLoader's constructor as above.
+    assert yaml_lines._FastLoader in (None, getattr(yaml, "CSafeLoader", None))
+
+
+def test_libyaml_and_pyyaml_read_every_spec_file_alike(monkeypatch):
+    """The fast reader (libyaml) gives the same values and the same lines as PyYAML's own parser."""
+    from plcvec.spec import yaml_lines
+
+    files = sorted(SPEC.rglob("*.yaml"))
+    fast = [yaml_lines.load_with_lines(p, p.read_text(encoding="utf-8")) for p in files]
+    assert all(yaml_lines._fast_node(p.read_text(encoding="utf-8"))[0] for p in files) == \
+        (yaml_lines._FastLoader is not None)
+    monkeypatch.setattr(yaml_lines, "_FastLoader", None)
+    slow = [yaml_lines.load_with_lines(p, p.read_text(encoding="utf-8")) for p in files]
+    assert len(files) >= 10 and fast == slow
+
+
+@pytest.mark.parametrize("text, phrase, line", [
+    ("a: &x 1\nb: *x\n", "aliases (*x) are not allowed", 2),
+    ("a: [1, 2\nb: 3\n", "not closed", 1),
+    ("a: 1\n\tb: 2\n", "YAML syntax error", 2),
+    ("a: 1\nb: \x07\n", "not allowed in a YAML file", 2),
+])
+def test_what_libyaml_declines_is_read_again_for_the_message(text, phrase, line):
+    from plcvec.spec import yaml_lines
+
+    assert not yaml_lines._fast_node(text)[0]
+    with pytest.raises(SpecError) as info:
+        yaml_lines.load_with_lines("x.yaml", text)
+    assert phrase in str(info.value) and info.value.line == line, str(info.value)
 
 
 def test_the_real_spec_still_lints(tmp_path):

@@ -42,6 +42,43 @@ class _SpecLoader(yaml.SafeLoader):
         return super().compose_node(parent, index)
 
 
+# libyaml, where PyYAML was built with it, composes the node tree about ten times faster; every
+# process that reads the spec pays for it. It is used only for a file it reads without complaint
+# and without aliases; anything else is read again by _SpecLoader, whose errors the messages here
+# are written for. Both give the same nodes, with the same lines (tests/test_spec_errors.py).
+_FastLoader = getattr(yaml, "CSafeLoader", None)
+
+
+def _fast_node(text):
+    """(True, node) from libyaml for a file that needs no error message; (False, None) otherwise."""
+    if _FastLoader is None or yaml.reader.Reader.NON_PRINTABLE.search(text):
+        return False, None
+    loader = _FastLoader(text)
+    try:
+        node = loader.get_single_node()
+    except yaml.YAMLError:
+        return False, None
+    finally:
+        loader.dispose()
+    return (False, None) if _shares_a_node(node) else (True, node)
+
+
+def _shares_a_node(root) -> bool:
+    """Whether a node appears twice in the tree: libyaml composes an alias as the anchored node itself."""
+    seen, todo = set(), [root] if root is not None else []
+    while todo:
+        node = todo.pop()
+        if id(node) in seen:
+            return True
+        seen.add(id(node))
+        if isinstance(node, yaml.MappingNode):
+            for key, value in node.value:
+                todo += (key, value)
+        elif isinstance(node, yaml.SequenceNode):
+            todo += node.value
+    return False
+
+
 def _runaway_quote(text, line):
     """The start line of a quoted string that spans lines and ends on 0-based `line`, if any.
 
@@ -86,6 +123,9 @@ def _syntax_error(path, exc, text):
 
 def load_with_lines(path, text):
     """Return (data, lines) where lines maps a path tuple (keys and indexes) to its 1-based line."""
+    fast, node = _fast_node(text)
+    if fast:
+        return _built(node, path, yaml.SafeLoader(""))   # the constructor only: the nodes are built
     loader = None
     try:
         loader = _SpecLoader(text)  # the reader checks every character here
@@ -104,6 +144,10 @@ def load_with_lines(path, text):
     finally:
         if loader is not None:
             loader.dispose()
+    return _built(node, path, loader)
+
+
+def _built(node, path, loader):
     if node is None:
         raise SpecError(path, 1, "the file is empty")
     lines = {}
