@@ -3,11 +3,11 @@
  * memory": the loop over steps, the device image, `set`, and the report after each step are
  * done here, as CONTRACT.md says.
  */
-import type { Implementation } from "./run.js";
 import { inspect } from "node:util";
 
 import { deviceOffset, InitialImage, layoutOf, parseAddress, type Layout } from "./layout.js";
 import { initialImageOf } from "./request.js";
+import type { Implementation } from "./run.js";
 import type { Devices, Operand, RunOutcome, StepInputs, StepResult, Value, VectorRequest } from "./types.js";
 
 /** A device's value read as a word: a bit is 1 or 0, a device holding nothing reads 0. */
@@ -18,7 +18,7 @@ function asWord(v: Value | undefined): number {
 /**
  * A device image: word devices hold 0..65535, bit devices true/false.
  *
- * The devices the vector lists live in slots of an array (see layout.ts), copied from the
+ * The devices the vector lists live in slots of an array (see layout.ts) that starts as the
  * prepared initial image; a device written that the vector does not list is kept apart, so that
  * a snapshot reports it and the runner can call it a write outside the vector.
  */
