@@ -11,6 +11,7 @@ use serde::Deserialize;
 
 use crate::error::{Error, Result};
 use crate::generated::names::{Family, Instruction};
+use crate::keys::SlotKeys;
 use crate::small::Small;
 use crate::value::{pack, Address, Value};
 
@@ -144,10 +145,10 @@ pub struct Vector {
     /// once at load: an instruction reads its operands without searching the slot keys.
     operand_slots: Small<[u8; OPERAND_WORDS], 4>,
     operands: Small<(String, Operand), 4>,
-    /// Each slot's packed name (`value::pack`; 0 when longer than 8 bytes): every device access
-    /// of an implementation searches these, by name or by address (`Address::key_at`), so they
-    /// are plain integers, contiguous and inline.
-    name_keys: Small<u64, INLINE_SLOTS>,
+    /// Each slot's packed name (`value::pack`; 0 when longer than 8 bytes), and a small hash
+    /// table of them: every device access of an implementation finds its slot here, by name or
+    /// by address (`Address::key_at`).
+    name_keys: SlotKeys,
     /// `device_sizes` by packed device type (0 for a type longer than 8 bytes).
     size_keys: Small<(u64, u32), 4>,
     // Read only to report, to serve the protocol, or on a failure.
@@ -455,7 +456,7 @@ impl Vector {
             clauses: raw.clauses,
             device_sizes,
             size_keys,
-            name_keys: devices.iter().map(|a| pack(a.name())).collect(),
+            name_keys: SlotKeys::new(&devices.iter().map(|a| pack(a.name())).collect::<Vec<_>>()),
             keys_spell_addresses: devices.iter().all(|a| a.number().is_none() || a.key_at(0) == pack(a.name())),
             devices,
             initial: Small::from_slice(&initial),
