@@ -62,20 +62,20 @@ def vector_texts(vector):
     return texts
 
 
-def dumps_object_lines(obj, indent, texts=None):
-    """An object a key per line, its "{" opening the first and its "}" closing the last."""
-    pad = " " * indent
-    texts = texts or {k: dumps_value(v) for k, v in obj.items()}
-    return pad + "{" + (",\n" + pad + " ").join([f"{_key(k)}: {texts[k]}" for k in obj]) + "}"
-
-
 def dumps_vector_file(header, vectors, texts=None):
-    """The text of a vector file; `texts`, when given, holds vector_texts() of each vector."""
-    lines = ["{"]
+    """The text of a vector file; `texts`, when given, holds vector_texts() of each vector.
+
+    The pieces go into one list joined once: a golden file is megabytes, and joining line by line
+    would copy each vector's text several times over."""
+    out = ["{\n"]
     for k, v in header.items():
-        lines.append(f" {_key(k)}: {dumps_value(v)},")
-    lines.append(' "vectors": [')
-    lines.append(",\n".join(dumps_object_lines(v, 2, t) for v, t in zip(vectors, texts or [None] * len(vectors))))
-    lines.append(" ]")
-    lines.append("}")
-    return "\n".join(lines) + "\n"
+        out += [" ", _key(k), ": ", dumps_value(v), ",\n"]
+    out.append(' "vectors": [\n')
+    for n, (vector, vtexts) in enumerate(zip(vectors, texts or [None] * len(vectors))):
+        vtexts = vtexts or {k: dumps_value(v) for k, v in vector.items()}
+        out.append(",\n  {" if n else "  {")
+        for i, k in enumerate(vector):
+            out += [",\n   " if i else "", _key(k), ": ", vtexts[k]]
+        out.append("}")
+    out.append("\n ]\n}\n")
+    return "".join(out)
