@@ -8,6 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from .expect import Expected
+from .protocol import WORD_MAX
 
 _MISSING = "<not reported>"
 _UNLISTED = "<not in the vector>"
@@ -95,6 +96,10 @@ def _same_types(devices: dict, typed) -> bool:
     return type(sum(devices.values())) is int and tuple(map(type, map(devices.__getitem__, keys))) == types
 
 
+def _is_word(value) -> bool:
+    return type(value) is int and 0 <= value <= WORD_MAX
+
+
 def _steps_pass_with_scratch(expected: Expected, steps) -> bool:
     """`steps_pass` for a vector with scratch devices, whose reported values are the implementation's
     own: left out of the comparison, but still words (else the long way, with the schema)."""
@@ -106,7 +111,7 @@ def _steps_pass_with_scratch(expected: Expected, steps) -> bool:
                 or step.get("result") is not want_result or type(step.get("devices")) is not dict:
             return False
         devices = step["devices"]
-        if any(type(devices.get(k, 0)) is not int or not 0 <= devices.get(k, 0) <= 0xFFFF for k in scratch):
+        if not all(map(_is_word, (devices.get(k, 0) for k in scratch))):
             return False
         got = {k: v for k, v in devices.items() if k not in scratch}
         if got != state or not _same_types(got, typed):
