@@ -90,14 +90,14 @@ def test_an_answer_the_comparison_accepts_is_valid_against_the_schema(data):
     from plcvec_verify.protocol import result_shape_ok
 
     suite = _suite()
-    v = data.draw(st.sampled_from(suite.vectors[:: 37]))
+    v = data.draw(_sampled_vectors(suite))
     exp = expected_of(v, {}, {})
     steps = []
     for state, result in zip(exp.states, exp.results):
-        devices = {k: data.draw(st.one_of(st.just(val), scalars)) for k, val in state.items()}
+        devices = {k: data.draw(_kept_or_scalar(val)) for k, val in state.items()}
         step = {"devices": devices}
         if result is not None:
-            step["result"] = data.draw(st.one_of(st.just(result), scalars))
+            step["result"] = data.draw(_kept_or_scalar(result))
         steps.append(step)
     msg = {"type": "result", "id": v["id"], "steps": steps}
     if result_shape_ok(msg) and compare(exp, steps) == []:
@@ -105,6 +105,27 @@ def test_an_answer_the_comparison_accepts_is_valid_against_the_schema(data):
 
 
 _SUITE = []
+_STRATEGIES = {}
+
+
+def _kept_or_scalar(value):
+    """The expected value itself or any scalar: one strategy object per value, made once.
+
+    Hypothesis validates and labels each new strategy object when it is first drawn from, which
+    cost most of this test's time when a fresh one was built for every device of every example;
+    a kept object draws from the same definition. (The key holds the type: True == 1, but they
+    are different answers.)"""
+    key = (type(value), value)
+    if key not in _STRATEGIES:
+        _STRATEGIES[key] = st.one_of(st.just(value), scalars)
+    return _STRATEGIES[key]
+
+
+def _sampled_vectors(suite):
+    """Every 37th vector of the set, the same strategy object for every example."""
+    if "vectors" not in _STRATEGIES:
+        _STRATEGIES["vectors"] = st.sampled_from(suite.vectors[:: 37])
+    return _STRATEGIES["vectors"]
 
 
 def _suite():
