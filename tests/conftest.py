@@ -51,3 +51,45 @@ def generated(families):
     from plcvec.output.golden import build_golden
 
     return build_golden(list(families.values()))
+
+
+# Under `pytest -n` (pytest-xdist) these run on one worker each, one test after another: their module
+# fixtures are costly (a release, the review, a build of the whole set, every mutant's report) and would
+# otherwise be made again in every worker that runs some of their tests. Keys are a module or a test;
+# everything else is spread test by test, as xdist's default (`--dist load`) does.
+ONE_WORKER = {
+    "tests/test_mutants.py": "each mutant's in-process report; the coverage cells of the whole set",
+    "tests/test_release.py": "two `plcvec release` runs",
+    "tests/test_review.py": "`plcvec review --check` of the real spec",
+    "tests/test_review_browser.py": "the review page and Chromium's rendering of it",
+    "tests/test_diff.py": "edited copies of vectors/, the HEAD copy",
+    "tests/test_exhaustive.py": "cp1e's exhaustive tier",
+    "tests/test_audit.py": "the audit of the real spec",
+    "tests/test_fuzz.py::test_pulse_form_on_every_scan_is_shrunk_to_two_scans": "the every-scan fuzz run",
+    "tests/test_fuzz.py::test_the_printed_vector_is_ready_to_run": "the every-scan fuzz run",
+}
+
+
+def one_worker_group(nodeid):
+    """The ONE_WORKER key `nodeid` falls under (its test, else its module), or None."""
+    test = nodeid.split("[", 1)[0]
+    if test in ONE_WORKER:
+        return ONE_WORKER[test]
+    module = nodeid.split("::", 1)[0]
+    return module if module in ONE_WORKER else None
+
+
+@pytest.hookimpl(optionalhook=True)
+def pytest_xdist_make_scheduler(config, log):
+    """xdist's load scheduling with the ONE_WORKER groups kept together. (Its own `--dist loadgroup`
+    marks no group under pytest 9, whose node ids it can no longer suffix.) An explicit `--dist` other
+    than the default `load` is followed as given."""
+    if config.getoption("dist") != "load":
+        return None
+    from xdist.scheduler import LoadScopeScheduling
+
+    class OneWorkerGroups(LoadScopeScheduling):
+        def _split_scope(self, nodeid):
+            return one_worker_group(nodeid) or nodeid
+
+    return OneWorkerGroups(config, log)

@@ -2,6 +2,8 @@
 reference's mutants are caught and shrunk to minimal vectors that are valid vector files, runs are
 deterministic, harness errors exit 2.
 """
+import contextlib
+import io
 import json
 import shlex
 import subprocess
@@ -104,9 +106,21 @@ def test_hour_read_as_minute_is_shrunk_to_small_values(capsys, tmp_path):
     assert "fx5-time-compare#s3.bit.hour" in v["clauses"] and "fx5-time-compare#s3.bit.hour" in out
 
 
-def test_pulse_form_on_every_scan_is_shrunk_to_two_scans(capsys, tmp_path):
-    out_file = tmp_path / "found.json"
-    code, out, err = fuzz(capsys, "--python", planted("every-scan"), "--examples", 1000, "--out", out_file)
+@pytest.fixture(scope="module")
+def every_scan(tmp_path_factory):
+    """What `plcvec fuzz` finds in the every-scan planted bug, and the file --out writes: (code, out, err,
+    file), for the tests of the shrunk case and of the file, which read it and change nothing."""
+    from plcvec.cli import main
+
+    out_file = tmp_path_factory.mktemp("every-scan") / "found.json"
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(["fuzz", "--python", planted("every-scan"), "--examples", "1000", "--out", str(out_file)])
+    return code, out.getvalue(), err.getvalue(), out_file
+
+
+def test_pulse_form_on_every_scan_is_shrunk_to_two_scans(every_scan):
+    code, out, err, out_file = every_scan
     assert code == 1, out + err
     v = single_vector(out_file)
     assert v["instruction"] == "TADDP"
@@ -117,11 +131,11 @@ def test_pulse_form_on_every_scan_is_shrunk_to_two_scans(capsys, tmp_path):
     assert "fx5-time-add#pulse" in v["clauses"]
 
 
-def test_the_printed_vector_is_ready_to_run(tmp_path, capsys):
+def test_the_printed_vector_is_ready_to_run(every_scan):
     """The file --out writes runs under `plcvec verify`: it fails the buggy adapter and the reference
     passes it, so it is a regression test as it stands."""
-    out_file = tmp_path / "found.json"
-    assert fuzz(capsys, "--python", planted("every-scan"), "--examples", 1000, "--out", out_file)[0] == 1
+    code, _, _, out_file = every_scan
+    assert code == 1
     from plcvec.cli import main
 
     assert main(["verify", "--vectors", str(out_file), "--python", planted("every-scan"), "-q"]) == 1
