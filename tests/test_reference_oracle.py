@@ -96,17 +96,24 @@ def test_unknown_interpretation_is_refused(all_vectors):
 COMBINATION_PARTS = {"cp1e-time-compare": 4}
 
 
+@pytest.fixture(scope="module")
+def suite():
+    """The committed vector set, loaded once for every combination run here (each run only reads it)."""
+    from plcvec_verify import Suite
+
+    return Suite.load(REPO / "vectors")
+
+
 @pytest.mark.parametrize("family, part", [(f, k) for f in FAMILIES for k in range(COMBINATION_PARTS.get(f, 1))])
-def test_reference_passes_under_every_combination_of_alternatives(family, part, golden):
+def test_reference_passes_under_every_combination_of_alternatives(family, part, golden, suite):
     """An implementation may take several non-default alternatives at once; the vectors must hold
     the expectation of every combination, not only of one alternative at a time. (The parts of a
     family together run every combination once: combination n belongs to part n mod the parts.)"""
     import itertools
 
-    from plcvec_verify import InProcess, Selection, Suite, run
+    from plcvec_verify import InProcess, Selection, run
     from plcvec_reference.adapter import ReferenceAdapter
 
-    suite = Suite.load(REPO / "vectors")
     interps = {i["id"]: [a["id"] for a in i["alternatives"]] for i in golden[family]["interpretations"]}
     failures = []
     parts = COMBINATION_PARTS.get(family, 1)
