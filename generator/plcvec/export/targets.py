@@ -17,13 +17,16 @@ from __future__ import annotations
 import traceback
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import jinja2
 import yaml
 
 from plcvec.errors import PlcvecError
 from plcvec.export import literals, names
 from plcvec.export.model import SuiteModel, index_json
+
+if TYPE_CHECKING:
+    import jinja2
 
 TEMPLATES = Path(__file__).resolve().parent / "templates"
 
@@ -57,6 +60,8 @@ def _read_config(folder: Path) -> dict:
 
 
 def _environment(folder: Path) -> jinja2.Environment:
+    import jinja2
+
     env = jinja2.Environment(
         loader=jinja2.FileSystemLoader(str(folder)),
         undefined=jinja2.StrictUndefined,       # a misspelt name fails the export, not the compiler
@@ -80,6 +85,10 @@ def _template_line(exc: jinja2.TemplateError, path: Path) -> str:
 
 
 def render(lang: str, model: SuiteModel, templates: Path | None = None) -> Target:
+    # jinja2 is imported when a language is rendered, not with this module: `plcvec --help` and every
+    # other command list the languages (languages()) without rendering any.
+    import jinja2
+
     folder = (templates or TEMPLATES) / lang
     config = _read_config(folder)
     root = config["root"].rstrip("/")

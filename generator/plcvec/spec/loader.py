@@ -3,8 +3,6 @@ import hashlib
 import json
 from pathlib import Path
 
-import jsonschema
-
 from plcvec_verify.errors import VerifyError
 from plcvec_verify.locate import locate
 
@@ -67,6 +65,10 @@ _validator = None
 
 
 def _schema_validator():
+    # jsonschema is imported here, when a spec is first validated, not with this module: the CLI
+    # imports the module to word its --help, and most commands (verify, diff) read no spec.
+    import jsonschema
+
     global _validator
     if _validator is None:
         schema = json.loads(schema_path("spec.schema.json").read_text())
@@ -136,6 +138,8 @@ def validate(path, doc, lines, validator):
     if forbidden:
         where, message = _describe_forbidden(forbidden[0], doc)
     else:
+        import jsonschema
+
         best = jsonschema.exceptions.best_match(errors)
         # best_match may name an `allOf`/`if` wrapper: prefer the deepest concrete error below it.
         while best.context:

@@ -8,14 +8,47 @@
 The contract an implementation follows is verifiers/CONTRACT.md; the process protocol is
 verifiers/PROTOCOL.md. This package needs only the vector files, not the generator.
 """
-from .adapters import Answer, InProcess, load_python_adapter
-from .errors import VerifyError
-from .gate import NOTHING_TESTED, Gate
-from .known import KnownFailures
-from .runner import FAILING, STATUSES, Plan, RunReport, VectorResult, run
-from .stdio import StdioAdapter
-from .suite import Selection, Suite, parse_shard, shard_of
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING
+
+# Each name is imported from its module when first used, not with the package: an adapter process
+# (plcvec_verify.serve), `plcvec lint` and every other command that imports one submodule would
+# otherwise load the runner, the gate, the stdio driver and the known-failures reader at start-up.
+_WHERE = {
+    "Answer": "adapters", "InProcess": "adapters", "load_python_adapter": "adapters",
+    "VerifyError": "errors",
+    "NOTHING_TESTED": "gate", "Gate": "gate",
+    "KnownFailures": "known",
+    "FAILING": "runner", "STATUSES": "runner", "Plan": "runner", "RunReport": "runner", "VectorResult": "runner",
+    "run": "runner",
+    "StdioAdapter": "stdio",
+    "Selection": "suite", "Suite": "suite", "parse_shard": "suite", "shard_of": "suite",
+}
 
 __all__ = ["Suite", "Selection", "InProcess", "StdioAdapter", "run", "Plan", "RunReport", "VectorResult",
            "KnownFailures", "VerifyError", "Answer", "load_python_adapter", "parse_shard", "shard_of",
            "STATUSES", "FAILING", "Gate", "NOTHING_TESTED"]
+
+
+def __getattr__(name: str):
+    if name not in _WHERE:
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    value = getattr(importlib.import_module(f".{_WHERE[name]}", __name__), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__():
+    return sorted(set(globals()) | set(__all__))
+
+
+if TYPE_CHECKING:
+    from .adapters import Answer, InProcess, load_python_adapter
+    from .errors import VerifyError
+    from .gate import NOTHING_TESTED, Gate
+    from .known import KnownFailures
+    from .runner import FAILING, STATUSES, Plan, RunReport, VectorResult, run
+    from .stdio import StdioAdapter
+    from .suite import Selection, Suite, parse_shard, shard_of
