@@ -28,11 +28,10 @@ class MaskedCompare:
         self.words = {k: v.get("words", 1) for k, v in self.ops.items()}
         self.conditions = {c["symbol"]: c for c in doc["instructions"]["conditions"]}
         self.reserved_mask = sum(1 << b for b in self.sel["reserved_bits"])
-        # What the selector's bits mean and each field's range, looked up once, not per execution.
+        # What the selector's bits mean, looked up once, not per execution.
         self._want = 1 if self.sel["polarity"] == "select" else 0
         self._field_bits = [(f, self.sel["field_bits"][f["name"]]) for f in self.fields]
         self._field_clauses = [self.sel["field_clauses"][f["name"]] for f in self.fields]
-        self._ranges = [(f["name"], f["min"], f["max"]) for f in self.fields]
         # Parts of the document read on every execution that no interpretation sets (reading them here
         # consults nothing; the values an interpretation may set inside them are still read in place).
         self._error = self.validity["error"]
@@ -44,6 +43,19 @@ class MaskedCompare:
         self._range_clause = self._device_range["clause"] if self._range_check else None
         self._valid_clause, self._unselected_clause = self.sel.get("valid_clause"), self.sel.get("unselected_clause")
         self._order_clause = doc["data"]["order_clause"]
+        self._source_mask = 1 << self._source_bit["bit"] if self._source_bit else 0
+        self._field_mask = sum(1 << bit for _, bit in self._field_bits)
+        # The selector's field bits -> the fields they select, filled as values are met: a function of
+        # the spec alone (field bits and polarity), so it carries nothing from one execution to the next.
+        self._selections = {}
+        self._names = [f["name"] for f in self.fields]
+        self._error_clause = self._error.get("clause")
+        # What each ordering writes to the flags, as (device, value) pairs (no interpretation sets the
+        # flag table, so reading it here consults nothing).
+        if self.flags:
+            self._flag_clauses = (self.flags["clause"], self.flags.get("written_clause"))
+            self._flag_writes = {ordering: [(device, row[symbol]) for symbol, device in self.flags["devices"].items()]
+                                 for ordering, row in self.flags["table"].items()}
 
     # -- the instruction ---------------------------------------------------------------------------
     def execute(self, instr, operands, state, step, ctx, trace):
@@ -73,9 +85,9 @@ class MaskedCompare:
         try:
             ordering = self.compare(operands, state, step, ctx, trace)
         except _Error:
-            err, device = self._error, self._error_device
+            device = self._error_device
             state[device] = True
-            trace.add(err.get("clause"))
+            trace.add(self._error_clause)
             ctx["error"] = {"device": device}
             return ERROR
         # An error flag that reports each execution, not a latch, is turned off; whether it latches is
@@ -83,10 +95,8 @@ class MaskedCompare:
         if state[self._error_device] is not False and not self._error.get("latch", True):
             state[self._error_device] = False
         if ordering is not None and self.flags:
-            trace.add(self.flags["clause"])
-            trace.add(self.flags.get("written_clause"))
-            for symbol, device in self.flags["devices"].items():
-                state[device] = self.flags["table"][ordering][symbol]
+            trace.update(self._flag_clauses)
+            state.update(self._flag_writes[ordering])
         return ordering
 
     def contact(self, symbol, outcome):
@@ -95,16 +105,13 @@ class MaskedCompare:
             return self._error["result"]
         return outcome is not None and outcome in self.conditions[symbol]["true_when"]
 
-    def selector_value(self, operand, state):
-        return operand["constant"] if "constant" in operand else state[operand["device"]]
-
     def compare(self, operands, state, step, ctx, trace):
         """The ordering of the selected fields of the first data operand against the second (or the clock)."""
-        sel = self.selector_value(operands[self._sel_operand], state)
-        source_bit = self._source_bit
-        clock_mode = bool(source_bit) and bool(sel >> source_bit["bit"] & 1)
+        operand = operands[self._sel_operand]
+        sel = operand["constant"] if "constant" in operand else state[operand["device"]]
+        clock_mode = bool(sel & self._source_mask)
         if clock_mode:
-            trace.add(source_bit["clause"])
+            trace.add(self._source_bit["clause"])
         first, second = self.data_ops
         compared_ops = [first] if clock_mode else [first, second]
 
@@ -114,12 +121,20 @@ class MaskedCompare:
                 if not in_device_range(operands[op]["device"], self.words[op], ctx["device_sizes"]):
                     trace.add(self._range_clause)
                     raise _Error
-        values = {op: self.codec.read(state, operands[op]["device"]) for op in compared_ops}
+        # Whether any field of the compared operands is out of range or not a valid encoding comes
+        # with the values (the clock's are not checked).
+        read = self.codec.read_checked
+        held, valid = read(state, operands[first]["device"])
+        values = {first: held}
         if clock_mode:
-            values[second] = {f["name"]: step["clock"][f["name"]] for f in self.fields}
+            clock = step["clock"]
+            values[second] = {name: clock[name] for name in self._names}
+        else:
+            values[second], second_valid = read(state, operands[second]["device"])
+            valid = valid and second_valid
+        invalid = not valid
 
         # The check's scope decides something only when some value is invalid.
-        invalid = self._invalid(values, compared_ops)
         if invalid and self.validity["scope"] == "all":
             self._check(values, compared_ops, self.fields, trace)
 
@@ -130,8 +145,11 @@ class MaskedCompare:
                 return None
             if action == "error":
                 raise _Error
-        want = self._want
-        selected = [f for f, bit in self._field_bits if (sel >> bit & 1) == want]
+        selected = self._selections.get(sel & self._field_mask)
+        if selected is None:
+            want = self._want
+            selected = self._selections[sel & self._field_mask] = [f for f, bit in self._field_bits
+                                                                    if (sel >> bit & 1) == want]
         trace.update(self._field_clauses)
         if not selected:
             trace.add(self.sel["no_field_clause"])
@@ -165,16 +183,6 @@ class MaskedCompare:
             if a != b:
                 return "lt" if a < b else "gt"
         return "eq"
-
-    def _invalid(self, values, compared_ops):
-        """Whether any field of the compared operands is out of range or not a valid encoding."""
-        for op in compared_ops:
-            held = values[op]
-            for name, lo, hi in self._ranges:
-                v = held[name]
-                if v is None or not lo <= v <= hi:
-                    return True
-        return False
 
     def _check(self, values, compared_ops, fields, trace):
         for op in compared_ops:

@@ -8,6 +8,7 @@ import re
 from functools import lru_cache
 
 _ADDRESS = re.compile(r"^([A-Za-z_]+)(\d+)$")
+_MEMO_SIZE = 4096   # distinct operand words a codec remembers the reading of
 
 
 class DeviceRangeError(Exception):
@@ -95,6 +96,8 @@ class FieldCodec:
         self._readers = [(name, word, lsb, mask, decoder(encoding, width))
                          for name, word, lsb, mask, encoding, width in self._layout]
         self._radices = [f["max"] + 1 for f in fields]
+        self._mins, self._maxes = [f["min"] for f in fields], [f["max"] for f in fields]
+        self._checked = {}   # words -> read_checked()
         self._modulus = 1
         for r in self._radices:
             self._modulus *= r
@@ -106,6 +109,23 @@ class FieldCodec:
         """{field name: decoded value or None}."""
         words = [state[a] for a in word_addresses(head, self.count)]
         return {name: dec((words[word] >> lsb) & mask) for name, word, lsb, mask, dec in self._readers}
+
+    def read_checked(self, state, head):
+        """(read(state, head), whether every field holds a valid encoding within its min..max).
+
+        Both depend on the operand's words alone, so they are worked out once per distinct words (a
+        bounded memo; a case runs the same data through many executions, the exhaustive tier through
+        every selector value). The values are shared between calls: read them, never change them.
+        """
+        words = tuple(map(state.__getitem__, word_addresses(head, self.count)))
+        known = self._checked.get(words)
+        if known is None:
+            values = {name: dec((words[word] >> lsb) & mask) for name, word, lsb, mask, dec in self._readers}
+            known = (values, all(v is not None and lo <= v <= hi for v, lo, hi in zip(values.values(), self._mins, self._maxes)))
+            if len(self._checked) >= _MEMO_SIZE:
+                self._checked.clear()
+            self._checked[words] = known
+        return known
 
     def pack(self, values):
         """The words that hold `values` (field name -> value); fields not given are 0."""
