@@ -8,7 +8,7 @@ import json
 import time
 
 from plcvec import SCHEMA_VERSION
-from plcvec.cases.build import VectorBuilder
+from plcvec.cases.build import GeneratorBug, VectorBuilder
 from plcvec.cases.masked_compare_cases import CompareCases
 from plcvec.errors import PlcvecError
 from plcvec.output.canonical import dumps_value
@@ -96,13 +96,16 @@ def _write_family(fam, path, choices, selectors):
             trace = set()
             outcome = engine.evaluate(operands, state, step, ctx, trace)
             state[sel_head] = _MARKER
-            changed = tuple(sorted(state.items() - initial))   # equal values count as unchanged, as 1 == True
+            # The state's values in its (fixed) key order stand for the whole state: the engine
+            # writes only devices the state holds (a state with another device is a key never seen,
+            # and make() refuses it).
             error = ctx.get("error")
-            key = (outcome, frozenset(trace), changed, bool(step), None if error is None else tuple(sorted(error.items())))
+            key = (outcome, frozenset(trace), tuple(state.values()), bool(step),
+                   None if error is None else tuple(sorted(error.items())))
             template = templates.get(key)
             if template is None:
-                template = block.make(key, trace, state, error, step)
-            out.write(template % {b"s": sel})
+                template = block.make(key, trace, state, initial, error, step)
+            out.write(template % {b"h": b"%04X" % sel, b"d": b"%d" % sel})
             n += width
     tmp.replace(path)
     return n
@@ -110,35 +113,40 @@ def _write_family(fam, path, choices, selectors):
 
 class _Blocks:
     """The lines of one selector value, for each distinct answer of the engine, as a %-template of
-    UTF-8 bytes in which %(s)d is the selector value and %(s)04XH its hex form (0000H to FFFFH)."""
+    UTF-8 bytes in which %(d)b is the selector value in decimal and %(h)bH in hex (0000H to FFFFH),
+    each given as bytes: formatted once per selector value rather than at each of its four places in
+    each line, which cost more than the rest of the fill."""
 
     def __init__(self, fam, engine, loads, conditions, devices, sel_head, operands, sizes, selop, clock):
         self.fam, self.engine, self.templates, self.sel_head = fam, engine, {}, sel_head
         pre, post = _escape(dumps_value(dict(sorted(devices.items())))).split(str(_MARKER))
         self.common = (f'"tags": ["exhaustive"], "assumes": {{"device_sizes": {_escape(dumps_value(sizes))}}}, '
-                       f'"initial": {{"operands": {_escape(dumps_value(operands))}, "devices": {pre}%(s)d{post}}}, ')
+                       f'"initial": {{"operands": {_escape(dumps_value(operands))}, "devices": {pre}%(d)b{post}}}, ')
         self.clock = f'"clock": {_escape(dumps_value(clock))}, '
-        self.description = f'"description": "{_escape(selop)} = %(s)04XH", '
+        self.description = f'"description": "{_escape(selop)} = %(h)bH", '
         self.names = [(_escape(json.dumps(f"{fam.name}/{name}/exhaustive/"))[:-1], _escape(json.dumps(name)),
                        _escape(json.dumps(instr["st"])), instr["symbol"],
                        {instr["form"]["clause"], conditions[instr["symbol"]]["clause"]})
                       for name, instr in loads]
         self.family = _escape(fam.name)
 
-    def make(self, key, trace, state, error, step):
+    def make(self, key, trace, state, initial, error, step):
         outcome = key[0]
         trace.discard(None)
-        changed = _escape(dumps_value(dict(sorted(key[2]))))
+        if state.keys() != initial.mapping.keys():
+            raise GeneratorBug(f"engine wrote {sorted(state.keys() - initial.mapping.keys())} not in the initial state")
+        # Equal values count as unchanged, as 1 == True.
+        changed = _escape(dumps_value(dict(sorted(state.items() - initial))))
         result_outcome = ('{"category": "error", "errors": [%s]}' % dumps_value(dict(step=0, **error))) if error \
             else '{"category": "value"}'
         pre, post = _escape(dumps_value(dict(sorted(state.items())))).split(str(_MARKER))
-        final = f"{pre}%(s)d{post}"
+        final = f"{pre}%(d)b{post}"
         clock = self.clock if step else ""
         lines = []
         for vid, name, st, symbol, own in self.names:
             result = "true" if self.engine.contact(symbol, outcome) else "false"
             clauses = _escape(json.dumps(sorted(self.fam.clause_ref(c) for c in trace | own)))
-            lines.append(f'{{"id": {vid}%(s)04XH", "family": "{self.family}", "instruction": {name}, "st": {st}, '
+            lines.append(f'{{"id": {vid}%(h)bH", "family": "{self.family}", "instruction": {name}, "st": {st}, '
                          f'{self.description}"clauses": {clauses}, {self.common}'
                          f'"steps": [{{{clock}"expect": {{"devices": {changed}, "result": {result}}}}}], '
                          f'"final": {{"devices": {final}}}, "outcome": {_escape(result_outcome)}}}\n')
