@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from functools import partial
 from operator import itemgetter
 from typing import NamedTuple
 
@@ -47,8 +46,6 @@ class VectorResult(NamedTuple):
     choices: dict = {}         # interpretation -> alternative the vector was judged by; never mutated
 
 
-# A passing vector's result made without a Python-level __init__: the usual case of every run.
-_result = partial(tuple.__new__, VectorResult)
 
 
 @dataclass
@@ -109,6 +106,11 @@ class Plan:
         self.vectors = vectors
         self.requests = {v["id"]: request_of(v) for v in vectors}
         self.expected = {v["id"]: expected_of(v, choices, defaults) for v in vectors}
+        # Per vector, its expectation and the result it gets when an answer passes, made once here:
+        # a passing result holds nothing of the answer, and making it again for every vector of every
+        # run was a good part of a run's time. Each answer is still judged in full (runner.run).
+        self.judging = {vid: (exp, VectorResult(vid, exp.family, exp.instruction, PASS, choices=exp.choices))
+                        for vid, exp in self.expected.items()}
         self.wire: dict[str, bytes] = {}   # encoded requests, filled by a process adapter
         # For a run of exactly `vectors` (the same list): the requests in order, the families and
         # instructions, worked out once rather than by a pass over the vectors in every run.
@@ -177,18 +179,18 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
                                                 message=f"the adapter does not support {v['instruction']}")
     if plan is None:
         plan = Plan(suite, runnable, choices)
-    by_id, expected, requests = suite.by_id, plan.expected, plan.requests
+    by_id, judging, requests = suite.by_id, plan.judging, plan.requests
     report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate())
     total, done, failed = len(runnable), 0, 0
     try:
         to_send = plan.request_list if runnable is plan.vectors else list(map(requests.__getitem__, map(_ID, runnable)))
         for answer in adapter.answers(to_send, plan.wire):
             vid, msg, fault, bare = answer
-            exp = expected[vid]
+            exp, passed = judging[vid]
             # The usual case, decided at one comparison: an in-process adapter's answer (`bare`, the
             # result message without `type` and `id`) or a process's result message that passes.
             if fault is None and (steps_pass(exp, msg.get("steps")) if bare and len(msg) == 1 else passes(exp, msg)):
-                results[vid] = _result((vid, exp.family, exp.instruction, PASS, (), "", (), exp.choices))
+                results[vid] = passed
                 done += 1
                 if progress:
                     progress(done, total, failed)
