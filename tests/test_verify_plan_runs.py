@@ -1,0 +1,59 @@
+"""Runs of one Plan judge every answer afresh.
+
+A Plan keeps, per vector, the result it gets when its answer passes; nothing of a run's verdicts may
+carry over to the next: a vector that passed fails when the next run's answer is wrong, and passes
+again when it is right.
+"""
+from plcvec_verify import Suite
+from plcvec_verify.adapters import InProcess
+from plcvec_verify.runner import Plan, run
+
+from conftest import REPO
+
+
+class _Conforming:
+    """Reports each vector's own expectation; `broken` ids get one word or bit wrong."""
+
+    def __init__(self, plan, broken=frozenset()):
+        self.plan, self.broken = plan, broken
+
+    def hello(self, request):
+        return {"adapter": {"name": "conforming", "version": "0"},
+                "instructions": sorted(self.plan.instructions), "interpretations": {}}
+
+    def run(self, request):
+        exp = self.plan.expected[request["id"]]
+        steps = []
+        for state, result in zip(exp.states, exp.results):
+            devices = dict(state)
+            devices.update({k: 0 for k in exp.scratch})
+            step = {"devices": devices} if result is None else {"devices": devices, "result": result}
+            steps.append(step)
+        if request["id"] in self.broken:
+            devices = steps[-1]["devices"]
+            name = sorted(k for k in devices if k not in exp.scratch)[0]
+            value = devices[name]
+            devices[name] = (not value) if type(value) is bool else value ^ 1   # still a word
+        return {"steps": steps}
+
+
+def test_a_plan_run_again_judges_each_answer_again():
+    suite = Suite.load(REPO / "vectors")
+    plan = Plan(suite, suite.vectors, {})
+    broken = frozenset(v["id"] for v in suite.vectors[::5])
+
+    first = run(suite, InProcess(_Conforming(plan)), plan=plan)
+    assert first.counts["pass"] == len(suite.vectors) and first.exit_code == 0
+
+    second = run(suite, InProcess(_Conforming(plan, broken)), plan=plan)
+    failed = {r.id for r in second.results if r.status == "fail"}
+    assert failed == broken and second.exit_code == 1
+    assert all(r.problems for r in second.results if r.status == "fail")
+    assert {r.id for r in second.results if r.status == "pass"} == {v["id"] for v in suite.vectors} - broken
+
+    third = run(suite, InProcess(_Conforming(plan)), plan=plan)
+    assert third.counts["pass"] == len(suite.vectors) and third.exit_code == 0
+    # A pass names the vector and the alternatives it was judged by, as a freshly made result would.
+    for r, v in zip(third.results, suite.vectors):
+        assert (r.id, r.family, r.instruction, r.problems, r.message) == (v["id"], v["family"], v["instruction"], (), "")
+        assert r.choices == plan.expected[v["id"]].choices
