@@ -82,7 +82,7 @@ def steps_pass(expected: Expected, steps) -> bool:
     if steps != wire:
         return False
     # Written out rather than calling _same_types: this loop runs for every vector of every run.
-    for step, want_result, (keys, types) in zip(steps, expected.results, expected.typed):
+    for step, (want_result, keys, types) in zip(steps, expected.checks):
         devices = step["devices"]
         if step.get("result") is not want_result or type(sum(devices.values())) is not int \
                 or tuple(map(type, map(devices.__getitem__, keys))) != types:

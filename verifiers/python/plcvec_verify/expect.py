@@ -31,6 +31,8 @@ class Expected:
     wire: list | None = None
     family: str = ""
     instruction: str = ""
+    # Per step: (result, *typed): what compare.steps_pass reads of a step, in one tuple.
+    checks: tuple = ()
 
     def before(self, step: int) -> dict:
         """The state step `step` started from (after its `set`): only a failure's message needs it."""
@@ -94,4 +96,5 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
     wire = None if scratch else [{"devices": st} if r is None else {"devices": st, "result": r}
                                   for st, r in zip(states, results)]
     return Expected(vector["id"], tuple(results), tuple(states), initial, tuple(sets), tuple(typed), scratch,
-                    category, applied, wire, vector["family"], vector["instruction"])
+                    category, applied, wire, vector["family"], vector["instruction"],
+                    tuple((r, *t) for r, t in zip(results, typed)))
