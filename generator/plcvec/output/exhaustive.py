@@ -6,6 +6,7 @@ interpretation choices (the defaults unless --choose says otherwise), named in t
 """
 import json
 import time
+from operator import itemgetter
 
 from plcvec import SCHEMA_VERSION
 from plcvec.cases.build import GeneratorBug, VectorBuilder
@@ -105,30 +106,41 @@ def _write_family(fam, path, choices, selectors):
             template = templates.get(key)
             if template is None:
                 template = block.make(key, trace, state, initial, error, step)
-            out.write(template % {b"h": b"%04X" % sel, b"d": b"%d" % sel})
+            parts, pick = template
+            parts[1::2] = pick((b"%04X" % sel, b"%d" % sel))
+            out.write(b"".join(parts))
             n += width
     tmp.replace(path)
     return n
 
 
+# Where a line holds the selector value, in hex (0000 to FFFF) or in decimal: a NUL, which JSON text
+# never holds raw (inside a string it is written \u0000), so the marks cannot clash with the text.
+_HEX, _DEC = "\x00h", "\x00d"
+_KINDS = b"hd"   # the byte after a mark -> index of the value in (hex, decimal)
+
+
 class _Blocks:
-    """The lines of one selector value, for each distinct answer of the engine, as a %-template of
-    UTF-8 bytes in which %(d)b is the selector value in decimal and %(h)bH in hex (0000H to FFFFH),
-    each given as bytes: formatted once per selector value rather than at each of its four places in
-    each line, which cost more than the rest of the fill."""
+    """The lines of one selector value, for each distinct answer of the engine, as a template.
+
+    A template is (parts, pick): the UTF-8 pieces of the lines with every other slot left for the
+    selector value, and a function that, given (hex, decimal) as bytes, returns the value of each slot
+    in order. The value is formatted once per selector value and the lines joined in one call; a
+    %-template read its format and looked up each of its 24 marks anew for every line.
+    """
 
     def __init__(self, fam, engine, loads, conditions, devices, sel_head, operands, sizes, selop, clock):
         self.fam, self.engine, self.templates, self.sel_head = fam, engine, {}, sel_head
-        pre, post = _escape(dumps_value(dict(sorted(devices.items())))).split(str(_MARKER))
-        self.common = (f'"tags": ["exhaustive"], "assumes": {{"device_sizes": {_escape(dumps_value(sizes))}}}, '
-                       f'"initial": {{"operands": {_escape(dumps_value(operands))}, "devices": {pre}%(d)b{post}}}, ')
-        self.clock = f'"clock": {_escape(dumps_value(clock))}, '
-        self.description = f'"description": "{_escape(selop)} = %(h)bH", '
-        self.names = [(_escape(json.dumps(f"{fam.name}/{name}/exhaustive/"))[:-1], _escape(json.dumps(name)),
-                       _escape(json.dumps(instr["st"])), instr["symbol"],
+        pre, post = dumps_value(dict(sorted(devices.items()))).split(str(_MARKER))
+        self.common = (f'"tags": ["exhaustive"], "assumes": {{"device_sizes": {dumps_value(sizes)}}}, '
+                       f'"initial": {{"operands": {dumps_value(operands)}, "devices": {pre}{_DEC}{post}}}, ')
+        self.clock = f'"clock": {dumps_value(clock)}, '
+        self.description = f'"description": {json.dumps(selop + " = ")[:-1]}{_HEX}H", '
+        self.names = [(json.dumps(f"{fam.name}/{name}/exhaustive/")[:-1], json.dumps(name),
+                       json.dumps(instr["st"]), instr["symbol"],
                        {instr["form"]["clause"], conditions[instr["symbol"]]["clause"]})
                       for name, instr in loads]
-        self.family = _escape(fam.name)
+        self.family = json.dumps(fam.name)
 
     def make(self, key, trace, state, initial, error, step):
         outcome = key[0]
@@ -136,24 +148,25 @@ class _Blocks:
         if state.keys() != initial.mapping.keys():
             raise GeneratorBug(f"engine wrote {sorted(state.keys() - initial.mapping.keys())} not in the initial state")
         # Equal values count as unchanged, as 1 == True.
-        changed = _escape(dumps_value(dict(sorted(state.items() - initial))))
+        changed = dumps_value(dict(sorted(state.items() - initial)))
         result_outcome = ('{"category": "error", "errors": [%s]}' % dumps_value(dict(step=0, **error))) if error \
             else '{"category": "value"}'
-        pre, post = _escape(dumps_value(dict(sorted(state.items())))).split(str(_MARKER))
-        final = f"{pre}%(d)b{post}"
+        pre, post = dumps_value(dict(sorted(state.items()))).split(str(_MARKER))
+        final = f"{pre}{_DEC}{post}"
         clock = self.clock if step else ""
         lines = []
         for vid, name, st, symbol, own in self.names:
             result = "true" if self.engine.contact(symbol, outcome) else "false"
-            clauses = _escape(json.dumps(sorted(self.fam.clause_ref(c) for c in trace | own)))
-            lines.append(f'{{"id": {vid}%(h)bH", "family": "{self.family}", "instruction": {name}, "st": {st}, '
+            clauses = json.dumps(sorted(self.fam.clause_ref(c) for c in trace | own))
+            lines.append(f'{{"id": {vid}{_HEX}H", "family": {self.family}, "instruction": {name}, "st": {st}, '
                          f'{self.description}"clauses": {clauses}, {self.common}'
                          f'"steps": [{{{clock}"expect": {{"devices": {changed}, "result": {result}}}}}], '
-                         f'"final": {{"devices": {final}}}, "outcome": {_escape(result_outcome)}}}\n')
-        template = self.templates[key] = "".join(lines).encode("utf-8")
+                         f'"final": {{"devices": {final}}}, "outcome": {result_outcome}}}\n')
+        first, *marked = "".join(lines).encode("utf-8").split(b"\x00")
+        parts, kinds = [first], []
+        for piece in marked:
+            kinds.append(_KINDS.index(piece[0]))
+            parts += [None, piece[1:]]
+        # Every line has four marks, so there are always several: itemgetter then returns a tuple.
+        template = self.templates[key] = (parts, itemgetter(*kinds))
         return template
-
-
-def _escape(text):
-    """Text to be placed in a %-template as it is."""
-    return text.replace("%", "%%")
