@@ -1,11 +1,14 @@
 """The canonical JSON writer: its texts are json.dumps' with the canonical options, however they are
 put together (one C encoder built once, an object from texts already encoded, a vector's texts
 reused for the CSV)."""
+import csv
+import io
 import json
 
 import pytest
 
 from plcvec.output.canonical import dumps_object, dumps_value, dumps_vector_file, vector_texts
+from plcvec.output.golden import CSV_COLUMNS, csv_export, csv_field
 
 
 def reference(value):
@@ -60,3 +63,35 @@ def test_a_vectors_texts_are_its_values_and_their_parts_encoded():
     body = [f'"{k}": {reference(v)}' for k, v in vector.items()]
     assert lines[4:9] == ["  {" + body[0] + ","] + [f"   {b}," for b in body[1:-1]] + [f"   {body[-1]}}}"]
     assert json.loads(dumps_vector_file(header, [vector])) == dict(header, vectors=[vector])
+
+
+CSV_FIELDS = ["plain", "", "a,b", 'say "hi"', '""', '{"D0": 1, "D1": 2}', "two\nlines", "crlf\r\n",
+              " leading and trailing ", "semi;colon", "tab\there", "é,\"ü\"", ",", '"', "\n"]
+
+
+@pytest.mark.parametrize("text", CSV_FIELDS)
+def test_a_csv_field_is_quoted_as_the_csv_module_quotes_it(text):
+    out = io.StringIO()
+    csv.writer(out, lineterminator="\n").writerow([text, "x"])
+    assert csv_field(text) + ",x\n" == out.getvalue()
+
+
+def test_a_csv_field_with_a_lone_carriage_return_is_quoted():
+    # RFC 4180 quotes any line break; csv.writer with "\n" ending its rows leaves a lone "\r" bare
+    # on some Python versions, which readers then take for the end of a row.
+    assert csv_field("cr\rhere") == '"cr\rhere"'
+    assert next(csv.reader(io.StringIO(csv_field("cr\rhere") + ",x\n"))) == ["cr\rhere", "x"]
+
+
+def test_the_csv_export_reads_back_as_the_vectors_values():
+    vector = {"id": "f/I/a,b", "family": "f", "instruction": 'LD"=DT', "tags": ["x", "y"],
+              "outcome": {"category": "value"}, "clauses": ["c1", "c2"],
+              "initial": {"operands": {"s1": {"device": "D0"}}, "devices": {"D0": 1, "D1": 2}},
+              "steps": [{"expect": {"devices": {"D1": 3}, "result": True}}], "final": {"devices": {"D0": 1, "D1": 3}}}
+    text = csv_export([vector, vector])
+    rows = list(csv.reader(io.StringIO(text)))
+    assert rows[0] == list(CSV_COLUMNS)
+    assert rows[1] == rows[2] == [
+        "f/I/a,b", "f", 'LD"=DT', "x y", "value", "c1 c2", reference(vector["initial"]["operands"]),
+        reference(vector["initial"]["devices"]), reference(vector["steps"]), reference(vector["final"]["devices"])]
+    assert text.endswith("\n") and not text.endswith("\n\n")
