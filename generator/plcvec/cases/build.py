@@ -100,23 +100,27 @@ class VectorBuilder:
         sink.clear()
         self.executions += 1
         state = dict(devices)
+        # The devices a step's expectation and the final state report, in their order: the state's
+        # keys never change during a step (checked below), only a step's "set" may add one.
+        shown = _shown(state, scratch)
         ctx = {"device_sizes": self.sizes}
         trace, expects, errors = set(), [], []
         for index, step in enumerate(steps):
             if "set" in step:
                 state.update(step["set"])
+                if len(state) != len(devices):
+                    shown = _shown(state, scratch)
             before = dict(state)
             result = engine.execute(instr, operands, state, step, ctx, trace)
             if self.classifier is not None:
                 self._cells_seen.add(self._cell(index, instr, operands, before, step, ctx["exercised"][-1]))
             if len(state) != len(before):
                 raise GeneratorBug(f"engine wrote {sorted(set(state) - set(before))} not in the initial state")
-            changed = sorted([k for k, v in state.items() if v != before[k] and k not in scratch])
-            devices_changed = {k: state[k] for k in changed}
+            devices_changed = {k: state[k] for k in shown if state[k] != before[k]}
             expects.append({"devices": devices_changed} if result is None else {"result": result, "devices": devices_changed})
             if "error" in ctx:
                 errors.append(dict(step=index, **ctx.pop("error")))
-        final = {k: state[k] for k in sorted(state) if k not in scratch} if scratch else dict(sorted(state.items()))
+        final = {k: state[k] for k in shown}
         outcome = {"category": "error", "errors": errors} if errors else {"category": "value"}
         trace.discard(None)
         return Run(expects, final, outcome, trace, frozenset(sink) | at_build)
@@ -252,6 +256,11 @@ class VectorBuilder:
         cited = {self.fam.doc["operands"][name]["clause"] for name in operands}
         cited |= {instr["naming_clause"]} if "naming_clause" in instr else set()
         return cited | self.every_vector | {self.by_tag[t] for t in tags if t in self.by_tag}
+
+
+def _shown(state, scratch):
+    """The devices of `state` a vector reports (all but the scratch ones), sorted."""
+    return [k for k in sorted(state) if k not in scratch]
 
 
 def _errors_in_code(operands):
