@@ -7,6 +7,7 @@ import sys
 from pathlib import Path
 
 from plcvec.bench import Tree, export_revision, golden_in_process
+from plcvec.output.workers import usable_cores
 
 from conftest import REPO
 
@@ -27,6 +28,9 @@ def test_the_baseline_is_measured_with_its_own_code(tmp_path, monkeypatch):
                               "an import")
     for path in out.split():
         assert Path(path).is_relative_to(tree.root), path
-    ((label, vectors, seconds, cpu, rss),) = golden_in_process(tree, tmp_path)
-    assert vectors == json.loads((tree.root / "vectors" / "manifest.json").read_text())["total"]
-    assert seconds > 0 and cpu > 0 and rss is None
+    rows = golden_in_process(tree, tmp_path, processes=1)
+    assert [row[0] for row in rows] == ["golden set, in process, 1 process"] + (
+        [f"golden set, in process, {usable_cores()} processes"] if usable_cores() > 1 else [])
+    for label, vectors, seconds, cpu, rss in rows:
+        assert vectors == json.loads((tree.root / "vectors" / "manifest.json").read_text())["total"]
+        assert seconds > 0 and cpu > 0 and rss is None

@@ -12,3 +12,8 @@ class SpecError(PlcvecError):
         self.path, self.line, self.message = str(path), line, message
         where = f"{self.path}:{line}" if line else self.path
         super().__init__(f"{where}: {message}")
+
+    def __reduce__(self):
+        # Rebuilt from its parts, not from the one message Exception keeps (a worker process that
+        # meets it sends it to the parent pickled).
+        return SpecError, (self.path, self.line, self.message)

@@ -18,6 +18,7 @@ import json
 from plcvec.errors import PlcvecError
 from plcvec.output import diff
 from plcvec.output.golden import build_golden
+from plcvec.output.workers import usable_cores
 from plcvec.output.jsonl import family_jsonl
 
 DOCS = ("CONTRACT.md", "PROTOCOL.md")
@@ -44,7 +45,7 @@ def root_name(version):
 
 def golden_checked(families, vectors_dir):
     """The golden files the spec generates, after checking the vector folder holds exactly them."""
-    files, by_family = build_golden(families)
+    files, by_family = build_golden(families, jobs=usable_cores())
     differ = [name for name, text in sorted(files.items())
               if not (vectors_dir / name).is_file() or (vectors_dir / name).read_text(encoding="utf-8") != text]
     if differ:

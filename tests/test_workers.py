@@ -1,0 +1,118 @@
+"""The golden set built in worker processes: the same bytes as one process gives, results in the
+families' order whichever worker finishes first, and a worker's failure reported, not waited on."""
+import multiprocessing
+import os
+import time
+
+import pytest
+
+from plcvec.errors import PlcvecError, SpecError
+from plcvec.output import workers
+from plcvec.output.golden import build_golden, family_cost
+from plcvec.output.workers import map_families
+
+pytestmark = pytest.mark.skipif(not workers.can_fork(), reason="worker processes are forked on Linux only")
+
+
+class Fam:
+    """Stands in for a spec family: map_families only reads its name."""
+
+    def __init__(self, name):
+        self.name = name
+
+
+FAMS = [Fam(f"f{k}") for k in range(5)]
+
+
+def assert_no_worker_left():
+    """Every worker stopped and reaped (a worker that has just closed its end of the pipes may still
+    be exiting for a moment: wait for it, within a bound)."""
+    deadline = time.monotonic() + 10
+    while multiprocessing.active_children() and time.monotonic() < deadline:
+        time.sleep(0.02)
+    assert multiprocessing.active_children() == []
+
+
+def test_two_jobs_give_the_same_files_and_vectors_as_one(families, generated):
+    files, by_family = build_golden(list(families.values()), jobs=2)
+    one_files, one_by_family = generated
+    assert files == one_files   # every file, byte for byte: the manifest, the CSV and each family's
+    assert by_family == one_by_family
+
+
+def test_results_come_in_the_families_order_whatever_order_the_work_is_handed_out():
+    def slow_first(fam):
+        time.sleep(0.2 if fam.name == "f0" else 0)   # f0 finishes last
+        return fam.name, os.getpid()
+
+    results = map_families(slow_first, FAMS, 3, cost=lambda fam: -int(fam.name[1:]))   # f4 handed out first
+    assert [name for name, _ in results] == [f.name for f in FAMS]
+    assert os.getpid() not in {pid for _, pid in results}   # worked out in other processes
+    assert_no_worker_left()
+
+
+def test_one_job_works_in_this_process():
+    assert map_families(lambda fam: os.getpid(), FAMS, 1) == [os.getpid()] * len(FAMS)
+    assert map_families(lambda fam: os.getpid(), FAMS[:1], 4) == [os.getpid()]   # one family: no worker
+
+
+def test_a_workers_error_is_raised_here_as_it_was_raised_there():
+    def fails_on_f3(fam):
+        if fam.name == "f3":
+            raise SpecError("spec/f3.yaml", 12, "something the user wrote")
+        return fam.name
+
+    with pytest.raises(SpecError) as caught:
+        map_families(fails_on_f3, FAMS, 2)
+    assert (caught.value.path, caught.value.line, str(caught.value)) == (
+        "spec/f3.yaml", 12, "spec/f3.yaml:12: something the user wrote")
+    assert_no_worker_left()
+
+
+def test_a_worker_that_dies_is_reported_with_its_family():
+    def dies_on_f2(fam):
+        if fam.name == "f2":
+            os._exit(9)
+        return fam.name
+
+    with pytest.raises(PlcvecError, match=r"worker process building f2 died.*--jobs 1"):
+        map_families(dies_on_f2, FAMS, 2)
+    assert_no_worker_left()
+
+
+def test_a_worker_that_hangs_is_given_up_on_and_stopped(monkeypatch):
+    monkeypatch.setattr(workers, "FAMILY_TIMEOUT_S", 0.5)
+
+    def hangs_on_f1(fam):
+        if fam.name == "f1":
+            time.sleep(60)
+        return fam.name
+
+    start = time.monotonic()
+    with pytest.raises(PlcvecError, match=r"more than 0.5 s over f1"):
+        map_families(hangs_on_f1, FAMS, 2)
+    assert time.monotonic() - start < 10
+    assert_no_worker_left()   # the hanging worker stopped, not left to sleep on
+
+
+def test_the_costliest_family_is_the_one_with_most_instructions_and_readings(families):
+    # CP1E: 18 instructions and six interpretations (144 combinations), the largest family here.
+    assert max(families.values(), key=family_cost).name == "cp1e-time-compare"
+
+
+def test_generate_with_jobs_writes_the_files_one_process_gives(tmp_path, generated, capsys):
+    from plcvec import cli
+
+    assert cli.main(["generate", "--out", str(tmp_path), "--jobs", "3"]) == 0
+    files, _ = generated
+    assert {p.name: p.read_text(encoding="utf-8") for p in tmp_path.iterdir()} == files
+
+
+@pytest.mark.parametrize("jobs", ["0", "-2", "two", "1.5"])
+def test_generate_refuses_a_number_of_jobs_that_is_not_one_or_more(jobs, capsys):
+    from plcvec import cli
+
+    with pytest.raises(SystemExit) as caught:
+        cli.main(["generate", "--check", "--jobs", jobs])
+    assert caught.value.code == 2
+    assert f"argument --jobs/-j: {jobs!r} is not a number of processes" in capsys.readouterr().err
