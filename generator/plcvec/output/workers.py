@@ -5,7 +5,9 @@ The result is the list of each family's result in the families' order, whichever
 whenever it finished, so the output is the same bytes as one process gives. Workers are forked (they
 start with the spec already loaded and the code already imported, and nothing but the family's index
 is sent to them); where the platform does not fork safely (anything but Linux), the work is done in
-this process, one family after another.
+this process, one family after another. A worker runs only the build and the executor's own loop, so
+it is forked even from a process with other threads (a pytest-xdist worker): it takes none of the
+locks those threads could hold at the fork.
 """
 import gc
 import os
@@ -47,6 +49,7 @@ def map_families(function, families, jobs, cost=None):
     # Imported only when there are workers to start: the command line's other uses do without them.
     import multiprocessing
     from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures import TimeoutError as WorkerTimeout   # not the built-in TimeoutError before 3.11
     from concurrent.futures.process import BrokenProcessPool
 
     order = sorted(range(len(families)), key=lambda k: -cost(families[k])) if cost else range(len(families))
@@ -64,7 +67,7 @@ def map_families(function, families, jobs, cost=None):
             except BrokenProcessPool:
                 raise PlcvecError(f"a worker process building {fam.name} died (out of memory? killed?); "
                                   "try again with --jobs 1") from None
-            except TimeoutError:
+            except WorkerTimeout:
                 raise PlcvecError(f"a worker process took more than {FAMILY_TIMEOUT_S} s over {fam.name}; "
                                   "try again with --jobs 1") from None
         executor.shutdown(wait=True)   # the workers reaped, so their CPU time is this process's children's
