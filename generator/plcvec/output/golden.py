@@ -1,7 +1,6 @@
 """The committed golden set: one JSON file per family, a manifest, and a CSV export."""
 import gc
 import hashlib
-import io
 import json
 from collections import Counter
 from contextlib import contextmanager
@@ -95,8 +94,8 @@ def _collector_paused():
 
     The build allocates hundreds of thousands of short-lived dicts and lists and keeps every vector
     it makes, so the collector would pass over the same live objects thousands of times (a seventh
-    of the build's time) to find a few hundred objects of reference cycles (closures), freed by its
-    first pass after the build.
+    of the build's time) to find a few hundred objects of reference cycles (closures), freed by a
+    later pass.
 
     What the build made is then moved to the oldest generation without a pass over it (freeze, then
     unfreeze): enabled with all of it still in the youngest, the collector's next allocation would
