@@ -7,7 +7,7 @@ from pathlib import Path
 from plcvec import SCHEMA_VERSION, __version__
 from plcvec.errors import PlcvecError
 from plcvec.output.drift import report_drift
-from plcvec.output.workers import usable_cores
+from plcvec.output.workers import add_jobs_option
 
 # One line per stage command module (see build_parser).
 _STAGE_COMMANDS = [
@@ -141,17 +141,6 @@ def version_text():
     return "\n".join(lines)
 
 
-def _jobs(text):
-    """--jobs N: a whole number of worker processes, at least 1."""
-    try:
-        jobs = int(text)
-    except ValueError:
-        jobs = 0
-    if jobs < 1:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number of processes (a whole number, 1 or more)")
-    return jobs
-
-
 def build_parser():
     from plcvec.spec.loader import default_spec_help
     from plcvec_verify.locate import checkout
@@ -167,9 +156,7 @@ def build_parser():
     g.add_argument("--out", help="output folder (default: " + (f"{root / 'vectors'}, the checkout's" if root else
                    "none outside a checkout: name one; with --check, the vectors installed with plcvec") + ")")
     g.add_argument("--check", action="store_true", help="write nothing; exit 1 and name the files that differ")
-    g.add_argument("--jobs", "-j", type=_jobs, default=usable_cores(), metavar="N",
-                   help=f"build the families in N worker processes (default: {usable_cores()}, the cores usable here; "
-                        "1: in this process); the files are the same bytes whatever N is")
+    add_jobs_option(g)
     g.set_defaults(func=_generate)
 
     e = sub.add_parser("exhaustive", parents=[spec], help="stream every selector value of every condition as JSON Lines")

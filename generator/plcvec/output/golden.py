@@ -27,6 +27,13 @@ def family_vectors(fam, cells=None):
     return sorted(vectors, key=lambda v: v["id"])
 
 
+def vectors_and_cells(fam):
+    """(family_vectors(fam), {vector id: the coverage-model cells it exercises}): what the review needs
+    of one family."""
+    cells = {}
+    return family_vectors(fam, cells), cells
+
+
 def family_header(fam, vectors):
     used = sorted({t for v in vectors for t in v["tags"]})
     return {
@@ -89,7 +96,7 @@ def csv_export(all_vectors, texts=None):
 
 
 @contextmanager
-def _collector_paused():
+def collector_paused():
     """The cyclic garbage collector held off while a golden set is built.
 
     The build allocates hundreds of thousands of short-lived dicts and lists and keeps every vector
@@ -139,7 +146,7 @@ def build_golden(families, jobs=1):
     With `jobs` above 1, the families are built in that many worker processes (plcvec.output.workers);
     the files are the same bytes whatever `jobs` is.
     """
-    with _collector_paused():
+    with collector_paused():
         return _build_golden(families, map_families(family_output, families, jobs, family_cost))
 
 

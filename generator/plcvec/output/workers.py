@@ -30,6 +30,26 @@ def usable_cores():
         return os.cpu_count() or 1
 
 
+def add_jobs_option(parser):
+    """--jobs N / -j N on a command that builds the families (default: the usable cores)."""
+    parser.add_argument("--jobs", "-j", type=_jobs, default=usable_cores(), metavar="N",
+                        help=f"build the families in N worker processes (default: {usable_cores()}, the cores usable "
+                             "here; 1: in this process); the output is the same bytes whatever N is")
+
+
+def _jobs(text):
+    """--jobs N: a whole number of worker processes, at least 1."""
+    import argparse
+
+    try:
+        jobs = int(text)
+    except ValueError:
+        jobs = 0
+    if jobs < 1:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number of processes (a whole number, 1 or more)")
+    return jobs
+
+
 def can_fork():
     return sys.platform.startswith("linux")
 

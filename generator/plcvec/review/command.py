@@ -3,6 +3,7 @@ import sys
 from pathlib import Path
 
 from plcvec.errors import PlcvecError
+from plcvec.output.workers import add_jobs_option
 
 FILES = ("review.html", "review.md")
 
@@ -28,12 +29,14 @@ def register(sub, spec_parent):
                    help="exit 1 on a missing quote, an uncovered clause, a combination of the coverage model no "
                         "vector exercises, or an audit disagreement no erratum records")
     r.add_argument("--no-write", action="store_true", help="with --check: only check, write no report")
+    add_jobs_option(r)
     r.set_defaults(func=run)
 
 
 def run(args):
     from plcvec.output.atomic import write_atomic
-    from plcvec.output.golden import family_vectors
+    from plcvec.output.golden import collector_paused, family_cost, vectors_and_cells
+    from plcvec.output.workers import map_families
     from plcvec.review.model import build_model, run_audit
     from plcvec.review.quotes import check_quotes, read_manual
     from plcvec.review.render import render
@@ -47,8 +50,10 @@ def run(args):
     quotes = check_quotes(families, manual) if manual is not None else None
     # The vectors this spec generates, built in process (not read from vectors/), so the review always
     # describes the spec given by --spec-dir; the files' serialization is not needed here.
-    cells = {fam.name: {} for fam in families}
-    vectors = {fam.name: family_vectors(fam, cells[fam.name]) for fam in families}
+    with collector_paused():
+        built = map_families(vectors_and_cells, families, args.jobs, family_cost)
+    vectors = {fam.name: family_vectors for fam, (family_vectors, _) in zip(families, built)}
+    cells = {fam.name: family_cells for fam, (_, family_cells) in zip(families, built)}
     model = build_model(families, vectors, quotes=quotes, audit=run_audit(families), cells=cells)
     out = Path(args.out)
     if not args.no_write:
