@@ -27,7 +27,7 @@ def _generate(args):
     from plcvec.spec.loader import load_spec
 
     families = load_spec(args.spec_dir)
-    files, _ = build_golden(families, jobs=args.jobs)
+    files, _ = build_golden(families, jobs=args.jobs, keep_vectors=False)
     out = _vectors_out(args)
     if args.check:
         return _check(out, files)

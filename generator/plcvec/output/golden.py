@@ -122,13 +122,22 @@ def collector_paused():
             gc.enable()
 
 
-def family_output(fam):
-    """(the family's vectors, the text of its file, its CSV rows): what the golden set needs of one
-    family, worked out in one process (see build_golden)."""
+def family_output(fam, keep_vectors=True):
+    """(the family's vectors, the text of its file, its CSV rows, its entry in the manifest): what the
+    golden set needs of one family, worked out in one process (see build_golden). Without
+    `keep_vectors`, None for the vectors: a worker then sends back text alone."""
     vectors = family_vectors(fam)
     # Each value's text, encoded once for the family's file and the CSV.
     texts = [vector_texts(v) for v in vectors]
-    return vectors, dumps_vector_file(family_header(fam, vectors), vectors, texts), csv_rows(vectors, texts)
+    text = dumps_vector_file(family_header(fam, vectors), vectors, texts)
+    entry = {
+        "file": f"{fam.name}.json",
+        "sha256": hashlib.sha256(text.encode()).hexdigest(),
+        "count": len(vectors),
+        "tags": dict(sorted(Counter(t for v in vectors for t in v["tags"]).items())),
+        "outcomes": dict(sorted(Counter(v["outcome"]["category"] for v in vectors).items())),
+    }
+    return vectors if keep_vectors else None, text, csv_rows(vectors, texts), entry
 
 
 def family_cost(fam):
@@ -140,38 +149,31 @@ def family_cost(fam):
     return len(instruction_list(fam)) * combinations
 
 
-def build_golden(families, jobs=1):
-    """{relative path: text} for every file of the golden set, and the vectors by family.
+def build_golden(families, jobs=1, keep_vectors=True):
+    """{relative path: text} for every file of the golden set, and the vectors by family (None without
+    `keep_vectors`, for a caller that wants the files alone).
 
     With `jobs` above 1, the families are built in that many worker processes (plcvec.output.workers);
     the files are the same bytes whatever `jobs` is.
     """
     with collector_paused():
-        return _build_golden(families, map_families(family_output, families, jobs, family_cost))
+        outputs = map_families(lambda fam: family_output(fam, keep_vectors), families, jobs, family_cost)
+        return _build_golden(families, outputs), ({fam.name: out[0] for fam, out in zip(families, outputs)}
+                                                  if keep_vectors else None)
 
 
 def _build_golden(families, outputs):
-    files, by_family = {}, {}
-    for fam, (vectors, text, _) in zip(families, outputs):
-        by_family[fam.name] = vectors
-        files[f"{fam.name}.json"] = text
-    everything = [v for fam in families for v in by_family[fam.name]]
-    files["vectors.csv"] = CSV_HEADER + "".join(rows for _, _, rows in outputs)
+    """{relative path: text} of the golden set from each family's family_output()."""
+    files = {f"{fam.name}.json": text for fam, (_, text, _, _) in zip(families, outputs)}
+    files["vectors.csv"] = CSV_HEADER + "".join(rows for _, _, rows, _ in outputs)
     manifest = {
         "generated": GENERATED_NOTE,
         "schema_version": SCHEMA_VERSION,
         "generator_version": __version__,
         "spec_sha256": spec_hash(families),
-        "total": len(everything),
-        "families": {
-            fam.name: {
-                "file": f"{fam.name}.json",
-                "sha256": hashlib.sha256(files[f"{fam.name}.json"].encode()).hexdigest(),
-                "count": len(by_family[fam.name]),
-                "tags": dict(sorted(Counter(t for v in by_family[fam.name] for t in v["tags"]).items())),
-                "outcomes": dict(sorted(Counter(v["outcome"]["category"] for v in by_family[fam.name]).items())),
-            } for fam in families},
+        "total": sum(entry["count"] for _, _, _, entry in outputs),
+        "families": {fam.name: entry for fam, (_, _, _, entry) in zip(families, outputs)},
         "csv": {"file": "vectors.csv", "sha256": hashlib.sha256(files["vectors.csv"].encode()).hexdigest()},
     }
     files["manifest.json"] = json.dumps(manifest, indent=1, sort_keys=True) + "\n"
-    return files, by_family
+    return files
