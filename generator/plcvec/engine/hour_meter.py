@@ -61,15 +61,13 @@ class HourMeter:
             reached = False
         if reached:
             trace.add(self.doc["data"]["reach_clause"])
-        if self.knobs["output_release"] == "latched":
-            if reached and not state[d2]:
-                state[d2] = True
-                ctx["wrapped_since_on"] = False
-        else:
-            keep = state[d2] and ctx.get("wrapped_since_on", False) and self.doc["wrap"]["output"] == "keep"
-            if reached and not state[d2]:
-                ctx["wrapped_since_on"] = False
-            state[d2] = reached or keep
+        if reached and not state[d2]:
+            state[d2] = True
+            ctx["wrapped_since_on"] = False
+        elif not reached and state[d2] and self.knobs["output_release"] != "latched":
+            # Whether the output is latched decides something only when it is on below the preset, so
+            # only then is it asked: on when the count wrapped since it turned on and the spec keeps it.
+            state[d2] = ctx.get("wrapped_since_on", False) and self.doc["wrap"]["output"] == "keep"
         return None
 
     def _preset(self, operand, state, trace):

@@ -116,11 +116,17 @@ class MaskedCompare:
         compared_ops = [first] if clock_mode else [first, second]
 
         if self._range_check:
-            checked = compared_ops + ([second] if clock_mode and self._device_range["s2_in_clock_mode"] else [])
-            for op in checked:
-                if not in_device_range(operands[op]["device"], self.words[op], ctx["device_sizes"]):
+            sizes = ctx["device_sizes"]
+            for op in compared_ops:
+                if not in_device_range(operands[op]["device"], self.words[op], sizes):
                     trace.add(self._range_clause)
                     raise _Error
+            # In clock mode the second operand is not compared; whether its range is checked all the
+            # same decides something only when it runs past its device, so only then is it asked.
+            if (clock_mode and not in_device_range(operands[second]["device"], self.words[second], sizes)
+                    and self._device_range["s2_in_clock_mode"]):
+                trace.add(self._range_clause)
+                raise _Error
         # Whether any field of the compared operands is out of range or not a valid encoding comes
         # with the values (the clock's are not checked).
         read = self.codec.read_checked
