@@ -71,6 +71,8 @@ class VectorBuilder:
         self.classifier = CLASSIFIERS[fam.kind](fam.doc, self.sizes) if self.model else None
         self.cells = {}
         self._cell_memo, self._cells_seen = {}, set()
+        self._refs = _Memo(fam.clause_ref)   # clause id -> the id a vector cites (a few dozen, cited by thousands)
+        self._shown_of = (None, None, None)  # (devices, scratch, _shown()) of the vector being built
 
     def engine(self, choices):
         """The engine under `choices` (interpretation id -> alternative id), as plain as it can be."""
@@ -101,8 +103,11 @@ class VectorBuilder:
         self.executions += 1
         state = dict(devices)
         # The devices a step's expectation and the final state report, in their order: the state's
-        # keys never change during a step (checked below), only a step's "set" may add one.
-        shown = _shown(state, scratch)
+        # keys never change during a step (checked below), only a step's "set" may add one. Listed
+        # once per vector: every execution of it starts from the same devices.
+        known_devices, known_scratch, shown = self._shown_of
+        if devices is not known_devices or scratch is not known_scratch:
+            shown = _shown(state, scratch)
         ctx = {"device_sizes": self.sizes}
         trace, expects, errors = set(), [], []
         for index, step in enumerate(steps):
@@ -171,7 +176,11 @@ class VectorBuilder:
         for error in _errors_in_code(operands):
             raise GeneratorBug(f"{vid}: {error}")
         self._cell_memo, self._cells_seen = {}, set()
-        expects, final, outcome, trace, touched, alternatives = self.expectations(instr, operands, devices, steps, scratch)
+        self._shown_of = (devices, scratch, _shown(devices, scratch))
+        try:
+            expects, final, outcome, trace, touched, alternatives = self.expectations(instr, operands, devices, steps, scratch)
+        finally:
+            self._shown_of = (None, None, None)
         # What the vector exercises for the coverage model, under every reading it carries: the runs
         # cover every behaviour (a combination not run reads nothing that would change it).
         self.cells[vid] = frozenset(self._cells_seen)
@@ -186,7 +195,7 @@ class VectorBuilder:
             "st": instr.get("st", instruction),
             "description": description,
             "tags": sorted(set(tags)),
-            "clauses": sorted(map(self.fam.clause_ref, trace.union(clauses, self._cited(instr, operands, tags)))),
+            "clauses": sorted(map(self._refs.__getitem__, trace.union(clauses, self._cited(instr, operands, tags)))),
             "assumes": {"device_sizes": self.sizes},
             "initial": {"operands": operands, "devices": dict(sorted(devices.items()))},
             "steps": [dict({k: s[k] for k in STEP_INPUTS if k in s}, expect=e) for s, e in zip(steps, expects)],
@@ -256,6 +265,20 @@ class VectorBuilder:
         cited = {self.fam.doc["operands"][name]["clause"] for name in operands}
         cited |= {instr["naming_clause"]} if "naming_clause" in instr else set()
         return cited | self.every_vector | {self.by_tag[t] for t in tags if t in self.by_tag}
+
+
+class _Memo(dict):
+    """function(key), worked out the first time a key is asked for."""
+
+    __slots__ = ("function",)
+
+    def __init__(self, function):
+        super().__init__()
+        self.function = function
+
+    def __missing__(self, key):
+        value = self[key] = self.function(key)
+        return value
 
 
 def _shown(state, scratch):
