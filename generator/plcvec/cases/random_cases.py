@@ -27,8 +27,13 @@ MAX_SCANS = 6
 SHORT_MS, LONG_MS = 2500, 10 ** 7
 
 
+# json.dumps(value, sort_keys=True), with its encoder made once: json.dumps makes a new one for each
+# call given any option, and every draw and every random vector's id is encoded.
+_encode = json.JSONEncoder(sort_keys=True).encode
+
+
 def key_of(value):
-    return hashlib.sha256(json.dumps(value, sort_keys=True).encode()).hexdigest()[:12]
+    return hashlib.sha256(_encode(value).encode()).hexdigest()[:12]
 
 
 def _collect(draw_one, seed_value, count):
@@ -37,7 +42,7 @@ def _collect(draw_one, seed_value, count):
     drawn, seen = [], set()
     for _ in range(count):
         value = draw_one(rng)
-        key = json.dumps(value, sort_keys=True)
+        key = _encode(value)
         if key not in seen:
             seen.add(key)
             drawn.append(value)
