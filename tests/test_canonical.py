@@ -95,3 +95,15 @@ def test_the_csv_export_reads_back_as_the_vectors_values():
         "f/I/a,b", "f", 'LD"=DT', "x y", "value", "c1 c2", reference(vector["initial"]["operands"]),
         reference(vector["initial"]["devices"]), reference(vector["steps"]), reference(vector["final"]["devices"])]
     assert text.endswith("\n") and not text.endswith("\n\n")
+
+
+def test_a_vectors_texts_are_the_same_without_the_c_encoder(monkeypatch):
+    from plcvec.output import canonical
+
+    vector = {"id": "f/I/ü", "initial": {"scratch": ["D9"], "operands": {"s1": {"constant": 3}}, "devices": {"D1": 1, "D0": 0}},
+              "steps": [{"set": {"D1": 2}, "expect": {"result": True, "devices": {}}}], "final": {"devices": {"D0": 0}},
+              "outcome": {"category": "value"}, "tags": ["é"], "count": 7, "none": None}
+    with_c = vector_texts(vector)
+    monkeypatch.setattr(canonical, "_pieces", lambda value, _level: (canonical._ENCODER.encode(value),))
+    assert vector_texts(vector) == with_c
+    assert with_c["initial"] == reference(vector["initial"]) and with_c["count"] == "7" and with_c["none"] == "null"
