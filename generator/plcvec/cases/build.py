@@ -71,6 +71,7 @@ class VectorBuilder:
         self.classifier = CLASSIFIERS[fam.kind](fam.doc, self.sizes) if self.model else None
         self.cells = {}
         self._cell_memo, self._cells_seen = {}, set()
+        self._cited_memo = {}
         self._refs = _Memo(fam.clause_ref)   # clause id -> the id a vector cites (a few dozen, cited by thousands)
         self._shown_of = (None, None, None)  # (devices, scratch, _shown()) of the vector being built
 
@@ -261,7 +262,15 @@ class VectorBuilder:
 
     def _cited(self, instr, operands, tags):
         """Clauses a vector exercises by what it is, whatever the engine does with it: the clause of each
-        operand it uses, the naming of its instruction, and the spec's coverage section."""
+        operand it uses, the naming of its instruction, and the spec's coverage section (the same few
+        sets for thousands of vectors: worked out once per instruction, operand names and tags)."""
+        key = (instr["name"], tuple(operands), tuple(tags))
+        cited = self._cited_memo.get(key)
+        if cited is None:
+            cited = self._cited_memo[key] = frozenset(self._cite(instr, operands, tags))
+        return cited
+
+    def _cite(self, instr, operands, tags):
         cited = {self.fam.doc["operands"][name]["clause"] for name in operands}
         cited |= {instr["naming_clause"]} if "naming_clause" in instr else set()
         return cited | self.every_vector | {self.by_tag[t] for t in tags if t in self.by_tag}
