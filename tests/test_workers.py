@@ -1,7 +1,7 @@
 """The golden set built in worker processes: the same bytes as one process gives, results in the
 families' order whichever worker finishes first, and a worker's failure reported, not waited on."""
-import multiprocessing
 import os
+import signal
 import time
 
 import pytest
@@ -24,13 +24,26 @@ class Fam:
 FAMS = [Fam(f"f{k}") for k in range(5)]
 
 
-def assert_no_worker_left():
-    """Every worker stopped and reaped (a worker that has just closed its end of the pipes may still
-    be exiting for a moment: wait for it, within a bound)."""
-    deadline = time.monotonic() + 10
-    while multiprocessing.active_children() and time.monotonic() < deadline:
-        time.sleep(0.02)
-    assert multiprocessing.active_children() == []
+def noting_pid(folder, function):
+    """`function`, run by a worker that first leaves its process id in `folder`."""
+    def noted(fam):
+        (folder / f"{fam.name}.tmp").write_text(str(os.getpid()))
+        os.replace(folder / f"{fam.name}.tmp", folder / f"{fam.name}.pid")   # never read half-written
+        return function(fam)
+    return noted
+
+
+def worker_pids(folder):
+    return [int(p.read_text()) for p in sorted(folder.glob("*.pid"))]
+
+
+def assert_no_worker_left(folder):
+    """Every worker that started is gone: exited or killed, and reaped (a zombie would still answer)."""
+    pids = worker_pids(folder)
+    assert pids and os.getpid() not in pids
+    for pid in pids:
+        with pytest.raises(ProcessLookupError):
+            os.kill(pid, 0)
 
 
 def test_two_jobs_give_the_same_files_and_vectors_as_one(families, generated):
@@ -42,15 +55,16 @@ def test_two_jobs_give_the_same_files_and_vectors_as_one(families, generated):
     assert build_golden(list(families.values()), jobs=2, keep_vectors=False) == (one_files, None)
 
 
-def test_results_come_in_the_families_order_whatever_order_the_work_is_handed_out():
+def test_results_come_in_the_families_order_whatever_order_the_work_is_handed_out(tmp_path):
     def slow_first(fam):
         time.sleep(0.2 if fam.name == "f0" else 0)   # f0 finishes last
         return fam.name, os.getpid()
 
-    results = map_families(slow_first, FAMS, 3, cost=lambda fam: -int(fam.name[1:]))   # f4 handed out first
+    results = map_families(noting_pid(tmp_path, slow_first), FAMS, 3,
+                           cost=lambda fam: -int(fam.name[1:]))   # f4 handed out first
     assert [name for name, _ in results] == [f.name for f in FAMS]
     assert os.getpid() not in {pid for _, pid in results}   # worked out in other processes
-    assert_no_worker_left()
+    assert_no_worker_left(tmp_path)
 
 
 def test_one_job_works_in_this_process():
@@ -58,31 +72,32 @@ def test_one_job_works_in_this_process():
     assert map_families(lambda fam: os.getpid(), FAMS[:1], 4) == [os.getpid()]   # one family: no worker
 
 
-def test_a_workers_error_is_raised_here_as_it_was_raised_there():
+def test_a_workers_error_is_raised_here_as_it_was_raised_there(tmp_path):
     def fails_on_f3(fam):
         if fam.name == "f3":
             raise SpecError("spec/f3.yaml", 12, "something the user wrote")
+        time.sleep(0.3 if fam.name == "f4" else 0)   # still at work when f3 fails
         return fam.name
 
     with pytest.raises(SpecError) as caught:
-        map_families(fails_on_f3, FAMS, 2)
+        map_families(noting_pid(tmp_path, fails_on_f3), FAMS, 2)
     assert (caught.value.path, caught.value.line, str(caught.value)) == (
         "spec/f3.yaml", 12, "spec/f3.yaml:12: something the user wrote")
-    assert_no_worker_left()
+    assert_no_worker_left(tmp_path)
 
 
-def test_a_worker_that_dies_is_reported_with_its_family():
+def test_a_worker_that_dies_is_reported_with_its_family(tmp_path):
     def dies_on_f2(fam):
         if fam.name == "f2":
             os._exit(9)
         return fam.name
 
-    with pytest.raises(PlcvecError, match=r"worker process building f2 died.*--jobs 1"):
-        map_families(dies_on_f2, FAMS, 2)
-    assert_no_worker_left()
+    with pytest.raises(PlcvecError, match=r"worker process building f2 died \(exit 9; .*--jobs 1"):
+        map_families(noting_pid(tmp_path, dies_on_f2), FAMS, 2)
+    assert_no_worker_left(tmp_path)
 
 
-def test_a_worker_that_hangs_is_given_up_on_and_stopped(monkeypatch):
+def test_a_worker_that_hangs_is_given_up_on_and_stopped(monkeypatch, tmp_path):
     monkeypatch.setattr(workers, "FAMILY_TIMEOUT_S", 0.5)
 
     def hangs_on_f1(fam):
@@ -92,9 +107,9 @@ def test_a_worker_that_hangs_is_given_up_on_and_stopped(monkeypatch):
 
     start = time.monotonic()
     with pytest.raises(PlcvecError, match=r"more than 0.5 s over f1"):
-        map_families(hangs_on_f1, FAMS, 2)
+        map_families(noting_pid(tmp_path, hangs_on_f1), FAMS, 2)
     assert time.monotonic() - start < 10
-    assert_no_worker_left()   # the hanging worker stopped, not left to sleep on
+    assert_no_worker_left(tmp_path)   # the hanging worker killed, not left to sleep on
 
 
 def test_the_costliest_family_is_the_one_with_most_instructions_and_readings(families):
@@ -118,3 +133,43 @@ def test_generate_refuses_a_number_of_jobs_that_is_not_one_or_more(jobs, capsys)
         cli.main(["generate", "--check", "--jobs", jobs])
     assert caught.value.code == 2
     assert f"argument --jobs/-j: {jobs!r} is not a number of processes" in capsys.readouterr().err
+
+
+def test_an_interrupted_map_stops_its_workers_and_waits_for_them(tmp_path):
+    def sleeps(fam):
+        time.sleep(30)
+
+    def interrupt(signum, frame):
+        raise KeyboardInterrupt
+
+    previous = signal.signal(signal.SIGALRM, interrupt)
+    signal.setitimer(signal.ITIMER_REAL, 0.5)   # ^C half a second in, as the parent sees it
+    start = time.monotonic()
+    try:
+        with pytest.raises(KeyboardInterrupt):
+            map_families(noting_pid(tmp_path, sleeps), FAMS, 2)
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+    assert time.monotonic() - start < 5
+    assert len(worker_pids(tmp_path)) == 2   # two workers were at work
+    assert_no_worker_left(tmp_path)
+
+
+def test_workers_leave_ctrl_c_to_the_parent(tmp_path):
+    def naps(fam):
+        time.sleep(0.6)
+        return fam.name
+
+    def ctrl_c_to_the_workers(signum, frame):   # what a terminal's ^C does to the whole group
+        for pid in worker_pids(tmp_path):
+            os.kill(pid, signal.SIGINT)
+
+    previous = signal.signal(signal.SIGALRM, ctrl_c_to_the_workers)
+    signal.setitimer(signal.ITIMER_REAL, 0.3)
+    try:
+        assert map_families(noting_pid(tmp_path, naps), FAMS[:2], 2) == ["f0", "f1"]   # neither worker stopped
+        assert len(worker_pids(tmp_path)) == 2
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)

@@ -2,24 +2,30 @@
 independent of each other, so on a machine with several cores they are built side by side.
 
 The result is the list of each family's result in the families' order, whichever worker made it and
-whenever it finished, so the output is the same bytes as one process gives. Workers are forked (they
-start with the spec already loaded and the code already imported, and nothing but the family's index
-is sent to them); where the platform does not fork safely (anything but Linux), the work is done in
-this process, one family after another. A worker runs only the build and the executor's own loop, so
-it is forked even from a process with other threads (a pytest-xdist worker): it takes none of the
-locks those threads could hold at the fork.
+whenever it finished, so the output is the same bytes as one process gives. Each family is built by a
+process forked for it (it starts with the spec loaded and the code imported; nothing is sent to it),
+at most `jobs` at a time, the costliest first, and sends its result back pickled through a pipe of its
+own. The parent waits on those pipes alone, with a deadline, and uses no thread: a worker that dies
+is seen at once (its pipe closes early) and one that hangs is killed at the deadline. Workers ignore
+^C; the parent, interrupted, kills them and waits for them before it goes on.
+
+Where the platform does not fork safely (anything but Linux) the work is done in this process, one
+family after another. A worker runs only the build and writes to its own pipe, so it is forked even
+from a process with other threads (a pytest-xdist worker): it takes none of the locks they may hold.
 """
 import gc
 import os
+import pickle
+import select
+import signal
 import sys
+import time
 
 from plcvec.errors import PlcvecError
 
 # The longest a worker may take over one family before the build gives up on it: the golden set's
 # largest family takes under a second here, so only a worker that hangs meets it.
 FAMILY_TIMEOUT_S = 600
-
-_work = None   # (function, families) of the map in progress, inherited by the forked workers
 
 
 def usable_cores():
@@ -57,52 +63,108 @@ def can_fork():
 def map_families(function, families, jobs, cost=None):
     """[function(family) for family in families], in up to `jobs` worker processes.
 
-    `cost(family)`, a rough estimate of a family's work, only orders the submissions (the costliest
-    first, so that no large family is left to the end while the other workers stand idle).
+    `cost(family)`, a rough estimate of a family's work, only orders the work (the costliest first, so
+    that no large family is left to the end while the other workers stand idle).
     """
     jobs = min(jobs, len(families))
     if jobs <= 1 or not can_fork():
         return [function(fam) for fam in families]
-    global _work
-    if _work is not None:
-        raise RuntimeError("map_families is not reentrant")
-    # Imported only when there are workers to start: the command line's other uses do without them.
-    import multiprocessing
-    from concurrent.futures import ProcessPoolExecutor
-    from concurrent.futures import TimeoutError as WorkerTimeout   # not the built-in TimeoutError before 3.11
-    from concurrent.futures.process import BrokenProcessPool
-
-    order = sorted(range(len(families)), key=lambda k: -cost(families[k])) if cost else range(len(families))
-    _work = (function, families)
-    executor = ProcessPoolExecutor(max_workers=jobs, mp_context=multiprocessing.get_context("fork"))
-    processes = []
+    waiting = sorted(range(len(families)), key=lambda k: -cost(families[k])) if cost else list(range(len(families)))
+    waiting.reverse()   # popped from the end
+    running = {}        # read end of a worker's pipe -> _Worker
+    results = {}
     try:
-        futures = {k: executor.submit(_run, k) for k in order}
-        # The workers are all started by the first submit (forked before the executor starts a thread).
-        processes = list(executor._processes.values())
-        results = []
-        for k, fam in enumerate(families):
-            try:
-                results.append(futures[k].result(timeout=FAMILY_TIMEOUT_S))
-            except BrokenProcessPool:
-                raise PlcvecError(f"a worker process building {fam.name} died (out of memory? killed?); "
-                                  "try again with --jobs 1") from None
-            except WorkerTimeout:
-                raise PlcvecError(f"a worker process took more than {FAMILY_TIMEOUT_S} s over {fam.name}; "
-                                  "try again with --jobs 1") from None
-        executor.shutdown(wait=True)   # the workers reaped, so their CPU time is this process's children's
-        return results
+        while waiting or running:
+            while waiting and len(running) < jobs:
+                worker = _Worker.start(function, families, waiting.pop())
+                running[worker.fd] = worker
+            deadline = min(w.deadline for w in running.values())
+            ready, _, _ = select.select(list(running), [], [], max(0.0, deadline - time.monotonic()))
+            for fd in ready:
+                worker = running[fd]
+                if worker.read():
+                    del running[fd]
+                    results[worker.index] = worker.result()
+            for worker in list(running.values()):
+                if time.monotonic() >= worker.deadline:
+                    raise PlcvecError(f"a worker process took more than {FAMILY_TIMEOUT_S} s over "
+                                      f"{worker.name}; try again with --jobs 1")
+        return [results[k] for k in range(len(families))]
     finally:
-        _work = None
-        executor.shutdown(wait=False, cancel_futures=True)
-        for process in processes:
-            process.terminate()   # after a failure, a worker still busy: nothing will wait for its result
-        for process in processes:
-            process.join(timeout=5)
+        for worker in running.values():
+            worker.stop()
 
 
-def _run(index):
-    """In a worker: the function of the family at `index`, the collector held off as in the parent."""
-    function, families = _work
-    gc.disable()
-    return function(families[index])
+class _Worker:
+    """One forked process building one family, and what it has sent back so far."""
+
+    def __init__(self, index, name, pid, fd):
+        self.index, self.name, self.pid, self.fd = index, name, pid, fd
+        self.chunks = []
+        self.deadline = time.monotonic() + FAMILY_TIMEOUT_S
+
+    @classmethod
+    def start(cls, function, families, index):
+        read_end, write_end = os.pipe()
+        pid = os.fork()
+        if pid == 0:   # the worker: never returns
+            os.close(read_end)
+            _work_and_exit(function, families[index], write_end)
+        os.close(write_end)
+        return cls(index, families[index].name, pid, read_end)
+
+    def read(self):
+        """Take what the pipe holds; True once the worker has closed it."""
+        chunk = os.read(self.fd, 1 << 20)
+        if chunk:
+            self.chunks.append(chunk)
+            return False
+        os.close(self.fd)
+        return True
+
+    def result(self):
+        """The family's result, or the worker's exception raised here as it was raised there."""
+        _, status = os.waitpid(self.pid, 0)   # reaped, so its CPU time is this process's children's
+        data = b"".join(self.chunks)
+        try:
+            ok, value = pickle.loads(data)
+        except Exception:
+            code = os.waitstatus_to_exitcode(status)
+            raise PlcvecError(f"a worker process building {self.name} died ("
+                              + (f"signal {-code}" if code < 0 else f"exit {code}")
+                              + "; out of memory? killed?); try again with --jobs 1") from None
+        if not ok:
+            raise value
+        return value
+
+    def stop(self):
+        """Kill a worker whose result nobody will wait for, and reap it."""
+        try:
+            os.kill(self.pid, signal.SIGKILL)
+        except ProcessLookupError:
+            pass
+        os.waitpid(self.pid, 0)
+        os.close(self.fd)
+
+
+def _work_and_exit(function, fam, fd):
+    """In a worker: the family's result (or its exception) pickled into `fd`, then out, without
+    running anything of the parent's at exit (its atexit handlers, its buffered output)."""
+    code = 0
+    try:
+        signal.signal(signal.SIGINT, signal.SIG_IGN)   # ^C is the parent's to handle
+        gc.disable()   # as in the parent: the build keeps nearly everything it makes
+        try:
+            message = (True, function(fam))
+        except BaseException as exc:   # sent back whole, to be raised in the parent
+            message = (False, exc)
+        try:
+            data = pickle.dumps(message, protocol=pickle.HIGHEST_PROTOCOL)
+        except Exception as exc:   # an exception that does not pickle: its text at least
+            data = pickle.dumps((False, PlcvecError(f"building {fam.name}: {message[1]!r} ({exc})")))
+        with os.fdopen(fd, "wb") as out:
+            out.write(data)
+    except BaseException:
+        code = 1
+    finally:
+        os._exit(code)
