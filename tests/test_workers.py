@@ -175,3 +175,24 @@ def test_workers_leave_ctrl_c_to_the_parent(tmp_path):
     finally:
         signal.setitimer(signal.ITIMER_REAL, 0)
         signal.signal(signal.SIGALRM, previous)
+
+
+def _refuse_to_load():
+    raise ValueError("this object does not load")
+
+
+class _Unreadable:
+    """Pickles, but does not unpickle."""
+
+    def __reduce__(self):
+        return _refuse_to_load, ()
+
+
+def test_a_result_that_does_not_read_back_is_reported_with_its_family(tmp_path):
+    def unreadable_for_f1(fam):
+        return _Unreadable() if fam.name == "f1" else fam.name
+
+    with pytest.raises(PlcvecError, match=r"worker process building f1 sent back what cannot be read "
+                                          r"\(this object does not load\); try again with --jobs 1"):
+        map_families(noting_pid(tmp_path, unreadable_for_f1), FAMS, 2)
+    assert_no_worker_left(tmp_path)

@@ -5,6 +5,7 @@ alternatives of each interpretation an execution consulted (see plcvec.engine); 
 whose alternatives give different expectations "touches" the vector, and the vector then carries
 the expectation of every combination of the touched ones.
 """
+import functools
 import itertools
 from typing import NamedTuple
 
@@ -14,6 +15,7 @@ from plcvec.engine import make_engine
 from plcvec.spec.knobs import Resolver
 
 STEP_INPUTS = ("set", "rlo_in", "clock", "en", "input", "elapsed_ms")
+_MEMO_SIZE = 4096   # distinct device lists a builder remembers the reported order of
 
 
 class GeneratorBug(Exception):
@@ -72,8 +74,8 @@ class VectorBuilder:
         self.cells = {}
         self._cell_memo, self._cells_seen = {}, set()
         self._cited_memo = {}
-        self._refs = _Memo(fam.clause_ref)   # clause id -> the id a vector cites (a few dozen, cited by thousands)
-        self._shown_of = (None, None, None)  # (devices, scratch, _shown()) of the vector being built
+        self._shown_memo = {}
+        self._refs = functools.lru_cache(maxsize=None)(fam.clause_ref)   # a few dozen ids, cited by thousands
 
     def engine(self, choices):
         """The engine under `choices` (interpretation id -> alternative id), as plain as it can be."""
@@ -104,18 +106,15 @@ class VectorBuilder:
         self.executions += 1
         state = dict(devices)
         # The devices a step's expectation and the final state report, in their order: the state's
-        # keys never change during a step (checked below), only a step's "set" may add one. Listed
-        # once per vector: every execution of it starts from the same devices.
-        known_devices, known_scratch, shown = self._shown_of
-        if devices is not known_devices or scratch is not known_scratch:
-            shown = _shown(state, scratch)
+        # keys never change during a step (checked below), only a step's "set" may add one.
+        shown = self._shown(state, scratch)
         ctx = {"device_sizes": self.sizes}
         trace, expects, errors = set(), [], []
         for index, step in enumerate(steps):
             if "set" in step:
                 state.update(step["set"])
                 if len(state) != len(devices):
-                    shown = _shown(state, scratch)
+                    shown = self._shown(state, scratch)
             before = dict(state)
             result = engine.execute(instr, operands, state, step, ctx, trace)
             if self.classifier is not None:
@@ -177,11 +176,7 @@ class VectorBuilder:
         for error in _errors_in_code(operands):
             raise GeneratorBug(f"{vid}: {error}")
         self._cell_memo, self._cells_seen = {}, set()
-        self._shown_of = (devices, scratch, _shown(devices, scratch))
-        try:
-            expects, final, outcome, trace, touched, alternatives = self.expectations(instr, operands, devices, steps, scratch)
-        finally:
-            self._shown_of = (None, None, None)
+        expects, final, outcome, trace, touched, alternatives = self.expectations(instr, operands, devices, steps, scratch)
         # What the vector exercises for the coverage model, under every reading it carries: the runs
         # cover every behaviour (a combination not run reads nothing that would change it).
         self.cells[vid] = frozenset(self._cells_seen)
@@ -196,7 +191,7 @@ class VectorBuilder:
             "st": instr.get("st", instruction),
             "description": description,
             "tags": sorted(set(tags)),
-            "clauses": sorted(map(self._refs.__getitem__, trace.union(clauses, self._cited(instr, operands, tags)))),
+            "clauses": sorted(map(self._refs, trace.union(clauses, self._cited(instr, operands, tags)))),
             "assumes": {"device_sizes": self.sizes},
             "initial": {"operands": operands, "devices": dict(sorted(devices.items()))},
             "steps": [dict({k: s[k] for k in STEP_INPUTS if k in s}, expect=e) for s, e in zip(steps, expects)],
@@ -260,6 +255,17 @@ class VectorBuilder:
                                  "outcome": run.outcome})
         return root.expects, root.final, root.outcome, trace, touched, alternatives
 
+    def _shown(self, state, scratch):
+        """The devices of `state` a vector reports (all but the scratch ones), sorted: the same few lists
+        for every execution of every vector (bounded, as a fuzzing run meets new devices without end)."""
+        key = (tuple(state), tuple(scratch))
+        shown = self._shown_memo.get(key)
+        if shown is None:
+            if len(self._shown_memo) >= _MEMO_SIZE:
+                self._shown_memo.clear()
+            shown = self._shown_memo[key] = [k for k in sorted(state) if k not in scratch]
+        return shown
+
     def _cited(self, instr, operands, tags):
         """Clauses a vector exercises by what it is, whatever the engine does with it: the clause of each
         operand it uses, the naming of its instruction, and the spec's coverage section (the same few
@@ -274,25 +280,6 @@ class VectorBuilder:
         cited = {self.fam.doc["operands"][name]["clause"] for name in operands}
         cited |= {instr["naming_clause"]} if "naming_clause" in instr else set()
         return cited | self.every_vector | {self.by_tag[t] for t in tags if t in self.by_tag}
-
-
-class _Memo(dict):
-    """function(key), worked out the first time a key is asked for."""
-
-    __slots__ = ("function",)
-
-    def __init__(self, function):
-        super().__init__()
-        self.function = function
-
-    def __missing__(self, key):
-        value = self[key] = self.function(key)
-        return value
-
-
-def _shown(state, scratch):
-    """The devices of `state` a vector reports (all but the scratch ones), sorted."""
-    return [k for k in sorted(state) if k not in scratch]
 
 
 def _errors_in_code(operands):

@@ -128,8 +128,11 @@ class _Worker:
         data = b"".join(self.chunks)
         try:
             ok, value = pickle.loads(data)
-        except Exception:
+        except Exception as exc:
             code = os.waitstatus_to_exitcode(status)
+            if code == 0:   # it finished, but what it sent does not read back
+                raise PlcvecError(f"the worker process building {self.name} sent back what cannot be read "
+                                  f"({exc}); try again with --jobs 1") from None
             raise PlcvecError(f"a worker process building {self.name} died ("
                               + (f"signal {-code}" if code < 0 else f"exit {code}")
                               + "; out of memory? killed?); try again with --jobs 1") from None
