@@ -134,3 +134,45 @@ def test_the_same_answer_as_ints_passes_every_vector(plan):
     suite = Suite.load(REPO / "vectors")
     report = run(suite, InProcess(_Words(plan, int)), plan=plan)
     assert report.counts["pass"] == len(suite.vectors) and report.exit_code == 0
+
+
+def test_devices_listed_in_another_order_pass(plan):
+    """The bytes of such steps differ from the expectation's; they are judged value by value, and pass."""
+    checked = 0
+    for exp in plan.expected.values():
+        msg = answer(exp)
+        for step in msg["steps"]:
+            step["devices"] = dict(reversed(step["devices"].items()))
+        if len(msg["steps"][0]["devices"]) > 1:
+            checked += 1
+        assert passes(exp, with_scratch(exp, msg)), exp.id
+    assert checked > 1000
+
+
+class _Word(int):
+    """An int of another class: a JSON integer all the same, which marshal refuses to write."""
+
+
+def test_values_marshal_refuses_are_judged_by_value(plan):
+    """An int subclass, a dict subclass, a list that holds itself: no exception, the right verdict."""
+    exps = [exp for exp in plan.expected.values() if not exp.scratch][::25]
+    for exp in exps:
+        msg = answer(exp)
+        for step in msg["steps"]:
+            step["devices"] = {k: _Word(v) if type(v) is int else v for k, v in step["devices"].items()}
+        assert compare(exp, msg["steps"]) == [], exp.id
+        passes(exp, msg)            # either verdict is sound here; it must not raise
+        msg = answer(exp)
+        msg["steps"][0] = type("Step", (dict,), {})(msg["steps"][0])
+        assert compare(exp, msg["steps"]) == [], exp.id
+        passes(exp, msg)
+        msg = answer(exp)
+        msg["steps"].append(msg["steps"])
+        assert not passes(exp, msg), exp.id
+
+
+def test_a_run_with_int_subclass_words_passes(plan):
+    """Words of an int subclass are JSON integers: the whole run passes, judged the long way."""
+    suite = Suite.load(REPO / "vectors")
+    report = run(suite, InProcess(_Words(plan, _Word)), plan=plan)
+    assert report.counts["pass"] == len(suite.vectors) and report.exit_code == 0

@@ -6,8 +6,9 @@ is an integer, so a bit reported as 1 is wrong even though Python's 1 == True.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from marshal import dumps
 
-from .expect import Expected
+from .expect import PACKED_FORMAT, Expected
 from .protocol import WORD_MAX
 
 _MISSING = "<not reported>"
@@ -70,18 +71,33 @@ def passes(expected: Expected, msg) -> bool:
 def steps_pass(expected: Expected, steps) -> bool:
     """Whether reported `steps` equal the expectation exactly, JSON types included (see `passes`).
 
-    Python's 1 == True and 2105 == 2105.0: equal values can still be of the wrong JSON type. Where
-    the values are equal, a wrong type can only be a bool for an integer 0/1 or the other way round
-    (checked on the devices expected to hold 0, 1, false or true, and on the result, whose true and
-    false are singletons), or a number that is not an integer at all, such as 2105.0 (caught by
+    Python's 1 == True and 2105 == 2105.0: equal values can still be of the wrong JSON type. The usual
+    answer is decided by one comparison of bytes: the steps in marshal's format, which names every
+    value's exact type, against the expectation's (`Expected.packed`). Bytes that differ prove nothing
+    (the devices may be listed in another order, or be of types marshal refuses, such as an int
+    subclass): such steps are compared value by value and type by type.
+    """
+    packed = expected.packed
+    if packed is None:
+        return _steps_pass_with_scratch(expected, steps)
+    try:
+        if dumps(steps, PACKED_FORMAT) == packed:
+            return True
+    except ValueError:      # not plain lists, dicts and numbers, or nested past marshal's depth
+        pass
+    return _steps_pass_by_value(expected, steps)
+
+
+def _steps_pass_by_value(expected: Expected, steps) -> bool:
+    """`steps_pass` for steps whose bytes differ from the expectation's.
+
+    Where the values are equal, a wrong type can only be a bool for an integer 0/1 or the other way
+    round (checked on the devices expected to hold 0, 1, false or true, and on the result, whose true
+    and false are singletons), or a number that is not an integer at all, such as 2105.0 (caught by
     the type of the devices' sum, which is int only if every value is an int or a bool).
     """
-    wire = expected.wire
-    if wire is None:
-        return _steps_pass_with_scratch(expected, steps)
-    if steps != wire:
+    if steps != expected.wire:
         return False
-    # Written out rather than calling _same_types: this loop runs for every vector of every run.
     for step, (want_result, keys, types) in zip(steps, expected.checks):
         devices = step["devices"]
         if step.get("result") is not want_result or type(sum(devices.values())) is not int \
@@ -96,24 +112,27 @@ def _same_types(devices: dict, typed) -> bool:
     return type(sum(devices.values())) is int and tuple(map(type, map(devices.__getitem__, keys))) == types
 
 
-def _is_word(value) -> bool:
-    return type(value) is int and 0 <= value <= WORD_MAX
-
-
 def _steps_pass_with_scratch(expected: Expected, steps) -> bool:
     """`steps_pass` for a vector with scratch devices, whose reported values are the implementation's
     own: left out of the comparison, but still words (else the long way, with the schema)."""
-    scratch = expected.scratch
     if type(steps) is not list or len(steps) != len(expected.states):
         return False
-    for step, state, want_result, typed in zip(steps, expected.states, expected.results, expected.typed):
+    scratch = expected.scratch
+    for step, state, want_result, typed, packed in zip(steps, expected.states, expected.results, expected.typed,
+                                                       expected.packed_states):
         if type(step) is not dict or len(step) != (1 if want_result is None else 2) \
                 or step.get("result") is not want_result or type(step.get("devices")) is not dict:
             return False
-        devices = step["devices"]
-        if not all(map(_is_word, (devices.get(k, 0) for k in scratch))):
-            return False
-        got = {k: v for k, v in devices.items() if k not in scratch}
+        got = step["devices"].copy()
+        for key in scratch:
+            word = got.pop(key, 0)      # a scratch device may go unreported
+            if type(word) is not int or not 0 <= word <= WORD_MAX:
+                return False
+        try:
+            if dumps(got, PACKED_FORMAT) == packed:
+                continue
+        except ValueError:      # see steps_pass
+            pass
         if got != state or not _same_types(got, typed):
             return False
     return True

@@ -7,6 +7,7 @@ checked against the vector's own `final` so that an inconsistent vector file is 
 """
 from __future__ import annotations
 
+import marshal
 from dataclasses import dataclass
 
 from .errors import VerifyError
@@ -33,6 +34,10 @@ class Expected:
     instruction: str = ""
     # Per step: (result, *typed): what compare.steps_pass reads of a step, in one tuple.
     checks: tuple = ()
+    # `wire` in marshal's format 2, for compare.steps_pass: None with `wire`.
+    packed: bytes | None = None
+    # Per step: `states` in marshal's format 2, for compare.steps_pass on a vector with scratch devices.
+    packed_states: tuple = ()
 
     def before(self, step: int) -> dict:
         """The state step `step` started from (after its `set`): only a failure's message needs it."""
@@ -97,4 +102,12 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
                                   for st, r in zip(states, results)]
     return Expected(vector["id"], tuple(results), tuple(states), initial, tuple(sets), tuple(typed), scratch,
                     category, applied, wire, vector["family"], vector["instruction"],
-                    tuple((r, *t) for r, t in zip(results, typed)))
+                    tuple((r, *t) for r, t in zip(results, typed)),
+                    None if wire is None else marshal.dumps(wire, PACKED_FORMAT),
+                    tuple(marshal.dumps(st, PACKED_FORMAT) for st in states) if scratch else ())
+
+
+# marshal's format 2 writes every object out in full (format 3 on refers back to an object met before,
+# so equal steps built from shared objects would give other bytes) and names each value's exact type:
+# true is not 1, 2105.0 is not 2105, and a subclass of int or dict is refused (ValueError).
+PACKED_FORMAT = 2
