@@ -57,3 +57,28 @@ def test_a_plan_run_again_judges_each_answer_again():
     for r, v in zip(third.results, suite.vectors):
         assert (r.id, r.family, r.instruction, r.problems, r.message) == (v["id"], v["family"], v["instruction"], (), "")
         assert r.choices == plan.expected[v["id"]].choices
+
+
+def test_plans_over_one_set_share_expectations_only_where_the_alternatives_agree():
+    """Expectations are made once per vector and alternatives: a vector an interpretation touches gets
+    the alternative's own expectation, read from its `alternatives` entry, never the default's."""
+    import copy
+
+    suite = Suite.load(REPO / "vectors")
+    touched, alt = next((v, a) for v in suite.vectors for a in v.get("alternatives", ())
+                        if a["final"]["devices"] != v["final"]["devices"])
+    default = Plan(suite, [touched], {}).expected[touched["id"]]
+    chosen = Plan(suite, [touched], alt["choices"]).expected[touched["id"]]
+    assert Plan(suite, [touched], {}).expected[touched["id"]] is default
+    assert chosen.choices == alt["choices"] and chosen.outcome == alt["outcome"]
+    assert chosen.states[-1] == alt["final"]["devices"] and default.states[-1] == touched["final"]["devices"]
+    # A vector the interpretation does not touch is judged the same whatever is chosen.
+    other = next(v for v in suite.vectors if v["family"] == touched["family"]
+                 and not v["outcome"].get("interpretations"))
+    assert Plan(suite, [other], alt["choices"]).expected[other["id"]] is Plan(suite, [other], {}).expected[other["id"]]
+    # Another vector object with the same id (not the one the set loaded) is worked out afresh.
+    edited = copy.deepcopy(other)
+    step = edited["steps"][-1]["expect"]
+    step["result"] = not step["result"] if "result" in step else step.get("result")
+    made = Plan(suite, [edited], {}).expected[edited["id"]]
+    assert made.results[-1] == step.get("result") and made is not Plan(suite, [other], {}).expected[other["id"]]

@@ -107,6 +107,35 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
                     tuple(marshal.dumps(st, PACKED_FORMAT) for st in states) if scratch else ())
 
 
+class Expectations:
+    """The requests and expectations of one loaded vector set, each worked out once.
+
+    A run builds them for every vector it runs; runs over the same set (every combination of
+    alternatives, the pytest plugin, a benchmark) would build the same ones again. A vector's
+    expectation depends only on the alternatives of the interpretations it touches, so it is kept by
+    those. The vectors are not changed once loaded; an entry is used only for the very vector object
+    it was made from.
+    """
+
+    def __init__(self):
+        self._requests: dict[str, tuple[dict, dict]] = {}
+        self._expected: dict[tuple, tuple[dict, Expected]] = {}
+
+    def request(self, vector: dict) -> dict:
+        kept = self._requests.get(vector["id"])
+        if kept is None or kept[0] is not vector:
+            kept = self._requests[vector["id"]] = (vector, request_of(vector))
+        return kept[1]
+
+    def expected(self, vector: dict, choices: dict, defaults: dict) -> Expected:
+        touched = vector["outcome"].get("interpretations", ())
+        key = (vector["id"], *(choices.get(i, defaults.get(i)) for i in touched))
+        kept = self._expected.get(key)
+        if kept is None or kept[0] is not vector:
+            kept = self._expected[key] = (vector, expected_of(vector, choices, defaults))
+        return kept[1]
+
+
 # marshal's format 2 writes every object out in full (format 3 on refers back to an object met before,
 # so equal steps built from shared objects would give other bytes) and names each value's exact type:
 # true is not 1, 2105.0 is not 2105, and a subclass of int or dict is refused (ValueError).

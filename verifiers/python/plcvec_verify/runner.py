@@ -15,7 +15,6 @@ from typing import NamedTuple
 from .adapters import AdapterAbort, result_message
 from .compare import Problem, compare, passes, steps_pass
 from .errors import VerifyError
-from .expect import expected_of, request_of
 from .gate import NOTHING_TESTED, Gate
 from .known import KnownFailures
 from .protocol import hello_request, result_errors, result_shape_ok
@@ -104,8 +103,9 @@ class Plan:
     def __init__(self, suite: Suite, vectors: list, choices: dict):
         defaults = {i: d["default"] for i, d in suite.interpretations().items()}
         self.vectors = vectors
-        self.requests = {v["id"]: request_of(v) for v in vectors}
-        self.expected = {v["id"]: expected_of(v, choices, defaults) for v in vectors}
+        made = suite.expectations
+        self.requests = {v["id"]: made.request(v) for v in vectors}
+        self.expected = {v["id"]: made.expected(v, choices, defaults) for v in vectors}
         # Per vector, its expectation and the result it gets when an answer passes, made once here:
         # a passing result holds nothing of the answer, and making it again for every vector of every
         # run was a good part of a run's time. Each answer is still judged in full (runner.run).

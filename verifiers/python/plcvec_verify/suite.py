@@ -13,6 +13,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from .errors import VerifyError
+from .expect import Expectations
 from .validate import schema_for, validate_file
 
 # The major schema version this verifier understands (CONTRACT.md, "Versioning"): a 2.x file may
@@ -31,6 +32,8 @@ class Suite:
     schema_version: str = ""
     spec_sha256: str = ""
     by_id: dict[str, dict] = field(default_factory=dict)
+    # Each vector's request and expectation, made once for all the runs over this set.
+    expectations: Expectations = field(default_factory=Expectations, repr=False, compare=False)
 
     def __post_init__(self):
         self.by_id = {v["id"]: v for v in self.vectors}
