@@ -176,3 +176,23 @@ def test_a_run_with_int_subclass_words_passes(plan):
     suite = Suite.load(REPO / "vectors")
     report = run(suite, InProcess(_Words(plan, _Word)), plan=plan)
     assert report.counts["pass"] == len(suite.vectors) and report.exit_code == 0
+
+
+class _Reversed(_Words):
+    """The conforming answer with each step's devices listed last to first."""
+
+    def run(self, request):
+        body = super().run(request)
+        for step in body["steps"]:
+            step["devices"] = dict(reversed(step["devices"].items()))
+        return body
+
+
+def test_a_run_whose_devices_come_in_another_order_passes_and_still_sees_a_float(plan):
+    """Bytes that differ send an in-process answer to the value-by-value comparison, which passes what is
+    right and fails what is not (a word reported as 2105.0)."""
+    suite = Suite.load(REPO / "vectors")
+    report = run(suite, InProcess(_Reversed(plan, int)), plan=plan)
+    assert report.counts["pass"] == len(suite.vectors) and report.exit_code == 0
+    report = run(suite, InProcess(_Reversed(plan, float)), plan=plan)
+    assert report.counts["fail"] > 1000 and report.exit_code == 1

@@ -36,6 +36,8 @@ class Expected:
     checks: tuple = ()
     # `wire` in marshal's format 2, for compare.steps_pass: None with `wire`.
     packed: bytes | None = None
+    # {"steps": wire} in marshal's format 2: an in-process adapter's passing answer (runner.run).
+    packed_answer: bytes | None = None
     # Per step: `states` in marshal's format 2, for compare.steps_pass on a vector with scratch devices.
     packed_states: tuple = ()
 
@@ -104,6 +106,7 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
                     category, applied, wire, vector["family"], vector["instruction"],
                     tuple((r, *t) for r, t in zip(results, typed)),
                     None if wire is None else marshal.dumps(wire, PACKED_FORMAT),
+                    None if wire is None else marshal.dumps({"steps": wire}, PACKED_FORMAT),
                     tuple(marshal.dumps(st, PACKED_FORMAT) for st in states) if scratch else ())
 
 

@@ -9,12 +9,14 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
+from marshal import dumps
 from operator import itemgetter
 from typing import NamedTuple
 
 from .adapters import AdapterAbort, result_message
-from .compare import Problem, compare, passes, steps_pass
+from .compare import Problem, compare, passes, steps_pass_by_value
 from .errors import VerifyError
+from .expect import PACKED_FORMAT
 from .gate import NOTHING_TESTED, Gate
 from .known import KnownFailures
 from .protocol import hello_request, result_errors, result_shape_ok
@@ -109,7 +111,9 @@ class Plan:
         # Per vector, its expectation and the result it gets when an answer passes, made once here:
         # a passing result holds nothing of the answer, and making it again for every vector of every
         # run was a good part of a run's time. Each answer is still judged in full (runner.run).
-        self.judging = {vid: (exp, VectorResult(vid, exp.family, exp.instruction, PASS, choices=exp.choices))
+        # The first item is what an in-process adapter's passing answer packs to (see runner.run).
+        self.judging = {vid: (exp.packed_answer, VectorResult(vid, exp.family, exp.instruction, PASS,
+                                                              choices=exp.choices), exp)
                         for vid, exp in self.expected.items()}
         self.wire: dict[str, bytes] = {}   # encoded requests, filled by a process adapter
         # For a run of exactly `vectors` (the same list): the requests in order, the families and
@@ -186,10 +190,21 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
         to_send = plan.request_list if runnable is plan.vectors else list(map(requests.__getitem__, map(_ID, runnable)))
         for answer in adapter.answers(to_send, plan.wire):
             vid, msg, fault, bare = answer
-            exp, passed = judging[vid]
-            # The usual case, decided at one comparison: an in-process adapter's answer (`bare`, the
-            # result message without `type` and `id`) or a process's result message that passes.
-            if fault is None and (steps_pass(exp, msg.get("steps")) if bare and len(msg) == 1 else passes(exp, msg)):
+            packed, passed, exp = judging[vid]
+            # The usual case, decided at one comparison. An in-process adapter's answer (`bare`: the
+            # result message without `type` and `id`, never a fault) passes when its bytes in marshal's
+            # format are the expectation's (compare.steps_pass says why that is exact, JSON types
+            # included), else when its steps equal the expectation value for value and type for type;
+            # a process's result message goes through compare.passes. Anything else, the long way.
+            if bare:
+                try:
+                    usual = dumps(msg, PACKED_FORMAT) == packed
+                except ValueError:      # marshal refuses it: not plain dicts, lists and numbers
+                    usual = False
+                usual = usual or len(msg) == 1 and steps_pass_by_value(exp, msg.get("steps"))
+            else:
+                usual = fault is None and passes(exp, msg)
+            if usual:
                 results[vid] = passed
                 done += 1
                 if progress:
