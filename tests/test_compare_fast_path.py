@@ -192,7 +192,9 @@ def test_a_run_whose_devices_come_in_another_order_passes_and_still_sees_a_float
     """Bytes that differ send an in-process answer to the value-by-value comparison, which passes what is
     right and fails what is not (a word reported as 2105.0)."""
     suite = Suite.load(REPO / "vectors")
-    report = run(suite, InProcess(_Reversed(plan, int)), plan=plan)
-    assert report.counts["pass"] == len(suite.vectors) and report.exit_code == 0
-    report = run(suite, InProcess(_Reversed(plan, float)), plan=plan)
-    assert report.counts["fail"] > 1000 and report.exit_code == 1
+    some = suite.vectors[::3]       # every family, a third of the time
+    assert {v["family"] for v in some} == set(suite.headers)
+    report = run(suite, InProcess(_Reversed(plan, int)), vectors=some)
+    assert report.counts["pass"] == len(some) and report.exit_code == 0
+    report = run(suite, InProcess(_Reversed(plan, float)), vectors=some)
+    assert report.counts["fail"] > 300 and report.exit_code == 1

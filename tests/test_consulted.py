@@ -36,14 +36,30 @@ def plain_run(builder, instr, operands, devices, steps, scratch, choices):
     return expects, final, ({"category": "error", "errors": errors} if errors else {"category": "value"}), trace
 
 
-def decides(results, k):
+def outcome_classes(results):
+    """combination -> the number of its result among the distinct results (expects, final, outcome),
+    told apart with ==: most cases have one or two, so each deep comparison is made once, not per
+    interpretation."""
+    distinct, classes = [], {}
+    for combo, result in results.items():
+        for number, seen in enumerate(distinct):
+            if seen == result[:3]:
+                break
+        else:
+            number = len(distinct)
+            distinct.append(result[:3])
+        classes[combo] = number
+    return classes
+
+
+def decides(classes, k):
     """Whether two combinations that differ in interpretation k alone give different results.
 
     The combinations are grouped by every other choice; the results of a group all agree exactly
     when each agrees with the group's first, so one comparison a combination settles it."""
     first = {}
-    for combo, result in results.items():
-        if first.setdefault(combo[:k] + combo[k + 1:], result[:3]) != result[:3]:
+    for combo, number in classes.items():
+        if first.setdefault(combo[:k] + combo[k + 1:], number) != number:
             return True
     return False
 
@@ -56,7 +72,8 @@ def every_combination(builder, instr, operands, devices, steps, scratch):
     results = {combo: plain_run(builder, instr, operands, devices, steps, scratch, dict(zip(names, combo)))
                for combo in itertools.product(*options)}
     expects, final, outcome, trace = results[tuple(defaults[i] for i in names)]
-    touched = [iid for k, iid in enumerate(names) if decides(results, k)]
+    classes = outcome_classes(results)
+    touched = [iid for k, iid in enumerate(names) if decides(classes, k)]
     trace, alternatives = set(trace), []
     for combo in itertools.product(*(options[names.index(i)] for i in touched)):
         choice = dict(zip(touched, combo))
