@@ -213,17 +213,39 @@ def test_load_spec_names_file_and_line(broken):
         assert noise not in err.message, str(err)
 
 
+# A few cases run `plcvec lint` as a process, as a user does (exit status, stderr, stdout); the others
+# call the command's entry point in this process (`python -m plcvec` and the `plcvec` script exit with
+# what plcvec.cli.main returns, having printed the same), which spares a Python start per case.
+AS_A_PROCESS = {"yaml-tab-indent", "unknown-key", "python-object-tag-scalar", "recursive-alias"}
+
+
+def lint(folder, cwd, as_a_process, capsys):
+    """(exit status, stdout, stderr) of `plcvec lint --spec-dir FOLDER`."""
+    if as_a_process:
+        proc = subprocess.run([sys.executable, "-m", "plcvec", "lint", "--spec-dir", str(folder)],
+                              capture_output=True, text=True, cwd=cwd, timeout=120)
+        return proc.returncode, proc.stdout, proc.stderr
+    from plcvec.cli import main
+
+    code = main(["lint", "--spec-dir", str(folder)])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_some_cases_run_as_a_process():
+    assert AS_A_PROCESS < set(IDS)
+
+
 @pytest.mark.parametrize("broken", CASES, ids=IDS, indirect=True)
-def test_lint_exits_2_with_file_and_line(broken, tmp_path):
+def test_lint_exits_2_with_file_and_line(broken, tmp_path, request, capsys):
     folder, path, line, phrase = broken
-    proc = subprocess.run([sys.executable, "-m", "plcvec", "lint", "--spec-dir", str(folder)],
-                          capture_output=True, text=True, cwd=tmp_path, timeout=120)
-    assert proc.returncode == 2, proc.stderr
-    assert "Traceback" not in proc.stderr
-    assert f"{path.name}:{line}: " in proc.stderr
-    assert phrase in proc.stderr
-    assert proc.stderr.startswith("plcvec: ")
-    assert proc.stdout == ""
+    code, out, err = lint(folder, tmp_path, request.node.callspec.id in AS_A_PROCESS, capsys)
+    assert code == 2, err
+    assert "Traceback" not in err
+    assert f"{path.name}:{line}: " in err
+    assert phrase in err
+    assert err.startswith("plcvec: ")
+    assert out == ""
 
 
 def test_python_tag_is_never_executed(tmp_path):
