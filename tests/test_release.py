@@ -50,8 +50,9 @@ def previous(tmp_path_factory):
 def runs(tmp_path_factory, previous):
     folder = previous[0]
     outs = [tmp_path_factory.mktemp(f"release{i}") for i in (1, 2)]
-    for seed, out in zip((1, 2), outs):
-        proc = release(out, "--previous", str(folder), hashseed=seed)
+    # Another hash seed and another number of worker processes: neither may change a byte.
+    for seed, jobs, out in zip((1, 2), (1, 2), outs):
+        proc = release(out, "--previous", str(folder), "--jobs", str(jobs), hashseed=seed)
         assert proc.returncode == 0, proc.stderr
         assert "Traceback" not in proc.stderr
     return outs

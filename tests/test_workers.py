@@ -127,12 +127,13 @@ def test_generate_with_jobs_writes_the_files_one_process_gives(tmp_path, generat
     assert {p.name: p.read_text(encoding="utf-8") for p in tmp_path.iterdir()} == files
 
 
+@pytest.mark.parametrize("command", [["generate", "--check"], ["review", "--check"], ["release", "--out", "unused"]])
 @pytest.mark.parametrize("jobs", ["0", "-2", "two", "1.5"])
-def test_generate_refuses_a_number_of_jobs_that_is_not_one_or_more(jobs, capsys):
+def test_each_command_refuses_a_number_of_jobs_that_is_not_one_or_more(command, jobs, capsys):
     from plcvec import cli
 
     with pytest.raises(SystemExit) as caught:
-        cli.main(["generate", "--check", "--jobs", jobs])
+        cli.main([*command, "--jobs", jobs])
     assert caught.value.code == 2
     assert f"argument --jobs/-j: {jobs!r} is not a number of processes" in capsys.readouterr().err
 

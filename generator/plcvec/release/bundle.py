@@ -18,7 +18,6 @@ import json
 from plcvec.errors import PlcvecError
 from plcvec.output import diff
 from plcvec.output.golden import build_golden
-from plcvec.output.workers import usable_cores
 from plcvec.output.jsonl import family_jsonl
 
 DOCS = ("CONTRACT.md", "PROTOCOL.md")
@@ -43,9 +42,10 @@ def root_name(version):
     return f"plcvec-vectors-{version}"
 
 
-def golden_checked(families, vectors_dir):
-    """The golden files the spec generates, after checking the vector folder holds exactly them."""
-    files, by_family = build_golden(families, jobs=usable_cores())
+def golden_checked(families, vectors_dir, jobs):
+    """The golden files the spec generates (in `jobs` worker processes), after checking the vector
+    folder holds exactly them."""
+    files, by_family = build_golden(families, jobs=jobs)
     differ = [name for name, text in sorted(files.items())
               if not (vectors_dir / name).is_file() or (vectors_dir / name).read_text(encoding="utf-8") != text]
     if differ:

@@ -8,6 +8,7 @@ CONTRACT.md ("Suite version") says when it moves, and a release that breaks the 
 from pathlib import Path
 
 from plcvec.errors import PlcvecError
+from plcvec.output.workers import add_jobs_option
 
 
 def register(sub, spec_parent):
@@ -22,6 +23,7 @@ def register(sub, spec_parent):
     r.add_argument("--vectors", metavar="DIR",
                    help=f"the committed vector folder, which must match the spec (default: {default_vectors_text()})")
     r.add_argument("--manual-dir", metavar="DIR", help="check the review's quotes against the manual text")
+    add_jobs_option(r)
     r.set_defaults(func=run)
 
 
@@ -47,7 +49,7 @@ def run(args):
     previous = changes.load_previous(args.previous) if args.previous else None   # a bad name fails before the work
 
     families = load_spec(args.spec_dir)
-    golden, by_family = bundle.golden_checked(families, vectors_dir)
+    golden, by_family = bundle.golden_checked(families, vectors_dir, args.jobs)
     current = bundle.current_set(golden, __version__)
     text, report = changes.changes_text(__version__, current, previous, args.previous)
     if report is not None:
