@@ -100,10 +100,11 @@ def test_a_near_miss_never_passes_at_once(plan):
 
 
 class _Words:
-    """An in-process adapter that reports the conforming answer with one change to every word."""
+    """An in-process adapter that reports the conforming answer with one change to every word (above 1,
+    or with `every_int` to every integer)."""
 
-    def __init__(self, plan, change):
-        self.plan, self.change = plan, change
+    def __init__(self, plan, change, every_int=False):
+        self.plan, self.change, self.lowest = plan, change, 0 if every_int else 2
 
     def hello(self, request):
         return {"adapter": {"name": "words", "version": "0"},
@@ -112,7 +113,8 @@ class _Words:
     def run(self, request):
         msg = with_scratch(self.plan.expected[request["id"]], answer(self.plan.expected[request["id"]]))
         for step in msg["steps"]:
-            step["devices"] = {k: self.change(v) if type(v) is int and v > 1 else v for k, v in step["devices"].items()}
+            step["devices"] = {k: self.change(v) if type(v) is int and v >= self.lowest else v
+                               for k, v in step["devices"].items()}
         return {"steps": msg["steps"]}
 
 
@@ -156,16 +158,16 @@ class _Word(int):
 def test_values_marshal_refuses_are_judged_by_value(plan):
     """An int subclass, a dict subclass, a list that holds itself: no exception, the right verdict."""
     exps = [exp for exp in plan.expected.values() if not exp.scratch][::25]
+    # Every int of the answer (0 and 1 too) of an int subclass: JSON integers all the same, so whichever
+    # way each is judged (the fast path may take it or say "look closer"), a run passes every one.
+    suite = Suite.load(REPO / "vectors")
+    report = run(suite, InProcess(_Words(plan, _Word, every_int=True)), vectors=[suite.by_id[e.id] for e in exps])
+    assert report.counts["pass"] == len(exps) > 100 and report.exit_code == 0
     for exp in exps:
         msg = answer(exp)
-        for step in msg["steps"]:
-            step["devices"] = {k: _Word(v) if type(v) is int else v for k, v in step["devices"].items()}
-        assert compare(exp, msg["steps"]) == [], exp.id
-        passes(exp, msg)            # either verdict is sound here; it must not raise
-        msg = answer(exp)
         msg["steps"][0] = type("Step", (dict,), {})(msg["steps"][0])
-        assert compare(exp, msg["steps"]) == [], exp.id
-        passes(exp, msg)
+        # A step of a dict subclass holding exactly the expected values: passes value by value.
+        assert compare(exp, msg["steps"]) == [] and passes(exp, msg) is True, exp.id
         msg = answer(exp)
         msg["steps"].append(msg["steps"])
         assert not passes(exp, msg), exp.id

@@ -77,8 +77,8 @@ def test_plans_over_one_set_share_expectations_only_where_the_alternatives_agree
                  and not v["outcome"].get("interpretations"))
     assert Plan(suite, [other], alt["choices"]).expected[other["id"]] is Plan(suite, [other], {}).expected[other["id"]]
     # Another vector object with the same id (not the one the set loaded) is worked out afresh.
-    edited = copy.deepcopy(other)
-    step = edited["steps"][-1]["expect"]
-    step["result"] = not step["result"] if "result" in step else step.get("result")
-    made = Plan(suite, [edited], {}).expected[edited["id"]]
-    assert made.results[-1] == step.get("result") and made is not Plan(suite, [other], {}).expected[other["id"]]
+    contact = next(v for v in suite.vectors if "result" in v["steps"][-1]["expect"])
+    edited = copy.deepcopy(contact)
+    edited["steps"][-1]["expect"]["result"] = not contact["steps"][-1]["expect"]["result"]
+    assert Plan(suite, [contact], {}).expected[contact["id"]].results[-1] == contact["steps"][-1]["expect"]["result"]
+    assert Plan(suite, [edited], {}).expected[edited["id"]].results[-1] == edited["steps"][-1]["expect"]["result"]

@@ -52,8 +52,8 @@ def run(args):
     # describes the spec given by --spec-dir; the files' serialization is not needed here.
     with collector_paused():
         built = map_families(vectors_and_cells, families, args.jobs, family_cost)
-    vectors = {fam.name: family_vectors for fam, (family_vectors, _) in zip(families, built)}
-    cells = {fam.name: family_cells for fam, (_, family_cells) in zip(families, built)}
+    vectors = {fam.name: fam_vectors for fam, (fam_vectors, _) in zip(families, built)}
+    cells = {fam.name: fam_cells for fam, (_, fam_cells) in zip(families, built)}
     model = build_model(families, vectors, quotes=quotes, audit=run_audit(families), cells=cells)
     out = Path(args.out)
     if not args.no_write:

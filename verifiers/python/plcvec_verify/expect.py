@@ -12,6 +12,11 @@ from dataclasses import dataclass
 
 from .errors import VerifyError
 
+# marshal's format 2 writes every object out in full (format 3 on refers back to an object met before,
+# so equal steps built from shared objects would give other bytes) and names each value's exact type:
+# true is not 1, 2105.0 is not 2105, and a subclass of int or dict is refused (ValueError).
+PACKED_FORMAT = 2
+
 # Step keys that are inputs; everything a step holds except `expect`.
 _EXPECT = "expect"
 
@@ -60,11 +65,16 @@ def request_of(vector: dict) -> dict:
     }
 
 
+def applied_choices(vector: dict, choices: dict, defaults: dict) -> dict:
+    """interpretation -> the alternative `vector` is judged by: those it touches, declared or default."""
+    return {i: choices.get(i, defaults.get(i)) for i in vector["outcome"].get("interpretations", ())}
+
+
 def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
     """The expectation of `vector` for an implementation declaring `choices` (others: `defaults`)."""
     outcome = vector["outcome"]
     touched = outcome.get("interpretations", ())
-    applied = {i: choices.get(i, defaults.get(i)) for i in touched}
+    applied = applied_choices(vector, choices, defaults)
     steps_expect = [s[_EXPECT] for s in vector["steps"]]
     final = vector["final"]["devices"]
     category = outcome.get("default", outcome) if touched else outcome
@@ -131,15 +141,8 @@ class Expectations:
         return kept[1]
 
     def expected(self, vector: dict, choices: dict, defaults: dict) -> Expected:
-        touched = vector["outcome"].get("interpretations", ())
-        key = (vector["id"], *(choices.get(i, defaults.get(i)) for i in touched))
+        key = (vector["id"], *applied_choices(vector, choices, defaults).values())
         kept = self._expected.get(key)
         if kept is None or kept[0] is not vector:
             kept = self._expected[key] = (vector, expected_of(vector, choices, defaults))
         return kept[1]
-
-
-# marshal's format 2 writes every object out in full (format 3 on refers back to an object met before,
-# so equal steps built from shared objects would give other bytes) and names each value's exact type:
-# true is not 1, 2105.0 is not 2105, and a subclass of int or dict is refused (ValueError).
-PACKED_FORMAT = 2
