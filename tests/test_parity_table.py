@@ -1,0 +1,148 @@
+"""The shared table of faults and its runner: the table loads, each damage makes the fault it names
+(and only that one), a row is judged as its verdict says; and the README snippet extractor refuses
+an unmarked block."""
+import hashlib
+import importlib.util
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from conftest import REPO
+
+ON = "fx5-time-add/TADD/manual-example/program"
+
+
+def _module(path: Path, name: str):
+    spec = importlib.util.spec_from_file_location(name, path)
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[name] = module
+    spec.loader.exec_module(module)
+    return module
+
+
+parity = _module(REPO / "verifiers" / "parity" / "run.py", "parity_run")
+snippets = _module(REPO / ".ci" / "readme_snippets.py", "readme_snippets")
+
+
+def test_table_loads_and_every_vector_it_names_exists():
+    rows = parity.load_table()
+    assert len({r.id for r in rows}) == len(rows) >= 40
+    ids = set()
+    for family in (REPO / "vectors").glob("*.json"):
+        if family.name != "manifest.json":
+            ids |= {v["id"] for v in json.loads(family.read_text())["vectors"]}
+    for r in rows:
+        assert r.on is None or r.on in ids, r.id
+        assert set(r.env) <= {"PLCVEC_ID", "PLCVEC_FAMILY", "PLCVEC_INSTRUCTION", "PLCVEC_TAG",
+                              "PLCVEC_INTERPRETATION", "PLCVEC_SHARD", "PLCVEC_KNOWN_FAILURES",
+                              "PLCVEC_TIMEOUT"}, r.id
+    # Every damage the runner knows is used by some row, and every verdict appears.
+    assert {r.damage for r in rows if r.damage} == set(parity.DAMAGES)
+    assert {r.verdict for r in rows} == set(parity.STATUS)
+
+
+def test_table_refuses_a_bad_row(tmp_path):
+    bad = tmp_path / "faults.toml"
+    bad.write_text('[[fault]]\nid = "x"\nwhat = "y"\nverdict = "green"\n')
+    with pytest.raises(parity.TableError, match="verdict must be one of"):
+        parity.load_table(bad)
+    bad.write_text('[[fault]]\nid = "x"\nwhat = "y"\nverdict = "pass"\ncolour = 1\n')
+    with pytest.raises(parity.TableError, match="unknown key"):
+        parity.load_table(bad)
+    bad.write_text('[[fault]]\nid = "x"\nwhat = "y"\nverdict = "pass"\n[fault.except.go]\nverdict = "fail"\n')
+    with pytest.raises(parity.TableError, match="why"):
+        parity.load_table(bad)
+
+
+@pytest.fixture(scope="module")
+def folders(tmp_path_factory):
+    return parity.Folders(tmp_path_factory.mktemp("damaged"))
+
+
+def _sealed(folder) -> bool:
+    entry = json.loads(folder.index.read_text())["families"][folder.family]
+    return entry["sha256"] == hashlib.sha256(folder.file.read_bytes()).hexdigest()
+
+
+@pytest.mark.parametrize("form", ["json", "jsonl"])
+def test_structural_damages_are_the_only_fault(folders, form):
+    f = folders.get("unknown-key", form, ON)
+    header, vectors = f.read()
+    assert [v.get("surprise") for v in vectors if v["id"] == ON] == [1]
+    assert _sealed(f)
+    f = folders.get("duplicate-id", form, ON)
+    _, vectors = f.read()
+    assert [v["id"] for v in vectors].count(ON) == 2 and _sealed(f)
+    assert json.loads(f.index.read_text())["families"][f.family]["count"] == len(vectors)
+    f = folders.get("bit-holds-2", form, ON)
+    _, vectors = f.read()
+    target = next(v for v in vectors if v["id"] == ON)
+    assert 2 in target["initial"]["devices"].values()
+    assert all(type(x) is bool for x in target["final"]["devices"].values() if type(x) is not int)
+    f = folders.get("sha-mismatch", form, ON)
+    assert not _sealed(f)
+    f = folders.get("empty-family", form, ON)
+    assert f.read()[1] == [] and _sealed(f)
+
+
+@pytest.mark.parametrize("form", ["json", "jsonl"])
+def test_byte_damages(folders, form):
+    f = folders.get("non-utf8", form, ON)
+    data = f.file.read_bytes()
+    with pytest.raises(UnicodeDecodeError):
+        data.decode("utf-8")
+    assert _sealed(f)  # only the byte is wrong: a runner must notice it itself
+    f = folders.get("cut-at-line", form, ON)
+    assert f.file.read_bytes().endswith(b"\n") and not _sealed(f)
+    assert ON.encode() not in f.file.read_bytes()
+    f = folders.get("not-json", form, ON)
+    assert b'{"id": this is not JSON' in f.file.read_bytes()
+
+
+def test_a_row_is_judged_by_its_verdict(tmp_path, monkeypatch):
+    """A stand-in entry shows the judging: exit status class, names, a trace for a usage error."""
+    entry = tmp_path / "verifiers" / "go" / "faults-entry"
+    entry.parent.mkdir(parents=True)
+    entry.write_text("#!/bin/sh\necho \"vector $PLCVEC_HOSTILE_ON failed\"\nexit ${CODE:-1}\n")
+    entry.chmod(0o755)
+    monkeypatch.setattr(parity, "REPO", tmp_path)
+    row = parity.Row(id="r", what="w", verdict="fail", names=["{on}"], hostile="panic", on=ON)
+    scratch = tmp_path / "s"
+    assert parity.run_row("go", row, None, scratch, 30).ok
+    monkeypatch.setenv("CODE", "0")
+    out = parity.run_row("go", row, None, scratch, 30)
+    assert not out.ok and "expected non-zero" in out.why
+    row.names = ["something else"]
+    monkeypatch.setenv("CODE", "1")
+    assert "does not name" in parity.run_row("go", row, None, scratch, 30).why
+    entry.write_text("#!/bin/sh\necho 'goroutine 1 [running]:'\nexit 2\n")
+    usage = parity.Row(id="u", what="w", verdict="usage")
+    assert "stack trace" in parity.run_row("go", usage, None, scratch, 30).why
+    entry.write_text("#!/bin/sh\nsleep 30\n")
+    assert "hang" in parity.run_row("go", usage, None, scratch, 1).why
+
+
+def test_readme_snippets_refuse_an_unmarked_block(tmp_path):
+    md = tmp_path / "README.md"
+    md.write_text("# x\n\n<!-- snippet: a/run.sh -->\n```sh\necho hi\n```\n\n```sh\nls\n```\n")
+    found, problems = snippets.blocks(md)
+    assert [b.kind for b in found] == ["snippet", None]
+    assert problems == [f"{md}:8: a fenced block with no <!-- snippet: PATH --> or "
+                        "<!-- snippet-skip: REASON --> marker on the line before it"]
+    md.write_text("<!-- snippet: ../out.sh -->\n```sh\nx\n```\n<!-- snippet-skip: -->\n```\ny\n```\n")
+    _, problems = snippets.blocks(md)
+    assert "leaves the output folder" in problems[0] and "gives no reason" in problems[1]
+
+
+def test_readme_snippets_extract(tmp_path):
+    md = tmp_path / "README.md"
+    md.write_text("<!-- snippet: go/main.go -->\n\n````go\npackage main\n```\n````\n"
+                  "<!-- snippet-skip: output -->\n```\nok\n```\n")
+    out = tmp_path / "out"
+    r = subprocess.run([sys.executable, str(REPO / ".ci" / "readme_snippets.py"), "extract", str(md),
+                        "--out", str(out)], capture_output=True, text=True)
+    assert r.returncode == 0, r.stderr
+    assert (out / "go" / "main.go").read_text() == "package main\n```\n"

@@ -1,0 +1,457 @@
+#!/usr/bin/env python3
+"""Run the shared table of faults (faults.toml) against every runner and check each verdict.
+
+    python3 verifiers/parity/run.py                      # every language that has a faults-entry
+    python3 verifiers/parity/run.py --lang go,rust       # some of them
+    python3 verifiers/parity/run.py --row 'damage-*' -v  # some rows, with each run's output
+
+Each language provides `verifiers/<lang>/faults-entry` (README.md beside this file): `--build` once,
+then one call per row with the row's environment. This script makes the damaged vector folders,
+runs every row with a bound on its time, and compares the exit status and the output with the
+row's verdict. It needs nothing but the standard library, so it runs before anything is installed.
+
+Exit status: 0 every row gave its verdict in every language, 1 some did not, 2 the table, a language
+or an option is wrong.
+"""
+from __future__ import annotations
+
+import argparse
+import fnmatch
+import hashlib
+import json
+import os
+import re
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+import tomllib
+from dataclasses import dataclass, field
+from pathlib import Path
+
+HERE = Path(__file__).resolve().parent
+REPO = HERE.parents[1]
+TABLE = HERE / "faults.toml"
+LANGUAGES = ("python", "c", "rust", "go", "java", "typescript")
+# The vector folder each language's runner reads: the golden JSON files with manifest.json, or the
+# packaged JSON-lines copy with index.json (C reads its vectors through `plcvec export`, from JSON).
+FORMS = {"python": "json", "c": "json", "rust": "jsonl", "go": "jsonl", "java": "jsonl",
+         "typescript": "jsonl"}
+# Exit status `plcvec verify` gives for each verdict (CONTRACT.md).
+STATUS = {"pass": 0, "fail": 1, "usage": 2, "empty": 5}
+# Languages whose entry point returns the verdict's own status, not only its test runner's.
+EXACT = {"python", "c"}
+ROW_KEYS = {"id", "what", "verdict", "names", "file_line", "hostile", "on", "damage", "env", "known",
+            "filter", "except"}
+EXCEPT_KEYS = {"verdict", "names", "skip", "why"}
+DAMAGES = ("unknown-key", "unknown-header-key", "duplicate-id", "bit-holds-2", "word-out-of-range",
+           "missing-steps", "major-version", "sha-mismatch", "non-utf8", "cut-at-line",
+           "cut-mid-line", "not-json", "missing-file", "missing-index", "empty-family")
+# A user's mistake gets a message, not a stack trace: what each language's traces look like.
+TRACES = {
+    "python": re.compile(r"Traceback \(most recent call last\)"),
+    "go": re.compile(r"^goroutine \d+ \[", re.M),
+    "rust": re.compile(r"stack backtrace:|RUST_BACKTRACE=1"),
+    "java": re.compile(r"^\s+at (java|jdk|sun|org\.junit)\.[\w.$]+\(", re.M),
+    "typescript": re.compile(r"^\s+at .*\((node:|file:|/).*:\d+:\d+\)$", re.M),
+    "c": re.compile(r"AddressSanitizer|^#\d+ 0x[0-9a-f]+ in ", re.M),
+}
+BUILD_BOUND_S = 900
+ROW_BOUND_S = 180
+
+
+class TableError(Exception):
+    """faults.toml (or an option) is wrong: exit 2 with the message."""
+
+
+@dataclass
+class Row:
+    id: str
+    what: str
+    verdict: str
+    names: list[str] = field(default_factory=list)
+    file_line: bool = False
+    hostile: str = "reference"
+    on: str | None = None
+    damage: str | None = None
+    env: dict[str, str] = field(default_factory=dict)
+    known: str | None = None
+    filter: str | None = None
+    exceptions: dict[str, dict] = field(default_factory=dict)
+
+
+def load_table(path: Path = TABLE) -> list[Row]:
+    try:
+        data = tomllib.loads(path.read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError, tomllib.TOMLDecodeError) as e:
+        raise TableError(f"{path}: {e}") from None
+    rows, seen = [], set()
+    for i, raw in enumerate(data.get("fault", [])):
+        where = f"{path.name}: fault #{i + 1} ({raw.get('id', 'no id')})"
+        unknown = set(raw) - ROW_KEYS
+        if unknown:
+            raise TableError(f"{where}: unknown key(s) {', '.join(sorted(unknown))}")
+        for key in ("id", "what", "verdict"):
+            if not isinstance(raw.get(key), str) or not raw[key]:
+                raise TableError(f"{where}: `{key}` is required")
+        if raw["id"] in seen:
+            raise TableError(f"{where}: the id is used twice")
+        seen.add(raw["id"])
+        if raw["verdict"] not in STATUS:
+            raise TableError(f"{where}: verdict must be one of {', '.join(STATUS)}")
+        if raw.get("damage") is not None and raw["damage"] not in DAMAGES:
+            raise TableError(f"{where}: unknown damage {raw['damage']!r}")
+        if raw.get("damage") and not raw.get("on"):
+            raise TableError(f"{where}: a damage needs `on`, the vector it is applied to")
+        if raw.get("filter") not in (None, "no-match"):
+            raise TableError(f"{where}: filter must be \"no-match\"")
+        exceptions = raw.get("except", {})
+        for lang, exc in exceptions.items():
+            if lang not in LANGUAGES:
+                raise TableError(f"{where}: except.{lang}: no such language")
+            if set(exc) - EXCEPT_KEYS or not exc.get("why"):
+                raise TableError(f"{where}: except.{lang} takes verdict, names, skip and a `why`")
+            if "verdict" in exc and exc["verdict"] not in STATUS:
+                raise TableError(f"{where}: except.{lang}: verdict must be one of {', '.join(STATUS)}")
+        rows.append(Row(id=raw["id"], what=raw["what"], verdict=raw["verdict"],
+                        names=list(raw.get("names", [])), file_line=bool(raw.get("file_line")),
+                        hostile=raw.get("hostile", "reference"), on=raw.get("on"),
+                        damage=raw.get("damage"),
+                        env={k: str(v) for k, v in raw.get("env", {}).items()},
+                        known=raw.get("known"), filter=raw.get("filter"), exceptions=exceptions))
+    if not rows:
+        raise TableError(f"{path}: no [[fault]] rows")
+    return rows
+
+
+# --- the damaged vector folders ----------------------------------------------------------------
+
+def sha256(path: Path) -> str:
+    return hashlib.sha256(path.read_bytes()).hexdigest()
+
+
+def jsonl_source() -> Path:
+    """The packaged JSON-lines copy the natives read (`plcvec export` writes the same one to each)."""
+    for lang in ("rust", "go", "typescript"):
+        folder = REPO / "verifiers" / lang / "vectors"
+        if (folder / "index.json").is_file():
+            return folder
+    raise TableError("no packaged JSON-lines vectors (verifiers/<lang>/vectors/index.json); "
+                     "run `python3 -m plcvec export --all`")
+
+
+class Folder:
+    """A copy of one form of the vector files, and the family file a damage is applied to."""
+
+    def __init__(self, form: str, root: Path, on: str):
+        self.form, self.root, self.on = form, root, on
+        self.family = on.split("/", 1)[0]
+        self.index = root / ("manifest.json" if form == "json" else "index.json")
+        self.file = root / f"{self.family}.{form}"
+
+    def read_index(self) -> dict:
+        return json.loads(self.index.read_text(encoding="utf-8"))
+
+    def write_index(self, index: dict) -> None:
+        self.index.write_text(json.dumps(index, indent=1, sort_keys=True) + "\n", encoding="utf-8")
+
+    def reseal(self, count: int | None = None) -> None:
+        """Record the family file's new sha256 (and count), so that only the intended damage is there."""
+        index = self.read_index()
+        entry = index["families"][self.family]
+        entry["sha256"] = sha256(self.file)
+        if count is not None:
+            entry["count"] = count
+        self.write_index(index)
+
+    # The family file as a header and a list of vectors, whichever its form.
+    def read(self) -> tuple[dict, list[dict]]:
+        text = self.file.read_text(encoding="utf-8")
+        if self.form == "json":
+            data = json.loads(text)
+            return {k: v for k, v in data.items() if k != "vectors"}, data["vectors"]
+        lines = text.splitlines()
+        return json.loads(lines[0]), [json.loads(line) for line in lines[1:] if line]
+
+    def write(self, header: dict, vectors: list[dict]) -> None:
+        if self.form == "json":
+            text = json.dumps({**header, "vectors": vectors}, indent=1, ensure_ascii=False) + "\n"
+        else:
+            if "count" in header:
+                header = {**header, "count": len(vectors)}
+            text = "".join(json.dumps(obj, ensure_ascii=False, sort_keys=True, separators=(",", ":"))
+                           + "\n" for obj in [header, *vectors])
+        self.file.write_text(text, encoding="utf-8")
+        self.reseal(count=len(vectors))
+
+    def target(self, vectors: list[dict]) -> dict:
+        for v in vectors:
+            if v.get("id") == self.on:
+                return v
+        raise TableError(f"vector {self.on} is not in {self.file.name}")
+
+    def target_line(self, data: bytes) -> int:
+        """The 0-based line of the file on which the target vector starts."""
+        needle = json.dumps(self.on).encode()
+        for i, line in enumerate(data.split(b"\n")):
+            if needle in line and b'"id"' in line:
+                return i
+        raise TableError(f"vector {self.on} is not in {self.file.name}")
+
+
+def damage(folder: Folder, kind: str) -> None:
+    header, vectors = folder.read()
+    if kind in ("unknown-key", "bit-holds-2", "word-out-of-range", "missing-steps", "duplicate-id"):
+        v = folder.target(vectors)
+        if kind == "unknown-key":
+            v["surprise"] = 1
+        elif kind == "missing-steps":
+            del v["steps"]
+        elif kind == "duplicate-id":
+            vectors.insert(vectors.index(v) + 1, json.loads(json.dumps(v)))
+        else:
+            devices = v["initial"]["devices"]
+            want = bool if kind == "bit-holds-2" else int
+            name = next(d for d, value in devices.items()
+                        if type(value) is want)  # noqa: E721 (a bool is not a word here)
+            devices[name] = 2 if kind == "bit-holds-2" else 70000
+        folder.write(header, vectors)
+    elif kind == "unknown-header-key":
+        folder.write({**header, "surprise": 1}, vectors)
+    elif kind == "major-version":
+        folder.write({**header, "schema_version": "2.0.0"}, vectors)
+        index = folder.read_index()
+        index["schema_version"] = "2.0.0"
+        folder.write_index(index)
+    elif kind == "empty-family":
+        folder.write(header, [])
+    elif kind == "sha-mismatch":
+        index = folder.read_index()
+        index["families"][folder.family]["sha256"] = "0" * 64
+        folder.write_index(index)
+    elif kind == "missing-file":
+        folder.file.unlink()
+    elif kind == "missing-index":
+        folder.index.unlink()
+    else:  # damages of the bytes themselves, left unsealed as an interrupted copy would be
+        data = folder.file.read_bytes()
+        lines = data.split(b"\n")
+        at = folder.target_line(data)
+        if kind == "non-utf8":
+            # The JSON form spreads a vector over lines (its description on a later one); the
+            # JSON-lines form holds it on one.
+            j = next(i for i in range(at, len(lines)) if b'"description":' in lines[i])
+            lines[j] = re.sub(rb'"description": ?"', lambda m: m.group(0) + b"\xff", lines[j], count=1)
+            folder.file.write_bytes(b"\n".join(lines))
+            folder.reseal()
+            return
+        if kind == "not-json":
+            lines[at] = b'{"id": this is not JSON'
+        elif kind == "cut-mid-line":
+            lines = lines[:at] + [lines[at][: len(lines[at]) // 2]]
+        elif kind == "cut-at-line":
+            lines = lines[:at]
+            lines.append(b"")
+        folder.file.write_bytes(b"\n".join(lines))
+
+
+class Folders:
+    """The damaged copies, made once per (damage, form, vector) and removed at the end."""
+
+    def __init__(self, base: Path):
+        self.base, self.made = base, {}
+
+    def get(self, kind: str, form: str, on: str) -> Folder:
+        key = (kind, form, on)
+        if key not in self.made:
+            root = self.base / f"{len(self.made):02d}-{kind}-{form}"
+            source = REPO / "vectors" if form == "json" else jsonl_source()
+            shutil.copytree(source, root)
+            folder = Folder(form, root, on)
+            damage(folder, kind)
+            self.made[key] = folder
+        return self.made[key]
+
+
+# --- running a row -----------------------------------------------------------------------------
+
+@dataclass
+class Outcome:
+    lang: str
+    row: Row
+    ok: bool
+    why: str
+    status: int | None
+    seconds: float
+    output: str
+
+
+def entry(lang: str) -> Path:
+    return REPO / "verifiers" / lang / "faults-entry"
+
+
+def run_bounded(cmd: list[str], env: dict, bound: float) -> tuple[int | None, str, float]:
+    """Run in its own process group; kill the group at the bound. (status or None on a hang, output)"""
+    started = time.monotonic()
+    with tempfile.TemporaryFile() as out:
+        proc = subprocess.Popen(cmd, cwd=REPO, env=env, stdin=subprocess.DEVNULL, stdout=out,
+                                stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            status = proc.wait(timeout=bound)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+            status = None
+        finally:
+            try:
+                os.killpg(proc.pid, signal.SIGKILL)  # anything the entry left behind
+            except ProcessLookupError:
+                pass
+        out.seek(0)
+        text = out.read().decode("utf-8", "replace")
+    return status, text, time.monotonic() - started
+
+
+def expected(row: Row, lang: str) -> tuple[str, list[str], bool]:
+    """(verdict, names, skipped) for one language, with its exception if the row has one."""
+    exc = row.exceptions.get(lang, {})
+    return exc.get("verdict", row.verdict), list(exc.get("names", row.names)), bool(exc.get("skip"))
+
+
+def run_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float) -> Outcome:
+    verdict, names, skipped = expected(row, lang)
+    if skipped:
+        return Outcome(lang, row, True, f"skipped: {row.exceptions[lang]['why']}", None, 0.0, "")
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PLCVEC_")}
+    env.update(row.env)
+    env["PLCVEC_HOSTILE"] = row.hostile
+    if row.on:
+        env["PLCVEC_HOSTILE_ON"] = row.on
+    if row.filter:
+        env["PLCVEC_FILTER"] = row.filter
+    subst = {"on": row.on or "", "file": "", "index": "", "known": "known.toml"}
+    if row.damage:
+        folder = folders.get(row.damage, FORMS[lang], row.on)
+        env["PLCVEC_VECTORS"] = str(folder.root)
+        subst.update(file=folder.file.name, index=folder.index.name)
+    if row.known is not None:
+        known = scratch / lang / row.id / "known.toml"
+        known.parent.mkdir(parents=True, exist_ok=True)
+        known.write_text(row.known.lstrip("\n"), encoding="utf-8")
+        env["PLCVEC_KNOWN_FAILURES"] = str(known)
+    status, output, seconds = run_bounded([str(entry(lang))], env, bound)
+    problems = []
+    if status is None:
+        problems.append(f"no answer within {bound:.0f} s (a hang)")
+    elif lang in EXACT:
+        if status != STATUS[verdict]:
+            problems.append(f"exit {status}, expected {STATUS[verdict]} ({verdict})")
+    elif (status == 0) != (verdict == "pass"):
+        problems.append(f"exit {status}, expected {'0' if verdict == 'pass' else 'non-zero'} ({verdict})")
+    for name in names:
+        name = name.format(**subst)
+        if name not in output:
+            problems.append(f"output does not name {name!r}")
+    if row.file_line:
+        named = subst["known"] if row.known is not None else subst["file"]
+        if not re.search(re.escape(named) + r":\d+", output):
+            problems.append(f"output does not name {named}:<line>")
+    if verdict == "usage" and TRACES[lang].search(output):
+        problems.append("a stack trace for a user's mistake")
+    return Outcome(lang, row, not problems, "; ".join(problems) or "ok", status, seconds, output)
+
+
+def build(lang: str) -> str | None:
+    status, output, seconds = run_bounded([str(entry(lang)), "--build"], dict(os.environ), BUILD_BOUND_S)
+    if status != 0:
+        tail = "\n".join(output.splitlines()[-30:])
+        return f"{lang}: `faults-entry --build` {'hung' if status is None else f'exited {status}'}\n{tail}"
+    print(f"== {lang}: built in {seconds:.0f} s", flush=True)
+    return None
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                     formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--lang", default="", help="comma-separated languages (default: every one "
+                        "with a faults-entry): " + ", ".join(LANGUAGES))
+    parser.add_argument("--row", action="append", default=[], help="row id or glob (repeatable)")
+    parser.add_argument("--list", action="store_true", help="list the rows and exit")
+    parser.add_argument("--no-build", action="store_true", help="do not call `faults-entry --build`")
+    parser.add_argument("--bound", type=float, default=ROW_BOUND_S, help="seconds a row may take")
+    parser.add_argument("-v", "--verbose", action="store_true", help="print the output of rows that fail")
+    parser.add_argument("--keep", action="store_true", help="keep the damaged folders")
+    args = parser.parse_args(argv)
+    try:
+        rows = load_table()
+        if args.row:
+            chosen = [r for r in rows if any(fnmatch.fnmatchcase(r.id, g) for g in args.row)]
+            unmatched = [g for g in args.row if not any(fnmatch.fnmatchcase(r.id, g) for r in rows)]
+            if unmatched:
+                raise TableError(f"--row {', '.join(unmatched)} matches no row; rows: "
+                                 + ", ".join(r.id for r in rows))
+            rows = chosen
+        if args.list:
+            for r in rows:
+                print(f"{r.id:34} {r.verdict:6} {r.what}")
+            return 0
+        if args.lang:
+            langs = [x.strip() for x in args.lang.split(",")]
+            bad = [x for x in langs if x not in LANGUAGES]
+            if bad or not all(langs):
+                raise TableError(f"--lang {args.lang}: known languages: {', '.join(LANGUAGES)}")
+            missing = [x for x in langs if not os.access(entry(x), os.X_OK)]
+            if missing:
+                raise TableError("no executable faults-entry for " + ", ".join(
+                    f"{x} ({entry(x).relative_to(REPO)})" for x in missing))
+        else:
+            langs = [x for x in LANGUAGES if os.access(entry(x), os.X_OK)]
+            if not langs:
+                raise TableError("no language has a verifiers/<lang>/faults-entry")
+    except TableError as e:
+        print(f"run.py: {e}", file=sys.stderr)
+        return 2
+
+    failures = 0
+    outcomes: list[Outcome] = []
+    base = Path(tempfile.mkdtemp(prefix="plcvec-faults-"))
+    try:
+        folders = Folders(base / "vectors")
+        for lang in langs:
+            if not args.no_build:
+                problem = build(lang)
+                if problem:
+                    print(problem, file=sys.stderr)
+                    failures += len(rows)
+                    continue
+            for row in rows:
+                try:
+                    o = run_row(lang, row, folders, base / "scratch", args.bound)
+                except TableError as e:
+                    print(f"run.py: {e}", file=sys.stderr)
+                    return 2
+                outcomes.append(o)
+                mark = "ok  " if o.ok else "FAIL"
+                print(f"{mark} {lang:10} {row.id:34} {o.seconds:5.1f} s  {o.why}", flush=True)
+                if not o.ok:
+                    failures += 1
+                    if args.verbose:
+                        print("\n".join("     | " + line for line in o.output.splitlines()[-40:]))
+    finally:
+        if args.keep:
+            print(f"damaged folders kept in {base}")
+        else:
+            shutil.rmtree(base, ignore_errors=True)
+    passed = sum(o.ok for o in outcomes)
+    print(f"faults: {passed} passed, {failures} failed")
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    try:
+        sys.exit(main())
+    except BrokenPipeError:  # `run.py --list | head`: the reader has gone, which is no error
+        sys.stderr.close()
+        sys.exit(0)
