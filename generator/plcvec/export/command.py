@@ -19,9 +19,10 @@ def _checkout():
 
 
 def register(sub, spec_parent):
-    # Rendered from the vector files, not the spec: `spec_parent` is not inherited.
+    # Rendered from the vector files; the spec they were generated from gives what they do not carry
+    # (an instruction's form, condition and execution; the reference tables).
     e = sub.add_parser(
-        "export", help="render the vectors and the spec's names into a native verifier (verifiers/<lang>/)",
+        "export", parents=[spec_parent], help="render the vectors and the spec's names into a native verifier (verifiers/<lang>/)",
         description="Render each language's jinja2 templates (generator/plcvec/export/templates/<lang>/) with the "
                     "vector files, and write the compact JSON Lines copy of the vectors that travels with the "
                     f"language's package. Languages: {', '.join(languages()) or '(none yet)'}. "
@@ -49,7 +50,7 @@ def run(args):
         raise PlcvecError(f"--lang {', '.join(unknown)}: no such language (known: {', '.join(known) or 'none'})")
     if not args.root or not args.vectors:
         raise PlcvecError("export: not in a plcvec checkout; name the repository with --root and the vectors with --vectors")
-    model = load_model(args.vectors)
+    model = load_model(args.vectors, args.spec_dir)
     root = Path(args.root)
     differ, written, total = [], 0, 0
     for lang in chosen:

@@ -1,7 +1,10 @@
 """What every language's templates see: the suite, its families, their names and their vectors.
 
-Built from a vector folder (the files `plcvec generate` writes), not from the spec: the vector
-files are the product and the contract, so an export says exactly what a runner will judge.
+Built from a vector folder (the files `plcvec generate` writes): the vector files are the product
+and the contract, so an export says exactly what a runner will judge. What the vectors do not carry
+about an instruction (its form, condition and execution, for every language to have as values) is
+read from the spec the vectors were generated from; a vector file whose spec hash is not the
+spec's is refused, so the two never disagree.
 """
 from __future__ import annotations
 
@@ -26,6 +29,26 @@ class Name:
 
 
 @dataclass
+class Instruction(Name):
+    """An instruction's name and what it is, as values (so no runner parses `LDTM<=` or `AND <=DT`):
+    `form` LD/AND/OR (None for an instruction that is not a contact), `condition` one of
+    CONDITIONS (None for one that compares nothing), `execution` every-scan or rising-edge."""
+
+    family: str = ""
+    st: str = ""                   # the structured-text spelling, "" where the page gives none
+    form: str | None = None
+    condition: str | None = None
+    execution: str = ""
+
+
+# The six conditions, in the order the vocabulary lists them; each is the set of orderings of
+# (s1) against (s2) for which the contact conducts (the spec's `true_when`), spelt as the operator.
+CONDITIONS = {"=": ("eq",), "<>": ("lt", "gt"), "<": ("lt",), "<=": ("lt", "eq"), ">": ("gt",), ">=": ("gt", "eq")}
+FORMS = ("LD", "AND", "OR")
+EXECUTIONS = ("every-scan", "rising-edge")
+
+
+@dataclass
 class Interpretation:
     name: Name
     question: str
@@ -40,7 +63,7 @@ class FamilyModel:
     kind: str
     title: str
     spec_sha256: str
-    instructions: list[Name]
+    instructions: list[Instruction]
     tags: list[Name]
     interpretations: list[Interpretation]
     header: dict
@@ -55,10 +78,14 @@ class SuiteModel:
     schema_version: str
     spec_sha256: str
     families: list[FamilyModel]
-    instructions: list[Name]          # every family's, in family order
+    instructions: list[Instruction]   # every family's, in family order
     tags: list[Name]                  # the union, sorted
     interpretations: list[Interpretation]   # each once, even when several families share it
     devices: list[Name] = field(default_factory=list)   # every device any vector names, sorted
+    # The values an Instruction's form, condition and execution take (each one some instruction has).
+    forms: list[Name] = field(default_factory=list)
+    conditions: list[Name] = field(default_factory=list)
+    executions: list[Name] = field(default_factory=list)
     generated_note: str = GENERATED_NOTE
 
     @property
@@ -79,9 +106,46 @@ def _read_json(path: Path):
         raise PlcvecError(f"{path}: not a readable JSON file ({exc})")
 
 
-def load_model(vectors_dir) -> SuiteModel:
+def instruction_metadata(fam) -> dict[str, dict]:
+    """{instruction name: its family, ST spelling, form, condition and execution} from a loaded
+    spec family (plcvec.spec.loader.Family)."""
+    from plcvec.cases.build import instruction_list
+
+    by_symbol = {}
+    if fam.kind == "masked_compare":
+        by_symbol = {c["symbol"]: c for c in fam.doc["instructions"]["conditions"]}
+    out = {}
+    for item in instruction_list(fam):
+        form = item.get("form")
+        if isinstance(form, dict):      # a contact: its form and condition come from the spec's tables
+            orderings = set(by_symbol[item["symbol"]]["true_when"])
+            condition = next((op for op, when in CONDITIONS.items() if set(when) == orderings), None)
+            if condition is None:
+                raise fam.error(("instructions", "conditions"),
+                                f"condition {item['symbol']!r} is true for {sorted(orderings)}, which is none of "
+                                f"the six comparisons {', '.join(CONDITIONS)}")
+            if form["form"] not in FORMS:
+                raise fam.error(("instructions", "forms"), f"form {form['form']!r} is none of {', '.join(FORMS)}")
+            meta = {"form": form["form"], "condition": condition, "execution": form["execution"]}
+        else:
+            meta = {"form": None, "condition": None, "execution": item["execution"]}
+        meta.update(family=fam.name, st=item.get("st", ""), execution=meta["execution"].replace("_", "-"))
+        out[item["name"]] = meta
+    return out
+
+
+def _spec_families(spec_dir):
+    from plcvec.spec.loader import load_spec
+
+    return {fam.name: fam for fam in load_spec(spec_dir)}
+
+
+def load_model(vectors_dir, spec_dir=None) -> SuiteModel:
+    """The model of the vector folder; `spec_dir` (default: the checkout's spec) must be the spec
+    the vectors were generated from."""
     vectors_dir = Path(vectors_dir)
     manifest = _read_json(vectors_dir / "manifest.json")
+    specs = _spec_families(spec_dir)
     families, tags, interpretations = [], {}, {}
     try:
         entries = list(manifest["families"].items())
@@ -89,6 +153,12 @@ def load_model(vectors_dir) -> SuiteModel:
         raise PlcvecError(f"{vectors_dir / 'manifest.json'}: no `families`; is this a plcvec vector folder?")
     for fam_name, entry in entries:
         data = _read_json(vectors_dir / entry["file"])
+        spec = specs.get(fam_name)
+        if spec is None or spec.sha256 != data.get("spec_sha256"):
+            raise PlcvecError(f"{vectors_dir / entry['file']}: generated from another spec than "
+                              f"{spec.path if spec else f'the spec folder (no family {fam_name})'}; "
+                              "run `plcvec generate` first")
+        metadata = instruction_metadata(spec)
         fam_interps = []
         for i in data["interpretations"]:
             interp = interpretations.get(i["id"])
@@ -103,7 +173,7 @@ def load_model(vectors_dir) -> SuiteModel:
         header = {k: v for k, v in data.items() if k != "vectors"}
         families.append(FamilyModel(
             name=_name(fam_name, data["title"]), kind=data["kind"], title=data["title"],
-            spec_sha256=data["spec_sha256"], instructions=[_name(i) for i in data["instructions"]],
+            spec_sha256=data["spec_sha256"], instructions=[_instruction(i, metadata) for i in data["instructions"]],
             tags=[tags[t] for t in data["tags"]], interpretations=fam_interps,
             header=header, vectors=data["vectors"], jsonl=family_jsonl(data),
             clauses=[_name(c) for c in sorted({c for v in data["vectors"] for c in v.get("clauses", ())})]))
@@ -116,7 +186,16 @@ def load_model(vectors_dir) -> SuiteModel:
         tags=[tags[t] for t in sorted(tags)],
         interpretations=list(interpretations.values()),
         devices=[_name(d) for d in sorted({d for f in families for v in f.vectors for d in _devices_of(v)})],
+        forms=[_name(f) for f in FORMS if any(i.form == f for fam in families for i in fam.instructions)],
+        conditions=[_name(c) for c in CONDITIONS if any(i.condition == c for fam in families for i in fam.instructions)],
+        executions=[_name(e) for e in EXECUTIONS if any(i.execution == e for fam in families for i in fam.instructions)],
     )
+
+
+def _instruction(name: str, metadata: dict) -> Instruction:
+    if name not in metadata:
+        raise PlcvecError(f"instruction {name!r} of the vectors is not in the spec; run `plcvec generate` first")
+    return Instruction(name, identifier_words(name), **metadata[name])
 
 
 def _devices_of(vector: dict):

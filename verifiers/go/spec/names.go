@@ -13,7 +13,7 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "eeebc7716a61c31944fb14759ce8fb6dd04049ff5dc98bed49f4cf9a2a69a4a5"
+const SpecSHA256 = "1e4d064fcdabb31dad8e60bfb8a5a4991f60dd26a70b1f89f94ba4de8d670ad2"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3678

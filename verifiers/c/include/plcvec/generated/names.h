@@ -8,7 +8,7 @@
 #define PLCVEC_SUITE_VERSION "0.1.0"
 #define PLCVEC_SCHEMA_VERSION "1.0.0"
 #define PLCVEC_SCHEMA_MAJOR 1
-#define PLCVEC_SPEC_SHA256 "eeebc7716a61c31944fb14759ce8fb6dd04049ff5dc98bed49f4cf9a2a69a4a5"
+#define PLCVEC_SPEC_SHA256 "1e4d064fcdabb31dad8e60bfb8a5a4991f60dd26a70b1f89f94ba4de8d670ad2"
 #define PLCVEC_TOTAL_VECTORS 3678
 
 /* Instruction families, in the order of the manifest. */
