@@ -26,6 +26,7 @@ COPIES = [
     ("vectors", "plcvec_verify", "vectors"),
     ("verifiers/CONTRACT.md", "plcvec_verify", "verifiers/CONTRACT.md"),
     ("verifiers/PROTOCOL.md", "plcvec_verify", "verifiers/PROTOCOL.md"),
+    ("LICENSE", "plcvec_verify", "LICENSE"),     # shipped inside every release bundle
 ]
 SKIP = ("__pycache__", ".*", "*.pyc", "*.tmp")
 

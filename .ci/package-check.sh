@@ -57,6 +57,30 @@ for artifact in "$wheel" "$sdist"; do
     installed python3 -m pytest -q -p no:cacheprovider --plcvec-adapter "python3 -m plcvec_reference.adapter" \
         -k "TADD and boundary or LDDT and nonexistent_date" | tail -2
 
+    step "$kind: the commands of the package's README (verifiers/python/README.md), as written there"
+    python3 .ci/readme_snippets.py extract verifiers/python/README.md --out "$run/readme" >/dev/null
+    installed bash -euo pipefail "$run/readme/python-readme/gate.sh" >"$run/readme.txt" 2>&1 || { cat "$run/readme.txt"; exit 1; }
+    tail -2 "$run/readme.txt"
+
+    step "$kind: a closed pipe on stdout gives no traceback"
+    installed python3 -c 'import subprocess, sys
+p = subprocess.Popen(["plcvec", "--version"], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+p.stdout.close()
+err = p.stderr.read().decode()
+p.wait()
+sys.exit("plcvec --version into a closed pipe: " + err if "Traceback" in err else 0)'
+
+    step "$kind: the sdist and wheel carry the LICENSE"
+    # (listed to a file first: `grep -q` closing the pipe early would fail the pipeline under pipefail)
+    if [[ $kind == wheel ]]; then
+        python3 -m zipfile -l "$artifact" >"$run/members.txt"
+        grep -q "licenses/LICENSE" "$run/members.txt"
+    else
+        tar -tzf "$artifact" >"$run/members.txt"
+        grep -q "^plcvec-[^/]*/LICENSE$" "$run/members.txt"
+        if grep -q "/tests/" "$run/members.txt"; then echo "the sdist ships tests/ without the checkout they need" >&2; exit 1; fi
+    fi
+
     step "$kind: plcvec review and plcvec lint"
     installed plcvec review --out review
     test -s "$run/review/review.html" && test -s "$run/review/review.md"

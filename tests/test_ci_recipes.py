@@ -4,6 +4,7 @@ The script is run as a CI job would run it, against the reference adapter and ag
 with one bug, from an empty folder; its exit code, reports and Markdown summary are checked against
 the vector files and the JSON-lines report (never against the script's own summary text alone).
 """
+import importlib.util
 import json
 import os
 import subprocess
@@ -131,3 +132,71 @@ def test_the_gitlab_template_runs_the_gate_and_keeps_the_reports():
 @pytest.mark.parametrize("path", [GATE])
 def test_the_script_is_valid_bash(path):
     assert subprocess.run(["bash", "-n", str(path)], capture_output=True, timeout=60).returncode == 0
+
+
+def _header_example(path):
+    """The usage example in a recipe's comment header, as YAML (the lines indented under `#`)."""
+    lines = []
+    for line in path.read_text(encoding="utf-8").splitlines():
+        if not line.startswith("#"):
+            break
+        if line.startswith("#   "):
+            lines.append(line[4:].split("  #", 1)[0].rstrip())
+    return yaml.safe_load("\n".join(lines))
+
+
+def _known_alternatives():
+    known = {}
+    for path in (REPO / "vectors").glob("*.json"):
+        if path.name != "manifest.json":
+            for i in json.loads(path.read_text(encoding="utf-8"))["interpretations"]:
+                known[i["id"]] = {a["id"] for a in i["alternatives"]}
+    return known
+
+
+def _example_settings():
+    """(where, selection, alternatives, home URLs) of each recipe header's example and README block."""
+    action = _header_example(ACTION)
+    step = next(s for s in action if "uses" in s and "verifiers/ci/github" in s["uses"])
+    yield ("action.yml", step["with"]["selection"], step["with"]["alternatives"], [step["uses"]])
+    gitlab = _header_example(GITLAB)
+    v = gitlab["plcvec"]["variables"]
+    yield ("plcvec-gate.yml", v["PLCVEC_SELECTION"], v["PLCVEC_ALTERNATIVES"], [gitlab["include"][0]["remote"]])
+    # The README's two jobs, as .ci/readme_snippets.py extracts them for CI.
+    spec = importlib.util.spec_from_file_location("readme_snippets", REPO / ".ci" / "readme_snippets.py")
+    snippets = importlib.util.module_from_spec(spec)
+    sys.modules.setdefault("readme_snippets", snippets)   # dataclasses look their module up there
+    spec.loader.exec_module(snippets)
+    blocks = {b.arg: b.text for b in snippets.blocks(REPO / "README.md")[0] if b.kind == "snippet"}
+    github = yaml.safe_load(blocks["readme/github-job.yml"])
+    step = next(s for s in github["jobs"]["plcvec"]["steps"] if "verifiers/ci/github" in s.get("uses", ""))
+    yield ("README github", step["with"]["selection"], step["with"]["alternatives"], [step["uses"]])
+    job = yaml.safe_load(blocks["readme/gitlab-job.yml"])
+    v = job["plcvec"]["variables"]
+    yield ("README gitlab", v["PLCVEC_SELECTION"], v.get("PLCVEC_ALTERNATIVES", ""), [job["include"][0]["remote"]])
+
+
+@pytest.mark.parametrize("where,selection,alternatives,urls", list(_example_settings()), ids=lambda x: str(x)[:20])
+def test_the_recipe_examples_give_settings_plcvec_verify_accepts(where, selection, alternatives, urls, tmp_path):
+    known = _known_alternatives()
+    for choice in alternatives.split():
+        interp, _, alt = choice.partition("=")
+        assert interp in known and alt in known[interp], f"{where}: {choice} is not an interpretation alternative"
+    # The selection is accepted (no usage error) and selects something.
+    proc = subprocess.run([sys.executable, "-m", "plcvec", "verify", "--adapter", REFERENCE, "-q", *selection.split()],
+                          capture_output=True, text=True, cwd=tmp_path, timeout=600)
+    assert proc.returncode == 0, f"{where}: {selection}: {proc.stderr}"
+    # Every URL is the project's home (pyproject.toml [tool.plcvec]) at a release tag of this version.
+    from plcvec import __version__
+    for url in urls:
+        assert "OWNER" not in url and "HOST" not in url
+        assert "plcvec/plcvec" in url and f"v{__version__}" in url, url
+
+
+def test_the_gitlab_default_gate_script_is_fetched_not_copied_from_a_checkout():
+    job = yaml.safe_load(GITLAB.read_text(encoding="utf-8"))[".plcvec-gate"]
+    from plcvec import __version__
+    url = job["variables"]["PLCVEC_GATE_SCRIPT"]
+    assert url.startswith("https://") and url.endswith(f"/v{__version__}/verifiers/ci/gate.sh")
+    # The image can build an implementation (the slim image has no make).
+    assert "slim" not in job["image"]

@@ -106,6 +106,29 @@ def test_bundle_holds_every_part_and_the_sums_match(runs):
         assert hashlib.sha256(files[root + name]).hexdigest() == digest, name
 
 
+def test_bundle_carries_its_licence_readme_index_and_outer_sums(runs):
+    files, _ = members(runs[0])
+    root = NAME + "/"
+    assert files[root + "LICENSE"] == (REPO / "LICENSE").read_bytes()
+    readme = files[root + "README.md"].decode()
+    assert "--vectors jsonl" in readme and "PLCVEC_VECTORS" in readme and "MIT" in readme
+    # jsonl/index.json: every family file with its count of vector lines and its sha256.
+    index = json.loads(files[root + "jsonl/index.json"])
+    manifest = json.loads((REPO / "vectors" / "manifest.json").read_text(encoding="utf-8"))
+    assert set(index["families"]) == set(manifest["families"])
+    for name, entry in index["families"].items():
+        data = files[root + "jsonl/" + entry["file"]]
+        assert entry["sha256"] == hashlib.sha256(data).hexdigest()
+        assert entry["count"] == data.count(b"\n") - 1 == manifest["families"][name]["count"]
+    assert index["total"] == sum(e["count"] for e in manifest["families"].values())
+    assert index["spec_sha256"] == manifest["spec_sha256"]
+    # SHA256SUMS beside the archives: both archives, checkable before unpacking.
+    outer = dict(reversed(line.split("  ", 1)) for line in (runs[0] / "SHA256SUMS").read_text().splitlines())
+    assert set(outer) == {f"{NAME}.tar.gz", f"{NAME}.zip"}
+    for name, digest in outer.items():
+        assert hashlib.sha256((runs[0] / name).read_bytes()).hexdigest() == digest
+
+
 def test_jsonl_is_the_header_then_one_canonical_vector_per_line(runs):
     files, _ = members(runs[0])
     family = json.loads((REPO / "vectors" / f"{FAMILY}.json").read_text(encoding="utf-8"))

@@ -1,6 +1,7 @@
 """The `plcvec` command: generate, check, stream the exhaustive tier, benchmark."""
 import argparse
 import importlib
+import os
 import sys
 from pathlib import Path
 
@@ -183,9 +184,17 @@ def build_parser():
     return p
 
 
-def main(argv=None):
-    args = build_parser().parse_args(argv)
+def _quiet_stdout():
     try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):  # stdout already closed or not a real file (a test's capture)
+        pass
+
+
+def main(argv=None):
+    try:
+        args = build_parser().parse_args(argv)
         if getattr(args, "spec_dir", False) is None:
             from plcvec.spec.loader import default_spec
 
@@ -198,6 +207,10 @@ def main(argv=None):
         print("plcvec: interrupted; files already in place were left as they were", file=sys.stderr)
         return 130
     except BrokenPipeError:
+        # The reader went away (`plcvec --version | head -1`): no traceback, and none either when the
+        # interpreter flushes stdout at exit, so point stdout at /dev/null (the recipe of Python's
+        # documentation on SIGPIPE).
+        _quiet_stdout()
         return 1
     except OSError as exc:
         print(f"plcvec: {exc.filename or ''}: {exc.strerror or exc}", file=sys.stderr)

@@ -5,6 +5,7 @@ one vector changes one line. Every object is canonical (sorted keys, no spaces),
 gives the same bytes. The header is the family file without `vectors`; a reader tells it apart by
 its position (the first line) and by its `family` and `schema_version` keys and lack of an `id`.
 """
+import hashlib
 import json
 
 
@@ -18,3 +19,22 @@ def family_jsonl(family_file: dict) -> str:
     lines = [dumps_line(header)]
     lines.extend(dumps_line(v) for v in family_file["vectors"])
     return "\n".join(lines) + "\n"
+
+
+def jsonl_index(note: str, suite_version: str, schema_version: str, spec_sha256: str,
+                families: dict[str, str]) -> str:
+    """The index.json beside a folder of JSON-lines files ({family: its JSON-lines text}): which
+    families, how many vectors, the sha256 of each file, and which suite they are. Every runner
+    that reads the JSON-lines form checks a file against it before trusting it."""
+    counts = {name: text.count("\n") - 1 for name, text in families.items()}
+    index = {
+        "generated": note,
+        "suite_version": suite_version,
+        "schema_version": schema_version,
+        "spec_sha256": spec_sha256,
+        "total": sum(counts.values()),
+        "families": {name: {"file": f"{name}.jsonl", "count": counts[name],
+                            "sha256": hashlib.sha256(text.encode()).hexdigest()}
+                     for name, text in sorted(families.items())},
+    }
+    return json.dumps(index, indent=1, sort_keys=True) + "\n"

@@ -5,6 +5,7 @@ manifest, the review (HTML and Markdown), CONTRACT.md and PROTOCOL.md, CHANGES.m
 diff` against the previous release (--previous), and SHA256SUMS. The version is the suite version;
 CONTRACT.md ("Suite version") says when it moves, and a release that breaks the rule is refused.
 """
+import hashlib
 from pathlib import Path
 
 from plcvec.errors import PlcvecError
@@ -56,7 +57,12 @@ def run(args):
         old_schema = str(previous.manifest.get("schema_version", ""))
         changes.check_version(__version__, previous.manifest.get("generator_version", ""),
                               changes.required_bump(report, old_schema, SCHEMA_VERSION))
-    files = bundle.bundle(__version__, golden, vectors_dir, _review(families, by_family, args.manual_dir), docs_dir, text)
+    try:
+        license_text = (locate("plcvec_verify", ".", "LICENSE").path / "LICENSE").read_bytes()
+    except (VerifyError, OSError) as exc:
+        raise PlcvecError(f"release: the LICENSE to ship: {exc}") from None
+    files = bundle.bundle(__version__, golden, vectors_dir, _review(families, by_family, args.manual_dir), docs_dir,
+                          text, license_text)
 
     name = bundle.root_name(__version__)
     written = []
@@ -64,6 +70,18 @@ def run(args):
         target = out / f"{name}{suffix}"
         write_atomic(target, make(files))
         written.append(str(target))
+    # SHA256SUMS beside the archives too, so a download can be checked before it is unpacked; lines
+    # for other files already listed there (an earlier release in the same folder) are kept.
+    sums = out / "SHA256SUMS"
+    lines = {}
+    if sums.is_file():
+        for line in sums.read_text(encoding="utf-8").splitlines():
+            digest, _, fname = line.partition("  ")
+            if fname:
+                lines[fname] = digest
+    for path in written:
+        lines[Path(path).name] = hashlib.sha256(Path(path).read_bytes()).hexdigest()
+    write_atomic(sums, "".join(f"{lines[n]}  {n}\n" for n in sorted(lines)).encode("utf-8"))
     t = report["totals"] if report else None
     summary = "first release" if report is None else ", ".join(f"{n} {k}" for k, n in t.items() if n) or "no vector differs"
     print(f"plcvec release {__version__}: {len(files)} files, {current.count()} vectors ({summary}); "
