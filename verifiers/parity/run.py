@@ -43,8 +43,8 @@ FORMS = {"python": "json", "c": "json", "rust": "jsonl", "go": "jsonl", "java": 
 STATUS = {"pass": 0, "fail": 1, "usage": 2, "empty": 5}
 # Languages whose entry point returns the verdict's own status, not only its test runner's.
 EXACT = {"python", "c"}
-ROW_KEYS = {"id", "what", "verdict", "names", "file_line", "hostile", "on", "damage", "env", "known",
-            "filter", "except"}
+ROW_KEYS = {"id", "what", "verdict", "names", "file_line", "hostile", "on", "damage", "source", "env",
+            "known", "filter", "except"}
 EXCEPT_KEYS = {"verdict", "names", "skip", "why"}
 DAMAGES = ("unknown-key", "unknown-header-key", "duplicate-id", "bit-holds-2", "word-out-of-range",
            "missing-steps", "major-version", "sha-mismatch", "non-utf8", "cut-at-line",
@@ -76,6 +76,7 @@ class Row:
     hostile: str = "reference"
     on: str | None = None
     damage: str | None = None
+    source: str | None = None
     env: dict[str, str] = field(default_factory=dict)
     known: str | None = None
     filter: str | None = None
@@ -105,6 +106,10 @@ def load_table(path: Path = TABLE) -> list[Row]:
             raise TableError(f"{where}: unknown damage {raw['damage']!r}")
         if raw.get("damage") and not raw.get("on"):
             raise TableError(f"{where}: a damage needs `on`, the vector it is applied to")
+        if raw.get("source") not in (None, "release"):
+            raise TableError(f"{where}: source must be \"release\"")
+        if raw.get("source") and raw.get("damage"):
+            raise TableError(f"{where}: a row takes a damage or a source, not both")
         if raw.get("filter") not in (None, "no-match"):
             raise TableError(f"{where}: filter must be \"no-match\"")
         exceptions = raw.get("except", {})
@@ -118,7 +123,7 @@ def load_table(path: Path = TABLE) -> list[Row]:
         rows.append(Row(id=raw["id"], what=raw["what"], verdict=raw["verdict"],
                         names=list(raw.get("names", [])), file_line=bool(raw.get("file_line")),
                         hostile=raw.get("hostile", "reference"), on=raw.get("on"),
-                        damage=raw.get("damage"),
+                        damage=raw.get("damage"), source=raw.get("source"),
                         env={k: str(v) for k, v in raw.get("env", {}).items()},
                         known=raw.get("known"), filter=raw.get("filter"), exceptions=exceptions))
     if not rows:
@@ -258,10 +263,26 @@ def damage(folder: Folder, kind: str) -> None:
 
 
 class Folders:
-    """The damaged copies, made once per (damage, form, vector) and removed at the end."""
+    """The damaged copies, made once per (damage, form, vector), and the release bundle, made once;
+    all removed at the end."""
 
     def __init__(self, base: Path):
         self.base, self.made = base, {}
+        self.bundle: Path | None = None
+
+    def release(self, form: str) -> Path:
+        """The folder of a release bundle (`plcvec release`, unpacked) that a runner of `form` reads:
+        a user downloads the bundle and points the runner at it as it is."""
+        if self.bundle is None:
+            out = self.base / "release"
+            proc = subprocess.run([sys.executable, "-m", "plcvec", "release", "--out", str(out)], cwd=REPO,
+                                  capture_output=True, text=True, timeout=900)
+            if proc.returncode != 0:
+                raise TableError(f"plcvec release failed: {proc.stderr.strip()}")
+            archive = next(out.glob("plcvec-vectors-*.tar.gz"))
+            shutil.unpack_archive(archive, out / "unpacked", filter="data")
+            self.bundle = next((out / "unpacked").iterdir())
+        return self.bundle / ("vectors" if form == "json" else "jsonl")
 
     def get(self, kind: str, form: str, on: str) -> Folder:
         key = (kind, form, on)
@@ -336,6 +357,8 @@ def run_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float) 
         folder = folders.get(row.damage, FORMS[lang], row.on)
         env["PLCVEC_VECTORS"] = str(folder.root)
         subst.update(file=folder.file.name, index=folder.index.name)
+    if row.source == "release":
+        env["PLCVEC_VECTORS"] = str(folders.release(FORMS[lang]))
     if row.known is not None:
         known = scratch / lang / row.id / "known.toml"
         known.parent.mkdir(parents=True, exist_ok=True)
