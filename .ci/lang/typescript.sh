@@ -7,10 +7,8 @@ cd "$(dirname "$0")/../.."
 root=$PWD
 (
     cd verifiers/typescript
-    # `npm install` with the committed lock file, not `npm ci`: the lock written here records the
-    # platform packages of optional dependencies (rollup, esbuild) for this platform only, which
-    # `npm ci` refuses as out of sync.
-    npm install --no-audit --no-fund --loglevel=error
+    # The README's own install command: the lock file records every platform's optional packages.
+    npm ci --no-audit --no-fund --loglevel=error
     npm run --silent typecheck
     npm run --silent lint
     npm run --silent build

@@ -3,14 +3,25 @@
  * or a loop of your own. Each case is named by its vector id; `check()` throws a VectorFailure
  * carrying the field-level diff when the implementation disagrees.
  *
- *     import { cases } from "plcvec";
- *     test.each(cases(myImplementation))("$id", (c) => c.check());
+ *     import { cases, checkRun } from "plcvec";
+ *     const list = cases(myImplementation);
+ *     test.each(list)("$id", (c) => c.check());
+ *     afterAll(() => checkRun(list));
+ *
+ * Everything a gate reads from the environment is read here (CONTRACT.md): PLCVEC_VECTORS,
+ * PLCVEC_ID, PLCVEC_FAMILY, PLCVEC_INSTRUCTION, PLCVEC_TAG, PLCVEC_INTERPRETATION, PLCVEC_SHARD,
+ * PLCVEC_KNOWN_FAILURES, PLCVEC_WRITE_EXPECTATIONS and PLCVEC_TIMEOUT.
  */
-import { PlcvecError } from "./errors.js";
-import type { KnownFailures } from "./known.js";
-import { loadSuite, type Suite } from "./load.js";
-import { applyKnown, describeResult, judge, prepare, resolveChoices, type Implementation, type VectorResult } from "./run.js";
-import { parseShard, select, type Selection } from "./select.js";
+import { resolveChoices } from "./choices.js";
+import { judge, prepare } from "./compare.js";
+import { VerifyError } from "./errors.js";
+import type { Implementation } from "./implementation.js";
+import { applyKnown, loadKnownFailures, unknownIds, writeExpectations, type KnownFailures } from "./known.js";
+import { summarize, type Report } from "./runner.js";
+import { selectWithEnvironment, type Selection } from "./selection.js";
+import { loadSuite, type Suite } from "./suite.js";
+import { describe, FAILING, type Verdict } from "./verdict.js";
+import { register, timeoutSeconds, watched } from "./watchdog.js";
 
 /** A vector the implementation does not pass; its message is the whole field-level diff, with no stack to read past. */
 export class VectorFailure extends Error {
@@ -23,10 +34,14 @@ export class VectorFailure extends Error {
 
 export interface CaseOptions {
   readonly suite?: Suite;
+  /** What the test file selects; the PLCVEC_* variables narrow it further. */
   readonly selection?: Selection;
+  /** Default: the file PLCVEC_KNOWN_FAILURES names, if any. */
   readonly known?: KnownFailures;
-  /** A selection of no vector throws unless this is set. */
+  /** A selection of no vector fails unless this is set. */
   readonly allowEmpty?: boolean;
+  /** Fail when more vectors than this are skipped: a count, or a percentage such as "5%". */
+  readonly maxSkipped?: number | `${number}%`;
 }
 
 export interface Case {
@@ -34,39 +49,87 @@ export interface Case {
   readonly family: string;
   readonly instruction: string;
   readonly tags: readonly string[];
+  /** Run the vector and give its verdict (known failures applied), without throwing. */
+  run(): Verdict;
   /** Run the vector and throw a VectorFailure with the diff unless it passes (or is a known failure that still fails). */
-  check(): VectorResult;
+  check(): Verdict;
 }
 
-/**
- * `PLCVEC_SHARD=K/N` in the environment picks a shard when the selection names none, so one test
- * file serves every job of a sharded CI matrix unchanged.
- */
-export function withEnvironmentShard(selection: Selection = {}): Selection {
-  const env = process.env["PLCVEC_SHARD"];
-  if (selection.shard !== undefined || env === undefined || env === "") return selection;
-  return { ...selection, shard: parseShard(env) };
+/** What a list of cases shares: the run's verdicts so far and what it was made with. */
+interface Run {
+  readonly impl: Implementation;
+  readonly suite: Suite;
+  readonly choices: Readonly<Record<string, string>>;
+  readonly options: CaseOptions;
+  readonly known: KnownFailures | undefined;
+  readonly selected: number;
+  readonly verdicts: Verdict[];
 }
+
+const runs = new WeakMap<readonly Case[], Run>();
 
 /** One case per selected vector; expectations are worked out lazily, when a case runs. */
 export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
+  timeoutSeconds(); // a malformed PLCVEC_TIMEOUT is refused before anything runs
   const suite = options.suite ?? loadSuite();
-  const vectors = select(suite, withEnvironmentShard(options.selection));
+  const vectors = selectWithEnvironment(suite, options.selection);
   if (vectors.length === 0 && !options.allowEmpty) {
-    throw new PlcvecError("the selection holds no vector: a gate that runs nothing would pass by accident (allowEmpty to accept that)");
+    throw new VerifyError("the selection holds no vector: a gate that runs nothing would pass by accident (allowEmpty to accept that)");
   }
-  const { choices, defaults } = resolveChoices(suite, impl.choices);
-  return vectors.map((vector) => ({
-    id: vector.id,
-    family: vector.family,
-    instruction: vector.instruction,
-    tags: vector.tags,
-    check(): VectorResult {
-      const result = applyKnown(judge(prepare(vector, choices, defaults), impl), options.known);
-      if (result.status === "fail" || result.status === "error" || result.status === "stale") {
-        throw new VectorFailure(describeResult(result));
-      }
-      return result;
-    },
-  }));
+  const followed = resolveChoices(suite, impl.choices);
+  const knownFile = process.env["PLCVEC_KNOWN_FAILURES"];
+  const known = options.known ?? (knownFile ? loadKnownFailures(knownFile) : undefined);
+  const first = register(vectors.map((v) => v.id));
+  const verdicts: Verdict[] = [];
+  const list = vectors.map((vector, i): Case => {
+    const run = (): Verdict => {
+      const verdict = watched(first + i, () => applyKnown(judge(prepare(vector, followed), impl), known));
+      verdicts.push(verdict);
+      return verdict;
+    };
+    return {
+      id: vector.id,
+      family: vector.family,
+      instruction: vector.instruction,
+      tags: vector.tags,
+      run,
+      check(): Verdict {
+        const verdict = run();
+        if (FAILING.has(verdict.status)) throw new VectorFailure(describe(verdict));
+        return verdict;
+      },
+    };
+  });
+  runs.set(list, { impl, suite, choices: followed.choices, options, known, selected: vectors.length, verdicts });
+  return list;
+}
+
+/**
+ * The run of these cases as a whole: the verdicts of the cases that ran, the known failures the
+ * suite does not have (stale), and why the run fails though no case did. When no case ran at all
+ * although the selection held some, the test runner's own filter left none: that is a failure too.
+ * Writes PLCVEC_WRITE_EXPECTATIONS when it is set.
+ */
+export function runReport(list: readonly Case[]): Report {
+  const run = runs.get(list);
+  if (run === undefined) throw new VerifyError("runReport takes the list cases() returned");
+  const verdicts = [...run.verdicts, ...unknownIds(run.known, run.suite)];
+  const report = summarize(run.impl, verdicts, run.suite, run.choices, run.options);
+  const write = process.env["PLCVEC_WRITE_EXPECTATIONS"];
+  if (write) writeExpectations(write, verdicts);
+  if (run.verdicts.length === 0 && run.selected > 0) {
+    const filtered =
+      `none of the ${run.selected} selected vectors ran: the test runner's own filter (--test-name-pattern, ` +
+      "vitest -t, jest -t) matched none of them; choose vectors with PLCVEC_ID=<id or glob>[,...] instead";
+    return { ...report, passed: false, runProblems: [filtered, ...report.runProblems.filter((p) => !p.startsWith("the selection holds"))] };
+  }
+  return report;
+}
+
+/** Throw unless the run of these cases passed as a whole (see runReport): for an `afterAll` hook. */
+export function checkRun(list: readonly Case[]): Report {
+  const report = runReport(list);
+  if (report.passed) return report;
+  const stale = report.verdicts.filter((v) => v.status === "stale" && v.clauses.length === 0).map(describe);
+  throw new VectorFailure(["plcvec: the run fails", ...stale, ...report.runProblems.map((p) => `RUN FAILS: ${p}`)].join("\n"));
 }

@@ -1,45 +1,32 @@
 /**
- * Field-by-field comparison of what an implementation reported with what a vector expects.
+ * Judging: what an implementation reported, field by field, against what a vector expects.
  * Everything must match exactly, including the JSON type: `===` never takes 1 for true.
  */
-import type { Expected } from "./expect.js";
-import { holds } from "./expect.js";
-import { MemoryStep } from "./memory.js";
-import type { Devices, StepResult, Value } from "./types.js";
+import type { Followed } from "./choices.js";
+import { expectedOf, holds, type Expected } from "./expect.js";
+import type { Implementation, RunOutcome, StepResult } from "./implementation.js";
+import { SAME_SLOTS, type SlotStep } from "./layout.js";
+import {
+  ERROR,
+  FAIL,
+  NO_PROBLEMS,
+  NOT_IN_VECTOR,
+  NOT_REPORTED,
+  PASS,
+  SKIP,
+  type Problem,
+  type Status,
+  type Verdict,
+} from "./verdict.js";
+import { requestOf, type Devices, type Vector, type VectorRequest } from "./vector.js";
 
-export const NOT_REPORTED = "<not reported>";
-export const NOT_IN_VECTOR = "<not in the vector>";
+const NO_CPU_WRITES: ReadonlySet<string> = new Set();
 
-export interface Problem {
-  /** The step, or undefined for the vector as a whole (the number of steps). */
-  readonly step: number | undefined;
-  /** "result", a device address, or "steps". */
-  readonly field: string;
-  readonly expected: Value | string;
-  readonly actual: Value | string;
-  /** The device's value before the step, when the field is a device. */
-  readonly before?: Value | undefined;
-}
-
-export function show(value: unknown): string {
-  if (typeof value === "string" && value.startsWith("<")) return value;
-  return JSON.stringify(value) ?? String(value);
-}
-
-export function problemLine(p: Problem): string {
-  const where = p.step === undefined ? "" : `step ${p.step} `;
-  if (p.step === undefined) return `${p.field}: expected ${String(p.expected)}, got ${String(p.actual)}`;
-  let text = `${where}${p.field}: expected ${show(p.expected)}, got ${show(p.actual)}`;
-  if (p.before !== undefined && p.expected === p.before) text += " (the step must leave it unchanged)";
-  else if (p.before !== undefined) text += ` (before the step: ${show(p.before)})`;
-  return text;
-}
-
-/** The problems of one vector's reported steps; an empty list means it passed. */
-/** The problems of a vector that passed: one shared, frozen empty list. */
-export const NO_PROBLEMS: readonly Problem[] = Object.freeze([]);
-
-export function compare(expected: Expected, steps: readonly StepResult[]): readonly Problem[] {
+/**
+ * The problems of one vector's reported steps; an empty list means it passed. A device in
+ * `cpuWrites` that the vector does not list is the CPU's own write, not a stray one.
+ */
+export function compare(expected: Expected, steps: readonly StepResult[], cpuWrites: ReadonlySet<string> = NO_CPU_WRITES): readonly Problem[] {
   const count = expected.results.length;
   if (steps.length !== count) {
     return [{ step: undefined, field: "steps", expected: `${count} steps`, actual: `${steps.length} steps` }];
@@ -52,13 +39,17 @@ export function compare(expected: Expected, steps: readonly StepResult[]): reado
       (problems ??= []).push({ step: i, field: "result", expected: wantResult, actual: step.result ?? NOT_REPORTED });
     }
     // Most vectors pass: one pass of strict equality first, the field-by-field diff only on a mismatch.
-    if (step instanceof MemoryStep && step.sameSlots(expected.layout, expected.image, i * expected.layout.names.length, expected.checked)) continue;
+    const sameSlots = (step as Partial<SlotStep>)[SAME_SLOTS];
+    if (sameSlots !== undefined && sameSlots.call(step, expected.layout, expected.image, i * expected.layout.names.length, expected.checked)) continue;
     // A step without `devices` (a spread or cloned MemoryStep, say) reports no device at all.
     let got: Devices = typeof step.devices === "object" && step.devices !== null ? step.devices : {};
     if (holds(got, expected, i)) continue;
     const want = expected.states[i]!;
-    if (expected.scratch.size) {
-      got = Object.fromEntries(Object.entries(got).filter(([k]) => !expected.scratch.has(k)));
+    if (expected.scratch.size || cpuWrites.size) {
+      const has = Object.prototype.hasOwnProperty;
+      got = Object.fromEntries(
+        Object.entries(got).filter(([k]) => !expected.scratch.has(k) && (!cpuWrites.has(k) || has.call(want, k))),
+      );
     }
     const before = expected.befores[i]!;
     const names = [...new Set([...Object.keys(want), ...Object.keys(got)])].sort();
@@ -69,4 +60,61 @@ export function compare(expected: Expected, steps: readonly StepResult[]): reado
     }
   }
   return problems ?? NO_PROBLEMS;
+}
+
+/** A prepared vector: its request and its expectation under the followed alternatives, worked out once. */
+export interface Prepared {
+  readonly vector: Vector;
+  readonly request: VectorRequest;
+  readonly expected: Expected;
+  /** The vector's clauses, for its verdict. */
+  readonly clauses: readonly string[];
+}
+
+export function prepare(vector: Vector, followed: Followed): Prepared {
+  return { vector, request: requestOf(vector), expected: expectedOf(vector, followed.choices, followed.defaults), clauses: vector.clauses };
+}
+
+/** The devices an implementation declares its CPU writes, as a set (one per implementation). */
+export function cpuWritesOf(impl: Implementation): ReadonlySet<string> {
+  let set = cpuWriteSets.get(impl);
+  if (set === undefined) {
+    set = impl.cpuWrites === undefined || impl.cpuWrites.length === 0 ? NO_CPU_WRITES : new Set(impl.cpuWrites);
+    cpuWriteSets.set(impl, set);
+  }
+  return set;
+}
+
+const cpuWriteSets = new WeakMap<Implementation, ReadonlySet<string>>();
+
+/** Run one prepared vector through `impl` and judge it (known failures not yet applied). */
+export function judge(p: Prepared, impl: Implementation): Verdict {
+  // The vector itself is not read here: what judging needs of it is on the request and the
+  // expectation, and a large object read for one field costs a cache miss per vector.
+  const { request, expected } = p;
+  if (impl.instructions !== undefined && !impl.instructions.includes(request.instruction)) {
+    return verdict(p, SKIP, NO_PROBLEMS, `${request.instruction} is not implemented`);
+  }
+  let outcome: RunOutcome;
+  try {
+    outcome = impl.run(request);
+  } catch (err) {
+    return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}`);
+  }
+  if (typeof outcome !== "object" || outcome === null) {
+    return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered ${String(outcome)}, not {steps}, {skip} or {error}`);
+  }
+  if ("steps" in outcome) {
+    if (!Array.isArray(outcome.steps)) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered steps that are not a list`);
+    const problems = compare(expected, outcome.steps, cpuWritesOf(impl));
+    return verdict(p, problems.length ? FAIL : PASS, problems);
+  }
+  if ("skip" in outcome) return verdict(p, SKIP, NO_PROBLEMS, String(outcome.skip));
+  if ("error" in outcome) return verdict(p, ERROR, NO_PROBLEMS, String(outcome.error));
+  return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered neither steps, skip nor error`);
+}
+
+function verdict(p: Prepared, status: Status, problems: readonly Problem[], message?: string): Verdict {
+  const result = { id: p.request.id, status, problems, judgedBy: p.expected.applied, clauses: p.clauses };
+  return message === undefined ? result : { ...result, message };
 }

@@ -6,10 +6,10 @@
  * the expected full state after each step is worked out here once, and checked against the
  * vector's own `final`, so that an inconsistent vector file is caught rather than trusted.
  */
-import { PlcvecError } from "./errors.js";
+import { VerifyError } from "./errors.js";
 import { interned, internedResults } from "./intern.js";
 import { layoutOf, type Layout } from "./layout.js";
-import type { Devices, Outcome, StepExpect, Value, Vector } from "./types.js";
+import type { Devices, Outcome, StepExpect, Value, Vector } from "./vector.js";
 
 export interface Expected {
   // What judging a passing vector reads comes first, so that it shares a cache line.
@@ -65,7 +65,7 @@ export function expectedOf(
     const alt = (vector.alternatives ?? []).find((a) => touched.every((i) => a.choices[i] === applied[i]));
     if (alt === undefined) {
       const wanted = Object.entries(applied).map(([i, a]) => `${i}=${a}`).sort().join(", ");
-      throw new PlcvecError(`vector ${vector.id}: no expectation for ${wanted} (the vector file lists no such alternative)`);
+      throw new VerifyError(`vector ${vector.id}: no expectation for ${wanted} (the vector file lists no such alternative)`);
     }
     stepsExpect = alt.expect;
     final = alt.final.devices;
@@ -86,7 +86,7 @@ export function expectedOf(
     results.push(expect.result);
   });
   if (!sameDevices(states[states.length - 1] as Devices, final)) {
-    throw new PlcvecError(
+    throw new VerifyError(
       `vector ${vector.id}: the per-step changes do not add up to \`final\` (the vector file is inconsistent; regenerate it)`,
     );
   }

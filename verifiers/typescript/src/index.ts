@@ -2,37 +2,46 @@
  * plcvec: conformance test vectors for PLC clock and calendar instructions, and the runner that
  * judges an implementation against them exactly as verifiers/CONTRACT.md says.
  *
- *     import { runVectors, formatReport } from "plcvec";
+ *     import { runVectors, summaryText } from "plcvec";
  *     const report = runVectors(myImplementation);
- *     console.log(formatReport(report));
+ *     console.log(summaryText(report));
  *
  * Test-runner integration: `plcvec/node-test` (one node:test test per vector) and `cases()`
  * below (a plain iterable for `test.each` in Vitest or Jest).
  */
 export * from "./generated/names.js";
-export { compare, problemLine, type Problem } from "./compare.js";
-export { PlcvecError } from "./errors.js";
+export { checkRun, cases, runReport, VectorFailure, type Case, type CaseOptions } from "./cases.js";
+export { resolveChoices, type Choices, type Followed } from "./choices.js";
+export { compare, cpuWritesOf, judge, prepare, type Prepared } from "./compare.js";
+export { executeOnMemory, type Execution, type MemoryImplementation } from "./emulator.js";
+export { VerifyError } from "./errors.js";
 export { expectedOf, type Expected } from "./expect.js";
-export { loadKnownFailures, parseKnownFailures, type KnownFailure, type KnownFailures } from "./known.js";
-export { defaultVectorsPath, interpretationsOf, loadSuite, PACKAGED_VECTORS, SCHEMA_MAJOR, type Interpretation, type Suite } from "./load.js";
-export { executeOnMemory, Memory, MemoryStep, type Execution, type MemoryImplementation } from "./memory.js";
+export type { Implementation, RunOutcome, StepResult } from "./implementation.js";
 export {
   applyKnown,
-  describeResult,
-  formatReport,
-  judge,
-  prepare,
-  requestOf,
-  resolveChoices,
-  runVectors,
-  summarize,
-  type Implementation,
-  type Prepared,
-  type Report,
-  type RunOptions,
-  type Status,
-  type VectorResult,
-} from "./run.js";
-export { crc32, globToRegExp, parseShard, select, shardOf, type Selection } from "./select.js";
-export { cases, VectorFailure, withEnvironmentShard, type Case, type CaseOptions } from "./cases.js";
-export type * from "./types.js";
+  loadKnownFailures,
+  parseKnownFailures,
+  unknownIds,
+  writeExpectations,
+  type KnownFailure,
+  type KnownFailures,
+} from "./known.js";
+export { Memory, MemoryStep } from "./memory.js";
+export { summaryText } from "./reports.js";
+export { runVectors, summarize, type Report, type RunOptions } from "./runner.js";
+export {
+  crc32,
+  environmentSelection,
+  globToRegExp,
+  parseShard,
+  select,
+  selectWithEnvironment,
+  shardOf,
+  type Selection,
+} from "./selection.js";
+export { serve } from "./serve.js";
+export { defaultVectorsPath, interpretationsOf, loadSuite, PACKAGED_VECTORS, SCHEMA_MAJOR, type InterpretationInfo, type Suite } from "./suite.js";
+export { describe, FAILING, NOT_IN_VECTOR, NOT_REPORTED, problemLine, type Problem, type Status, type Verdict } from "./verdict.js";
+export { requestOf } from "./vector.js";
+export type { AlternativeExpectation, Devices, FamilyHeader, Initial, InterpretationHeader, Operand, Outcome, Step, StepExpect, StepInputs, Value, Vector, VectorRequest } from "./vector.js";
+export { DEFAULT_TIMEOUT_SECONDS, timeoutSeconds } from "./watchdog.js";

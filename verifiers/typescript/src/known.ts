@@ -9,11 +9,13 @@
  * `xfail`; a listed vector that passes is `stale` and fails the run, and so does an id the suite
  * does not have: the list can only shrink. Ids are exact, never patterns.
  */
-import { readFileSync } from "node:fs";
+import { readFileSync, renameSync, writeFileSync } from "node:fs";
 
 import { parse, TomlError } from "smol-toml";
 
-import { PlcvecError } from "./errors.js";
+import { VerifyError } from "./errors.js";
+import type { Suite } from "./suite.js";
+import { ERROR, FAIL, FAILING, PASS, STALE, XFAIL, type Verdict } from "./verdict.js";
 
 const SECTION = "known-failure";
 
@@ -32,7 +34,7 @@ export function loadKnownFailures(path: string): KnownFailures {
   try {
     text = readFileSync(path, "utf8");
   } catch (err) {
-    throw new PlcvecError(`${path}: cannot read the expectations file: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
+    throw new VerifyError(`${path}: cannot read the expectations file: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
   }
   return parseKnownFailures(text, path);
 }
@@ -42,7 +44,7 @@ export function parseKnownFailures(text: string, path = "<expectations>"): Known
   try {
     data = parse(text) as Record<string, unknown>;
   } catch (err) {
-    if (err instanceof TomlError) throw new PlcvecError(`${path}:${err.line}: not valid TOML: ${err.message.split("\n")[0]}`);
+    if (err instanceof TomlError) throw new VerifyError(`${path}:${err.line}: not valid TOML: ${err.message.split("\n")[0]}`);
     throw err;
   }
   const lines = text.split("\n");
@@ -50,29 +52,91 @@ export function parseKnownFailures(text: string, path = "<expectations>"): Known
   const unknown = Object.keys(data).filter((k) => k !== SECTION);
   if (unknown.length) {
     const key = unknown.sort()[0] as string;
-    throw new PlcvecError(
+    throw new VerifyError(
       `${path}:${lineOf(new RegExp(`^\\s*\\[*\\s*"?${key.replace(/[.*+?^${}()|[\]\\]/g, "\\$&")}`))}: unknown key ${JSON.stringify(key)}; ` +
         `an expectations file holds only [[${SECTION}]] entries`,
     );
   }
   const headers = lines.flatMap((l, i) => (l.trim().startsWith(`[[${SECTION}]]`) ? [i + 1] : []));
   const entries = data[SECTION] ?? [];
-  if (!Array.isArray(entries)) throw new PlcvecError(`${path}: ${SECTION} must be an array of tables ([[${SECTION}]])`);
+  if (!Array.isArray(entries)) throw new VerifyError(`${path}: ${SECTION} must be an array of tables ([[${SECTION}]])`);
   const out = new Map<string, KnownFailure>();
   entries.forEach((entry: unknown, n: number) => {
     const where = `${path}:${headers[n] ?? 0}`;
-    if (typeof entry !== "object" || entry === null) throw new PlcvecError(`${where}: [[${SECTION}]] must be a table`);
+    if (typeof entry !== "object" || entry === null) throw new VerifyError(`${where}: [[${SECTION}]] must be a table`);
     const e = entry as Record<string, unknown>;
     const extra = Object.keys(e).filter((k) => k !== "id" && k !== "reason");
-    if (extra.length) throw new PlcvecError(`${where}: unknown key ${JSON.stringify(extra[0])} (an entry has \`id\` and \`reason\`)`);
-    if (typeof e["id"] !== "string" || e["id"] === "") throw new PlcvecError(`${where}: entry without an \`id\``);
+    if (extra.length) throw new VerifyError(`${where}: unknown key ${JSON.stringify(extra[0])} (an entry has \`id\` and \`reason\`)`);
+    if (typeof e["id"] !== "string" || e["id"] === "") throw new VerifyError(`${where}: entry without an \`id\``);
     const id = e["id"];
     if (typeof e["reason"] !== "string" || e["reason"].trim() === "") {
-      throw new PlcvecError(`${where}: ${id}: every known failure needs a \`reason\``);
+      throw new VerifyError(`${where}: ${id}: every known failure needs a \`reason\``);
     }
     const first = out.get(id);
-    if (first !== undefined) throw new PlcvecError(`${where}: ${id} is listed twice (first at ${first.where})`);
+    if (first !== undefined) throw new VerifyError(`${where}: ${id} is listed twice (first at ${first.where})`);
     out.set(id, { id, reason: e["reason"].trim(), where });
   });
   return out;
+}
+
+/** Turn a listed failure into xfail and a listed pass into stale (the words `plcvec verify` uses). */
+export function applyKnown(verdict: Verdict, known: KnownFailures | undefined): Verdict {
+  const entry = known?.get(verdict.id);
+  if (entry === undefined) return verdict;
+  if (verdict.status === FAIL || verdict.status === ERROR) {
+    const message = `known failure (${entry.where}): ${entry.reason}` + (verdict.message !== undefined ? `; ${verdict.message}` : "");
+    return { ...verdict, status: XFAIL, message };
+  }
+  if (verdict.status === PASS) {
+    return {
+      ...verdict,
+      status: STALE,
+      message: `listed as a known failure (${entry.where}: ${entry.reason}) but it passes; remove it from the expectations file`,
+    };
+  }
+  return verdict;
+}
+
+/** A stale verdict for each listed id the suite does not have (one merely not selected is not stale). */
+export function unknownIds(known: KnownFailures | undefined, suite: Suite): Verdict[] {
+  const out: Verdict[] = [];
+  for (const [id, entry] of [...(known ?? [])].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
+    if (suite.byId.has(id)) continue;
+    out.push({
+      id,
+      status: STALE,
+      problems: [],
+      message: `listed as a known failure (${entry.where}) but the suite has no such vector; remove it from the expectations file`,
+      judgedBy: {},
+      clauses: [],
+    });
+  }
+  return out;
+}
+
+function tomlString(s: string): string {
+  return `"${s.replace(/\\/g, "\\\\").replace(/"/g, '\\"')}"`;
+}
+
+/**
+ * Write the failing vectors of a run as a new expectations file (for adopting the suite), as
+ * `plcvec verify --write-expectations` does: written beside and renamed over, never half-written.
+ */
+export function writeExpectations(path: string, verdicts: readonly Verdict[], reason = "not yet triaged"): number {
+  const lines = ["# Known failures: each passing entry fails the run as stale, so fix and delete.", ""];
+  let n = 0;
+  for (const v of [...verdicts].sort((a, b) => (a.id < b.id ? -1 : a.id > b.id ? 1 : 0))) {
+    const listed = (FAILING.has(v.status) && !(v.status === STALE && v.clauses.length === 0)) || v.status === XFAIL;
+    if (!listed) continue;
+    lines.push(`[[${SECTION}]]`, `id = ${tomlString(v.id)}`, `reason = ${tomlString(reason)}`, "");
+    n++;
+  }
+  const temporary = `${path}.${process.pid}.tmp`;
+  try {
+    writeFileSync(temporary, lines.join("\n"));
+    renameSync(temporary, path);
+  } catch (err) {
+    throw new VerifyError(`${path}: cannot write the expectations file: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
+  }
+  return n;
 }

@@ -6,7 +6,7 @@
  * set holds a few dozen distinct lists among thousands of vectors, so layouts are interned: vectors
  * of the same shape share one, and with it its name lookups.
  */
-import type { Devices, Value } from "./types.js";
+import type { Devices, Value } from "./vector.js";
 
 export class Layout {
   /** Slot -> device address. */
@@ -109,4 +109,15 @@ export class InitialImage {
     const has = Object.prototype.hasOwnProperty;
     return new InitialImage(layout, layout.names.map((name) => (has.call(devices, name) ? devices[name] : undefined)));
   }
+}
+
+/**
+ * The method of a step result that compares its own slots with an expectation's (a MemoryStep):
+ * a symbol, so that comparing needs no import of the class that has it.
+ */
+export const SAME_SLOTS: unique symbol = Symbol("plcvec.sameSlots");
+
+export interface SlotStep {
+  /** True when the slots of `layout` equal `want` (from `from` on) at every slot in `checked`; false when unsure. */
+  [SAME_SLOTS](layout: Layout, want: readonly (Value | undefined)[], from: number, checked: readonly number[]): boolean;
 }

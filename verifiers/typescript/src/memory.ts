@@ -1,14 +1,13 @@
 /**
- * The thin helper for emulators that only want to implement "execute this instruction on my
- * memory": the loop over steps, the device image, `set`, and the report after each step are
- * done here, as CONTRACT.md says.
+ * A device image for an emulator that executes one instruction on its own memory (emulator.ts):
+ * words and bits by address, the steps reported from it.
  */
 import { inspect } from "node:util";
 
 import { deviceOffset, InitialImage, layoutOf, parseAddress, type Layout } from "./layout.js";
-import { initialImageOf } from "./request.js";
-import type { Implementation } from "./run.js";
-import type { Devices, Operand, RunOutcome, StepInputs, StepResult, Value, VectorRequest } from "./types.js";
+import type { StepResult } from "./implementation.js";
+import { SAME_SLOTS, type SlotStep } from "./layout.js";
+import { initialImageOf, type Devices, type Operand, type Value, type VectorRequest } from "./vector.js";
 
 /** A device's value read as a word: a bit is 1 or 0, a device holding nothing reads 0. */
 function asWord(v: Value | undefined): number {
@@ -165,7 +164,7 @@ function devicesOf(names: readonly string[], image: readonly (Value | undefined)
  * its slots instead, as long as nobody has read, and so perhaps changed, `devices`. Spreading or
  * cloning one gives an object without `devices`, which a runner reports as every device missing.
  */
-export class MemoryStep implements StepResult {
+export class MemoryStep implements StepResult, SlotStep {
   declare readonly result?: boolean;
   #devices: Devices | undefined = undefined;
 
@@ -188,7 +187,7 @@ export class MemoryStep implements StepResult {
    * written. False whenever that cannot be said from the slots alone: `devices` was read, the
    * layout is another, or any value differs; the caller then compares `devices`.
    */
-  sameSlots(layout: Layout, want: readonly (Value | undefined)[], from: number, checked: readonly number[]): boolean {
+  [SAME_SLOTS](layout: Layout, want: readonly (Value | undefined)[], from: number, checked: readonly number[]): boolean {
     if (this.#devices !== undefined || layout !== this.layout || this.others !== undefined) return false;
     const image = this.image;
     for (let i = 0; i < checked.length; i++) {
@@ -205,41 +204,4 @@ export class MemoryStep implements StepResult {
   [inspect.custom](): StepResult {
     return this.toJSON();
   }
-}
-
-export interface Execution {
-  readonly instruction: string;
-  readonly operands: VectorRequest["initial"]["operands"];
-  readonly memory: Memory;
-  readonly step: StepInputs;
-  /** Lives for one vector: state the instruction keeps between scans (TADDP's previous EN, a timer's fraction). */
-  readonly state: Record<string, unknown>;
-}
-
-export interface MemoryImplementation {
-  readonly name: string;
-  readonly instructions?: readonly string[];
-  readonly choices?: Readonly<Record<string, string>>;
-  /** Execute the instruction once; return the contact result for LD/AND/OR forms, nothing otherwise. */
-  execute(execution: Execution): boolean | undefined;
-}
-
-/** An Implementation from an `execute` on a device image. */
-export function executeOnMemory(impl: MemoryImplementation): Implementation {
-  return {
-    name: impl.name,
-    ...(impl.instructions !== undefined ? { instructions: impl.instructions } : {}),
-    ...(impl.choices !== undefined ? { choices: impl.choices } : {}),
-    run(request: VectorRequest): RunOutcome {
-      const memory = Memory.forRequest(request);
-      const state: Record<string, unknown> = {};
-      const steps = new Array<StepResult>(request.steps.length);
-      for (let i = 0; i < steps.length; i++) {
-        const step = request.steps[i]!;
-        memory.set(step.set);
-        steps[i] = memory.report(impl.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state }));
-      }
-      return { steps };
-    },
-  };
 }

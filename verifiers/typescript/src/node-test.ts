@@ -6,40 +6,75 @@
  *     import { vectorTests } from "plcvec/node-test";
  *     vectorTests(myImplementation, { selection: { families: ["fx5-time-add"] } });
  *
- * A skipped vector is reported as skipped; a known failure as a todo; and a closing test fails
- * the run when the selection was empty, when nothing passed, or when more were skipped than
- * `maxSkipped` allows: a gate never passes by accident.
+ * A skipped vector is reported as skipped; a known failure as a todo. The run as a whole is
+ * judged when the process exits, not by a test a filter could leave out: an empty selection,
+ * a filter that matched no vector, nothing passed, more skipped than `maxSkipped` allows, a
+ * stale known failure, or an implementation that ended the process half way each make the exit
+ * status non-zero, with a line on stderr that says why. A gate never passes by accident.
+ *
+ * A mistake in the set-up (a vector file, a PLCVEC_* variable, a known-failures file, a declared
+ * interpretation) is one line on stderr and a non-zero exit, not a stack trace.
  */
+import { writeSync } from "node:fs";
 import { describe, test } from "node:test";
 
-import { cases, type CaseOptions } from "./cases.js";
-import type { Implementation } from "./run.js";
-import { summarize } from "./run.js";
-import type { VectorResult } from "./run.js";
-import { loadSuite } from "./load.js";
+import { cases, runReport, VectorFailure, type Case, type CaseOptions } from "./cases.js";
+import { VerifyError } from "./errors.js";
+import type { Implementation } from "./implementation.js";
+import { describe as describeVerdict, FAILING } from "./verdict.js";
 
 export interface VectorTestOptions extends CaseOptions {
   /** The name of the suite of tests (default: "plcvec: " and the implementation's name). */
   readonly name?: string;
-  readonly maxSkipped?: number | `${number}%`;
+}
+
+/** The exit status of a run that fails as a whole, and of a mistake in the set-up (as `plcvec verify`: 1 and 2). */
+const RUN_FAILS = 1;
+const USAGE = 2;
+
+function complain(lines: readonly string[], status: number): void {
+  writeSync(2, lines.map((l) => `plcvec: ${l}\n`).join(""));
+  if (!process.exitCode || process.exitCode === 0) process.exitCode = status;
 }
 
 export function vectorTests(impl: Implementation, options: VectorTestOptions = {}): void {
-  const suite = options.suite ?? loadSuite();
-  const list = cases(impl, { ...options, suite });
-  const results: VectorResult[] = [];
+  let list: Case[];
+  try {
+    list = cases(impl, options);
+  } catch (err) {
+    if (!(err instanceof VerifyError)) throw err;
+    complain([`error: ${err.message}`], USAGE);
+    // Kept at exit too: the test runner sets the status it found when the file ends.
+    process.on("exit", () => {
+      if (!process.exitCode) process.exitCode = USAGE;
+    });
+    return;
+  }
   describe(options.name ?? `plcvec: ${impl.name}`, () => {
     for (const c of list) {
       test(c.id, (t) => {
-        const result = c.check();
-        results.push(result);
-        if (result.status === "skip") t.skip(result.message);
-        else if (result.status === "xfail") t.todo(result.message);
+        const verdict = c.run();
+        if (FAILING.has(verdict.status)) throw new VectorFailure(describeVerdict(verdict));
+        if (verdict.status === "skip") t.skip(verdict.message);
+        else if (verdict.status === "xfail") t.todo(verdict.message);
       });
     }
-    test("plcvec: the selection ran and passed as a whole", () => {
-      const report = summarize(impl.name, results, suite, {}, options);
-      if (report.runProblems.length) throw new Error(report.runProblems.join("; "));
-    });
+  });
+  process.on("exit", () => {
+    let report;
+    try {
+      report = runReport(list);
+    } catch (err) {
+      if (!(err instanceof VerifyError)) throw err;
+      complain([`error: ${err.message}`], USAGE);
+      return;
+    }
+    if (report.passed) return;
+    const stale = report.verdicts.filter((v) => v.status === "stale" && v.clauses.length === 0).map((v) => describeVerdict(v));
+    if (stale.length || report.runProblems.length) {
+      complain([...stale, ...report.runProblems.map((p) => `RUN FAILS: ${p}`)], RUN_FAILS);
+    } else if (!process.exitCode) {
+      process.exitCode = RUN_FAILS; // a failing vector: its test says so already
+    }
   });
 }

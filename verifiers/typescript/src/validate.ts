@@ -1,7 +1,9 @@
 /**
  * What the runner needs of a vector, checked at load with the JSON path of the first bad value
  * (`steps/0/expect/devices/D100: 70000 is not a word (an integer 0..65535) nor a bit`). It follows
- * vectors/schema/vector-file.schema.json for every field a runner reads.
+ * vectors/schema/vector-file.schema.json for every field a runner reads, and refuses a key the schema
+ * does not have at any level (CONTRACT.md, Loading): a key this runner does not know may carry a
+ * meaning it would silently ignore.
  */
 
 type Json = unknown;
@@ -26,6 +28,8 @@ const devices: Check = (value, path) => {
 
 const stepExpect: Check = (value, path) => {
   if (!isObject(value)) return `${path}: not an object`;
+  const unknown = unknownKey(value, EXPECT_KEYS, path);
+  if (unknown !== undefined) return unknown;
   if ("result" in value && typeof value["result"] !== "boolean") return `${path}/result: not true/false`;
   return devices(value["devices"], `${path}/devices`);
 };
@@ -33,6 +37,14 @@ const stepExpect: Check = (value, path) => {
 const outcome: Check = (value, path) => {
   if (!isObject(value)) return `${path}: not an object`;
   const category = value["category"];
+  const unknown = unknownKey(value, category === "implementation-defined" ? DEFINED_KEYS : OUTCOME_KEYS, path);
+  if (unknown !== undefined) return unknown;
+  if (Array.isArray(value["errors"])) {
+    for (const [i, e] of value["errors"].entries()) {
+      const p = isObject(e) ? unknownKey(e, ERROR_KEYS, `${path}/errors/${i}`) : `${path}/errors/${i}: not an object`;
+      if (p !== undefined) return p;
+    }
+  }
   if (category !== "value" && category !== "error" && category !== "implementation-defined") {
     return `${path}/category: ${JSON.stringify(category)} is not value, error or implementation-defined`;
   }
@@ -45,6 +57,80 @@ const outcome: Check = (value, path) => {
   return undefined;
 };
 
+/** The first key of `value` not in `allowed`, as a problem at `path`. */
+function unknownKey(value: Record<string, Json>, allowed: ReadonlySet<string>, path: string): string | undefined {
+  for (const key in value) if (!allowed.has(key)) return `${path}${path ? "/" : ""}${key}: a key the schema does not have`;
+  return undefined;
+}
+
+const VECTOR_KEYS = new Set(["id", "family", "instruction", "st", "printed", "description", "tags", "clauses", "assumes", "initial", "steps", "final", "outcome", "alternatives"]);
+const INITIAL_KEYS = new Set(["devices", "operands", "scratch"]);
+const STEP_KEYS = new Set(["set", "rlo_in", "clock", "en", "input", "elapsed_ms", "expect"]);
+const EXPECT_KEYS = new Set(["devices", "result"]);
+const FINAL_KEYS = new Set(["devices"]);
+const ASSUMES_KEYS = new Set(["device_sizes"]);
+const OUTCOME_KEYS = new Set(["category", "errors"]);
+const DEFINED_KEYS = new Set(["category", "interpretations", "default", "reason"]);
+const ERROR_KEYS = new Set(["step", "code", "device"]);
+const ALTERNATIVE_KEYS = new Set(["choices", "expect", "final", "outcome"]);
+const HEADER_KEYS = new Set(["count", "family", "generated", "instructions", "interpretations", "kind", "schema_version", "spec_file", "spec_sha256", "tags", "title"]);
+const INTERPRETATION_KEYS = new Set(["id", "question", "default", "alternatives"]);
+const ALTERNATIVE_HEADER_KEYS = new Set(["id", "says"]);
+
+/** The first thing wrong with a family header (a JSON Lines file's first line, or a JSON file without `vectors`). */
+export function headerProblem(h: Json): string | undefined {
+  if (!isObject(h) || typeof h["family"] !== "string") return "no `family`";
+  const unknown = unknownKey(h, HEADER_KEYS, "");
+  if (unknown !== undefined) return unknown;
+  if (!Array.isArray(h["interpretations"]) || !Array.isArray(h["instructions"]) || !isObject(h["tags"])) {
+    return `the header of ${h["family"]} needs \`instructions\`, \`tags\` and \`interpretations\``;
+  }
+  for (const [i, interp] of h["interpretations"].entries()) {
+    const path = `interpretations/${i}`;
+    if (!isObject(interp) || !Array.isArray(interp["alternatives"])) return `${path}: not an interpretation`;
+    const problem = unknownKey(interp, INTERPRETATION_KEYS, path);
+    if (problem !== undefined) return problem;
+    for (const [j, alt] of interp["alternatives"].entries()) {
+      if (!isObject(alt)) return `${path}/alternatives/${j}: not an object`;
+      const p = unknownKey(alt, ALTERNATIVE_HEADER_KEYS, `${path}/alternatives/${j}`);
+      if (p !== undefined) return p;
+    }
+  }
+  return undefined;
+}
+
+/**
+ * A device whose JSON type (word or bit) differs between the places one vector names it
+ * (`initial`, `set`, `expect`, `final`, the alternatives): a bit holding 2 is the file's fault,
+ * and must not be blamed on the implementation.
+ */
+function mixedTypes(v: Record<string, Json>): string | undefined {
+  const seen = new Map<string, { bit: boolean; path: string }>();
+  const visit = (devices: Json, path: string): string | undefined => {
+    if (!isObject(devices)) return undefined;
+    for (const [name, value] of Object.entries(devices)) {
+      const bit = typeof value === "boolean";
+      const first = seen.get(name);
+      if (first === undefined) seen.set(name, { bit, path });
+      else if (first.bit !== bit) {
+        return `${path}/${name}: ${JSON.stringify(value)} is a ${bit ? "bit" : "word"}, but ${first.path}/${name} holds a ${first.bit ? "bit" : "word"}`;
+      }
+    }
+    return undefined;
+  };
+  const initial = v["initial"] as Record<string, Json>;
+  let problem = visit(initial["devices"], "initial/devices");
+  for (const [i, step] of (v["steps"] as Record<string, Json>[]).entries()) {
+    problem ??= visit(step["set"], `steps/${i}/set`) ?? visit((step["expect"] as Record<string, Json>)["devices"], `steps/${i}/expect/devices`);
+  }
+  problem ??= visit((v["final"] as Record<string, Json>)["devices"], "final/devices");
+  for (const [i, alt] of ((v["alternatives"] as Record<string, Json>[] | undefined) ?? []).entries()) {
+    for (const [j, e] of (alt["expect"] as Record<string, Json>[]).entries()) problem ??= visit(e["devices"], `alternatives/${i}/expect/${j}/devices`);
+    problem ??= visit((alt["final"] as Record<string, Json>)["devices"], `alternatives/${i}/final/devices`);
+  }
+  return problem;
+}
+
 function first(...checks: (() => string | undefined)[]): string | undefined {
   for (const check of checks) {
     const problem = check();
@@ -56,6 +142,8 @@ function first(...checks: (() => string | undefined)[]): string | undefined {
 /** The first thing wrong with `v` as a vector of `family`, or undefined. */
 export function vectorProblem(v: Json, family: string): string | undefined {
   if (!isObject(v)) return "not a JSON object";
+  const unknown = unknownKey(v, VECTOR_KEYS, "");
+  if (unknown !== undefined) return unknown;
   for (const key of ["id", "family", "instruction"]) {
     if (typeof v[key] !== "string" || v[key] === "") return `${key}: missing or not a string`;
   }
@@ -66,14 +154,15 @@ export function vectorProblem(v: Json, family: string): string | undefined {
   return first(
     () => (Array.isArray(v["tags"]) ? undefined : "tags: not a list"),
     () => (Array.isArray(v["clauses"]) ? undefined : "clauses: not a list"),
-    () => (isObject(v["assumes"]) && isObject(v["assumes"]["device_sizes"]) ? undefined : "assumes/device_sizes: missing"),
-    () => (isObject(initial) ? devices(initial["devices"], "initial/devices") : "initial: missing"),
+    () => (isObject(v["assumes"]) && isObject(v["assumes"]["device_sizes"]) ? unknownKey(v["assumes"], ASSUMES_KEYS, "assumes") : "assumes/device_sizes: missing"),
+    () => (isObject(initial) ? (unknownKey(initial, INITIAL_KEYS, "initial") ?? devices(initial["devices"], "initial/devices")) : "initial: missing"),
     () => {
       const operands = (initial as Record<string, Json>)["operands"];
       if (!isObject(operands) || Object.keys(operands).length === 0) return "initial/operands: missing";
       for (const [name, op] of Object.entries(operands)) {
         const ok =
           isObject(op) &&
+          Object.keys(op).length === 1 &&
           ((typeof op["device"] === "string" && OPERAND_DEVICE.test(op["device"])) ||
             (typeof op["constant"] === "number" && Number.isInteger(op["constant"])));
         if (!ok) return `initial/operands/${name}: neither {"device": "D100"} nor {"constant": 7}`;
@@ -89,13 +178,14 @@ export function vectorProblem(v: Json, family: string): string | undefined {
       for (const [i, step] of steps.entries()) {
         if (!isObject(step)) return `steps/${i}: not an object`;
         const problem =
+          unknownKey(step, STEP_KEYS, `steps/${i}`) ??
           (step["set"] !== undefined ? devices(step["set"], `steps/${i}/set`) : undefined) ??
           stepExpect(step["expect"], `steps/${i}/expect`);
         if (problem !== undefined) return problem;
       }
       return undefined;
     },
-    () => (isObject(final) ? devices(final["devices"], "final/devices") : "final: missing"),
+    () => (isObject(final) ? (unknownKey(final, FINAL_KEYS, "final") ?? devices(final["devices"], "final/devices")) : "final: missing"),
     () => outcome(v["outcome"], "outcome"),
     () => {
       const alts = v["alternatives"];
@@ -104,6 +194,8 @@ export function vectorProblem(v: Json, family: string): string | undefined {
       for (const [i, alt] of alts.entries()) {
         const path = `alternatives/${i}`;
         if (!isObject(alt) || !isObject(alt["choices"])) return `${path}/choices: missing`;
+        const extra = unknownKey(alt, ALTERNATIVE_KEYS, path);
+        if (extra !== undefined) return extra;
         const expect = alt["expect"];
         if (!Array.isArray(expect) || expect.length !== (steps as Json[]).length) {
           return `${path}/expect: not one expectation per step`;
@@ -113,12 +205,15 @@ export function vectorProblem(v: Json, family: string): string | undefined {
           if (problem !== undefined) return problem;
         }
         const altFinal = alt["final"];
-        const problem = isObject(altFinal) ? devices(altFinal["devices"], `${path}/final/devices`) : `${path}/final: missing`;
+        const problem = isObject(altFinal)
+          ? (unknownKey(altFinal, FINAL_KEYS, `${path}/final`) ?? devices(altFinal["devices"], `${path}/final/devices`))
+          : `${path}/final: missing`;
         if (problem !== undefined) return problem;
         const o = outcome(alt["outcome"], `${path}/outcome`);
         if (o !== undefined) return o;
       }
       return undefined;
     },
+    () => mixedTypes(v),
   );
 }

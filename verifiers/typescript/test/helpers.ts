@@ -14,7 +14,10 @@ export function familyLines(family: string): string[] {
 export function writeFamily(family: string, lines: readonly string[]): string {
   const dir = mkdtempSync(join(tmpdir(), "plcvec-ts-"));
   const file = join(dir, `${family}.jsonl`);
-  writeFileSync(file, lines.join("\n") + "\n");
+  // The header's count follows the vectors kept: a shorter file is a sound file, not a cut one.
+  const header = JSON.parse(lines[0] ?? "{}") as Record<string, unknown>;
+  const out = typeof header["count"] === "number" ? [JSON.stringify({ ...header, count: lines.length - 1 }), ...lines.slice(1)] : lines;
+  writeFileSync(file, out.join("\n") + "\n");
   return file;
 }
 

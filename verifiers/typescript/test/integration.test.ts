@@ -4,6 +4,8 @@
  */
 import assert from "node:assert/strict";
 import { spawnSync } from "node:child_process";
+import { mkdtempSync, readFileSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { dirname, join } from "node:path";
 import { test } from "node:test";
 import { fileURLToPath } from "node:url";
@@ -38,9 +40,9 @@ test("node --test --test-name-pattern selects vectors by id", () => {
 test("PLCVEC_SHARD=K/N runs one shard of the selection, as every plcvec runner splits it", () => {
   const counts = [1, 2].map((k) => {
     const run = nodeTest([], { PLCVEC_SHARD: `${k}/2` });
-    return Number(/ℹ tests (\d+)/.exec(run.stdout)?.[1]) - 1; // less the closing test of the run
+    return Number(/ℹ tests (\d+)/.exec(run.stdout)?.[1]);
   });
-  const all = Number(/ℹ tests (\d+)/.exec(nodeTest([]).stdout)?.[1]) - 1;
+  const all = Number(/ℹ tests (\d+)/.exec(nodeTest([]).stdout)?.[1]);
   assert.ok(counts[0]! > 0 && counts[1]! > 0, JSON.stringify(counts));
   assert.equal(counts[0]! + counts[1]!, all);
   const bad = nodeTest([], { PLCVEC_SHARD: "3/2" });
@@ -106,4 +108,52 @@ test("the adapter survives malformed input with a fatal answer and a non-zero ex
   const bad = adapterRun("", ["--mutant", "nope"]);
   assert.equal(bad.status, 2);
   assert.match(bad.stderr, /no mutant "nope"; known: cp1e-er-held/);
+});
+
+const faults = join(here, "..", "fixtures", "faults.test.js");
+const TADD_EXAMPLE = "fx5-time-add/TADD/manual-example/program";
+
+/** node --test over the faults fixture: a hostile implementation under vectorTests, as faults-entry runs it. */
+function hostileRun(env: Record<string, string>, args: string[] = []) {
+  const { NODE_TEST_CONTEXT: _, ...clean } = process.env;
+  const run = spawnSync(process.execPath, ["--test", "--test-reporter=spec", ...args, faults], {
+    ...BOUND,
+    env: { ...clean, PLCVEC_FAMILY: "fx5-time-add", PLCVEC_HOSTILE_ON: TADD_EXAMPLE, ...env },
+  });
+  return { status: run.status, out: run.stdout + run.stderr };
+}
+
+test("no way out of the gate: an early exit, an abort, a loop, a filter of nothing, all skipped each fail naming why", () => {
+  const cases: [Record<string, string>, string[], RegExp][] = [
+    [{ PLCVEC_HOSTILE: "exit-zero" }, [], /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: the implementation ended the process \(exit status 0\)/],
+    [{ PLCVEC_HOSTILE: "crash" }, [], /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: the implementation aborted the process/],
+    [{ PLCVEC_HOSTILE: "loop-forever", PLCVEC_TIMEOUT: "0.5" }, [], /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: no answer within 0.5 s \(PLCVEC_TIMEOUT\)/],
+    [{}, ["--test-name-pattern=^nothing is called this$"], /none of the 292 selected vectors ran: .*PLCVEC_ID=/],
+    // The README's own pattern, with an implementation that skips everything: 0 passed is no pass.
+    [{ PLCVEC_HOSTILE: "skips-everything" }, ["--test-name-pattern=fx5-time-add/TADDP/"], /RUN FAILS: nothing passed: all \d+ selected vectors were skipped/],
+    [{ PLCVEC_HOSTILE: "bad-choice" }, [], /plcvec: error: declared interpretation "NO-SUCH-INTERPRETATION" is not in the suite \(known: CP1E-/],
+    [{ PLCVEC_FAMILY: "," }, [], /plcvec: error: PLCVEC_FAMILY=",": an empty name/],
+    [{ PLCVEC_TIMEOUT: "0" }, [], /plcvec: error: PLCVEC_TIMEOUT="0": seconds per vector, a positive number/],
+  ];
+  for (const [env, args, pattern] of cases) {
+    const run = hostileRun(env, args);
+    assert.notEqual(run.status, 0, JSON.stringify(env) + run.out);
+    assert.match(run.out, pattern, JSON.stringify(env));
+    assert.doesNotMatch(run.out, /^\s+at .*\.js:\d+/m, `${JSON.stringify(env)}: no stack trace`);
+  }
+  assert.equal(hostileRun({}, ["--test-name-pattern=fx5-time-add/TADDP/"]).status, 0);
+});
+
+test("known failures under node:test: an id the suite does not have is stale; a listed failure passes; the file is written", () => {
+  const dir = mkdtempSync(join(tmpdir(), "plcvec-known-"));
+  const known = join(dir, "known.toml");
+  writeFileSync(known, '[[known-failure]]\nid = "fx5-time-add/TADD/no-such-vector"\nreason = "listed by mistake"\n');
+  const stale = hostileRun({ PLCVEC_KNOWN_FAILURES: known });
+  assert.notEqual(stale.status, 0);
+  assert.match(stale.out, /STALE fx5-time-add\/TADD\/no-such-vector\n.*the suite has no such vector/);
+  const written = join(dir, "written.toml");
+  const failing = hostileRun({ PLCVEC_HOSTILE: "wrong-result", PLCVEC_WRITE_EXPECTATIONS: written });
+  assert.equal(failing.status, 1);
+  assert.equal(readFileSync(written, "utf8").match(/^id = .*$/gm)?.join(), `id = "${TADD_EXAMPLE}"`);
+  assert.equal(hostileRun({ PLCVEC_HOSTILE: "wrong-result", PLCVEC_KNOWN_FAILURES: written }).status, 0);
 });

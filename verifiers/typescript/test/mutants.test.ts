@@ -12,7 +12,7 @@ describe("each mutant is rejected", () => {
     test(name, () => {
       const report = runVectors(mutant(name), { suite });
       assert.equal(report.passed, false, `${name} (${m.bug}) passed the whole suite`);
-      const failing = report.results.filter((r) => r.status === "fail");
+      const failing = report.verdicts.filter((r) => r.status === "fail");
       assert.ok(failing.length > 0, `${name} failed without a failing vector`);
       // A single-bug mutant of one family is caught by that family's vectors, and only fails there.
       const families = new Set(failing.map((r) => r.id.split("/")[0]));
@@ -46,7 +46,7 @@ test("a mutant that breaks an interpretation passes once it declares that readin
 
 test("a write outside the vector is reported as such", () => {
   const report = runVectors(mutant("tadd-writes-past-range"), { suite, selection: { families: ["fx5-time-add"] } });
-  const problems = report.results.flatMap((r) => r.problems);
+  const problems = report.verdicts.flatMap((r) => r.problems);
   assert.ok(problems.some((p) => p.expected === "<not in the vector>"), JSON.stringify(problems.slice(0, 3)));
 });
 
@@ -63,8 +63,8 @@ function asPlainObjects(impl: Implementation): Implementation {
 
 test("every mutant is judged alike whether its steps are compared by slot or as plain objects", () => {
   for (const name of Object.keys(MUTANTS)) {
-    const bySlot = runVectors(mutant(name), { suite }).results;
-    const byObject = runVectors(asPlainObjects(mutant(name)), { suite }).results;
+    const bySlot = runVectors(mutant(name), { suite }).verdicts;
+    const byObject = runVectors(asPlainObjects(mutant(name)), { suite }).verdicts;
     assert.deepEqual(
       byObject.map((r) => [r.id, r.status, r.problems]),
       bySlot.map((r) => [r.id, r.status, r.problems]),

@@ -13,9 +13,11 @@
  * on background threads over the first dozen or two passes (more while other programs hold the
  * cores), and a timed pass before that measures the compiler, not the runner.
  */
-import { loadSuite } from "../load.js";
+import { resolveChoices } from "../choices.js";
+import { judge, prepare } from "../compare.js";
 import { reference } from "../reference/index.js";
-import { judge, prepare, resolveChoices } from "../run.js";
+import { loadSuite } from "../suite.js";
+import { register, watched } from "../watchdog.js";
 
 const WARMUP_PASSES = 30;
 const WARMUP_SECONDS = 1;
@@ -27,8 +29,10 @@ const suite = loadSuite();
 const loadSeconds = (performance.now() - start) / 1000;
 start = performance.now();
 const impl = reference();
-const { choices, defaults } = resolveChoices(suite, impl.choices);
-const prepared = suite.vectors.map((v) => prepare(v, choices, defaults));
+const followed = resolveChoices(suite, impl.choices);
+const prepared = suite.vectors.map((v) => prepare(v, followed));
+// Judged under the watchdog and the exit guard, as every test-runner binding judges: the figure includes their cost.
+const first = register(suite.vectors.map((v) => v.id));
 const prepareSeconds = (performance.now() - start) / 1000;
 
 /** One pass over every prepared vector: its clock and CPU seconds. Every vector must pass. */
@@ -36,7 +40,10 @@ function pass(): { seconds: number; cpu: number } {
   const c0 = process.cpuUsage();
   const t0 = performance.now();
   let failed = 0;
-  for (const p of prepared) if (judge(p, impl).status !== "pass") failed++;
+  for (let i = 0; i < prepared.length; i++) {
+    const p = prepared[i]!;
+    if (watched(first + i, () => judge(p, impl)).status !== "pass") failed++;
+  }
   const seconds = (performance.now() - t0) / 1000;
   const c = process.cpuUsage(c0);
   if (failed) {

@@ -5,18 +5,11 @@
  * judges it like any implementation.
  *
  *     plcvec-reference-adapter [--mutant NAME] [--choose ID=ALT ...]
- *
- * Malformed input never crashes it: a line that is not a protocol message is answered with
- * `fatal` and a non-zero exit; a vector it cannot run is answered with `error` for that vector.
  */
-import { createInterface } from "node:readline";
-
 import { MUTANTS, mutant } from "../mutants/index.js";
 import { reference } from "../reference/index.js";
-import type { Implementation } from "../run.js";
-import type { RunOutcome, VectorRequest } from "../types.js";
-
-const PROTOCOL = 1;
+import type { Implementation } from "../implementation.js";
+import { serve } from "../serve.js";
 
 function usage(message: string): never {
   process.stderr.write(`plcvec-reference-adapter: ${message}\n`);
@@ -44,80 +37,4 @@ function parseArgs(argv: readonly string[]): Implementation {
   return mutantName === undefined ? reference(choices) : mutant(mutantName, choices);
 }
 
-const impl = parseArgs(process.argv.slice(2));
-const out: string[] = [];
-const flush = (): void => {
-  if (out.length) process.stdout.write(out.join(""));
-  out.length = 0;
-};
-const send = (message: object): void => {
-  out.push(JSON.stringify(message) + "\n");
-};
-const fatal = (message: string): never => {
-  send({ type: "fatal", message });
-  flush();
-  process.exitCode = 1;
-  process.stdout.end();
-  process.exit(1);
-};
-
-type Families = Record<string, { instructions?: unknown; interpretations?: Record<string, { default?: unknown }> }>;
-
-function hello(msg: Record<string, unknown>): void {
-  if (msg["protocol"] !== PROTOCOL) fatal(`this adapter speaks protocol ${PROTOCOL}, not ${JSON.stringify(msg["protocol"])}`);
-  const families = (typeof msg["families"] === "object" && msg["families"] !== null ? msg["families"] : {}) as Families;
-  const instructions = new Set<string>();
-  const interpretations: Record<string, string> = {};
-  for (const family of Object.values(families)) {
-    if (Array.isArray(family.instructions)) for (const i of family.instructions) if (typeof i === "string") instructions.add(i);
-    for (const [id, interp] of Object.entries(family.interpretations ?? {})) {
-      const declared = impl.choices?.[id];
-      interpretations[id] = declared ?? String(interp.default);
-    }
-  }
-  send({ type: "hello", protocol: PROTOCOL, adapter: { name: impl.name, version: "1.0" }, instructions: [...instructions].sort(), interpretations });
-}
-
-function runOne(request: unknown): void {
-  const id = typeof (request as { id?: unknown })?.id === "string" ? (request as { id: string }).id : undefined;
-  if (id === undefined) fatal("a vector in a run request has no id");
-  let answer: RunOutcome;
-  try {
-    answer = impl.run(request as VectorRequest);
-  } catch (err) {
-    answer = { error: err instanceof Error ? `${err.name}: ${err.message}` : String(err) };
-  }
-  send({ type: "result", id, ...answer });
-}
-
-const lines = createInterface({ input: process.stdin, crlfDelay: Infinity });
-lines.on("line", (line) => {
-  if (line.trim() === "") return;
-  let msg: unknown;
-  try {
-    msg = JSON.parse(line);
-  } catch {
-    fatal(`not a JSON line: ${line.slice(0, 120)}`);
-  }
-  if (typeof msg !== "object" || msg === null || Array.isArray(msg)) fatal("a protocol message is a JSON object");
-  const m = msg as Record<string, unknown>;
-  switch (m["type"]) {
-    case "hello":
-      hello(m);
-      break;
-    case "run":
-      if (!Array.isArray(m["vectors"])) fatal("a run request needs `vectors`");
-      for (const request of m["vectors"] as unknown[]) runOne(request);
-      break;
-    case "bye":
-      flush();
-      lines.close();
-      return;
-    default:
-      fatal(`unknown message type ${JSON.stringify(m["type"])}`);
-  }
-  flush(); // one write per batch
-});
-lines.on("close", () => {
-  flush();
-});
+serve(parseArgs(process.argv.slice(2)));

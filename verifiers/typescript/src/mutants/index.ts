@@ -10,8 +10,8 @@ import { HourMeter } from "../reference/fc6a-hour.js";
 import { Fx5CompareMachine, type Field, DATE_FIELDS } from "../reference/fx5-compare.js";
 import { TaddMachine } from "../reference/fx5-tadd.js";
 import type { Operands } from "../reference/machine.js";
-import type { Implementation } from "../run.js";
-import type { StepInputs } from "../types.js";
+import type { Implementation } from "../implementation.js";
+import type { StepInputs } from "../vector.js";
 
 export type Aspect =
   | "contact result"

@@ -1,5 +1,5 @@
 /** Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT, from cp1e-time-compare-DT.txt. */
-import type { StepInputs } from "../types.js";
+import type { StepInputs } from "../vector.js";
 import { BaseMachine, conditionHolds, CONDITIONS, deviceOf, type Operands } from "./machine.js";
 
 const ERROR_FLAG = "P_ER";

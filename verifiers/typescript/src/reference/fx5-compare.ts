@@ -3,7 +3,7 @@
  * from the manual pages fx5-time-compare-LDTM.txt and fx5-date-compare-LDDT.txt. The two pages are
  * the same text with hour/minute/second replaced by year/month/day, so one class serves both.
  */
-import type { StepInputs } from "../types.js";
+import type { StepInputs } from "../vector.js";
 import { BaseMachine, conditionHolds, CONDITIONS, deviceOf, signed16, type Operands } from "./machine.js";
 
 export interface Field {

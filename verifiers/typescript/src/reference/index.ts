@@ -5,8 +5,9 @@
  */
 import { FAMILIES, INTERPRETATIONS, type InterpretationId } from "../generated/names.js";
 import { Memory } from "../memory.js";
-import type { Implementation } from "../run.js";
-import type { RunOutcome, StepResult, VectorRequest } from "../types.js";
+import type { Implementation } from "../implementation.js";
+import type { RunOutcome, StepResult } from "../implementation.js";
+import type { VectorRequest } from "../vector.js";
 import { Cp1eTimeCompare } from "./cp1e-dt.js";
 import { HourMeter } from "./fc6a-hour.js";
 import { Fx5CompareMachine } from "./fx5-compare.js";

@@ -5,7 +5,7 @@
  */
 import { INTERPRETATIONS, type Alternative, type InterpretationId } from "../generated/names.js";
 import type { Memory } from "../memory.js";
-import type { Operand, StepInputs } from "../types.js";
+import type { Operand, StepInputs } from "../vector.js";
 
 export type Operands = Readonly<Record<string, Operand>>;
 

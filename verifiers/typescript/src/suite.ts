@@ -12,9 +12,9 @@ import { existsSync, readFileSync, statSync } from "node:fs";
 import { join } from "node:path";
 import { fileURLToPath } from "node:url";
 
-import { PlcvecError } from "./errors.js";
-import type { FamilyHeader, InterpretationHeader, Vector } from "./types.js";
-import { vectorProblem } from "./validate.js";
+import { VerifyError } from "./errors.js";
+import { headerProblem, vectorProblem } from "./validate.js";
+import type { FamilyHeader, InterpretationHeader, Vector } from "./vector.js";
 
 /** The major schema version this runner reads (CONTRACT.md, "Versioning"): a 2.x file is refused, not misread. */
 export const SCHEMA_MAJOR = 1;
@@ -32,7 +32,7 @@ export interface Suite {
   readonly specSha256: string;
 }
 
-export interface Interpretation {
+export interface InterpretationInfo {
   readonly id: string;
   readonly default: string;
   readonly alternatives: readonly string[];
@@ -58,30 +58,33 @@ export function loadSuite(path: string = defaultVectorsPath()): Suite {
 }
 
 function readSuite(path: string): Suite {
-  if (!existsSync(path)) throw new PlcvecError(`${path}: no such vector folder or file`);
+  if (!existsSync(path)) throw new VerifyError(`${path}: no such vector folder or file`);
   let files: string[];
   let suiteVersion = "";
   let setHash = "";
   const sums = new Map<string, string>();
+  const counts = new Map<string, number>();
   if (statSync(path).isDirectory()) {
     const index = join(path, "index.json");
     const manifest = join(path, "manifest.json");
     const listing = existsSync(index) ? index : manifest;
+    if (!existsSync(listing)) throw new VerifyError(`${path}: no index.json (a folder written by plcvec export) nor manifest.json (the repository's vectors/)`);
     const data = readJson(listing) as {
-      families?: Record<string, { file?: string; sha256?: string }>;
+      families?: Record<string, { file?: string; sha256?: string; count?: number }>;
       suite_version?: string;
       generator_version?: string;
       spec_sha256?: string;
     };
     if (typeof data.families !== "object" || data.families === null) {
-      throw new PlcvecError(`${listing}: no \`families\`; is this a plcvec vector folder?`);
+      throw new VerifyError(`${listing}: no \`families\`; is this a plcvec vector folder?`);
     }
     files = [];
     for (const [family, entry] of Object.entries(data.families)) {
-      if (typeof entry?.file !== "string") throw new PlcvecError(`${listing}: family ${family} names no \`file\``);
+      if (typeof entry?.file !== "string") throw new VerifyError(`${listing}: family ${family} names no \`file\``);
       const file = join(path, entry.file);
       files.push(file);
-      if (listing === index && typeof entry.sha256 === "string") sums.set(file, entry.sha256);
+      if (typeof entry.sha256 === "string") sums.set(file, entry.sha256);
+      if (typeof entry.count === "number") counts.set(file, entry.count);
     }
     suiteVersion = String(data.suite_version ?? data.generator_version ?? "");
     setHash = String(data.spec_sha256 ?? "");
@@ -93,10 +96,11 @@ function readSuite(path: string): Suite {
   const byId = new Map<string, Vector>();
   const schemaVersions = new Set<string>();
   for (const file of files) {
-    const { header, entries } = file.endsWith(".jsonl") ? readJsonl(file, sums.get(file)) : readFamilyJson(file);
+    const bytes = readBytes(file);
+    const { header, entries } = file.endsWith(".jsonl") ? readJsonl(file, bytes) : readFamilyJson(file, bytes);
     const version = String(header.schema_version ?? "");
     if (version.split(".")[0] !== String(SCHEMA_MAJOR)) {
-      throw new PlcvecError(
+      throw new VerifyError(
         `${file}: schema_version ${version || "(none)"} is not ${SCHEMA_MAJOR}.x; this runner reads ${SCHEMA_MAJOR}.x ` +
           "files only (see CONTRACT.md, Versioning)",
       );
@@ -107,12 +111,28 @@ function readSuite(path: string): Suite {
       const problem = vectorProblem(value, header.family);
       if (problem !== undefined) {
         const id = typeof (value as { id?: unknown })?.id === "string" ? (value as { id: string }).id : "(no id)";
-        throw new PlcvecError(`${where}: vector ${id}: ${problem}`);
+        throw new VerifyError(`${where}: vector ${id}: ${problem}`);
       }
       const vector = value as Vector;
-      if (byId.has(vector.id)) throw new PlcvecError(`${where}: vector id ${vector.id} appears twice`);
+      if (byId.has(vector.id)) throw new VerifyError(`${where}: vector id ${vector.id} appears twice`);
       byId.set(vector.id, vector);
       vectors.push(vector);
+    }
+    // After the content, so that a damaged line is named by its line: an edit or a cut that
+    // leaves every line sound is still caught by the count and the sha256 the listing records.
+    const listed = counts.get(file);
+    if (typeof header.count === "number" && header.count !== entries.length) {
+      throw new VerifyError(`${file}: holds ${entries.length} vectors, its header says ${header.count} (a cut or edited copy)`);
+    }
+    if (listed !== undefined && listed !== entries.length) {
+      throw new VerifyError(`${file}: holds ${entries.length} vectors, the listing says ${listed} (a cut or edited copy)`);
+    }
+    const sha256 = sums.get(file);
+    if (sha256 !== undefined) {
+      const actual = createHash("sha256").update(bytes).digest("hex");
+      if (actual !== sha256) {
+        throw new VerifyError(`${file}: sha256 ${actual} is not the ${sha256} its listing gives (a damaged or edited copy)`);
+      }
     }
   }
   const hashes = [...headers.values()].map((h) => h.spec_sha256);
@@ -132,45 +152,57 @@ interface Entry {
   readonly where: string;
 }
 
-function readText(file: string): string {
+function readBytes(file: string): Buffer {
   try {
-    return readFileSync(file, "utf8");
+    return readFileSync(file);
   } catch (err) {
-    throw new PlcvecError(`${file}: cannot read: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
+    const code = (err as NodeJS.ErrnoException).code;
+    throw new VerifyError(`${file}: cannot read${code === "ENOENT" ? " (no such file)" : ""}: ${code ?? String(err)}`);
   }
 }
 
-function readJson(file: string): unknown {
-  const text = readText(file);
+const UTF8 = new TextDecoder("utf-8", { fatal: true });
+
+/** The bytes as text; a byte that is not UTF-8 is named by its line, never replaced. */
+function decode(file: string, bytes: Buffer): string {
+  try {
+    return UTF8.decode(bytes);
+  } catch {
+    let start = 0;
+    for (let line = 1; ; line++) {
+      const end = bytes.indexOf(0x0a, start);
+      try {
+        UTF8.decode(bytes.subarray(start, end < 0 ? bytes.length : end));
+      } catch {
+        throw new VerifyError(`${file}:${line}: not UTF-8 text`);
+      }
+      if (end < 0) throw new VerifyError(`${file}: not UTF-8 text`);
+      start = end + 1;
+    }
+  }
+}
+
+function readJson(file: string, bytes: Buffer = readBytes(file)): unknown {
+  const text = decode(file, bytes);
   try {
     return JSON.parse(text);
   } catch (err) {
-    throw new PlcvecError(`${file}: not valid JSON (${(err as Error).message})`);
+    throw new VerifyError(`${file}: not valid JSON (${(err as Error).message})`);
   }
 }
 
 function checkHeader(value: unknown, where: string): FamilyHeader {
-  const h = value as Partial<FamilyHeader> | null;
-  if (typeof h !== "object" || h === null || typeof h.family !== "string" || "id" in h) {
-    throw new PlcvecError(`${where}: not a plcvec family header (no \`family\`)`);
-  }
-  if (!Array.isArray(h.interpretations) || !Array.isArray(h.instructions) || typeof h.tags !== "object") {
-    throw new PlcvecError(`${where}: the header of ${h.family} needs \`instructions\`, \`tags\` and \`interpretations\``);
-  }
-  return h as FamilyHeader;
+  const problem = headerProblem(value);
+  if (problem !== undefined) throw new VerifyError(`${where}: not a plcvec family header: ${problem}`);
+  return value as FamilyHeader;
 }
 
-function readJsonl(file: string, sha256: string | undefined): { header: FamilyHeader; entries: Entry[] } {
-  const text = readText(file);
-  if (sha256 !== undefined) {
-    const actual = createHash("sha256").update(text, "utf8").digest("hex");
-    if (actual !== sha256) {
-      throw new PlcvecError(`${file}: sha256 ${actual} is not the ${sha256} its index.json gives (damaged or edited copy)`);
-    }
-  }
-  if (text.trim() === "") throw new PlcvecError(`${file}: empty file (no header line)`);
+function readJsonl(file: string, bytes: Buffer): { header: FamilyHeader; entries: Entry[] } {
+  const text = decode(file, bytes);
+  if (text.trim() === "") throw new VerifyError(`${file}: empty file (no header line)`);
   const lines = text.split("\n");
   if (lines[lines.length - 1] === "") lines.pop();
+  else throw new VerifyError(`${file}:${lines.length}: the last line has no end (a cut copy)`);
   const entries: Entry[] = [];
   let header: FamilyHeader | undefined;
   lines.forEach((line, i) => {
@@ -179,19 +211,19 @@ function readJsonl(file: string, sha256: string | undefined): { header: FamilyHe
     try {
       value = JSON.parse(line);
     } catch (err) {
-      throw new PlcvecError(`${where}: not valid JSON (${(err as Error).message})`);
+      throw new VerifyError(`${where}: not valid JSON (${(err as Error).message})`);
     }
     if (i === 0) header = checkHeader(value, where);
     else entries.push({ value, where });
   });
-  if (header === undefined) throw new PlcvecError(`${file}: empty file (no header line)`);
+  if (header === undefined) throw new VerifyError(`${file}: empty file (no header line)`);
   return { header, entries };
 }
 
-function readFamilyJson(file: string): { header: FamilyHeader; entries: Entry[] } {
-  const data = readJson(file) as Record<string, unknown> | null;
+function readFamilyJson(file: string, bytes: Buffer): { header: FamilyHeader; entries: Entry[] } {
+  const data = readJson(file, bytes) as Record<string, unknown> | null;
   if (typeof data !== "object" || data === null || !Array.isArray(data["vectors"])) {
-    throw new PlcvecError(`${file}: not a plcvec vector file (no \`family\` and \`vectors\`)`);
+    throw new VerifyError(`${file}: not a plcvec vector file (no \`family\` and \`vectors\`)`);
   }
   const { vectors, ...rest } = data;
   const header = checkHeader(rest, file);
@@ -202,7 +234,7 @@ function readFamilyJson(file: string): { header: FamilyHeader; entries: Entry[] 
  * The interpretations of the given families (all by default), each once: the FX5 time and date
  * comparisons share theirs, and an implementation declares it once for both.
  */
-export function interpretationsOf(suite: Suite, families?: Iterable<string>): Map<string, Interpretation> {
+export function interpretationsOf(suite: Suite, families?: Iterable<string>): Map<string, InterpretationInfo> {
   const wanted = families === undefined ? undefined : new Set(families);
   const out = new Map<string, { id: string; default: string; alternatives: string[]; families: string[] }>();
   for (const [family, header] of [...suite.headers.entries()].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
@@ -213,7 +245,7 @@ export function interpretationsOf(suite: Suite, families?: Iterable<string>): Ma
       if (seen === undefined) {
         out.set(interp.id, { id: interp.id, default: interp.default, alternatives, families: [family] });
       } else if (seen.default !== interp.default || seen.alternatives.join() !== alternatives.join()) {
-        throw new PlcvecError(
+        throw new VerifyError(
           `${suite.source}: interpretation ${interp.id} has other alternatives or another default in ${family} than in ${seen.families[0]}`,
         );
       } else {

@@ -3,9 +3,9 @@
  * Each list is OR within itself; the filters are AND together. Names the suite does not have are
  * errors that list the known ones: a typo in a CI file must not quietly turn the gate off.
  */
-import { PlcvecError } from "./errors.js";
-import { interpretationsOf, type Suite } from "./load.js";
-import type { Vector } from "./types.js";
+import { VerifyError } from "./errors.js";
+import { interpretationsOf, type Suite } from "./suite.js";
+import type { Vector } from "./vector.js";
 
 export interface Selection {
   readonly families?: readonly string[];
@@ -49,7 +49,7 @@ export function parseShard(text: string): [number, number] {
   const m = /^(\d+)\/(\d+)$/.exec(text.trim());
   const k = m ? Number(m[1]) : NaN;
   const n = m ? Number(m[2]) : NaN;
-  if (!m || !(k >= 1 && k <= n)) throw new PlcvecError(`shard takes K/N with 1 <= K <= N (e.g. 2/4), got ${JSON.stringify(text)}`);
+  if (!m || !(k >= 1 && k <= n)) throw new VerifyError(`shard takes K/N with 1 <= K <= N (e.g. 2/4), got ${JSON.stringify(text)}`);
   return [k, n];
 }
 
@@ -79,7 +79,7 @@ function checkNames(what: string, asked: readonly string[] | undefined, known: I
   const have = new Set(known);
   const unknown = asked.filter((a) => !have.has(a));
   if (unknown.length) {
-    throw new PlcvecError(`unknown ${what} ${unknown.map((u) => JSON.stringify(u)).join(", ")} (known: ${[...have].sort().join(", ")})`);
+    throw new VerifyError(`unknown ${what} ${unknown.map((u) => JSON.stringify(u)).join(", ")} (known: ${[...have].sort().join(", ")})`);
   }
 }
 
@@ -95,6 +95,12 @@ export function select(suite: Suite, selection: Selection = {}): Vector[] {
   const tags = selection.tags?.length ? new Set(selection.tags) : undefined;
   const interps = selection.interpretations?.length ? new Set(selection.interpretations) : undefined;
   const globs = selection.ids?.length ? selection.ids.map(globToRegExp) : undefined;
+  // A glob that matches no id of the suite is a typo, not a narrow selection.
+  for (const [i, g] of (globs ?? []).entries()) {
+    if (!suite.vectors.some((v) => g.test(v.id))) {
+      throw new VerifyError(`id glob ${JSON.stringify(selection.ids![i])} matches no vector id of the suite`);
+    }
+  }
   const shard = selection.shard;
   if (shard !== undefined) parseShard(`${shard[0]}/${shard[1]}`);
   return suite.vectors.filter(
@@ -106,4 +112,60 @@ export function select(suite: Suite, selection: Selection = {}): Vector[] {
       (globs === undefined || globs.some((g) => g.test(v.id))) &&
       (shard === undefined || shardOf(v.id, shard[1]) === shard[0]),
   );
+}
+
+/** The environment variables of a selection, each a comma-separated list (CONTRACT.md). */
+const VARIABLES = [
+  ["PLCVEC_ID", "ids"],
+  ["PLCVEC_FAMILY", "families"],
+  ["PLCVEC_INSTRUCTION", "instructions"],
+  ["PLCVEC_TAG", "tags"],
+  ["PLCVEC_INTERPRETATION", "interpretations"],
+] as const;
+
+/**
+ * The selection the environment asks for: PLCVEC_ID (exact ids or globs), PLCVEC_FAMILY,
+ * PLCVEC_INSTRUCTION, PLCVEC_TAG, PLCVEC_INTERPRETATION (comma-separated) and PLCVEC_SHARD (K/N).
+ * An empty item (`PLCVEC_FAMILY=,`) is an error, never "no filter".
+ */
+export function environmentSelection(env: NodeJS.ProcessEnv = process.env): Selection {
+  const out: { -readonly [K in keyof Selection]: Selection[K] } = {};
+  for (const [variable, key] of VARIABLES) {
+    const text = env[variable];
+    if (text === undefined || text === "") continue;
+    const items = text.split(",").map((s) => s.trim());
+    if (items.some((s) => s === "")) {
+      throw new VerifyError(`${variable}=${JSON.stringify(text)}: an empty name in the list (names are separated by commas)`);
+    }
+    out[key] = items;
+  }
+  const shard = env["PLCVEC_SHARD"];
+  if (shard !== undefined && shard !== "") {
+    try {
+      out.shard = parseShard(shard);
+    } catch (err) {
+      throw new VerifyError(`PLCVEC_SHARD=${JSON.stringify(shard)}: ${(err as Error).message}`);
+    }
+  }
+  return out;
+}
+
+/**
+ * The vectors both the code's selection and the environment's pick: the environment narrows what a
+ * test file selects (PLCVEC_ID=one-id runs that one), and an unknown name in either is an error
+ * that names its variable.
+ */
+export function selectWithEnvironment(suite: Suite, selection: Selection = {}, env: NodeJS.ProcessEnv = process.env): Vector[] {
+  const fromCode = select(suite, selection);
+  const fromEnv = environmentSelection(env);
+  if (Object.keys(fromEnv).length === 0) return fromCode;
+  let picked: ReadonlySet<Vector>;
+  try {
+    picked = new Set(select(suite, fromEnv));
+  } catch (err) {
+    if (!(err instanceof VerifyError)) throw err;
+    const names = VARIABLES.filter(([v]) => env[v]).map(([v]) => `${v}=${JSON.stringify(env[v])}`).join(" ");
+    throw new VerifyError(`${names}: ${err.message}`);
+  }
+  return fromCode.filter((v) => picked.has(v));
 }
