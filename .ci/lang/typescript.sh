@@ -20,3 +20,6 @@ cd "$root"
 python3 -m plcvec verify --adapter verifiers/typescript/reference-adapter -q
 # A mutant served the same way is rejected (exit 1): the gate is not passing by accident.
 gate_rejects typescript "verifiers/typescript/reference-adapter --mutant tadd-hour-not-wrapped" --family fx5-time-add
+# The shared table of faults through faults-entry (node --test over vectorTests): the verdict
+# `plcvec verify` gives, for every row.
+python3 verifiers/parity/run.py --lang typescript
