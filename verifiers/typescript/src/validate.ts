@@ -105,27 +105,38 @@ export function headerProblem(h: Json): string | undefined {
  * and must not be blamed on the implementation.
  */
 function mixedTypes(v: Record<string, Json>): string | undefined {
-  const seen = new Map<string, { bit: boolean; path: string }>();
+  // Name -> true for a bit, false for a word, and where it was first seen: objects without a
+  // prototype and for..in, since this runs over every device of every vector at load.
+  const isBit: Record<string, boolean> = Object.create(null) as Record<string, boolean>;
+  const firstSeen: Record<string, string> = Object.create(null) as Record<string, string>;
   const visit = (devices: Json, path: string): string | undefined => {
     if (!isObject(devices)) return undefined;
-    for (const [name, value] of Object.entries(devices)) {
+    for (const name in devices) {
+      const value = devices[name];
       const bit = typeof value === "boolean";
-      const first = seen.get(name);
-      if (first === undefined) seen.set(name, { bit, path });
-      else if (first.bit !== bit) {
-        return `${path}/${name}: ${JSON.stringify(value)} is a ${bit ? "bit" : "word"}, but ${first.path}/${name} holds a ${first.bit ? "bit" : "word"}`;
+      const seen = isBit[name];
+      if (seen === undefined) {
+        isBit[name] = bit;
+        firstSeen[name] = path;
+      } else if (seen !== bit) {
+        return `${path}/${name}: ${JSON.stringify(value)} is a ${bit ? "bit" : "word"}, but ${firstSeen[name]}/${name} holds a ${seen ? "bit" : "word"}`;
       }
     }
     return undefined;
   };
   const initial = v["initial"] as Record<string, Json>;
   let problem = visit(initial["devices"], "initial/devices");
-  for (const [i, step] of (v["steps"] as Record<string, Json>[]).entries()) {
-    problem ??= visit(step["set"], `steps/${i}/set`) ?? visit((step["expect"] as Record<string, Json>)["devices"], `steps/${i}/expect/devices`);
+  const steps = v["steps"] as Record<string, Json>[];
+  for (let i = 0; i < steps.length && problem === undefined; i++) {
+    const step = steps[i]!;
+    problem = visit(step["set"], `steps/${i}/set`) ?? visit((step["expect"] as Record<string, Json>)["devices"], `steps/${i}/expect/devices`);
   }
   problem ??= visit((v["final"] as Record<string, Json>)["devices"], "final/devices");
-  for (const [i, alt] of ((v["alternatives"] as Record<string, Json>[] | undefined) ?? []).entries()) {
-    for (const [j, e] of (alt["expect"] as Record<string, Json>[]).entries()) problem ??= visit(e["devices"], `alternatives/${i}/expect/${j}/devices`);
+  const alternatives = (v["alternatives"] as Record<string, Json>[] | undefined) ?? [];
+  for (let i = 0; i < alternatives.length && problem === undefined; i++) {
+    const alt = alternatives[i]!;
+    const expect = alt["expect"] as Record<string, Json>[];
+    for (let j = 0; j < expect.length && problem === undefined; j++) problem = visit(expect[j]!["devices"], `alternatives/${i}/expect/${j}/devices`);
     problem ??= visit((alt["final"] as Record<string, Json>)["devices"], `alternatives/${i}/final/devices`);
   }
   return problem;

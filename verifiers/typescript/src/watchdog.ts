@@ -97,17 +97,31 @@ export function register(list: readonly string[]): number {
   return first;
 }
 
-/** Run `body` as vector number `n` (from register), under the bound and the exit guard. */
-export function watched<T>(n: number, body: () => T): T {
+/**
+ * Vector number `n` (from register) starts: the watchdog's clock for it runs from here. Plain
+ * stores, not atomic ones: only this thread writes, and the watchdog needs to see them within
+ * its tick, not at once (an atomic store is a fence on every vector).
+ */
+export function enter(n: number): void {
   const b = beat!;
   current = n;
-  Atomics.store(b, 0, n + 1);
-  Atomics.add(b, 1, 1);
+  b[0] = n + 1;
+  b[1]! += 1;
+}
+
+/** The vector in progress is done. */
+export function leave(): void {
+  beat![0] = 0;
+  current = -1;
+}
+
+/** Run `body` as vector number `n` (from register), under the bound and the exit guard. */
+export function watched<T>(n: number, body: () => T): T {
+  enter(n);
   try {
     return body();
   } finally {
-    Atomics.store(b, 0, 0);
-    current = -1;
+    leave();
   }
 }
 
