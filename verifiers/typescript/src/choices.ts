@@ -5,8 +5,8 @@
 import { VerifyError } from "./errors.js";
 import { interpretationsOf, type Suite } from "./suite.js";
 
-/** Interpretation id -> alternative, as an implementation declares it. */
-export type Choices = Readonly<Record<string, string>>;
+/** Interpretation id -> alternative, as an implementation declares it (checked here; the generated `Choices` type-checks one). */
+type Choices = Readonly<Record<string, string>>;
 
 /** Every interpretation's alternative, declared or default, and the defaults. */
 export interface Followed {

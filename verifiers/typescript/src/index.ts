@@ -11,7 +11,7 @@
  */
 export * from "./generated/names.js";
 export { checkRun, cases, runReport, VectorFailure, type Case, type CaseOptions } from "./cases.js";
-export { resolveChoices, type Choices, type Followed } from "./choices.js";
+export { resolveChoices, type Followed } from "./choices.js";
 export { compare, cpuWritesOf, judge, prepare, type Prepared } from "./compare.js";
 export { executeOnMemory, type Execution, type MemoryImplementation } from "./emulator.js";
 export { VerifyError } from "./errors.js";

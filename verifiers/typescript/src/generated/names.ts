@@ -108,6 +108,430 @@ export const FAMILY_INSTRUCTIONS: Readonly<Record<Family, readonly Instruction[]
   "fx5-time-compare": ["ANDTM<", "ANDTM<=", "ANDTM<>", "ANDTM=", "ANDTM>", "ANDTM>=", "LDTM<", "LDTM<=", "LDTM<>", "LDTM=", "LDTM>", "LDTM>=", "ORTM<", "ORTM<=", "ORTM<>", "ORTM=", "ORTM>", "ORTM>="],
 };
 
+/** An instruction's form: a contact loaded (LD), in series (AND) or in parallel (OR); null for one that is not a contact. */
+export const FORMS = ["LD", "AND", "OR"] as const;
+export type Form = (typeof FORMS)[number];
+
+/** The condition a comparison contact tests of its first operand against its second; null for one that compares nothing. */
+export const CONDITIONS = ["=", "<>", "<", "<=", ">", ">="] as const;
+export type Condition = (typeof CONDITIONS)[number];
+
+/** When an instruction executes: at every scan its condition is on, or once on the rising edge. */
+export const EXECUTIONS = ["every-scan", "rising-edge"] as const;
+export type ExecutionKind = (typeof EXECUTIONS)[number];
+
+export interface InstructionInfo {
+  readonly family: Family;
+  /** The structured-text spelling, "" where the page gives none. */
+  readonly st: string;
+  readonly form: Form | null;
+  readonly condition: Condition | null;
+  readonly execution: ExecutionKind;
+}
+
+/** What each instruction is, as values: no emulator need parse `LDTM<=` or `AND<=DT` to know it. */
+export const INSTRUCTION_INFO: Readonly<Record<Instruction, InstructionInfo>> = {
+  "AND <=DT": {
+    family: "cp1e-time-compare",
+    st: "AND <=DT",
+    form: "AND",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "AND <>DT": {
+    family: "cp1e-time-compare",
+    st: "AND <>DT",
+    form: "AND",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "AND <DT": {
+    family: "cp1e-time-compare",
+    st: "AND <DT",
+    form: "AND",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "AND =DT": {
+    family: "cp1e-time-compare",
+    st: "AND =DT",
+    form: "AND",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "AND >=DT": {
+    family: "cp1e-time-compare",
+    st: "AND >=DT",
+    form: "AND",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "AND >DT": {
+    family: "cp1e-time-compare",
+    st: "AND >DT",
+    form: "AND",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "LD <=DT": {
+    family: "cp1e-time-compare",
+    st: "LD <=DT",
+    form: "LD",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "LD <>DT": {
+    family: "cp1e-time-compare",
+    st: "LD <>DT",
+    form: "LD",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "LD <DT": {
+    family: "cp1e-time-compare",
+    st: "LD <DT",
+    form: "LD",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "LD =DT": {
+    family: "cp1e-time-compare",
+    st: "LD =DT",
+    form: "LD",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "LD >=DT": {
+    family: "cp1e-time-compare",
+    st: "LD >=DT",
+    form: "LD",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "LD >DT": {
+    family: "cp1e-time-compare",
+    st: "LD >DT",
+    form: "LD",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "OR <=DT": {
+    family: "cp1e-time-compare",
+    st: "OR <=DT",
+    form: "OR",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "OR <>DT": {
+    family: "cp1e-time-compare",
+    st: "OR <>DT",
+    form: "OR",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "OR <DT": {
+    family: "cp1e-time-compare",
+    st: "OR <DT",
+    form: "OR",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "OR =DT": {
+    family: "cp1e-time-compare",
+    st: "OR =DT",
+    form: "OR",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "OR >=DT": {
+    family: "cp1e-time-compare",
+    st: "OR >=DT",
+    form: "OR",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "OR >DT": {
+    family: "cp1e-time-compare",
+    st: "OR >DT",
+    form: "OR",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "HOUR": {
+    family: "fc6a-hour-meter",
+    st: "",
+    form: null,
+    condition: null,
+    execution: "every-scan",
+  },
+  "ANDDT<": {
+    family: "fx5-date-compare",
+    st: "ANDDT_LT",
+    form: "AND",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "ANDDT<=": {
+    family: "fx5-date-compare",
+    st: "ANDDT_LE",
+    form: "AND",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "ANDDT<>": {
+    family: "fx5-date-compare",
+    st: "ANDDT_NE",
+    form: "AND",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "ANDDT=": {
+    family: "fx5-date-compare",
+    st: "ANDDT_EQ",
+    form: "AND",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "ANDDT>": {
+    family: "fx5-date-compare",
+    st: "ANDDT_GT",
+    form: "AND",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "ANDDT>=": {
+    family: "fx5-date-compare",
+    st: "ANDDT_GE",
+    form: "AND",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "LDDT<": {
+    family: "fx5-date-compare",
+    st: "LDDT_LT",
+    form: "LD",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "LDDT<=": {
+    family: "fx5-date-compare",
+    st: "LDDT_LE",
+    form: "LD",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "LDDT<>": {
+    family: "fx5-date-compare",
+    st: "LDDT_NE",
+    form: "LD",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "LDDT=": {
+    family: "fx5-date-compare",
+    st: "LDDT_EQ",
+    form: "LD",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "LDDT>": {
+    family: "fx5-date-compare",
+    st: "LDDT_GT",
+    form: "LD",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "LDDT>=": {
+    family: "fx5-date-compare",
+    st: "LDDT_GE",
+    form: "LD",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "ORDT<": {
+    family: "fx5-date-compare",
+    st: "ORDT_LT",
+    form: "OR",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "ORDT<=": {
+    family: "fx5-date-compare",
+    st: "ORDT_LE",
+    form: "OR",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "ORDT<>": {
+    family: "fx5-date-compare",
+    st: "ORDT_NE",
+    form: "OR",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "ORDT=": {
+    family: "fx5-date-compare",
+    st: "ORDT_EQ",
+    form: "OR",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "ORDT>": {
+    family: "fx5-date-compare",
+    st: "ORDT_GT",
+    form: "OR",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "ORDT>=": {
+    family: "fx5-date-compare",
+    st: "ORDT_GE",
+    form: "OR",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "TADD": {
+    family: "fx5-time-add",
+    st: "TADD",
+    form: null,
+    condition: null,
+    execution: "every-scan",
+  },
+  "TADDP": {
+    family: "fx5-time-add",
+    st: "TADDP",
+    form: null,
+    condition: null,
+    execution: "rising-edge",
+  },
+  "ANDTM<": {
+    family: "fx5-time-compare",
+    st: "ANDTM_LT",
+    form: "AND",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "ANDTM<=": {
+    family: "fx5-time-compare",
+    st: "ANDTM_LE",
+    form: "AND",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "ANDTM<>": {
+    family: "fx5-time-compare",
+    st: "ANDTM_NE",
+    form: "AND",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "ANDTM=": {
+    family: "fx5-time-compare",
+    st: "ANDTM_EQ",
+    form: "AND",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "ANDTM>": {
+    family: "fx5-time-compare",
+    st: "ANDTM_GT",
+    form: "AND",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "ANDTM>=": {
+    family: "fx5-time-compare",
+    st: "ANDTM_GE",
+    form: "AND",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "LDTM<": {
+    family: "fx5-time-compare",
+    st: "LDTM_LT",
+    form: "LD",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "LDTM<=": {
+    family: "fx5-time-compare",
+    st: "LDTM_LE",
+    form: "LD",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "LDTM<>": {
+    family: "fx5-time-compare",
+    st: "LDTM_NE",
+    form: "LD",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "LDTM=": {
+    family: "fx5-time-compare",
+    st: "LDTM_EQ",
+    form: "LD",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "LDTM>": {
+    family: "fx5-time-compare",
+    st: "LDTM_GT",
+    form: "LD",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "LDTM>=": {
+    family: "fx5-time-compare",
+    st: "LDTM_GE",
+    form: "LD",
+    condition: ">=",
+    execution: "every-scan",
+  },
+  "ORTM<": {
+    family: "fx5-time-compare",
+    st: "ORTM_LT",
+    form: "OR",
+    condition: "<",
+    execution: "every-scan",
+  },
+  "ORTM<=": {
+    family: "fx5-time-compare",
+    st: "ORTM_LE",
+    form: "OR",
+    condition: "<=",
+    execution: "every-scan",
+  },
+  "ORTM<>": {
+    family: "fx5-time-compare",
+    st: "ORTM_NE",
+    form: "OR",
+    condition: "<>",
+    execution: "every-scan",
+  },
+  "ORTM=": {
+    family: "fx5-time-compare",
+    st: "ORTM_EQ",
+    form: "OR",
+    condition: "=",
+    execution: "every-scan",
+  },
+  "ORTM>": {
+    family: "fx5-time-compare",
+    st: "ORTM_GT",
+    form: "OR",
+    condition: ">",
+    execution: "every-scan",
+  },
+  "ORTM>=": {
+    family: "fx5-time-compare",
+    st: "ORTM_GE",
+    form: "OR",
+    condition: ">=",
+    execution: "every-scan",
+  },
+};
+
 /** Tags: why a vector exists. */
 export const TAGS = [
   "boundary",

@@ -1,6 +1,7 @@
 /** Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT, from cp1e-time-compare-DT.txt. */
 import type { StepInputs } from "../vector.js";
-import { BaseMachine, conditionHolds, CONDITIONS, deviceOf, type Operands } from "./machine.js";
+import { INSTRUCTION_INFO, type InstructionInfo } from "../generated/names.js";
+import { BaseMachine, conditionHolds, deviceOf, type Operands } from "./machine.js";
 
 const ERROR_FLAG = "P_ER";
 const FLAGS: readonly (readonly [string, string])[] = [
@@ -43,20 +44,13 @@ export function isBcd(b: number): boolean {
 
 const bcdValue = (b: number): number => (b >> 4) * 10 + (b & 0xf);
 
-const FORMS: readonly string[] = ["LD", "AND", "OR"];
-const mnemonics = new Map<string, readonly [string, string]>();
-
-/** "AND <=DT" -> ["AND", "<="] (parsed once per mnemonic). */
+/** "AND <=DT" -> ["AND", "<="]: the form and condition the generated names give as values. */
 function parseMnemonic(instruction: string): readonly [string, string] {
-  let parsed = mnemonics.get(instruction);
-  if (parsed === undefined) {
-    const m = /^(LD|AND|OR) (=|<>|<|<=|>|>=)DT$/.exec(instruction);
-    if (m === null) throw new Error(`not a CP1E time comparison: ${instruction}`);
-    // The literals, not the matched text: comparing them is comparing pointers.
-    parsed = [FORMS.find((f) => f === m[1])!, CONDITIONS.find((c) => c === m[2])!];
-    mnemonics.set(instruction, parsed);
+  const info = (INSTRUCTION_INFO as Readonly<Record<string, InstructionInfo | undefined>>)[instruction];
+  if (info?.family !== "cp1e-time-compare" || info.form === null || info.condition === null) {
+    throw new Error(`not a CP1E time comparison: ${instruction}`);
   }
-  return parsed;
+  return [info.form, info.condition];
 }
 
 export class Cp1eTimeCompare extends BaseMachine {

@@ -4,7 +4,8 @@
  * the same text with hour/minute/second replaced by year/month/day, so one class serves both.
  */
 import type { StepInputs } from "../vector.js";
-import { BaseMachine, conditionHolds, CONDITIONS, deviceOf, signed16, type Operands } from "./machine.js";
+import { INSTRUCTION_INFO, type InstructionInfo } from "../generated/names.js";
+import { BaseMachine, conditionHolds, deviceOf, signed16, type Operands } from "./machine.js";
 
 export interface Field {
   readonly offset: number;
@@ -31,8 +32,6 @@ export const DATE_FIELDS: readonly Field[] = [
 
 const SM709 = "SM709";
 
-/** Parsed mnemonics of each kind ("LDTM<=" is not a date comparison). */
-const mnemonics = { TM: new Map<string, { form: string; condition: string }>(), DT: new Map<string, { form: string; condition: string }>() };
 
 export class Fx5CompareMachine extends BaseMachine {
   readonly contact = true;
@@ -126,22 +125,13 @@ export class Fx5CompareMachine extends BaseMachine {
     return rlo || contact;
   }
 
-  /** "ANDTM<=" -> {form: "AND", condition: "<="} (parsed once per mnemonic). */
+  /** "ANDTM<=" -> {form: "AND", condition: "<="}: the values the generated names give. */
   protected parse(instruction: string): { form: string; condition: string } {
-    const parsedOfKind = mnemonics[this.kind];
-    let parsed = parsedOfKind.get(instruction);
-    if (parsed === undefined) {
-      for (const form of ["LD", "AND", "OR"]) {
-        const prefix = form + this.kind;
-        const condition = CONDITIONS.find((c) => instruction === prefix + c);
-        if (condition !== undefined) {
-          parsed = { form, condition };
-          parsedOfKind.set(instruction, parsed);
-          return parsed;
-        }
-      }
+    const info = (INSTRUCTION_INFO as Readonly<Record<string, InstructionInfo | undefined>>)[instruction];
+    const family = this.kind === "TM" ? "fx5-time-compare" : "fx5-date-compare";
+    if (info?.family !== family || info.form === null || info.condition === null) {
       throw new Error(`not an FX5 ${this.kind} comparison: ${instruction}`);
     }
-    return parsed;
+    return info as { form: string; condition: string };
   }
 }
