@@ -100,6 +100,23 @@ class AddCases:
                                 description=f"{op} at {head}: its words {'end at the last' if beyond == 0 else f'run {beyond} past the last'} {prefix} device.",
                                 values=values, heads={op: head})
 
+    def both_errors(self):
+        """Both error conditions in one execution: a readable (s1) or (s2) with a field out of range while
+        another operand runs past its device range (which code is stored is TADD-ERROR-ORDER)."""
+        s1, s2 = self.addends
+        hour, minute, second = self.fields[0], self.fields[1], self.fields[-1]
+        for bad_op, f, value, past_op, beyond in ((s1, hour, hour["max"] + 1, self.result, 1),
+                                                  (s2, minute, minute["max"] + 1, s1, 2),
+                                                  (s1, second, second["min"] - 1, s2, 1)):
+            values = {o: self.ops.values() for o in self.addends}
+            values[bad_op] = self.ops.values(**{f["name"]: value})
+            prefix = split_address(self.place[past_op])[0]
+            head = top_head(prefix, self.b.sizes[prefix], self.words, beyond)
+            yield self.case(self.every_scan, f"both-errors/{bad_op}.{f['name']}={value}/{past_op}={head}",
+                            tags=["invalid-range", "device-range"], values=values, heads={past_op: head}, flags_on=True,
+                            description=f"{bad_op} {f['name']} = {value} (outside {f['min']}..{f['max']}) while {past_op} at {head} "
+                                        f"runs {beyond} past the last {prefix} device: both error conditions in one execution.")
+
     def same_device(self):
         """(s1) and (d) the same device: TADD adds again every scan, TADDP once per rising edge."""
         s1, s2 = self.addends
@@ -189,6 +206,7 @@ class AddCases:
 def clock_add_cases(fam, builder):
     c = AddCases(fam, builder)
     vectors = []
-    for family in (c.manual_examples, c.carries, c.range_errors, c.device_range, c.same_device, c.pulse, c.random):
+    for family in (c.manual_examples, c.carries, c.range_errors, c.device_range, c.both_errors, c.same_device, c.pulse,
+                   c.random):
         vectors += family()
     return vectors + model_cases(builder, vectors, c.from_row, ("instructions",))

@@ -113,6 +113,27 @@ class HourCases:
                         "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(self.seconds(1))))}],
                         description="An invalid preset, then a valid one already reached: D2 turns on; the error flag stays as it was.")
 
+    def error_flag(self):
+        """M8004 already on, or an invalid preset, at executions with the input on and off: whether a valid
+        preset turns M8004 off (HOUR-M8004-OFF) and whether the input off checks the preset (HOUR-PRESET-CHECK)."""
+        five, minute = self.seconds(5), self.names[1]
+        invalid = self.hms(**{minute: self.fields[1]["max"] + 1})
+        off = [{"input": False, "elapsed_ms": self.unit}]
+        yield self.case("error-flag/valid-preset/input-on", tags=["scan-sequence"], preset=five, measured=self.hms(),
+                        error=True, steps=self.on(self.unit, 2),
+                        description="The error flag already on, a valid preset in data registers, the input on for two scans of 1 s.")
+        yield self.case("error-flag/constant-preset/input-on", tags=["constant", "scan-sequence"], preset=5, measured=self.hms(),
+                        error=True, steps=self.on(self.unit, 2),
+                        description="The error flag already on, a constant preset, the input on for two scans of 1 s.")
+        yield self.case("error-flag/valid-preset/input-off", tags=["input-off"], preset=five, measured=self.seconds(2),
+                        error=True, steps=off, description="The error flag already on, a valid preset, the input off.")
+        yield self.case(f"invalid-preset/{minute}={invalid[minute]}/input-off", tags=["invalid-range", "input-off"],
+                        preset=invalid, measured=self.seconds(2), output=True, steps=off,
+                        description=f"Preset {minute} = {invalid[minute]} with D2 on and the input off for one scan.")
+        yield self.case(f"invalid-preset/{minute}={invalid[minute]}/off-then-on", tags=["invalid-range", "input-off", "scan-sequence"],
+                        preset=invalid, measured=self.seconds(2), output=True, steps=off + self.on(self.unit),
+                        description=f"Preset {minute} = {invalid[minute]} with D2 on: the input off for one scan, then on for 1 s.")
+
     def input_off(self):
         yield self.case("input/off-on-off", tags=["input-off", "scan-sequence"], preset=self.seconds(3), measured=self.hms(),
                         steps=self.on(self.unit * 15 // 10) + [{"input": False, "elapsed_ms": self.unit * 5}] + self.on(self.unit * 15 // 10),
@@ -161,6 +182,6 @@ class HourCases:
 def hour_meter_cases(fam, builder):
     c = HourCases(fam, builder)
     vectors = []
-    for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.input_off, c.random):
+    for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.error_flag, c.input_off, c.random):
         vectors += family()
     return vectors + model_cases(builder, vectors, c.from_row, ())

@@ -29,20 +29,27 @@ class ClockAdd:
             return None  # the pulse form executes on the rising edge only
         record["executed"] = True
         values = {}
-        for check in self.errors["checks"]:
-            failed = self._failed(check, operands, state, values, ctx["device_sizes"])
-            if failed:
-                trace.update(failed)
-                registers = self.errors["registers"]
-                for register in registers["devices"]:
-                    state[register] = check["code"]
-                    trace.add(registers.get("device_clauses", {}).get(register))
-                trace.add(registers["clause"])
-                ctx["error"] = {"code": check["code"]}
-                record["error"] = check["check"]
-                if self.errors["on_error"] == "computed" and check["check"] == "field_range":
-                    record["total"] = self._add(values, operands, state, trace)
-                return None
+        sizes = ctx["device_sizes"]
+        failures = [(check, failed) for check in self.errors["checks"]
+                    for failed in [self._failed(check, operands, state, values, sizes)] if failed]
+        if failures:
+            if len(failures) > 1:
+                # Which code is stored when more than one check fails decides something only then.
+                order = self.errors["order"]
+                failures.sort(key=lambda f: order.index(f[0]["check"]))
+            check, failed = failures[0]
+            trace.update(failed)
+            registers = self.errors["registers"]
+            for register in registers["devices"]:
+                state[register] = check["code"]
+                trace.add(registers.get("device_clauses", {}).get(register))
+            trace.add(registers["clause"])
+            ctx["error"] = {"code": check["code"]}
+            record["error"] = check["check"]
+            # Only a field error alone leaves every operand there to compute with.
+            if len(failures) == 1 and check["check"] == "field_range" and self.errors["on_error"] == "computed":
+                record["total"] = self._add(values, operands, state, trace)
+            return None
         record["total"] = self._add(values, operands, state, trace)
         return None
 
@@ -51,13 +58,16 @@ class ClockAdd:
 
         A range check cites the clause of each field found out of range, not the check's own clause:
         the manual gives each range its own row of the error table (hour 0 to 23; minute, second 0 to 59).
+        It reads only the operands whose words are all within their device range: a word that is not
+        there cannot be range-checked.
         """
         for op in check["operands"]:
             head = operands[op]["device"]
+            words = self.ops[op]["words"]
             if check["check"] == "device_range":
-                if not in_device_range(head, self.ops[op]["words"], device_sizes):
+                if not in_device_range(head, words, device_sizes):
                     return {check["clause"]}
-            else:
+            elif in_device_range(head, words, device_sizes):
                 values[op] = self.codec.read(state, head)
                 bad = {f["clause"] for f in self.codec.fields if not self.codec.in_range(f, values[op][f["name"]])}
                 if bad:

@@ -25,13 +25,20 @@ class HourMeter:
         # What this execution did, for the coverage model (plcvec.coverage).
         record = {"whole": 0, "wrapped": False, "reach": None, "error": False}
         ctx.setdefault("exercised", []).append(record)
+        was_on, ctx["input"] = ctx.get("input", False), step["input"]   # off before the first step
         if not step["input"]:
             if self.knobs["input_off"] == "reset":
                 self.codec.write(state, d1, self.codec.from_units(0))
             if self.knobs["input_off"] in ("reset", "hold_drop_fraction"):
                 ctx["fraction"] = 0
+            self._check_when_off(operands, state, ctx, trace, record)
             return None
-        fraction = ctx.get("fraction", 0) + step["elapsed_ms"]
+        elapsed = step["elapsed_ms"]
+        # Whether the execution at which the input turns on counts its elapsed time decides something
+        # only when there is some, so only then is it asked.
+        if not was_on and elapsed and self.knobs["first_scan"] == "from_next_scan":
+            elapsed = 0
+        fraction = ctx.get("fraction", 0) + elapsed
         whole, ctx["fraction"] = divmod(fraction, self.units)
         record["whole"] = whole
         if whole and state[d2]:
@@ -47,14 +54,9 @@ class HourMeter:
 
         preset = self._preset(operands[self.preset], state, trace)
         if preset is None:
-            trace.add(self.error["clause"])
-            state[self.error["device"]] = True
-            ctx["error"] = {"device": self.error["device"]}
-            record["error"] = True
-            if state[d2]:
-                trace.add(self.error["output_off_clause"])
-                state[d2] = False
+            self._invalid_preset(d2, state, ctx, trace, record)
             return None
+        self._valid_preset(state)
         reached = total >= self.codec.to_units(preset)
         record["reach"] = "below" if not reached else "at" if total == self.codec.to_units(preset) else "above"
         if self.codec.to_units(preset) == 0 and self.knobs["zero_preset"] == "never":
@@ -69,6 +71,39 @@ class HourMeter:
             # only then is it asked: on when the count wrapped since it turned on and the spec keeps it.
             state[d2] = ctx.get("wrapped_since_on", False) and self.doc["wrap"]["output"] == "keep"
         return None
+
+    def _invalid_preset(self, d2, state, ctx, trace, record):
+        trace.add(self.error["clause"])
+        state[self.error["device"]] = True
+        ctx["error"] = {"device": self.error["device"]}
+        record["error"] = True
+        if state[d2]:
+            trace.add(self.error["output_off_clause"])
+            state[d2] = False
+
+    def _valid_preset(self, state):
+        # Whether a valid preset turns the error device off decides something only when it is on.
+        device = self.error["device"]
+        if state[device] and self.knobs["error_clear"] == "valid_preset":
+            state[device] = False
+
+    def _check_when_off(self, operands, state, ctx, trace, record):
+        """The preset check of an execution with the input off, where the spec's reading makes one: asked
+        only when it could change something (an invalid preset, or a valid one with the error device on)."""
+        operand = operands[self.preset]
+        if "constant" in operand:
+            valid = True
+        else:
+            values = self.codec.read(state, operand["device"])
+            valid = all(self.codec.in_range(f, values[f["name"]]) for f in self.codec.fields)
+        if valid and not state[self.error["device"]]:
+            return
+        if self.knobs["preset_check"] != "every_execution":
+            return
+        if self._preset(operand, state, trace) is None:
+            self._invalid_preset(operands[self.output]["device"], state, ctx, trace, record)
+        else:
+            self._valid_preset(state)
 
     def _preset(self, operand, state, trace):
         if "constant" in operand:

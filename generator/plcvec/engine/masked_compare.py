@@ -75,6 +75,10 @@ class MaskedCompare:
         trace.add(cond["clause"])
         outcome = self.evaluate(operands, state, step, ctx, trace)
         record.update(executed=True, error=outcome == ERROR, ordering=None if outcome == ERROR else outcome)
+        # Whether an error passes on a contact combined like any other or a result of its own decides
+        # something only in a parallel form whose preceding logic conducts, so only then is it asked.
+        if outcome == ERROR and form["logic"] == "or" and rlo_in and self._error.get("in_or") == "result_off":
+            return self._error["result"]
         return logic.combine(form["logic"], rlo_in, self.contact(cond["symbol"], outcome))
 
     def evaluate(self, operands, state, step, ctx, trace):
@@ -89,6 +93,9 @@ class MaskedCompare:
             state[device] = True
             trace.add(self._error_clause)
             ctx["error"] = {"device": device}
+            # What an error does to the flags decides something only when one of them is on.
+            if self.flags and any(state[d] for d, _ in self._flag_writes["eq"]) and self._error["flags"] == "off":
+                state.update((d, False) for d, _ in self._flag_writes["eq"])
             return ERROR
         # An error flag that reports each execution, not a latch, is turned off; whether it latches is
         # only asked when there is something to turn off.

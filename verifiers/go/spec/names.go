@@ -13,10 +13,10 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "1e4d064fcdabb31dad8e60bfb8a5a4991f60dd26a70b1f89f94ba4de8d670ad2"
+const SpecSHA256 = "56a56a621203b9cebf78d2272bf5a14b4ac6d4e600de7a571df7db42f7df0bb9"
 
 // Total is the number of vectors in the exported copy.
-const Total = 3678
+const Total = 3685
 
 // Families (one vector file each).
 
@@ -177,7 +177,7 @@ const TagZeroSelector = "zero-selector"
 // InterpCp1eNonBcd: What happens when a field of S1 or S2 is not BCD (a nibble above 9)?
 const InterpCp1eNonBcd = "CP1E-NON-BCD"
 
-// Cp1eNonBcdError: Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were. (the default)
+// Cp1eNonBcdError: An unmasked field of S1 or S2 that holds a nibble above 9 is an error: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. (the default)
 const Cp1eNonBcdError = "error"
 
 // Cp1eNonBcdRawBytes: The bytes are compared as unsigned 8-bit values, without checking.
@@ -189,13 +189,13 @@ const InterpCp1eOutOfRange = "CP1E-OUT-OF-RANGE"
 // Cp1eOutOfRangeCompared: Valid BCD is compared as it is; the ranges describe the clock area, not a check. (the default)
 const Cp1eOutOfRangeCompared = "compared"
 
-// Cp1eOutOfRangeError: A field outside its range is an error like non-BCD data.
+// Cp1eOutOfRangeError: A valid BCD unmasked field of S1 or S2 that lies outside its range (second and minute 00 to 59, hour 00 to 23, day 01 to 31, month 01 to 12, year 00 to 99) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS.
 const Cp1eOutOfRangeError = "error"
 
 // InterpCp1eAllMasked: What is the result when C masks all six fields?
 const InterpCp1eAllMasked = "CP1E-ALL-MASKED"
 
-// Cp1eAllMaskedError: Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were. (the default)
+// Cp1eAllMaskedError: C masking all six fields (bits 00 to 05 all 1) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. (the default)
 const Cp1eAllMaskedError = "error"
 
 // Cp1eAllMaskedEqual: Nothing is compared, so the data are equal: =, <=, >= on.
@@ -210,7 +210,7 @@ const InterpCp1eCHighBits = "CP1E-C-HIGH-BITS"
 // Cp1eCHighBitsIgnored: Bits 06 to 15 are ignored. (the default)
 const Cp1eCHighBitsIgnored = "ignored"
 
-// Cp1eCHighBitsError: Any of bits 06 to 15 set is an error: P_ER on, execution condition OFF.
+// Cp1eCHighBitsError: Any of bits 06 to 15 of C set is an error, checked before anything else: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS.
 const Cp1eCHighBitsError = "error"
 
 // InterpCp1eAndOrWhenOff: Does an AND form execute, and update the flags, while its execution condition is OFF?
@@ -233,6 +233,15 @@ const Cp1eErFlagReflectsEachExecution = "reflects-each-execution"
 
 // Cp1eErFlagHeld: Only an error writes P_ER (on); nothing in this instruction turns it off.
 const Cp1eErFlagHeld = "held"
+
+// InterpCp1eErrorFlags: On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE?
+const InterpCp1eErrorFlags = "CP1E-ERROR-FLAGS"
+
+// Cp1eErrorFlagsKept: An execution that ends in error writes none of the six flags: each keeps the value it had before the execution. (the default)
+const Cp1eErrorFlagsKept = "kept"
+
+// Cp1eErrorFlagsOff: An execution that ends in error writes all six flags off, whatever they were before.
+const Cp1eErrorFlagsOff = "off"
 
 // InterpHourOutputOff: What turns D2 off, other than an invalid preset?
 const InterpHourOutputOff = "HOUR-OUTPUT-OFF"
@@ -263,6 +272,33 @@ const HourPresetZeroImmediate = "immediate"
 
 // HourPresetZeroNever: A zero preset disables the comparison; D2 never turns on.
 const HourPresetZeroNever = "never"
+
+// InterpHourFirstScan: Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?
+const InterpHourFirstScan = "HOUR-FIRST-SCAN"
+
+// HourFirstScanCounts: Every execution with the input on adds its whole elapsed_ms to the ON duration, the execution at which the input turns on included. (the default)
+const HourFirstScanCounts = "counts"
+
+// HourFirstScanFromNextScan: Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms.
+const HourFirstScanFromNextScan = "from-next-scan"
+
+// InterpHourPresetCheck: Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?
+const InterpHourPresetCheck = "HOUR-PRESET-CHECK"
+
+// HourPresetCheckInputOn: S1 is read and checked only at executions with the input on; an execution with the input off neither reads S1 nor writes M8004 or D2. (the default)
+const HourPresetCheckInputOn = "input-on"
+
+// HourPresetCheckEveryExecution: Every execution checks S1, with the input off too: an invalid S1 at an execution with the input off turns M8004 on and D2 off, exactly as with the input on (D1 is handled as HOUR-INPUT-OFF says; nothing is measured).
+const HourPresetCheckEveryExecution = "every-execution"
+
+// InterpHourM8004Off: Does an HOUR execution that checks the preset and finds it valid turn M8004 off?
+const InterpHourM8004Off = "HOUR-M8004-OFF"
+
+// HourM8004OffNever: No HOUR execution turns M8004 off; once on it stays on until something outside the instruction turns it off. (the default)
+const HourM8004OffNever = "never"
+
+// HourM8004OffValidPreset: An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off.
+const HourM8004OffValidPreset = "valid-preset"
 
 // InterpFx5Sm709Scope: Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?
 const InterpFx5Sm709Scope = "FX5-SM709-SCOPE"
@@ -297,6 +333,15 @@ const Fx5ClockS2DeviceRangeIgnored = "ignored"
 // Fx5ClockS2DeviceRangeChecked: The device range of (s2) is checked whatever bit 15 says.
 const Fx5ClockS2DeviceRangeChecked = "checked"
 
+// InterpFx5OrOnError: In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off?
+const InterpFx5OrOnError = "FX5-OR-ON-ERROR"
+
+// Fx5OrOnErrorContactOff: An execution that turns SM709 on is a non-conductive contact, combined like any contact: an OR form passes on rlo_in (rlo_in OR off); an LD or AND form passes on off. (the default)
+const Fx5OrOnErrorContactOff = "contact-off"
+
+// Fx5OrOnErrorResultOff: An execution that turns SM709 on passes on off whatever the form: an OR form passes on off even when rlo_in is on; an LD or AND form passes on off as under contact-off.
+const Fx5OrOnErrorResultOff = "result-off"
+
 // InterpTaddFlagsOff: Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?
 const InterpTaddFlagsOff = "TADD-FLAGS-OFF"
 
@@ -324,6 +369,15 @@ const TaddOnErrorNotExecuted = "not-executed"
 // TaddOnErrorComputed: The sum of the words as they are is still computed modulo 24:00:00 into (d), flags updated, and the error code stored.
 const TaddOnErrorComputed = "computed"
 
+// InterpTaddErrorOrder: When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?
+const InterpTaddErrorOrder = "TADD-ERROR-ORDER"
+
+// TaddErrorOrderDeviceRangeFirst: 2820H is stored in SD0 and SD8067; nothing else is written. (the default)
+const TaddErrorOrderDeviceRangeFirst = "device-range-first"
+
+// TaddErrorOrderFieldRangeFirst: 3405H is stored in SD0 and SD8067; nothing else is written ((d) and the flags keep their values under either alternative of TADD-ON-ERROR, since an operand past its device range cannot be read or written).
+const TaddErrorOrderFieldRangeFirst = "field-range-first"
+
 // Family is one instruction family: its vector file's name, kind, title and instructions.
 type Family struct {
 	Name         string
@@ -347,11 +401,11 @@ type Interpretation struct {
 
 // Families lists every family in the exported copy.
 var Families = []Family{
-	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag}},
-	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagInputOff, TagInvalidRange, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero}},
-	{Name: FamilyFx5DateCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 date comparison (LDDT\U000025a1, ANDDT\U000025a1, ORDT\U000025a1)", Instructions: []string{InstrAnddtLt, InstrAnddtLe, InstrAnddtNe, InstrAnddtEq, InstrAnddtGt, InstrAnddtGe, InstrLddtLt, InstrLddtLe, InstrLddtNe, InstrLddtEq, InstrLddtGt, InstrLddtGe, InstrOrdtLt, InstrOrdtLe, InstrOrdtNe, InstrOrdtEq, InstrOrdtGt, InstrOrdtGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagNonexistentDate, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange}},
-	{Name: FamilyFx5TimeAdd, Kind: "clock_add", Title: "Mitsubishi MELSEC iQ-F FX5 clock data addition (TADD, TADDP)", Instructions: []string{InstrTadd, InstrTaddp}, Tags: []string{TagBoundary, TagDeviceRange, TagInvalidRange, TagManualExample, TagModel, TagPulse, TagRandom, TagRegression, TagSameDevice, TagWrap}, Interpretations: []string{InterpTaddFlagsOff, InterpTaddExact24, InterpTaddOnError}},
-	{Name: FamilyFx5TimeCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 time comparison (LDTM\U000025a1, ANDTM\U000025a1, ORTM\U000025a1)", Instructions: []string{InstrAndtmLt, InstrAndtmLe, InstrAndtmNe, InstrAndtmEq, InstrAndtmGt, InstrAndtmGe, InstrLdtmLt, InstrLdtmLe, InstrLdtmNe, InstrLdtmEq, InstrLdtmGt, InstrLdtmGe, InstrOrtmLt, InstrOrtmLe, InstrOrtmNe, InstrOrtmEq, InstrOrtmGt, InstrOrtmGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange}},
+	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags}},
+	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagInputOff, TagInvalidRange, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero, InterpHourFirstScan, InterpHourPresetCheck, InterpHourM8004Off}},
+	{Name: FamilyFx5DateCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 date comparison (LDDT\U000025a1, ANDDT\U000025a1, ORDT\U000025a1)", Instructions: []string{InstrAnddtLt, InstrAnddtLe, InstrAnddtNe, InstrAnddtEq, InstrAnddtGt, InstrAnddtGe, InstrLddtLt, InstrLddtLe, InstrLddtNe, InstrLddtEq, InstrLddtGt, InstrLddtGe, InstrOrdtLt, InstrOrdtLe, InstrOrdtNe, InstrOrdtEq, InstrOrdtGt, InstrOrdtGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagNonexistentDate, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
+	{Name: FamilyFx5TimeAdd, Kind: "clock_add", Title: "Mitsubishi MELSEC iQ-F FX5 clock data addition (TADD, TADDP)", Instructions: []string{InstrTadd, InstrTaddp}, Tags: []string{TagBoundary, TagDeviceRange, TagInvalidRange, TagManualExample, TagModel, TagPulse, TagRandom, TagRegression, TagSameDevice, TagWrap}, Interpretations: []string{InterpTaddFlagsOff, InterpTaddExact24, InterpTaddOnError, InterpTaddErrorOrder}},
+	{Name: FamilyFx5TimeCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 time comparison (LDTM\U000025a1, ANDTM\U000025a1, ORTM\U000025a1)", Instructions: []string{InstrAndtmLt, InstrAndtmLe, InstrAndtmNe, InstrAndtmEq, InstrAndtmGt, InstrAndtmGe, InstrLdtmLt, InstrLdtmLe, InstrLdtmNe, InstrLdtmEq, InstrLdtmGt, InstrLdtmGe, InstrOrtmLt, InstrOrtmLe, InstrOrtmNe, InstrOrtmEq, InstrOrtmGt, InstrOrtmGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
 }
 
 // Interpretations lists every interpretation once, even when several families share it.
@@ -362,13 +416,19 @@ var Interpretations = []Interpretation{
 	{ID: InterpCp1eCHighBits, Question: "What do bits 06 to 15 of C do?", Default: Cp1eCHighBitsIgnored, Alternatives: []string{Cp1eCHighBitsIgnored, Cp1eCHighBitsError}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpCp1eAndOrWhenOff, Question: "Does an AND form execute, and update the flags, while its execution condition is OFF?", Default: Cp1eAndOrWhenOffAlwaysExecuted, Alternatives: []string{Cp1eAndOrWhenOffAlwaysExecuted, Cp1eAndOrWhenOffAndSkipped, Cp1eAndOrWhenOffShortCircuit}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpCp1eErFlag, Question: "Once the Error Flag is on, does the next execution that ends without error turn it off again?", Default: Cp1eErFlagReflectsEachExecution, Alternatives: []string{Cp1eErFlagReflectsEachExecution, Cp1eErFlagHeld}, Families: []string{"cp1e-time-compare"}},
+	{ID: InterpCp1eErrorFlags, Question: "On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE?", Default: Cp1eErrorFlagsKept, Alternatives: []string{Cp1eErrorFlagsKept, Cp1eErrorFlagsOff}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpHourOutputOff, Question: "What turns D2 off, other than an invalid preset?", Default: HourOutputOffLatched, Alternatives: []string{HourOutputOffLatched, HourOutputOffRecompared}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourInputOff, Question: "Does D1 hold its value while the input is off, or is it cleared?", Default: HourInputOffHold, Alternatives: []string{HourInputOffHold, HourInputOffReset, HourInputOffHoldDropFraction}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourPresetZero, Question: "Does a preset of 0:00:00 turn D2 on?", Default: HourPresetZeroImmediate, Alternatives: []string{HourPresetZeroImmediate, HourPresetZeroNever}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourFirstScan, Question: "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?", Default: HourFirstScanCounts, Alternatives: []string{HourFirstScanCounts, HourFirstScanFromNextScan}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourPresetCheck, Question: "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?", Default: HourPresetCheckInputOn, Alternatives: []string{HourPresetCheckInputOn, HourPresetCheckEveryExecution}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourM8004Off, Question: "Does an HOUR execution that checks the preset and finds it valid turn M8004 off?", Default: HourM8004OffNever, Alternatives: []string{HourM8004OffNever, HourM8004OffValidPreset}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpFx5Sm709Scope, Question: "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?", Default: Fx5Sm709ScopeSelectedFields, Alternatives: []string{Fx5Sm709ScopeSelectedFields, Fx5Sm709ScopeAllWords, Fx5Sm709ScopeComparedOperands}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5AndOrWhenOff, Question: "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on?", Default: Fx5AndOrWhenOffAndSkipped, Alternatives: []string{Fx5AndOrWhenOffAndSkipped, Fx5AndOrWhenOffAlwaysExecuted, Fx5AndOrWhenOffShortCircuit}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5ClockS2DeviceRange, Question: "In current-date mode (s2) is dummy data; is its device range still checked?", Default: Fx5ClockS2DeviceRangeIgnored, Alternatives: []string{Fx5ClockS2DeviceRangeIgnored, Fx5ClockS2DeviceRangeChecked}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
+	{ID: InterpFx5OrOnError, Question: "In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off?", Default: Fx5OrOnErrorContactOff, Alternatives: []string{Fx5OrOnErrorContactOff, Fx5OrOnErrorResultOff}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpTaddFlagsOff, Question: "Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?", Default: TaddFlagsOffWrittenEachExecution, Alternatives: []string{TaddFlagsOffWrittenEachExecution, TaddFlagsOffSetOnly}, Families: []string{"fx5-time-add"}},
 	{ID: InterpTaddExact24, Question: "Does a sum of exactly 24:00:00 turn the carry flag on?", Default: TaddExact24CarryAt24, Alternatives: []string{TaddExact24CarryAt24, TaddExact24CarryAbove24}, Families: []string{"fx5-time-add"}},
 	{ID: InterpTaddOnError, Question: "What happens to (d) and the flags when an operation error (3405H) occurs?", Default: TaddOnErrorNotExecuted, Alternatives: []string{TaddOnErrorNotExecuted, TaddOnErrorComputed}, Families: []string{"fx5-time-add"}},
+	{ID: InterpTaddErrorOrder, Question: "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?", Default: TaddErrorOrderDeviceRangeFirst, Alternatives: []string{TaddErrorOrderDeviceRangeFirst, TaddErrorOrderFieldRangeFirst}, Families: []string{"fx5-time-add"}},
 }

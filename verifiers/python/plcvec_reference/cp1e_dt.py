@@ -13,6 +13,7 @@ ALTERNATIVES = {
     "CP1E-C-HIGH-BITS": ("ignored", "error"),
     "CP1E-AND-OR-WHEN-OFF": ("always-executed", "and-skipped", "short-circuit"),
     "CP1E-ER-FLAG": ("reflects-each-execution", "held"),
+    "CP1E-ERROR-FLAGS": ("kept", "off"),
 }
 
 DEFAULTS = {
@@ -22,6 +23,7 @@ DEFAULTS = {
     "CP1E-C-HIGH-BITS": "ignored",           # or "error"
     "CP1E-AND-OR-WHEN-OFF": "always-executed",  # or "and-skipped", "short-circuit"
     "CP1E-ER-FLAG": "reflects-each-execution",  # or "held"
+    "CP1E-ERROR-FLAGS": "kept",              # or "off"
 }
 
 ERROR_FLAG = "P_ER"
@@ -95,8 +97,13 @@ class CP1ETimeCompare:
         self.choices.update(choices or {})
 
     def _error(self) -> bool:
-        # Error: P_ER on, execution condition OFF, the six arithmetic flags untouched.
+        # Error: P_ER on, execution condition OFF.  The flag table has no row for an
+        # execution without a comparison result: the six flags keep their values, or
+        # (CP1E-ERROR-FLAGS=off) are all written OFF.
         self.mem.write(ERROR_FLAG, True)
+        if self.choices["CP1E-ERROR-FLAGS"] == "off":
+            for flag in FLAGS.values():
+                self.mem.write(flag, False)
         return False
 
     def reflect_flags(self, order: int):

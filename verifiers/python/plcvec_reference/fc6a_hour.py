@@ -10,12 +10,18 @@ ALTERNATIVES = {
     "HOUR-OUTPUT-OFF": ("latched", "recompared"),
     "HOUR-INPUT-OFF": ("hold", "reset", "hold-drop-fraction"),
     "HOUR-PRESET-ZERO": ("immediate", "never"),
+    "HOUR-FIRST-SCAN": ("counts", "from-next-scan"),
+    "HOUR-PRESET-CHECK": ("input-on", "every-execution"),
+    "HOUR-M8004-OFF": ("never", "valid-preset"),
 }
 
 DEFAULTS = {
     "HOUR-OUTPUT-OFF": "latched",     # or "recompared"
     "HOUR-INPUT-OFF": "hold",         # or "reset", "hold-drop-fraction"
     "HOUR-PRESET-ZERO": "immediate",  # or "never"
+    "HOUR-FIRST-SCAN": "counts",      # or "from-next-scan"
+    "HOUR-PRESET-CHECK": "input-on",  # or "every-execution"
+    "HOUR-M8004-OFF": "never",        # or "valid-preset"
 }
 
 ERROR_FLAG = "M8004"
@@ -50,6 +56,7 @@ class HourMeter:
         self.choices.update(choices or {})
         self.fraction_ms = 0
         self.wrapped = False   # for "recompared": D2 stays on across a wrap
+        self.input_was_on = False   # the input before the first scan counts as off
 
     def preset(self, operand: dict):
         # "When source device S1 is designated by a constant, the preset value can be 0
@@ -71,6 +78,23 @@ class HourMeter:
         # preset value designated by source device S1, the comparison output ... turns on."
         return total >= preset
 
+    def check_preset(self, operands: dict, d2: str):
+        """Read and check S1: the preset, or None when it is invalid (M8004 on, D2 off)."""
+        p = self.preset(operands["S1"])
+        if not self.preset_valid(p):
+            # "When any of the hour, minute, or second data of source device S1 exceeds the
+            # valid range, a user program execution error will result, turning on special
+            # internal relay M8004 ... but the input ON duration is measured."
+            # "... is changed to an invalid value after the comparison output has turned
+            # on, the comparison output is turned off."
+            self.mem.write(ERROR_FLAG, True)
+            self.mem.write(d2, False)
+            return None
+        # The page never says M8004 turns off; HOUR-M8004-OFF=valid-preset does.
+        if self.choices["HOUR-M8004-OFF"] == "valid-preset":
+            self.mem.write(ERROR_FLAG, False)
+        return p
+
     def execute(self, instruction: str, operands: dict, step: dict):
         if instruction != "HOUR":
             raise ValueError(instruction)
@@ -78,6 +102,8 @@ class HourMeter:
         d1 = operands["D1"]["device"]
         d2 = operands["D2"]["device"]
         on = bool(step["input"])
+        turned_on = on and not self.input_was_on
+        self.input_was_on = on
 
         if not on:
             # "While input is on, the ON duration of the input is measured."  Off: HOUR-INPUT-OFF.
@@ -86,10 +112,15 @@ class HourMeter:
                 self.fraction_ms = 0
             elif self.choices["HOUR-INPUT-OFF"] == "hold-drop-fraction":
                 self.fraction_ms = 0       # D1 kept; the part of a second is lost
+            # HOUR-PRESET-CHECK=every-execution: the preset is checked with the input off too.
+            if self.choices["HOUR-PRESET-CHECK"] == "every-execution":
+                self.check_preset(operands, d2)
             return None
 
-        # Measure: the whole elapsed time since the previous execution is ON time.
-        self.fraction_ms += int(step["elapsed_ms"])
+        # Measure: the elapsed time since the previous execution is ON time; at the
+        # scan the input turns on, only under HOUR-FIRST-SCAN=counts.
+        if not (turned_on and self.choices["HOUR-FIRST-SCAN"] == "from-next-scan"):
+            self.fraction_ms += int(step["elapsed_ms"])
         whole, self.fraction_ms = divmod(self.fraction_ms, 1000)
         total = to_seconds(mem.read_block(d1, 3)) + whole
         wrapped_now = total >= self.CYCLE
@@ -99,15 +130,8 @@ class HourMeter:
         total %= self.CYCLE
         mem.write_block(d1, from_seconds(total))
 
-        p = self.preset(operands["S1"])
-        if not self.preset_valid(p):
-            # "When any of the hour, minute, or second data of source device S1 exceeds the
-            # valid range, a user program execution error will result, turning on special
-            # internal relay M8004 ... but the input ON duration is measured."
-            # "... is changed to an invalid value after the comparison output has turned
-            # on, the comparison output is turned off."
-            mem.write(ERROR_FLAG, True)
-            mem.write(d2, False)
+        p = self.check_preset(operands, d2)
+        if p is None:
             return None
 
         preset = to_seconds(p)

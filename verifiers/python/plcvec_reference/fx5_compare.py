@@ -13,12 +13,14 @@ ALTERNATIVES = {
     "FX5-SM709-SCOPE": ("selected-fields", "all-words", "compared-operands"),
     "FX5-AND-OR-WHEN-OFF": ("and-skipped", "always-executed", "short-circuit"),
     "FX5-CLOCK-S2-DEVICE-RANGE": ("ignored", "checked"),
+    "FX5-OR-ON-ERROR": ("contact-off", "result-off"),
 }
 
 DEFAULTS = {
     "FX5-SM709-SCOPE": "selected-fields",          # or "all-words", "compared-operands"
     "FX5-AND-OR-WHEN-OFF": "and-skipped",          # or "always-executed", "short-circuit"
     "FX5-CLOCK-S2-DEVICE-RANGE": "ignored",        # or "checked"
+    "FX5-OR-ON-ERROR": "contact-off",              # or "result-off"
 }
 
 SM709 = "SM709"
@@ -75,9 +77,11 @@ class FX5CompareMachine:
         self.mem = DeviceMemory(devices, device_sizes)
         self.choices = dict(DEFAULTS)
         self.choices.update(choices or {})
+        self.failed = False   # whether the last evaluation turned SM709 on
 
     # -- helpers -----------------------------------------------------------------------
     def _error(self) -> bool:
+        self.failed = True
         # "SM709 turns on after the instruction is executed and the operation result
         # will be non-continuity."  "Once SM709 turns on, the on state is held until the
         # CPU module is powered off or reset."  -> only ever set here, never cleared.
@@ -184,5 +188,11 @@ class FX5CompareMachine:
         # OR
         if rlo and logic == "short-circuit":
             return True
+        self.failed = False
         contact = self.evaluate(condition, operands, clock)
+        # "SM709 turns on ... and the operation result will be non-continuity":
+        # a non-conductive contact in parallel (contact-off), or the rung's result
+        # itself off (FX5-OR-ON-ERROR=result-off).
+        if self.failed and self.choices["FX5-OR-ON-ERROR"] == "result-off":
+            return False
         return rlo or contact

@@ -10,12 +10,14 @@ ALTERNATIVES = {
     "TADD-FLAGS-OFF": ("written-each-execution", "set-only"),
     "TADD-EXACT-24": ("carry-at-24", "carry-above-24"),
     "TADD-ON-ERROR": ("not-executed", "computed"),
+    "TADD-ERROR-ORDER": ("device-range-first", "field-range-first"),
 }
 
 DEFAULTS = {
     "TADD-FLAGS-OFF": "written-each-execution",   # or "set-only"
     "TADD-EXACT-24": "carry-at-24",               # or "carry-above-24"
     "TADD-ON-ERROR": "not-executed",              # or "computed"
+    "TADD-ERROR-ORDER": "device-range-first",     # or "field-range-first"
 }
 
 DAY = 24 * 3600
@@ -80,20 +82,32 @@ class TADDMachine:
         s1_dev, s2_dev, d_dev = (operands[k]["device"] for k in ("s1", "s2", "d"))
 
         # "2820H The device range specified by (s1), (s2), and (d) exceeds the
-        # corresponding device range."  Nothing is read or written.
+        # corresponding device range."
         # ("These instructions occupy three points for each of three devices")
-        for dev in (s1_dev, s2_dev, d_dev):
-            if not mem.block_in_range(dev, 3):
-                self._error(ERR_DEVICE_RANGE)
-                return
-
-        s1 = [to_signed16(w) for w in mem.read_block(s1_dev, 3)]
-        s2 = [to_signed16(w) for w in mem.read_block(s2_dev, 3)]
+        device_bad = not all(mem.block_in_range(dev, 3) for dev in (s1_dev, s2_dev, d_dev))
 
         # "3405H Any of values specified by (s1) and (s2) is outside the following range.
         # 0 to 23 / ... (s1)+1, (s2)+1, (s1)+2, and (s2)+2 ... 0 to 59"
-        bad = any(not lo <= v <= hi for data in (s1, s2) for v, (lo, hi) in zip(data, self.RANGES))
-        if bad:
+        # Only an operand whose three words exist can be read and checked.
+        def out_of_range(dev):
+            if not mem.block_in_range(dev, 3):
+                return False
+            data = [to_signed16(w) for w in mem.read_block(dev, 3)]
+            return any(not lo <= v <= hi for v, (lo, hi) in zip(data, self.RANGES))
+        value_bad = out_of_range(s1_dev) or out_of_range(s2_dev)
+
+        if device_bad:
+            # Both conditions: TADD-ERROR-ORDER says which code; nothing else is
+            # written, since an operand past its device cannot be read or written.
+            if value_bad and self.choices["TADD-ERROR-ORDER"] == "field-range-first":
+                self._error(ERR_VALUE_RANGE)
+            else:
+                self._error(ERR_DEVICE_RANGE)
+            return
+
+        s1 = [to_signed16(w) for w in mem.read_block(s1_dev, 3)]
+        s2 = [to_signed16(w) for w in mem.read_block(s2_dev, 3)]
+        if value_bad:
             self._error(ERR_VALUE_RANGE)
             if self.choices["TADD-ON-ERROR"] == "not-executed":
                 return

@@ -184,6 +184,10 @@ static const char *const alternatives_cp1e_er_flag[] = {
     "reflects-each-execution",
     "held",
 };
+static const char *const alternatives_cp1e_error_flags[] = {
+    "kept",
+    "off",
+};
 static const char *const alternatives_hour_output_off[] = {
     "latched",
     "recompared",
@@ -196,6 +200,18 @@ static const char *const alternatives_hour_input_off[] = {
 static const char *const alternatives_hour_preset_zero[] = {
     "immediate",
     "never",
+};
+static const char *const alternatives_hour_first_scan[] = {
+    "counts",
+    "from-next-scan",
+};
+static const char *const alternatives_hour_preset_check[] = {
+    "input-on",
+    "every-execution",
+};
+static const char *const alternatives_hour_m8004_off[] = {
+    "never",
+    "valid-preset",
 };
 static const char *const alternatives_fx5_sm709_scope[] = {
     "selected-fields",
@@ -211,6 +227,10 @@ static const char *const alternatives_fx5_clock_s2_device_range[] = {
     "ignored",
     "checked",
 };
+static const char *const alternatives_fx5_or_on_error[] = {
+    "contact-off",
+    "result-off",
+};
 static const char *const alternatives_tadd_flags_off[] = {
     "written-each-execution",
     "set-only",
@@ -222,6 +242,10 @@ static const char *const alternatives_tadd_exact_24[] = {
 static const char *const alternatives_tadd_on_error[] = {
     "not-executed",
     "computed",
+};
+static const char *const alternatives_tadd_error_order[] = {
+    "device-range-first",
+    "field-range-first",
 };
 
 const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_COUNT] = {
@@ -237,11 +261,19 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"CP1E-ER-FLAG", "Once the Error Flag is on, does the next execution that ends without error turn it off again\?", alternatives_cp1e_er_flag, 2, PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION,
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
+    {"CP1E-ERROR-FLAGS", "On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE\?", alternatives_cp1e_error_flags, 2, PLCVEC_CP1E_ERROR_FLAGS_KEPT,
+     0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"HOUR-OUTPUT-OFF", "What turns D2 off, other than an invalid preset\?", alternatives_hour_output_off, 2, PLCVEC_HOUR_OUTPUT_OFF_LATCHED,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-INPUT-OFF", "Does D1 hold its value while the input is off, or is it cleared\?", alternatives_hour_input_off, 3, PLCVEC_HOUR_INPUT_OFF_HOLD,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-PRESET-ZERO", "Does a preset of 0:00:00 turn D2 on\?", alternatives_hour_preset_zero, 2, PLCVEC_HOUR_PRESET_ZERO_IMMEDIATE,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-FIRST-SCAN", "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time\?", alternatives_hour_first_scan, 2, PLCVEC_HOUR_FIRST_SCAN_COUNTS,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-PRESET-CHECK", "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution\?", alternatives_hour_preset_check, 2, PLCVEC_HOUR_PRESET_CHECK_INPUT_ON,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-M8004-OFF", "Does an HOUR execution that checks the preset and finds it valid turn M8004 off\?", alternatives_hour_m8004_off, 2, PLCVEC_HOUR_M8004_OFF_NEVER,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects\?", alternatives_fx5_sm709_scope, 3, PLCVEC_FX5_SM709_SCOPE_SELECTED_FIELDS,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
@@ -249,11 +281,15 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
     {"FX5-CLOCK-S2-DEVICE-RANGE", "In current-date mode (s2) is dummy data; is its device range still checked\?", alternatives_fx5_clock_s2_device_range, 2, PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_IGNORED,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
+    {"FX5-OR-ON-ERROR", "In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off\?", alternatives_fx5_or_on_error, 2, PLCVEC_FX5_OR_ON_ERROR_CONTACT_OFF,
+     0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
     {"TADD-FLAGS-OFF", "Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on\?", alternatives_tadd_flags_off, 2, PLCVEC_TADD_FLAGS_OFF_WRITTEN_EACH_EXECUTION,
      0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},
     {"TADD-EXACT-24", "Does a sum of exactly 24:00:00 turn the carry flag on\?", alternatives_tadd_exact_24, 2, PLCVEC_TADD_EXACT_24_CARRY_AT_24,
      0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},
     {"TADD-ON-ERROR", "What happens to (d) and the flags when an operation error (3405H) occurs\?", alternatives_tadd_on_error, 2, PLCVEC_TADD_ON_ERROR_NOT_EXECUTED,
+     0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},
+    {"TADD-ERROR-ORDER", "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored\?", alternatives_tadd_error_order, 2, PLCVEC_TADD_ERROR_ORDER_DEVICE_RANGE_FIRST,
      0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},
 };
 

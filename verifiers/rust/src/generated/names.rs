@@ -10,9 +10,9 @@ pub const SUITE_VERSION: &str = "0.1.0";
 /// The vector files' `schema_version`.
 pub const SCHEMA_VERSION: &str = "1.0.0";
 /// The hash of the spec the embedded vectors were generated from.
-pub const SPEC_SHA256: &str = "1e4d064fcdabb31dad8e60bfb8a5a4991f60dd26a70b1f89f94ba4de8d670ad2";
+pub const SPEC_SHA256: &str = "56a56a621203b9cebf78d2272bf5a14b4ac6d4e600de7a571df7db42f7df0bb9";
 /// How many vectors the embedded copy holds.
-pub const TOTAL: usize = 3678;
+pub const TOTAL: usize = 3685;
 
 /// An instruction family: one vector file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -547,21 +547,27 @@ pub const INTERPRETATIONS: &[Interpretation] = &[
     Cp1eCHighBits::INTERPRETATION,
     Cp1eAndOrWhenOff::INTERPRETATION,
     Cp1eErFlag::INTERPRETATION,
+    Cp1eErrorFlags::INTERPRETATION,
     HourOutputOff::INTERPRETATION,
     HourInputOff::INTERPRETATION,
     HourPresetZero::INTERPRETATION,
+    HourFirstScan::INTERPRETATION,
+    HourPresetCheck::INTERPRETATION,
+    HourM8004Off::INTERPRETATION,
     Fx5Sm709Scope::INTERPRETATION,
     Fx5AndOrWhenOff::INTERPRETATION,
     Fx5ClockS2DeviceRange::INTERPRETATION,
+    Fx5OrOnError::INTERPRETATION,
     TaddFlagsOff::INTERPRETATION,
     TaddExact24::INTERPRETATION,
     TaddOnError::INTERPRETATION,
+    TaddErrorOrder::INTERPRETATION,
 ];
 
 #[doc = "`CP1E-NON-BCD`: What happens when a field of S1 or S2 is not BCD (a nibble above 9)?"]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Cp1eNonBcd {
-    #[doc = "`error` (the default): Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were."]
+    #[doc = "`error` (the default): An unmasked field of S1 or S2 that holds a nibble above 9 is an error: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."]
     Error,
     #[doc = "`raw-bytes`: The bytes are compared as unsigned 8-bit values, without checking."]
     RawBytes,
@@ -596,7 +602,7 @@ impl Alternative for Cp1eNonBcd {
 pub enum Cp1eOutOfRange {
     #[doc = "`compared` (the default): Valid BCD is compared as it is; the ranges describe the clock area, not a check."]
     Compared,
-    #[doc = "`error`: A field outside its range is an error like non-BCD data."]
+    #[doc = "`error`: A valid BCD unmasked field of S1 or S2 that lies outside its range (second and minute 00 to 59, hour 00 to 23, day 01 to 31, month 01 to 12, year 00 to 99) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."]
     Error,
 }
 
@@ -627,7 +633,7 @@ impl Alternative for Cp1eOutOfRange {
 #[doc = "`CP1E-ALL-MASKED`: What is the result when C masks all six fields?"]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Cp1eAllMasked {
-    #[doc = "`error` (the default): Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were."]
+    #[doc = "`error` (the default): C masking all six fields (bits 00 to 05 all 1) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."]
     Error,
     #[doc = "`equal`: Nothing is compared, so the data are equal: =, <=, >= on."]
     Equal,
@@ -665,7 +671,7 @@ impl Alternative for Cp1eAllMasked {
 pub enum Cp1eCHighBits {
     #[doc = "`ignored` (the default): Bits 06 to 15 are ignored."]
     Ignored,
-    #[doc = "`error`: Any of bits 06 to 15 set is an error: P_ER on, execution condition OFF."]
+    #[doc = "`error`: Any of bits 06 to 15 of C set is an error, checked before anything else: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."]
     Error,
 }
 
@@ -758,6 +764,39 @@ impl Alternative for Cp1eErFlag {
         match self {
             Cp1eErFlag::ReflectsEachExecution => "reflects-each-execution",
             Cp1eErFlag::Held => "held",
+        }
+    }
+}
+
+#[doc = "`CP1E-ERROR-FLAGS`: On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Cp1eErrorFlags {
+    #[doc = "`kept` (the default): An execution that ends in error writes none of the six flags: each keeps the value it had before the execution."]
+    Kept,
+    #[doc = "`off`: An execution that ends in error writes all six flags off, whatever they were before."]
+    Off,
+}
+
+impl Cp1eErrorFlags {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "CP1E-ERROR-FLAGS",
+        question: "On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE?",
+        default: "kept",
+        alternatives: &["kept", "off"],
+        families: &[Family::Cp1eTimeCompare],
+    };
+}
+
+impl Alternative for Cp1eErrorFlags {
+    const ID: &'static str = "CP1E-ERROR-FLAGS";
+    const DEFAULT: Self = Cp1eErrorFlags::Kept;
+    const ALL: &'static [Self] = &[Cp1eErrorFlags::Kept, Cp1eErrorFlags::Off];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            Cp1eErrorFlags::Kept => "kept",
+            Cp1eErrorFlags::Off => "off",
         }
     }
 }
@@ -860,6 +899,105 @@ impl Alternative for HourPresetZero {
         match self {
             HourPresetZero::Immediate => "immediate",
             HourPresetZero::Never => "never",
+        }
+    }
+}
+
+#[doc = "`HOUR-FIRST-SCAN`: Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HourFirstScan {
+    #[doc = "`counts` (the default): Every execution with the input on adds its whole elapsed_ms to the ON duration, the execution at which the input turns on included."]
+    Counts,
+    #[doc = "`from-next-scan`: Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms."]
+    FromNextScan,
+}
+
+impl HourFirstScan {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "HOUR-FIRST-SCAN",
+        question: "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?",
+        default: "counts",
+        alternatives: &["counts", "from-next-scan"],
+        families: &[Family::Fc6aHourMeter],
+    };
+}
+
+impl Alternative for HourFirstScan {
+    const ID: &'static str = "HOUR-FIRST-SCAN";
+    const DEFAULT: Self = HourFirstScan::Counts;
+    const ALL: &'static [Self] = &[HourFirstScan::Counts, HourFirstScan::FromNextScan];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            HourFirstScan::Counts => "counts",
+            HourFirstScan::FromNextScan => "from-next-scan",
+        }
+    }
+}
+
+#[doc = "`HOUR-PRESET-CHECK`: Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HourPresetCheck {
+    #[doc = "`input-on` (the default): S1 is read and checked only at executions with the input on; an execution with the input off neither reads S1 nor writes M8004 or D2."]
+    InputOn,
+    #[doc = "`every-execution`: Every execution checks S1, with the input off too: an invalid S1 at an execution with the input off turns M8004 on and D2 off, exactly as with the input on (D1 is handled as HOUR-INPUT-OFF says; nothing is measured)."]
+    EveryExecution,
+}
+
+impl HourPresetCheck {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "HOUR-PRESET-CHECK",
+        question: "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?",
+        default: "input-on",
+        alternatives: &["input-on", "every-execution"],
+        families: &[Family::Fc6aHourMeter],
+    };
+}
+
+impl Alternative for HourPresetCheck {
+    const ID: &'static str = "HOUR-PRESET-CHECK";
+    const DEFAULT: Self = HourPresetCheck::InputOn;
+    const ALL: &'static [Self] = &[HourPresetCheck::InputOn, HourPresetCheck::EveryExecution];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            HourPresetCheck::InputOn => "input-on",
+            HourPresetCheck::EveryExecution => "every-execution",
+        }
+    }
+}
+
+#[doc = "`HOUR-M8004-OFF`: Does an HOUR execution that checks the preset and finds it valid turn M8004 off?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HourM8004Off {
+    #[doc = "`never` (the default): No HOUR execution turns M8004 off; once on it stays on until something outside the instruction turns it off."]
+    Never,
+    #[doc = "`valid-preset`: An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off."]
+    ValidPreset,
+}
+
+impl HourM8004Off {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "HOUR-M8004-OFF",
+        question: "Does an HOUR execution that checks the preset and finds it valid turn M8004 off?",
+        default: "never",
+        alternatives: &["never", "valid-preset"],
+        families: &[Family::Fc6aHourMeter],
+    };
+}
+
+impl Alternative for HourM8004Off {
+    const ID: &'static str = "HOUR-M8004-OFF";
+    const DEFAULT: Self = HourM8004Off::Never;
+    const ALL: &'static [Self] = &[HourM8004Off::Never, HourM8004Off::ValidPreset];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            HourM8004Off::Never => "never",
+            HourM8004Off::ValidPreset => "valid-preset",
         }
     }
 }
@@ -969,6 +1107,39 @@ impl Alternative for Fx5ClockS2DeviceRange {
     }
 }
 
+#[doc = "`FX5-OR-ON-ERROR`: In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Fx5OrOnError {
+    #[doc = "`contact-off` (the default): An execution that turns SM709 on is a non-conductive contact, combined like any contact: an OR form passes on rlo_in (rlo_in OR off); an LD or AND form passes on off."]
+    ContactOff,
+    #[doc = "`result-off`: An execution that turns SM709 on passes on off whatever the form: an OR form passes on off even when rlo_in is on; an LD or AND form passes on off as under contact-off."]
+    ResultOff,
+}
+
+impl Fx5OrOnError {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "FX5-OR-ON-ERROR",
+        question: "In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off?",
+        default: "contact-off",
+        alternatives: &["contact-off", "result-off"],
+        families: &[Family::Fx5DateCompare, Family::Fx5TimeCompare],
+    };
+}
+
+impl Alternative for Fx5OrOnError {
+    const ID: &'static str = "FX5-OR-ON-ERROR";
+    const DEFAULT: Self = Fx5OrOnError::ContactOff;
+    const ALL: &'static [Self] = &[Fx5OrOnError::ContactOff, Fx5OrOnError::ResultOff];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            Fx5OrOnError::ContactOff => "contact-off",
+            Fx5OrOnError::ResultOff => "result-off",
+        }
+    }
+}
+
 #[doc = "`TADD-FLAGS-OFF`: Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?"]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum TaddFlagsOff {
@@ -1064,6 +1235,39 @@ impl Alternative for TaddOnError {
         match self {
             TaddOnError::NotExecuted => "not-executed",
             TaddOnError::Computed => "computed",
+        }
+    }
+}
+
+#[doc = "`TADD-ERROR-ORDER`: When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TaddErrorOrder {
+    #[doc = "`device-range-first` (the default): 2820H is stored in SD0 and SD8067; nothing else is written."]
+    DeviceRangeFirst,
+    #[doc = "`field-range-first`: 3405H is stored in SD0 and SD8067; nothing else is written ((d) and the flags keep their values under either alternative of TADD-ON-ERROR, since an operand past its device range cannot be read or written)."]
+    FieldRangeFirst,
+}
+
+impl TaddErrorOrder {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "TADD-ERROR-ORDER",
+        question: "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?",
+        default: "device-range-first",
+        alternatives: &["device-range-first", "field-range-first"],
+        families: &[Family::Fx5TimeAdd],
+    };
+}
+
+impl Alternative for TaddErrorOrder {
+    const ID: &'static str = "TADD-ERROR-ORDER";
+    const DEFAULT: Self = TaddErrorOrder::DeviceRangeFirst;
+    const ALL: &'static [Self] = &[TaddErrorOrder::DeviceRangeFirst, TaddErrorOrder::FieldRangeFirst];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            TaddErrorOrder::DeviceRangeFirst => "device-range-first",
+            TaddErrorOrder::FieldRangeFirst => "field-range-first",
         }
     }
 }

@@ -8,8 +8,8 @@ public final class Alternatives {
 
     /** CP1E-NON-BCD: What happens when a field of S1 or S2 is not BCD (a nibble above 9)? */
     public enum Cp1eNonBcd implements Alternative {
-        /** Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were. (the default) */
-        ERROR("error", "Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were."),
+        /** An unmasked field of S1 or S2 that holds a nibble above 9 is an error: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. (the default) */
+        ERROR("error", "An unmasked field of S1 or S2 that holds a nibble above 9 is an error: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."),
         /** The bytes are compared as unsigned 8-bit values, without checking. */
         RAW_BYTES("raw-bytes", "The bytes are compared as unsigned 8-bit values, without checking.");
 
@@ -46,8 +46,8 @@ public final class Alternatives {
     public enum Cp1eOutOfRange implements Alternative {
         /** Valid BCD is compared as it is; the ranges describe the clock area, not a check. (the default) */
         COMPARED("compared", "Valid BCD is compared as it is; the ranges describe the clock area, not a check."),
-        /** A field outside its range is an error like non-BCD data. */
-        ERROR("error", "A field outside its range is an error like non-BCD data.");
+        /** A valid BCD unmasked field of S1 or S2 that lies outside its range (second and minute 00 to 59, hour 00 to 23, day 01 to 31, month 01 to 12, year 00 to 99) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. */
+        ERROR("error", "A valid BCD unmasked field of S1 or S2 that lies outside its range (second and minute 00 to 59, hour 00 to 23, day 01 to 31, month 01 to 12, year 00 to 99) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS.");
 
         private final String id;
         private final String says;
@@ -80,8 +80,8 @@ public final class Alternatives {
 
     /** CP1E-ALL-MASKED: What is the result when C masks all six fields? */
     public enum Cp1eAllMasked implements Alternative {
-        /** Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were. (the default) */
-        ERROR("error", "Error: P_ER turns on, the execution condition is OFF and the six flags are left as they were."),
+        /** C masking all six fields (bits 00 to 05 all 1) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. (the default) */
+        ERROR("error", "C masking all six fields (bits 00 to 05 all 1) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."),
         /** Nothing is compared, so the data are equal: =, <=, >= on. */
         EQUAL("equal", "Nothing is compared, so the data are equal: =, <=, >= on."),
         /** Nothing is compared, so no comparison condition holds: the execution condition is OFF, the six flags are left as they were, and it is no error (P_ER is written off like any execution without error). */
@@ -120,8 +120,8 @@ public final class Alternatives {
     public enum Cp1eCHighBits implements Alternative {
         /** Bits 06 to 15 are ignored. (the default) */
         IGNORED("ignored", "Bits 06 to 15 are ignored."),
-        /** Any of bits 06 to 15 set is an error: P_ER on, execution condition OFF. */
-        ERROR("error", "Any of bits 06 to 15 set is an error: P_ER on, execution condition OFF.");
+        /** Any of bits 06 to 15 of C set is an error, checked before anything else: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. */
+        ERROR("error", "Any of bits 06 to 15 of C set is an error, checked before anything else: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS.");
 
         private final String id;
         private final String says;
@@ -223,6 +223,42 @@ public final class Alternatives {
         @Override
         public String toString() {
             return Interpretation.CP1E_ER_FLAG.id() + "=" + id;
+        }
+    }
+
+    /** CP1E-ERROR-FLAGS: On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE? */
+    public enum Cp1eErrorFlags implements Alternative {
+        /** An execution that ends in error writes none of the six flags: each keeps the value it had before the execution. (the default) */
+        KEPT("kept", "An execution that ends in error writes none of the six flags: each keeps the value it had before the execution."),
+        /** An execution that ends in error writes all six flags off, whatever they were before. */
+        OFF("off", "An execution that ends in error writes all six flags off, whatever they were before.");
+
+        private final String id;
+        private final String says;
+
+        Cp1eErrorFlags(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.CP1E_ERROR_FLAGS;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.CP1E_ERROR_FLAGS.id() + "=" + id;
         }
     }
 
@@ -333,6 +369,114 @@ public final class Alternatives {
         @Override
         public String toString() {
             return Interpretation.HOUR_PRESET_ZERO.id() + "=" + id;
+        }
+    }
+
+    /** HOUR-FIRST-SCAN: Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time? */
+    public enum HourFirstScan implements Alternative {
+        /** Every execution with the input on adds its whole elapsed_ms to the ON duration, the execution at which the input turns on included. (the default) */
+        COUNTS("counts", "Every execution with the input on adds its whole elapsed_ms to the ON duration, the execution at which the input turns on included."),
+        /** Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms. */
+        FROM_NEXT_SCAN("from-next-scan", "Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms.");
+
+        private final String id;
+        private final String says;
+
+        HourFirstScan(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_FIRST_SCAN;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_FIRST_SCAN.id() + "=" + id;
+        }
+    }
+
+    /** HOUR-PRESET-CHECK: Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution? */
+    public enum HourPresetCheck implements Alternative {
+        /** S1 is read and checked only at executions with the input on; an execution with the input off neither reads S1 nor writes M8004 or D2. (the default) */
+        INPUT_ON("input-on", "S1 is read and checked only at executions with the input on; an execution with the input off neither reads S1 nor writes M8004 or D2."),
+        /** Every execution checks S1, with the input off too: an invalid S1 at an execution with the input off turns M8004 on and D2 off, exactly as with the input on (D1 is handled as HOUR-INPUT-OFF says; nothing is measured). */
+        EVERY_EXECUTION("every-execution", "Every execution checks S1, with the input off too: an invalid S1 at an execution with the input off turns M8004 on and D2 off, exactly as with the input on (D1 is handled as HOUR-INPUT-OFF says; nothing is measured).");
+
+        private final String id;
+        private final String says;
+
+        HourPresetCheck(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_PRESET_CHECK;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_PRESET_CHECK.id() + "=" + id;
+        }
+    }
+
+    /** HOUR-M8004-OFF: Does an HOUR execution that checks the preset and finds it valid turn M8004 off? */
+    public enum HourM8004Off implements Alternative {
+        /** No HOUR execution turns M8004 off; once on it stays on until something outside the instruction turns it off. (the default) */
+        NEVER("never", "No HOUR execution turns M8004 off; once on it stays on until something outside the instruction turns it off."),
+        /** An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off. */
+        VALID_PRESET("valid-preset", "An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off.");
+
+        private final String id;
+        private final String says;
+
+        HourM8004Off(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_M8004_OFF;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_M8004_OFF.id() + "=" + id;
         }
     }
 
@@ -448,6 +592,42 @@ public final class Alternatives {
         }
     }
 
+    /** FX5-OR-ON-ERROR: In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off? */
+    public enum Fx5OrOnError implements Alternative {
+        /** An execution that turns SM709 on is a non-conductive contact, combined like any contact: an OR form passes on rlo_in (rlo_in OR off); an LD or AND form passes on off. (the default) */
+        CONTACT_OFF("contact-off", "An execution that turns SM709 on is a non-conductive contact, combined like any contact: an OR form passes on rlo_in (rlo_in OR off); an LD or AND form passes on off."),
+        /** An execution that turns SM709 on passes on off whatever the form: an OR form passes on off even when rlo_in is on; an LD or AND form passes on off as under contact-off. */
+        RESULT_OFF("result-off", "An execution that turns SM709 on passes on off whatever the form: an OR form passes on off even when rlo_in is on; an LD or AND form passes on off as under contact-off.");
+
+        private final String id;
+        private final String says;
+
+        Fx5OrOnError(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.FX5_OR_ON_ERROR;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.FX5_OR_ON_ERROR.id() + "=" + id;
+        }
+    }
+
     /** TADD-FLAGS-OFF: Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on? */
     public enum TaddFlagsOff implements Alternative {
         /** Every execution writes each flag: on when its condition holds, off otherwise. (the default) */
@@ -553,6 +733,42 @@ public final class Alternatives {
         @Override
         public String toString() {
             return Interpretation.TADD_ON_ERROR.id() + "=" + id;
+        }
+    }
+
+    /** TADD-ERROR-ORDER: When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored? */
+    public enum TaddErrorOrder implements Alternative {
+        /** 2820H is stored in SD0 and SD8067; nothing else is written. (the default) */
+        DEVICE_RANGE_FIRST("device-range-first", "2820H is stored in SD0 and SD8067; nothing else is written."),
+        /** 3405H is stored in SD0 and SD8067; nothing else is written ((d) and the flags keep their values under either alternative of TADD-ON-ERROR, since an operand past its device range cannot be read or written). */
+        FIELD_RANGE_FIRST("field-range-first", "3405H is stored in SD0 and SD8067; nothing else is written ((d) and the flags keep their values under either alternative of TADD-ON-ERROR, since an operand past its device range cannot be read or written).");
+
+        private final String id;
+        private final String says;
+
+        TaddErrorOrder(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.TADD_ERROR_ORDER;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.TADD_ERROR_ORDER.id() + "=" + id;
         }
     }
 }

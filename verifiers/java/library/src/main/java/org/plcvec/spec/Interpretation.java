@@ -22,24 +22,36 @@ public enum Interpretation {
     CP1E_AND_OR_WHEN_OFF("CP1E-AND-OR-WHEN-OFF", "Does an AND form execute, and update the flags, while its execution condition is OFF?"),
     /** Once the Error Flag is on, does the next execution that ends without error turn it off again? */
     CP1E_ER_FLAG("CP1E-ER-FLAG", "Once the Error Flag is on, does the next execution that ends without error turn it off again?"),
+    /** On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE? */
+    CP1E_ERROR_FLAGS("CP1E-ERROR-FLAGS", "On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE?"),
     /** What turns D2 off, other than an invalid preset? */
     HOUR_OUTPUT_OFF("HOUR-OUTPUT-OFF", "What turns D2 off, other than an invalid preset?"),
     /** Does D1 hold its value while the input is off, or is it cleared? */
     HOUR_INPUT_OFF("HOUR-INPUT-OFF", "Does D1 hold its value while the input is off, or is it cleared?"),
     /** Does a preset of 0:00:00 turn D2 on? */
     HOUR_PRESET_ZERO("HOUR-PRESET-ZERO", "Does a preset of 0:00:00 turn D2 on?"),
+    /** Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time? */
+    HOUR_FIRST_SCAN("HOUR-FIRST-SCAN", "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?"),
+    /** Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution? */
+    HOUR_PRESET_CHECK("HOUR-PRESET-CHECK", "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?"),
+    /** Does an HOUR execution that checks the preset and finds it valid turn M8004 off? */
+    HOUR_M8004_OFF("HOUR-M8004-OFF", "Does an HOUR execution that checks the preset and finds it valid turn M8004 off?"),
     /** Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects? */
     FX5_SM709_SCOPE("FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?"),
     /** Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on? */
     FX5_AND_OR_WHEN_OFF("FX5-AND-OR-WHEN-OFF", "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on?"),
     /** In current-date mode (s2) is dummy data; is its device range still checked? */
     FX5_CLOCK_S2_DEVICE_RANGE("FX5-CLOCK-S2-DEVICE-RANGE", "In current-date mode (s2) is dummy data; is its device range still checked?"),
+    /** In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off? */
+    FX5_OR_ON_ERROR("FX5-OR-ON-ERROR", "In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off?"),
     /** Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on? */
     TADD_FLAGS_OFF("TADD-FLAGS-OFF", "Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?"),
     /** Does a sum of exactly 24:00:00 turn the carry flag on? */
     TADD_EXACT_24("TADD-EXACT-24", "Does a sum of exactly 24:00:00 turn the carry flag on?"),
     /** What happens to (d) and the flags when an operation error (3405H) occurs? */
-    TADD_ON_ERROR("TADD-ON-ERROR", "What happens to (d) and the flags when an operation error (3405H) occurs?");
+    TADD_ON_ERROR("TADD-ON-ERROR", "What happens to (d) and the flags when an operation error (3405H) occurs?"),
+    /** When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored? */
+    TADD_ERROR_ORDER("TADD-ERROR-ORDER", "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?");
 
     private final String id;
     private final String question;
@@ -73,24 +85,36 @@ public enum Interpretation {
                 return Alternatives.Cp1eAndOrWhenOff.ALWAYS_EXECUTED;
             case CP1E_ER_FLAG:
                 return Alternatives.Cp1eErFlag.REFLECTS_EACH_EXECUTION;
+            case CP1E_ERROR_FLAGS:
+                return Alternatives.Cp1eErrorFlags.KEPT;
             case HOUR_OUTPUT_OFF:
                 return Alternatives.HourOutputOff.LATCHED;
             case HOUR_INPUT_OFF:
                 return Alternatives.HourInputOff.HOLD;
             case HOUR_PRESET_ZERO:
                 return Alternatives.HourPresetZero.IMMEDIATE;
+            case HOUR_FIRST_SCAN:
+                return Alternatives.HourFirstScan.COUNTS;
+            case HOUR_PRESET_CHECK:
+                return Alternatives.HourPresetCheck.INPUT_ON;
+            case HOUR_M8004_OFF:
+                return Alternatives.HourM8004Off.NEVER;
             case FX5_SM709_SCOPE:
                 return Alternatives.Fx5Sm709Scope.SELECTED_FIELDS;
             case FX5_AND_OR_WHEN_OFF:
                 return Alternatives.Fx5AndOrWhenOff.AND_SKIPPED;
             case FX5_CLOCK_S2_DEVICE_RANGE:
                 return Alternatives.Fx5ClockS2DeviceRange.IGNORED;
+            case FX5_OR_ON_ERROR:
+                return Alternatives.Fx5OrOnError.CONTACT_OFF;
             case TADD_FLAGS_OFF:
                 return Alternatives.TaddFlagsOff.WRITTEN_EACH_EXECUTION;
             case TADD_EXACT_24:
                 return Alternatives.TaddExact24.CARRY_AT_24;
             case TADD_ON_ERROR:
                 return Alternatives.TaddOnError.NOT_EXECUTED;
+            case TADD_ERROR_ORDER:
+                return Alternatives.TaddErrorOrder.DEVICE_RANGE_FIRST;
             default:
                 throw new AssertionError(this);
         }
@@ -111,24 +135,36 @@ public enum Interpretation {
                 return List.of(Alternatives.Cp1eAndOrWhenOff.values());
             case CP1E_ER_FLAG:
                 return List.of(Alternatives.Cp1eErFlag.values());
+            case CP1E_ERROR_FLAGS:
+                return List.of(Alternatives.Cp1eErrorFlags.values());
             case HOUR_OUTPUT_OFF:
                 return List.of(Alternatives.HourOutputOff.values());
             case HOUR_INPUT_OFF:
                 return List.of(Alternatives.HourInputOff.values());
             case HOUR_PRESET_ZERO:
                 return List.of(Alternatives.HourPresetZero.values());
+            case HOUR_FIRST_SCAN:
+                return List.of(Alternatives.HourFirstScan.values());
+            case HOUR_PRESET_CHECK:
+                return List.of(Alternatives.HourPresetCheck.values());
+            case HOUR_M8004_OFF:
+                return List.of(Alternatives.HourM8004Off.values());
             case FX5_SM709_SCOPE:
                 return List.of(Alternatives.Fx5Sm709Scope.values());
             case FX5_AND_OR_WHEN_OFF:
                 return List.of(Alternatives.Fx5AndOrWhenOff.values());
             case FX5_CLOCK_S2_DEVICE_RANGE:
                 return List.of(Alternatives.Fx5ClockS2DeviceRange.values());
+            case FX5_OR_ON_ERROR:
+                return List.of(Alternatives.Fx5OrOnError.values());
             case TADD_FLAGS_OFF:
                 return List.of(Alternatives.TaddFlagsOff.values());
             case TADD_EXACT_24:
                 return List.of(Alternatives.TaddExact24.values());
             case TADD_ON_ERROR:
                 return List.of(Alternatives.TaddOnError.values());
+            case TADD_ERROR_ORDER:
+                return List.of(Alternatives.TaddErrorOrder.values());
             default:
                 throw new AssertionError(this);
         }
@@ -149,11 +185,19 @@ public enum Interpretation {
                 return List.of(Family.CP1E_TIME_COMPARE);
             case CP1E_ER_FLAG:
                 return List.of(Family.CP1E_TIME_COMPARE);
+            case CP1E_ERROR_FLAGS:
+                return List.of(Family.CP1E_TIME_COMPARE);
             case HOUR_OUTPUT_OFF:
                 return List.of(Family.FC6A_HOUR_METER);
             case HOUR_INPUT_OFF:
                 return List.of(Family.FC6A_HOUR_METER);
             case HOUR_PRESET_ZERO:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_FIRST_SCAN:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_PRESET_CHECK:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_M8004_OFF:
                 return List.of(Family.FC6A_HOUR_METER);
             case FX5_SM709_SCOPE:
                 return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
@@ -161,11 +205,15 @@ public enum Interpretation {
                 return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
             case FX5_CLOCK_S2_DEVICE_RANGE:
                 return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
+            case FX5_OR_ON_ERROR:
+                return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
             case TADD_FLAGS_OFF:
                 return List.of(Family.FX5_TIME_ADD);
             case TADD_EXACT_24:
                 return List.of(Family.FX5_TIME_ADD);
             case TADD_ON_ERROR:
+                return List.of(Family.FX5_TIME_ADD);
+            case TADD_ERROR_ORDER:
                 return List.of(Family.FX5_TIME_ADD);
             default:
                 throw new AssertionError(this);
