@@ -63,6 +63,7 @@ FAULTS = [
     ("close-stdout", "the adapter closed its stdout but kept running; it was killed"),
     ("wrong-shape", "the result does not match result.schema.json: at steps/0/devices/D100: 'twelve'"),
     ("duplicate", "answered {target} twice"),
+    ("repeated-key", "the answer reports D"),
 ]
 
 
@@ -75,7 +76,7 @@ def test_fault_is_blamed_on_the_vector_being_run(suite, target, mode, message):
     assert list(bad) == [target], {k: r.message for k, r in bad.items()}
     assert bad[target].status == "error"
     assert message.format(target=target) in bad[target].message
-    if mode not in ("wrong-shape", "duplicate"):
+    if mode not in ("wrong-shape", "duplicate", "repeated-key"):
         assert f"(while running {target})" in bad[target].message
     assert report.counts["pass"] == len(FAMILY.apply(suite.vectors)) - 1
     assert report.exit_code == 1 and not report.aborted
@@ -315,3 +316,17 @@ def test_a_stop_signal_waits_for_the_end_of_a_section_that_must_not_be_cut():
             reached.append("after the section")
     assert reached == ["end of the section"] and e.value.signum == signal.SIGTERM
     assert signal.getsignal(signal.SIGTERM) is signal.SIG_DFL      # the handlers are put back
+
+
+def test_a_repeated_key_is_told_from_keys_spelled_otherwise():
+    """The quick check (one `":` per key) only sends a line the slow way; the slow way decides."""
+    from plcvec_verify.stdio import Repeated, StdioAdapter
+
+    lines = [b'{"type":"result","id":"a","skip":"no \\": here"}',            # `":` inside a string
+             b'{"type" : "result", "id" : "b", "steps" : [{"devices" : {"D1" : 1}}]}',   # spaces
+             b'{"type":"result","id":"c","steps":[{"devices":{"D1":1,"D1":2}}]}',
+             b'{"type":"result","id":"d","steps":[{"devices":{"D1":1}}]}']
+    parsed = StdioAdapter._messages(None, lines)
+    assert [type(m) for m in parsed] == [dict, dict, Repeated, dict]
+    assert parsed[2].text == "the answer reports D1 twice (a JSON object with a repeated key)"
+    assert parsed[0]["skip"] == 'no ": here' and parsed[1]["steps"][0]["devices"] == {"D1": 1}

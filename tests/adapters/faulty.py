@@ -10,7 +10,8 @@ keeps running), endless-line (writes without ever ending the line), stderr (a me
 then a correct answer), duplicate (answers the target twice), ignore-bye (does not exit after
 `bye`), bad-hello (a handshake answer of the wrong shape), fatal-hello (refuses the handshake),
 hang-hello (never answers the handshake), garbage-hello (a handshake that is not JSON),
-two-hellos (two lines for one handshake), new-protocol (answers the handshake with protocol 2).
+two-hellos (two lines for one handshake), new-protocol (answers the handshake with protocol 2),
+repeated-key (reports one device twice with two values in one JSON object).
 It buffers its output per batch, as most adapters do, so the runner must find the culprit by itself.
 """
 import json
@@ -86,5 +87,12 @@ for line in sys.stdin.buffer:
                 sys.stderr.flush()
             if mode == "duplicate":
                 out.write(encode(result))
+            if mode == "repeated-key":
+                # One listed device twice with two values: json.loads would keep the last.
+                line = encode(result)
+                first = next(iter(result["steps"][0]["devices"]))
+                value = json.dumps(result["steps"][0]["devices"][first])
+                out.write(line.replace(f'"{first}":{value}'.encode(), f'"{first}":12345,"{first}":{value}'.encode(), 1))
+                continue
         out.write(encode(result))
     out.flush()

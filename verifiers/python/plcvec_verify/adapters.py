@@ -5,8 +5,9 @@ A Python adapter object has two methods:
     hello(request: dict) -> dict
         `request` is the runner's hello message (suite version, spec hash, the families with their
         instructions and interpretations). Returns {"adapter": {"name", "version"},
-        "instructions": [...], "interpretations": {id: alternative}}: the hello-response message
-        without `type` and `protocol`.
+        "instructions": [...], "interpretations": {id: alternative}, "cpu_writes"?: [device, ...]}:
+        the hello-response message without `type` and `protocol`. An object may instead carry the
+        devices its CPU writes on its own account as an attribute `cpu_writes` (CONTRACT.md).
     run(request: dict) -> dict
         `request` is one vector without its expectations (run-request.schema.json#/$defs/request).
         Returns {"steps": [{"result"?, "devices"}]}, or {"skip": reason}, or {"error": message}:
@@ -99,6 +100,10 @@ class InProcess:
             raise AdapterAbort(f"{self.label}.hello() raised {type(exc).__name__}: {exc}")
         answer = {"type": "hello", "protocol": PROTOCOL_VERSION}
         answer.update(body or {})
+        # An object may declare the devices its CPU writes on its own as an attribute instead.
+        cpu_writes = getattr(self.adapter, "cpu_writes", None)
+        if cpu_writes is not None and "cpu_writes" not in answer:
+            answer["cpu_writes"] = list(cpu_writes)
         return check_hello(answer, self.label)
 
     def answers(self, requests, wire=None):

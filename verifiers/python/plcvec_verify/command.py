@@ -41,6 +41,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                       help=f"exit {NOTHING_TESTED} when more than N vectors (or N%% of those selected) are skipped")
     p.add_argument("--choose", action="append", default=[], metavar="ID=ALT",
                    help="the alternative this implementation follows, for adapters that do not declare it")
+    p.add_argument("--infer", action="store_true",
+                   help="find the interpretation alternatives the answers follow and print the --choose line "
+                        "and hello declaration that give them; exit 0 only when one choice explains every vector")
     p.add_argument("--expectations", metavar="FILE", help="known failures (TOML, see known.py)")
     p.add_argument("--write-expectations", metavar="FILE",
                    help="write the failing vectors as a new expectations file (reason: 'not yet triaged')")
@@ -99,6 +102,16 @@ def make_adapter(args):
     return StdioAdapter(args.adapter, timeout=args.timeout, batch_size=args.batch_size, max_restarts=args.max_restarts)
 
 
+def infer_exit_code(report, inferred) -> int:
+    """`--infer`: 0 only when one choice of alternatives explains every vector (and the run tested
+    something); a harness error or a stop keeps its own status."""
+    if report.stopped or report.aborted:
+        return report.exit_code
+    if not inferred.complete:
+        return 1
+    return NOTHING_TESTED if not report.failed and report.shortfall else 0
+
+
 def main_args(args) -> int:
     from .stdio import end_all
     from .stopping import Stopped, stop_on_signals
@@ -138,7 +151,12 @@ def _verify(args) -> int:
         if args.write_expectations:
             n = write_expectations(args.write_expectations, report.results, "not yet triaged")
             print(f"plcvec verify: {n} known failures written to {args.write_expectations}", file=sys.stderr)
-        text = reports.summary_text(report, verbose=args.verbose)
+        inferred = None
+        if args.infer:
+            from .infer import inference
+
+            inferred = inference(report, frozenset(report.cpu_writes))
+        text = reports.summary_text(report, verbose=args.verbose, inferred=inferred, infer=args.infer)
         if args.quiet:
             text = text.rstrip("\n").rsplit("\n", 1)[-1] + "\n"
         sys.stdout.write(text)
@@ -146,6 +164,8 @@ def _verify(args) -> int:
             print(f"plcvec verify: {report.aborted}", file=sys.stderr)
         elif not report.failed and report.shortfall:
             print(f"plcvec verify: {report.shortfall}", file=sys.stderr)
+        if inferred is not None:
+            return infer_exit_code(report, inferred)
         return report.exit_code
     except VerifyError as exc:
         print(f"plcvec verify: {exc}", file=sys.stderr)

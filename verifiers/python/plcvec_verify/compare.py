@@ -5,44 +5,70 @@ is an integer, so a bit reported as 1 is wrong even though Python's 1 == True.
 """
 from __future__ import annotations
 
+import json
 from dataclasses import dataclass
 from marshal import dumps
 
 from .expect import PACKED_FORMAT, Expected
 from .protocol import WORD_MAX
 
-_MISSING = "<not reported>"
-_UNLISTED = "<not in the vector>"
+MISSING = "<not reported>"
+UNLISTED = "<not in the vector>"
+_MISSING, _UNLISTED = MISSING, UNLISTED
 
 
 @dataclass(frozen=True)
 class Problem:
-    """One field that differs: where, what was expected, what the adapter reported."""
+    """One field that differs: where, what was expected, what the implementation reported.
+
+    `line()` is part of the one failure text every runner prints (verifiers/parity/TEXT.md).
+    """
 
     step: int | None       # None: about the vector as a whole (e.g. the number of steps)
     field: str             # "result", a device address, or "steps"
     expected: object
     actual: object
-    before: object = None  # the field's value before the step, when it is a device
+    # For a device the vector lists: the value the implementation held before the step (what it was
+    # given for step 0, its own report of the previous step after this step's `set` otherwise).
+    held: object = None
+    # The vector requires the step to leave the device as the vector had it before the step.
+    keep: bool = False
+
+    @property
+    def before(self):
+        """The value the implementation held before the step (None: not a listed device)."""
+        return self.held
 
     def line(self) -> str:
-        where = f"step {self.step} " if self.step is not None else ""
-        text = f"{where}{self.field}: expected {_show(self.expected)}, got {_show(self.actual)}"
-        if self.before is not None and self.expected == self.before:
-            text += " (the step must leave it unchanged)"
-        elif self.before is not None:
-            text += f" (before the step: {_show(self.before)})"
-        return text
+        if self.step is None:       # about the vector as a whole: counts, shown as they are
+            return f"{self.field}: expected {self.expected}, got {self.actual}"
+        text = f"step {self.step} {self.field}: expected {show(self.expected)}, got {show(self.actual)}"
+        if self.held is None:
+            return text
+        # "must leave it unchanged" only where the implementation wrote the device in this step: a
+        # difference carried over from an earlier step shows the value it already held instead.
+        wrote = self.actual is not MISSING and not _same(self.held, self.actual)
+        if self.keep and wrote:
+            if _same(self.held, self.expected):
+                return text + " (the step must leave it unchanged)"
+            return text + f" (before the step: {show(self.held)}; the step must leave it unchanged)"
+        return text + f" (before the step: {show(self.held)})"
 
 
-def _show(value):
+def show(value) -> str:
+    """A value as the failure text shows it: JSON's spelling (true, 13, "x"), or a <...> marker."""
     if value is True:
         return "true"
     if value is False:
         return "false"
-    if isinstance(value, str) and value.startswith("<"):
+    if value is MISSING or value is UNLISTED:
         return value
-    return repr(value)
+    if type(value) is int:
+        return str(value)
+    try:
+        return json.dumps(value, ensure_ascii=False, separators=(",", ":"), sort_keys=True)
+    except (TypeError, ValueError):     # not a JSON value at all (an in-process answer)
+        return repr(value)
 
 
 def _json_type(value):
@@ -140,8 +166,13 @@ def _steps_pass_with_scratch(expected: Expected, steps) -> bool:
     return True
 
 
-def compare(expected: Expected, steps: list) -> list[Problem]:
-    """The problems of one vector's reported `steps` (an empty list means it passed)."""
+def compare(expected: Expected, steps: list, cpu_writes=frozenset()) -> list[Problem]:
+    """The problems of one vector's reported `steps` (an empty list means it passed).
+
+    `cpu_writes`: devices the implementation's CPU writes on its own account (CONTRACT.md); a write
+    to one of them that the vector does not list is not a stray write. One the vector lists is
+    compared like any other.
+    """
     if len(steps) != len(expected.states):
         return [Problem(None, "steps", f"{len(expected.states)} steps", f"{len(steps)} steps")]
     problems = []
@@ -158,8 +189,26 @@ def compare(expected: Expected, steps: list) -> list[Problem]:
         if got == want_state and _same_types(got, typed):
             continue
         before = expected.before(i)
+        held = _held(expected, steps, i)
         for dev in sorted(set(want_state) | set(got)):
             want, have = want_state.get(dev, _UNLISTED), got.get(dev, _MISSING)
+            if want is _UNLISTED and dev in cpu_writes:
+                continue
             if not _same(want, have):
-                problems.append(Problem(i, dev, want, have, before.get(dev)))
+                if want is _UNLISTED:
+                    problems.append(Problem(i, dev, want, have))
+                else:
+                    problems.append(Problem(i, dev, want, have, held.get(dev, _MISSING),
+                                            dev in before and _same(before[dev], want)))
     return problems
+
+
+def _held(expected: Expected, steps: list, i: int) -> dict:
+    """What the implementation held before step `i`: for step 0 what the vector gave it; after that
+    its own report of step i-1, with step i's `set` written over it (the outside world writes it)."""
+    if i == 0:
+        return expected.before(0)
+    previous = steps[i - 1].get("devices") if isinstance(steps[i - 1], dict) else None
+    held = dict(previous) if isinstance(previous, dict) else {}
+    held.update(expected.sets[i])
+    return held

@@ -43,6 +43,9 @@ def pytest_addoption(parser):
     g.addoption("--plcvec-shard", metavar="K/N", help="run the K-th of N shards (by a hash of the id)")
     g.addoption("--plcvec-allow-empty", action="store_true",
                 help="pass a session that selects no vector or in which nothing passes (else exit 5)")
+    g.addoption("--plcvec-infer", action="store_true",
+                help="find the interpretation alternatives the answers follow (as plcvec verify --infer): a failure "
+                     "another alternative explains is xfail, the session passes only when one choice explains all")
     g.addoption("--plcvec-max-skipped", metavar="N|N%",
                 help="exit 5 when more than N vectors (or N%% of those selected) are skipped")
 
@@ -84,14 +87,16 @@ class VectorItem(pytest.Item):
             raise VectorFailure(self._detail(result))
 
     def _detail(self, result):
-        v = self.vector
-        lines = [f"{result.status}: {v['instruction']}: {v.get('description', '')}"]
-        if result.choices:
-            lines.append("judged by: " + ", ".join(f"{i}={a}" for i, a in sorted(result.choices.items())))
-        lines += [p.line() for p in result.problems]
-        lines += [m for m in [result.message] if m] + [f"note: {n}" for n in result.notes]
-        lines.append("spec clauses: " + ", ".join(v.get("clauses", ())))
-        return "\n".join(lines)
+        """The one failure block (verifiers/parity/TEXT.md), as `plcvec verify` prints it."""
+        from .describe import block
+
+        report = getattr(self.config, "_plcvec_report", None)
+        if report is None:      # no run was made: a message alone
+            return "\n".join([f"{result.status.upper()} {result.id}", f"    {result.message}"])
+        suite = report.suite
+        defaults = {i: d["default"] for i, d in suite.interpretations().items()}
+        followed = {**defaults, **{i: d["alternative"] for i, d in report.interpretations.items()}}
+        return "\n".join(block(result, self.vector, followed, defaults, suite.expectations))
 
     def repr_failure(self, excinfo):
         if isinstance(excinfo.value, VectorFailure):
@@ -192,11 +197,31 @@ def _run(session):
     if report.stopped:
         raise KeyboardInterrupt(report.aborted)
     results = {r.id: r for r in report.results}
+    if config.getoption("plcvec_infer"):
+        results.update(_inferred_results(config, report))
     if report.aborted:
         for r in report.results:
             if r.status == "not-run":
                 results[r.id] = r._replace(message=f"{r.message}: {report.aborted}")
     return results
+
+
+def _inferred_results(config, report) -> dict:
+    """--plcvec-infer: a failure the inferred choice explains becomes xfail (naming the declaration that
+    explains it); a vector that passes now but would fail under that choice fails, saying so."""
+    from .infer import inference
+    from .runner import FAIL, XFAIL
+
+    inferred = config._plcvec_inference = inference(report, frozenset(report.cpu_writes))
+    by_id = {r.id: r for r in report.results}
+    out = {}
+    for vid, change in inferred.explained.items():
+        declare = " ".join(f"--choose {i}={a}" for i, a in change)
+        out[vid] = by_id[vid]._replace(status=XFAIL, message=f"explained by another reading: {declare}")
+    for vid in inferred.broken:
+        out[vid] = by_id[vid]._replace(status=FAIL, message="passes under the alternatives followed, but not under "
+                                       "the choice inferred for the other vectors (see the plcvec summary)")
+    return out
 
 
 class _Everywhere(dict):
@@ -235,15 +260,33 @@ def pytest_terminal_summary(terminalreporter, config):
             terminalreporter.write_sep("-", "plcvec")
             terminalreporter.write_line(f"NOT PASSED (exit 5): {shortfall}", red=True)
         return
-    from .reports import header, skipped_lines
+    from .describe import interpretations_line, rollup_lines, skipped_lines
+    from .infer import inference
+    from .reports import header
+    from .runner import FAILING
 
     h = header(report)
     terminalreporter.write_sep("-", "plcvec")
     terminalreporter.write_line(f"suite {h['suite_version']} schema {h['schema_version']} spec sha256 {h['spec_sha256'][:12]}; "
                                 f"adapter {h['adapter'].get('name')}")
+    terminalreporter.write_line(interpretations_line(report))
+    if report.cpu_writes:
+        terminalreporter.write_line("cpu_writes: " + ", ".join(report.cpu_writes))
     stale = [r for r in report.results if r.status == "stale" and not r.family]
     for r in stale:
         terminalreporter.write_line(f"STALE {r.id}: {r.message}")
+    # Each failure was printed once, by its own item; here only what explains them.
+    inferred = getattr(config, "_plcvec_inference", None)
+    if inferred is None and any(r.status in FAILING and r.family for r in report.results):
+        inferred = inference(report, frozenset(report.cpu_writes))
+    if inferred is not None:
+        for line in rollup_lines(report, inferred):
+            terminalreporter.write_line(line)
+    if config.getoption("plcvec_infer") and inferred is not None:
+        from .infer import declaration_lines
+
+        for line in declaration_lines(report, inferred):
+            terminalreporter.write_line(line)
     for line in skipped_lines(report):
         terminalreporter.write_line(line, yellow=True)
     if shortfall:

@@ -6,7 +6,6 @@ adapter, and the interpretation alternative every vector was judged by.
 from __future__ import annotations
 
 import json
-from collections import Counter
 import xml.etree.ElementTree as ET
 from .atomic import write_atomic
 from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL, RunReport
@@ -24,40 +23,47 @@ def header(report: RunReport) -> dict:
         "adapter": report.adapter,
         "interpretations": {i: {"alternative": d["alternative"], "declared": d["declared"]}
                             for i, d in sorted(report.interpretations.items())},
+        "cpu_writes": list(report.cpu_writes),
         "selection": {k: list(v) if isinstance(v, tuple) else v
                       for k, v in vars(report.selection).items() if v},
     }
 
 
-def summary_text(report: RunReport, verbose: bool = False) -> str:
-    """What a person reads at the end of a run: each failing vector with its field diff, then totals."""
+def summary_text(report: RunReport, verbose: bool = False, inferred=None, infer: bool = False) -> str:
+    """What a person reads at the end of a run (verifiers/parity/TEXT.md): each failing vector once,
+    with its field diff, then the roll-up by reading, the skips by reason, and the summary lines.
+
+    `infer` (`plcvec verify --infer`): only the vectors no reading explains get a failure block, and
+    the alternatives found follow the roll-up (infer.declaration_lines)."""
+    from .describe import block, interpretations_line, rollup_lines, skipped_lines, totals_line
+    from .infer import inference
+
     lines = []
-    by_id = report.suite.by_id
+    suite = report.suite
+    by_id = suite.by_id
+    defaults = {i: d["default"] for i, d in suite.interpretations().items()}
+    followed = {**defaults, **{i: d["alternative"] for i, d in report.interpretations.items()}}
+    if infer and inferred is None:
+        inferred = inference(report, frozenset(report.cpu_writes))
     for r in report.results:
         if r.status not in FAILING and not (verbose and r.status in (XFAIL, SKIP)):
             continue
-        v = by_id.get(r.id, {})
-        lines.append(f"{r.status.upper()} {r.id}")
-        if v.get("description"):
-            lines.append(f"    {v['instruction']}: {v['description']}")
-        if r.choices:
-            lines.append("    judged by: " + ", ".join(f"{i}={a}" for i, a in sorted(r.choices.items())))
-        for p in r.problems[:SHOW_PROBLEMS]:
-            lines.append(f"    {p.line()}")
-        if len(r.problems) > SHOW_PROBLEMS:
-            lines.append(f"    ... and {len(r.problems) - SHOW_PROBLEMS} more differences")
-        if r.message:
-            lines.append(f"    {r.message}")
-        for note in r.notes:
-            lines.append(f"    note: {note}")
-        if v.get("clauses"):
-            lines.append("    spec clauses: " + ", ".join(v["clauses"]))
+        if infer and r.id in inferred.explained:
+            continue
+        lines += block(r, by_id.get(r.id), followed, defaults, suite.expectations)
     noted = [r for r in report.results if r.notes and r.status not in FAILING]
     for r in noted[:SHOW_PROBLEMS]:
         for note in r.notes:
             lines.append(f"NOTE {r.id}: {note}")
     for note in report.notes:
         lines.append(f"NOTE adapter: {note}")
+    if any(r.status in FAILING and r.family for r in report.results):
+        inferred = inferred or inference(report, frozenset(report.cpu_writes))
+        lines += rollup_lines(report, inferred)
+    if infer:
+        from .infer import declaration_lines
+
+        lines += declaration_lines(report, inferred)
     lines += skipped_lines(report)
     if report.aborted:
         lines.append(f"ABORTED: {report.aborted}")
@@ -68,28 +74,17 @@ def summary_text(report: RunReport, verbose: bool = False) -> str:
     lines.append("")
     lines.append(f"plcvec verify: {adapter} against {h['suite']} (suite {h['suite_version'] or '?'}, "
                  f"schema {h['schema_version']}, spec sha256 {h['spec_sha256'][:12] or '?'})")
-    declared = [f"{i}={d['alternative']}" for i, d in h["interpretations"].items() if d["declared"]]
-    lines.append("interpretations: " + (", ".join(declared) + "; " if declared else "") + "others default")
-    counts = report.counts
-    parts = [f"{counts[s]} {s}" for s in STATUSES if counts[s] or s in (PASS, FAIL, SKIP)]
-    lines.append(f"{len(report.results)} vectors: " + ", ".join(parts) + f" in {report.seconds:.2f} s")
+    lines.append(interpretations_line(report))
+    if report.cpu_writes:
+        lines.append("cpu_writes: " + ", ".join(report.cpu_writes))
+    lines.append(f"{totals_line(report)} in {report.seconds:.2f} s")
     return "\n".join(lines) + "\n"
 
 
 def skipped_lines(report: RunReport) -> list[str]:
-    """How many vectors were skipped and why, most common reason first: a run that skips much
-    proves little, so the number is said before the totals, not hidden among them."""
-    skipped = [r.message for r in report.results if r.status == SKIP]
-    if not skipped:
-        return []
-    selected = max(report.selected, 1)
-    lines = [f"SKIPPED {len(skipped)} of {report.selected} vectors ({100.0 * len(skipped) / selected:.1f}%):"]
-    reasons = Counter(skipped).most_common()
-    for reason, n in reasons[:SHOW_PROBLEMS]:
-        lines.append(f"    {n:>6}  {reason or '(no reason given)'}")
-    if len(reasons) > SHOW_PROBLEMS:
-        lines.append(f"    ... and {len(reasons) - SHOW_PROBLEMS} more reasons (--jsonl lists each vector)")
-    return lines
+    from .describe import skipped_lines as lines
+
+    return lines(report)
 
 
 def jsonl_lines(report: RunReport):
@@ -127,7 +122,12 @@ def junit_xml(report: RunReport) -> str:
     families = {}
     for r in report.results:
         families.setdefault(r.family or "(expectations file)", []).append(r)
+    from .describe import block
+
     by_id = report.suite.by_id
+    expectations = report.suite.expectations
+    defaults = {i: d["default"] for i, d in report.suite.interpretations().items()}
+    followed = {**defaults, **{i: d["alternative"] for i, d in report.interpretations.items()}}
     for family, results in sorted(families.items()):
         suite = ET.SubElement(root, "testsuite", name=family, tests=str(len(results)),
                               failures=str(sum(r.status in (FAIL, STALE) for r in results)),
@@ -140,10 +140,12 @@ def junit_xml(report: RunReport) -> str:
         for i, d in h["interpretations"].items():
             ET.SubElement(props, "property", name=f"interpretation.{i}",
                           value=d["alternative"] + ("" if d["declared"] else " (default)"))
+        if h["cpu_writes"]:
+            ET.SubElement(props, "property", name="cpu_writes", value=", ".join(h["cpu_writes"]))
         for r in results:
             case = ET.SubElement(suite, "testcase", classname=f"plcvec.{family}", name=r.id)
-            detail = "\n".join([p.line() for p in r.problems] + ([r.message] if r.message else []) + list(r.notes)
-                               + (["spec clauses: " + ", ".join(by_id[r.id]["clauses"])] if r.id in by_id else []))
+            # The failure block of the summary (TEXT.md), without its status line and indent.
+            detail = "\n".join(line[4:] for line in block(r, by_id.get(r.id), followed, defaults, expectations)[1:])
             if r.status == FAIL:
                 ET.SubElement(case, "failure", message=f"{len(r.problems)} field(s) differ", type="mismatch").text = detail
             elif r.status == STALE:

@@ -45,6 +45,7 @@ class VectorResult(NamedTuple):
     message: str = ""          # error/skip/xfail/stale reason
     notes: tuple = ()          # e.g. what the adapter wrote to stderr
     choices: dict = {}         # interpretation -> alternative the vector was judged by; never mutated
+    answer: list | None = None  # a failing vector's reported steps, for the inference (infer.py)
 
 
 
@@ -61,6 +62,7 @@ class RunReport:
     selection: Selection = field(default_factory=Selection)
     stopped: int = 0                            # the signal that stopped the run, if one did
     gate: Gate = field(default_factory=Gate)    # what the run must show beyond "no failures"
+    cpu_writes: tuple = ()                      # devices the implementation's CPU writes on its own
 
     def count(self, status):
         return sum(1 for r in self.results if r.status == status)
@@ -169,6 +171,7 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     interpretations = resolve_choices(suite, families, hello.get("interpretations", {}), choose or {})
     choices = {i: d["alternative"] for i, d in interpretations.items()}
     supported = set(hello["instructions"])
+    cpu_writes = frozenset(hello.get("cpu_writes", ()))
 
     results: dict[str, VectorResult] = {}
     if supported.issuperset(plan.instructions if planned else map(_INSTRUCTION, vectors)):
@@ -184,7 +187,8 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     if plan is None:
         plan = Plan(suite, runnable, choices)
     by_id, judging, requests = suite.by_id, plan.judging, plan.requests
-    report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate())
+    report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate(),
+                       cpu_writes=tuple(sorted(cpu_writes)))
     total, done, failed = len(runnable), 0, 0
     try:
         to_send = plan.request_list if runnable is plan.vectors else list(map(requests.__getitem__, map(_ID, runnable)))
@@ -214,21 +218,21 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
             v = by_id[vid]
             problems = None
             if not fault and result_shape_ok(msg):
-                problems = compare(exp, msg["steps"])     # shape fine: compare at once
+                problems = compare(exp, msg["steps"], cpu_writes)     # shape fine: compare at once
             errors = () if fault or problems == [] else result_errors(msg)
             if fault or errors:
                 fault = fault or "the result does not match result.schema.json: " + "; ".join(errors)
                 r = VectorResult(v["id"], v["family"], v["instruction"], ERROR, message=fault, choices=exp.choices)
             elif "steps" in msg:
                 if problems is None:
-                    problems = compare(exp, msg["steps"])
+                    problems = compare(exp, msg["steps"], cpu_writes)
                 r = VectorResult(v["id"], v["family"], v["instruction"], FAIL if problems else PASS,
-                                 tuple(problems), choices=exp.choices)
+                                 tuple(problems), choices=exp.choices, answer=msg["steps"] if problems else None)
             elif "skip" in msg:
                 r = VectorResult(v["id"], v["family"], v["instruction"], SKIP, message=msg["skip"], choices=exp.choices)
             else:
                 r = VectorResult(v["id"], v["family"], v["instruction"], ERROR,
-                                 message=f"the adapter reported an error: {msg['error']}", choices=exp.choices)
+                                 message=f"the implementation reported an error: {msg['error']}", choices=exp.choices)
             results[vid] = r
             done += 1
             failed += r.status in FAILING

@@ -390,7 +390,10 @@ class StdioAdapter:
                     self._answered.add(vid)
                     self._last_answered = vid
                     batch_of.pop(vid)[1] -= 1
-                    yield Answer(vid, msg)
+                    if type(msg) is Repeated:
+                        yield Answer(vid, None, msg.text)
+                    else:
+                        yield Answer(vid, msg)
                     while batches and batches[0][1] == 0:
                         batches.popleft()
                         deadline = time.monotonic() + self.timeout
@@ -413,16 +416,21 @@ class StdioAdapter:
 
     def _messages(self, lines):
         """Parse complete lines; one json.loads for the lot when they are all JSON (the usual case)."""
+        joined = b"[" + b",".join(lines) + b"]"
         try:
-            parsed = json.loads(b"[" + b",".join(lines) + b"]")
+            parsed = json.loads(joined)
             if len(parsed) == len(lines):   # else some line held more than one value
-                return parsed
+                # json.loads keeps the last of a repeated key; every key is followed by `":` in
+                # compact JSON, so equal counts prove no key was repeated (else look line by line).
+                if joined.count(b'":') == _key_count(parsed):
+                    return parsed
+                return [_unrepeated(line, msg) for line, msg in zip(lines, parsed)]
         except ValueError:
             pass
         out = []
         for line in lines:
             try:
-                out.append(json.loads(line))
+                out.append(_unrepeated(line, json.loads(line)))
             except ValueError:
                 raise _Fault(f"the adapter wrote a line that is not JSON: {_clip(line)}")
         return out
@@ -433,6 +441,47 @@ class StdioAdapter:
             raise AdapterAbort(f"--adapter {self.command}: gave up after {self.max_restarts} restarts")
         self._spawn()
         self._handshake()
+
+
+class Repeated(dict):
+    """A message in which a JSON object repeats a key (`{"D100": 1, "D100": 2}`): which value was meant
+    cannot be told, so it is a fault against its vector, never silently the last one."""
+
+    text = ""
+
+
+def _key_count(value) -> int:
+    if type(value) is dict:
+        return len(value) + sum(_key_count(v) for v in value.values() if type(v) in (dict, list))
+    if type(value) is list:
+        return sum(_key_count(v) for v in value if type(v) in (dict, list))
+    return 0
+
+
+def _refuse_repeats(pairs):
+    seen = set()
+    for key, _ in pairs:
+        if key in seen:
+            raise _RepeatedKey(key)
+        seen.add(key)
+    return dict(pairs)
+
+
+class _RepeatedKey(ValueError):
+    pass
+
+
+def _unrepeated(line: bytes, msg):
+    """`msg` (parsed from `line`), or a Repeated copy naming the first key `line` repeats."""
+    if line.count(b'":') == _key_count(msg):
+        return msg
+    try:
+        json.loads(line, object_pairs_hook=_refuse_repeats)
+    except _RepeatedKey as exc:
+        out = Repeated(msg) if isinstance(msg, dict) else Repeated()
+        out.text = f"the answer reports {exc.args[0]} twice (a JSON object with a repeated key)"
+        return out
+    return msg
 
 
 def _clip(line: bytes, limit: int = 120) -> str:

@@ -1,0 +1,223 @@
+"""The one failure text: what every runner prints for a failing vector, the roll-up by reading, the
+skips by reason and the summary lines (verifiers/parity/TEXT.md is the rule, byte for byte).
+
+Kept apart from the run and the reports so that the pytest plugin, the summary and the shared text
+cases (verifiers/parity/text/) all print the same lines from the same code.
+"""
+from __future__ import annotations
+
+import re
+from collections import Counter
+
+from .compare import UNLISTED, Problem, show
+from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, RunReport, VectorResult
+
+SHOW_PROBLEMS = 12      # field lines shown per failing vector
+SHOW_REASONS = 12       # skip reasons shown
+SHOW_IDS = 5            # vector ids shown under each group of the roll-up
+INDENT = "    "
+
+# Step inputs in the order they are shown; any other input follows, by name.
+INPUTS = ("clock", "rlo_in", "en", "input", "elapsed_ms")
+_DATE, _TIME = ("year", "month", "day"), ("hour", "minute", "second")
+_NUMBERED = re.compile(r"^([A-Za-z_]+)([0-9]+)$")
+
+
+def percent(part: int, whole: int) -> str:
+    """part/whole as a percentage with one decimal, rounded half up in integers (no float formatting,
+    so that every language prints the same digits)."""
+    whole = max(whole, 1)
+    tenths = (2000 * part + whole) // (2 * whole)
+    return f"{tenths // 10}.{tenths % 10}"
+
+
+def clock_text(clock: dict) -> str:
+    """`2024/2/29`, `10:05:00`, or both with a space; other fields as ` name=value`, by name."""
+    date = "/".join(str(clock[f]) for f in _DATE if f in clock)
+    time = [clock[f] for f in _TIME if f in clock]
+    time_text = ":".join(str(v) if k == 0 else f"{v:02d}" if type(v) is int and v >= 0 else show(v)
+                         for k, v in enumerate(time))
+    parts = [p for p in (date, time_text) if p]
+    parts += [f"{k}={show(v)}" for k, v in sorted(clock.items()) if k not in _DATE + _TIME]
+    return " ".join(parts)
+
+
+def inputs_text(step: dict) -> str:
+    """A step's inputs: `clock=10:30:00, rlo_in=true, set D100=5 D101=0`, or `(none)`."""
+    parts = []
+    for key in INPUTS:
+        if key in step:
+            parts.append(f"{key}={clock_text(step[key]) if key == 'clock' and isinstance(step[key], dict) else show(step[key])}")
+    for key in sorted(step):
+        if key not in INPUTS and key not in ("expect", "set"):
+            parts.append(f"{key}={show(step[key])}")
+    if step.get("set"):
+        parts.append("set " + " ".join(f"{d}={show(v)}" for d, v in sorted(step["set"].items())))
+    return ", ".join(parts) or "(none)"
+
+
+def _next_address(device: str) -> str | None:
+    m = _NUMBERED.match(device)
+    return f"{m.group(1)}{int(m.group(2)) + 1}" if m else None
+
+
+def operands_text(vector: dict, state: dict) -> str:
+    """Each operand with the words it reads in `state` (the vector's state before the step):
+    `s1 D100=23 0 0`, `D2 M10=false`, `S1 constant 3600`, `D3 D300 (scratch)`."""
+    operands = vector["initial"]["operands"]
+    scratch = set(vector["initial"].get("scratch", ()))
+    starts = {o["device"] for o in operands.values() if "device" in o}
+    parts = []
+    for name in sorted(operands):
+        operand = operands[name]
+        if "device" not in operand:
+            parts.append(f"{name} constant {show(operand.get('constant'))}")
+            continue
+        first = operand["device"]
+        if first in scratch:
+            parts.append(f"{name} {first} (scratch)")
+            continue
+        if first not in state:
+            parts.append(f"{name} {first} (not in the vector)")
+            continue
+        words = [state[first]]
+        if type(words[0]) is not bool:
+            device = _next_address(first)
+            while device in state and type(state[device]) is not bool and device not in starts \
+                    and device not in scratch:
+                words.append(state[device])
+                device = _next_address(device)
+        parts.append(f"{name} {first}=" + " ".join(map(show, words)))
+    return ", ".join(parts) or "(none)"
+
+
+def deciding(vector: dict, problems, followed: dict, defaults: dict, expectations) -> list[str]:
+    """The interpretations that decide the differing fields: those of which another alternative
+    (every other interpretation as followed) expects something else of a field that differs."""
+    touched = sorted(vector["outcome"].get("interpretations", ()))
+    if not touched or not problems:
+        return []
+    from .infer import offered
+
+    mine = expectations.expected(vector, followed, defaults)
+    combos = offered(vector, defaults)
+    out = []
+    for interp in touched:
+        for combo in combos:
+            if combo[interp] == followed[interp] or any(combo[i] != followed[i] for i in touched if i != interp):
+                continue
+            other = expectations.expected(vector, combo, defaults)
+            if any(_differs(mine, other, p) for p in problems):
+                out.append(interp)
+                break
+    return out
+
+
+def _differs(mine, other, p: Problem) -> bool:
+    if p.step is None:
+        return False
+    if p.field == "result":
+        return mine.results[p.step] is not other.results[p.step]
+    a = mine.states[p.step].get(p.field, UNLISTED)
+    b = other.states[p.step].get(p.field, UNLISTED)
+    return a != b or type(a) is not type(b)
+
+
+def block(r: VectorResult, vector: dict | None, followed: dict, defaults: dict, expectations) -> list[str]:
+    """The lines of one vector's verdict (TEXT.md, "The failure block")."""
+    lines = [f"{r.status.upper()} {r.id}"]
+    vector = vector or {}
+    if vector.get("description"):
+        lines.append(f"{INDENT}{vector['instruction']}: {vector['description']}")
+    if r.problems and vector:
+        judged = deciding(vector, r.problems, followed, defaults, expectations)
+        if judged:
+            lines.append(f"{INDENT}judged by: " + ", ".join(f"{i}={followed[i]}" for i in judged))
+    shown = r.problems[:SHOW_PROBLEMS]
+    step_shown = None
+    for p in shown:
+        if p.step is not None and p.step != step_shown and vector:
+            step_shown = p.step
+            step = vector["steps"][p.step]
+            lines.append(f"{INDENT}step {p.step} inputs: {inputs_text(step)}")
+            state = expectations.expected(vector, followed, defaults).before(p.step)
+            lines.append(f"{INDENT}step {p.step} operands: {operands_text(vector, state)}")
+        lines.append(f"{INDENT}{p.line()}")
+    if len(r.problems) > SHOW_PROBLEMS:
+        lines.append(f"{INDENT}... and {len(r.problems) - SHOW_PROBLEMS} more differences")
+    if r.message:
+        lines.append(f"{INDENT}{r.message}")
+    for note in r.notes:
+        lines.append(f"{INDENT}note: {note}")
+    if vector.get("clauses"):
+        lines.append(f"{INDENT}spec clauses: " + ", ".join(vector["clauses"]))
+    return lines
+
+
+def rollup_lines(report: RunReport, inferred) -> list[str]:
+    """The failing vectors grouped by what would explain them (TEXT.md, "The roll-up by reading")."""
+    by_id = report.suite.by_id
+    failing = [r for r in report.results if r.status in (FAIL, ERROR, NOT_RUN)]
+    if not failing:
+        return []
+    lines = []
+    if inferred.explained:
+        groups = Counter(inferred.explained.values())
+        lines.append(f"READINGS: {len(inferred.explained)} of {len(failing)} failing vectors pass "
+                     "under other alternatives:")
+        for key, n in sorted(groups.items(), key=lambda kv: (-kv[1], _reading(kv[0]))):
+            lines.append(f"{INDENT}{n:>6}  {_reading(key)}")
+        lines.append(f"{INDENT}declare: " + " ".join(f"--choose {i}={a}" for i, a in inferred.changes.items()))
+        if inferred.broken:
+            lines.append(f"{INDENT}(so declared, {len(inferred.broken)} vectors that pass now would fail)")
+    if inferred.unexplained:
+        lines.append(f"NOT EXPLAINED by any reading: {len(inferred.unexplained)} failing vectors, "
+                     "by the clauses they cite:")
+        groups: dict[str, list[str]] = {}
+        for vid in inferred.unexplained:
+            clauses = by_id.get(vid, {}).get("clauses") or ()
+            groups.setdefault(", ".join(clauses) or "(no clauses)", []).append(vid)
+        for key, ids in sorted(groups.items(), key=lambda kv: (-len(kv[1]), kv[0])):
+            lines.append(f"{INDENT}{len(ids):>6}  {key}")
+            for vid in sorted(ids)[:SHOW_IDS]:
+                lines.append(f"{INDENT}{'':>6}  {vid}")
+            if len(ids) > SHOW_IDS:
+                lines.append(f"{INDENT}{'':>6}  ... and {len(ids) - SHOW_IDS} more")
+    return lines
+
+
+def _reading(key) -> str:
+    return ", ".join(f"{i}={a}" for i, a in key)
+
+
+def skipped_lines(report: RunReport) -> list[str]:
+    """How many vectors were skipped and why, most common reason first (ties by reason): a run that
+    skips much proves little, so the number is said before the totals, not hidden among them."""
+    skipped = [r.message for r in report.results if r.status == SKIP]
+    if not skipped:
+        return []
+    lines = [f"SKIPPED {len(skipped)} of {report.selected} vectors ({percent(len(skipped), report.selected)}%):"]
+    reasons = sorted(Counter(skipped).items(), key=lambda kv: (-kv[1], kv[0]))
+    for reason, n in reasons[:SHOW_REASONS]:
+        lines.append(f"{INDENT}{n:>6}  {reason or '(no reason given)'}")
+    if len(reasons) > SHOW_REASONS:
+        lines.append(f"{INDENT}... and {len(reasons) - SHOW_REASONS} more reasons (--jsonl lists each vector)")
+    return lines
+
+
+def interpretations_line(report: RunReport) -> str:
+    """Every interpretation of the families run with the alternative followed, declared or default."""
+    items = [f"{i}={d['alternative']} ({'declared' if d['declared'] else 'default'})"
+             for i, d in sorted(report.interpretations.items())]
+    return "interpretations: " + (", ".join(items) or "(none)")
+
+
+def totals_line(report: RunReport) -> str:
+    """`N vectors: a pass, b fail, c skip` (other statuses when not 0), without the time."""
+    counts = report.counts
+    parts = [f"{counts[s]} {s}" for s in STATUSES if counts[s] or s in (PASS, FAIL, SKIP)]
+    return f"{len(report.results)} vectors: " + ", ".join(parts)
+
+
+__all__ = ["block", "rollup_lines", "skipped_lines", "interpretations_line", "totals_line", "inputs_text",
+           "operands_text", "clock_text", "percent", "deciding", "FAILING"]
