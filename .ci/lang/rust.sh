@@ -34,6 +34,10 @@ cargo clippy --locked --manifest-path "$crate/Cargo.toml" --workspace --all-targ
 step "cargo test (one test per vector, mutants, loading, the README's example crate)"
 cargo test --locked --release --manifest-path "$crate/Cargo.toml" --workspace
 
+step "the shared table of faults (verifiers/parity/faults.toml) through the cargo test harness"
+verifiers/rust/faults-entry --build
+python3 verifiers/parity/run.py --lang rust --no-build
+
 step "the reference over the stdio protocol: plcvec verify"
 python3 -m plcvec verify --adapter "$crate/reference-adapter" -q
 step "the gate rejects a mutant of the reference served over stdio"

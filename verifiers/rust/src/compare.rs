@@ -1,193 +1,194 @@
-//! Judging one vector: every field compared exactly (with its JSON type), and a failure shown as
-//! a field-level diff with the vector id, the step, the device, expected and actual, the
-//! alternatives it was judged by, and the spec clauses the vector exercises.
-
-use std::fmt;
-use std::panic::{catch_unwind, AssertUnwindSafe};
+//! Judging one vector: every field compared exactly (with its JSON type) as soon as the
+//! implementation reports a step ([`Steps`]), each difference a [`Problem`].
 
 use crate::expect::Expected;
-use crate::implementation::{Implementation, Refusal, Steps};
+use crate::keys::INLINE_SLOTS;
+use crate::memory::Memory;
+use crate::small::Small;
 use crate::value::Value;
 use crate::vector::Vector;
+use crate::verdict::{Field, Problem};
 
-/// One side of a difference.
+/// One step as an implementation reported it (what the protocol sends back).
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub enum Field {
-    /// A device value or a contact result.
-    Value(Value),
-    /// The implementation did not report it.
-    Missing,
-    /// The vector does not list the device: nothing may be written there.
-    Unlisted,
-    /// Anything else (a step count).
-    Text(String),
+pub struct ReportedStep {
+    /// The contact result, for contact instructions.
+    pub result: Option<bool>,
+    /// The device image after the step.
+    pub devices: Vec<(String, Value)>,
 }
 
-impl fmt::Display for Field {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Field::Value(v) => write!(f, "{v}"),
-            Field::Missing => f.write_str("<not reported>"),
-            Field::Unlisted => f.write_str("<not in the vector>"),
-            Field::Text(t) => f.write_str(t),
-        }
-    }
+enum Mode<'a> {
+    Judge { expected: &'a Expected, cpu_writes: &'a [String], problems: Vec<Problem> },
+    Record { steps: Vec<ReportedStep> },
 }
 
-/// One field that differs.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Problem {
-    /// The step (0-based); `None` for the vector as a whole.
-    pub step: Option<usize>,
-    /// `result`, a device name, or `steps`.
-    pub field: String,
-    /// What the vector expects.
-    pub expected: Field,
-    /// What the implementation reported.
-    pub actual: Field,
-    /// The device's value before the step, when it is a device.
-    pub before: Option<Value>,
+/// Where an implementation reports its steps. While judging, each step is compared as soon as
+/// it is reported (nothing is copied for a step that matches); while serving the protocol, the
+/// steps are recorded.
+pub struct Steps<'a> {
+    vector: &'a Vector,
+    mode: Mode<'a>,
+    count: usize,
 }
 
-impl Problem {
-    pub(crate) fn new(
-        step: Option<usize>,
-        field: &str,
-        expected: Field,
-        actual: Field,
-        before: Option<Value>,
-    ) -> Problem {
-        Problem { step, field: field.to_owned(), expected, actual, before }
-    }
-}
-
-impl fmt::Display for Problem {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(step) = self.step {
-            write!(f, "step {step} ")?;
-        }
-        write!(f, "{}: expected {}, got {}", self.field, self.expected, self.actual)?;
-        match (self.before, &self.expected) {
-            (Some(b), Field::Value(e)) if b == *e => write!(f, " (the step must leave it unchanged)"),
-            (Some(b), _) => write!(f, " (before the step: {b})"),
-            _ => Ok(()),
-        }
-    }
-}
-
-/// The verdict on one vector.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Status {
-    /// Every field matched.
-    Pass,
-    /// Some field differs.
-    Fail,
-    /// The implementation failed on the vector (a refusal with an error, a panic).
-    Error,
-    /// The implementation cannot run the vector.
-    Skip,
-    /// A known failure that fails (expectations file).
-    XFail,
-    /// A known failure that passes, or a listed id the suite lacks: fails the run.
-    Stale,
-}
-
-impl Status {
-    /// Whether this status fails a run.
-    pub fn is_failing(self) -> bool {
-        matches!(self, Status::Fail | Status::Error | Status::Stale)
+impl<'a> Steps<'a> {
+    /// Steps judged against `expected`; a write outside the vector to one of `cpu_writes` (the
+    /// devices the implementation's CPU writes on its own account) is not a stray write.
+    pub(crate) fn judge(vector: &'a Vector, expected: &'a Expected, cpu_writes: &'a [String]) -> Steps<'a> {
+        Steps { vector, mode: Mode::Judge { expected, cpu_writes, problems: Vec::new() }, count: 0 }
     }
 
-    /// The lower-case name (`pass`, `xfail`).
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Status::Pass => "pass",
-            Status::Fail => "fail",
-            Status::Error => "error",
-            Status::Skip => "skip",
-            Status::XFail => "xfail",
-            Status::Stale => "stale",
-        }
+    pub(crate) fn record(vector: &'a Vector) -> Steps<'a> {
+        Steps { vector, mode: Mode::Record { steps: Vec::with_capacity(vector.steps().len()) }, count: 0 }
     }
-}
 
-/// The judgement of one vector.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Verdict {
-    /// The status.
-    pub status: Status,
-    /// The differing fields, for [`Status::Fail`].
-    pub problems: Vec<Problem>,
-    /// Why: a skip or error reason, or the known failure's entry.
-    pub message: String,
-}
-
-/// Run `vector` through `implementation` and judge it against `expected`. A panic of the
-/// implementation is caught and reported as an error on this vector.
-pub fn judge<I: Implementation + ?Sized>(implementation: &mut I, vector: &Vector, expected: &Expected) -> Verdict {
-    let outcome = catch_unwind(AssertUnwindSafe(|| {
-        let mut steps = Steps::judge(vector, expected);
-        let ran = implementation.run(vector, &mut steps);
-        (ran, steps.into_problems())
-    }));
-    match outcome {
-        Ok((Ok(()), problems)) if problems.is_empty() => {
-            Verdict { status: Status::Pass, problems, message: String::new() }
-        }
-        Ok((Ok(()), problems)) => Verdict { status: Status::Fail, problems, message: String::new() },
-        Ok((Err(Refusal::Skip(why)), _)) => Verdict { status: Status::Skip, problems: Vec::new(), message: why },
-        Ok((Err(Refusal::Error(why)), _)) => Verdict {
-            status: Status::Error,
-            problems: Vec::new(),
-            message: format!("the implementation reported an error: {why}"),
-        },
-        Err(panic) => {
-            let what = panic
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| panic.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "(no message)".to_owned());
-            Verdict {
-                status: Status::Error,
-                problems: Vec::new(),
-                message: format!("the implementation panicked: {what}"),
+    /// Report a step from a [`Memory`] of this vector (the fast path).
+    pub fn memory(&mut self, result: Option<bool>, memory: &Memory<'_>) {
+        let step = self.count;
+        self.count += 1;
+        match &mut self.mode {
+            Mode::Judge { expected, cpu_writes, problems } => {
+                let Some(want) = expected.state(step) else { return };
+                check_result(step, expected.results()[step], result, problems);
+                let got = memory.values();
+                if got.len() != want.len() {
+                    problems.push(Problem::new(
+                        Some(step),
+                        "devices",
+                        Field::Text("this vector's memory".into()),
+                        Field::Text("another vector's memory".into()),
+                        None,
+                    ));
+                    return;
+                }
+                if got != want {
+                    let scratch = self.vector.scratch();
+                    for (i, (g, w)) in got.iter().zip(want).enumerate() {
+                        if g != w && !scratch[i] {
+                            let before = expected.before(self.vector, step, i);
+                            problems.push(Problem::new(
+                                Some(step),
+                                self.vector.devices()[i].name(),
+                                Field::Value(*w),
+                                Field::Value(*g),
+                                Some(before),
+                            ));
+                        }
+                    }
+                }
+                for (name, v) in memory.outside() {
+                    if !cpu_writes.contains(name) {
+                        problems.push(Problem::new(Some(step), name, Field::Unlisted, Field::Value(*v), None));
+                    }
+                }
+            }
+            Mode::Record { steps } => {
+                let devices = self
+                    .vector
+                    .devices()
+                    .iter()
+                    .zip(memory.values())
+                    .map(|(a, v)| (a.name().to_owned(), *v))
+                    .chain(memory.outside().iter().cloned())
+                    .collect();
+                steps.push(ReportedStep { result, devices });
             }
         }
     }
+
+    /// Report a step as `(device, value)` pairs: every device the vector lists (scratch may be
+    /// left out), plus any other device the step wrote.
+    pub fn devices<'d>(&mut self, result: Option<bool>, devices: impl IntoIterator<Item = (&'d str, Value)>) {
+        let step = self.count;
+        self.count += 1;
+        match &mut self.mode {
+            Mode::Judge { expected, cpu_writes, problems } => {
+                let Some(want) = expected.state(step) else { return };
+                check_result(step, expected.results()[step], result, problems);
+                let mut got: Small<Option<Value>, INLINE_SLOTS> = Small::filled(None, want.len());
+                let mut twice: Vec<usize> = Vec::new();
+                for (name, v) in devices {
+                    match self.vector.slot(name) {
+                        // A device reported twice is a broken report whichever value is meant:
+                        // never settled by keeping the first or the last.
+                        Some(i) if got[i].is_some() => {
+                            if !twice.contains(&i) {
+                                twice.push(i);
+                                problems.push(Problem::new(
+                                    Some(step),
+                                    name,
+                                    Field::Value(want[i]),
+                                    Field::Text(format!("reported twice ({} and {v})", got[i].unwrap_or(v))),
+                                    None,
+                                ));
+                            }
+                        }
+                        Some(i) => got[i] = Some(v),
+                        None if cpu_writes.iter().any(|c| c == name) => {}
+                        None => problems.push(Problem::new(Some(step), name, Field::Unlisted, Field::Value(v), None)),
+                    }
+                }
+                let scratch = self.vector.scratch();
+                for (i, (g, w)) in got.iter().zip(want).enumerate() {
+                    if scratch[i] || *g == Some(*w) || twice.contains(&i) {
+                        continue;
+                    }
+                    let actual = g.map_or(Field::Missing, Field::Value);
+                    problems.push(Problem::new(
+                        Some(step),
+                        self.vector.devices()[i].name(),
+                        Field::Value(*w),
+                        actual,
+                        Some(expected.before(self.vector, step, i)),
+                    ));
+                }
+                problems.sort_by(|a, b| (a.step, &a.field).cmp(&(b.step, &b.field)));
+            }
+            Mode::Record { steps } => {
+                steps.push(ReportedStep {
+                    result,
+                    devices: devices.into_iter().map(|(n, v)| (n.to_owned(), v)).collect(),
+                });
+            }
+        }
+    }
+
+    /// The judged problems (with a step-count check), once the implementation is done.
+    pub(crate) fn into_problems(self) -> Vec<Problem> {
+        match self.mode {
+            Mode::Judge { expected, mut problems, .. } => {
+                if self.count != expected.steps() {
+                    problems.insert(
+                        0,
+                        Problem::new(
+                            None,
+                            "steps",
+                            Field::Text(format!("{} steps", expected.steps())),
+                            Field::Text(format!("{} steps", self.count)),
+                            None,
+                        ),
+                    );
+                }
+                problems
+            }
+            Mode::Record { .. } => Vec::new(),
+        }
+    }
+
+    pub(crate) fn into_recorded(self) -> Vec<ReportedStep> {
+        match self.mode {
+            Mode::Record { steps } => steps,
+            Mode::Judge { .. } => Vec::new(),
+        }
+    }
 }
 
-/// How many differing fields a report shows per vector.
-pub const SHOW_PROBLEMS: usize = 12;
-
-/// A failing (or otherwise notable) vector as a person reads it:
-///
-/// ```text
-/// FAIL fx5-time-add/TADD/carry/below-wrap/flags-on-before
-///     TADD: 23:00:00 + 00:00:00, flags on before the execution.
-///     judged by: TADD-FLAGS-OFF=written-each-execution
-///     step 0 SM700: expected false, got true (before the step: true)
-///     spec clauses: fx5-time-add#sm700, ...
-/// ```
-pub fn describe(vector: &Vector, expected: Option<&Expected>, verdict: &Verdict) -> String {
-    let mut lines = vec![format!("{} {}", verdict.status.as_str().to_uppercase(), vector.id())];
-    if !vector.description().is_empty() {
-        lines.push(format!("    {}: {}", vector.instruction(), vector.description()));
+fn check_result(step: usize, want: Option<bool>, got: Option<bool>, problems: &mut Vec<Problem>) {
+    if let Some(w) = want {
+        if got != Some(w) {
+            let actual = got.map_or(Field::Missing, |g| Field::Value(Value::Bit(g)));
+            problems.push(Problem::new(Some(step), "result", Field::Value(Value::Bit(w)), actual, None));
+        }
     }
-    if let Some(e) = expected.filter(|e| !e.choices.is_empty()) {
-        let choices: Vec<String> = e.choices.iter().map(|(i, a)| format!("{i}={a}")).collect();
-        lines.push(format!("    judged by: {}", choices.join(", ")));
-    }
-    for p in verdict.problems.iter().take(SHOW_PROBLEMS) {
-        lines.push(format!("    {p}"));
-    }
-    if verdict.problems.len() > SHOW_PROBLEMS {
-        lines.push(format!("    ... and {} more differences", verdict.problems.len() - SHOW_PROBLEMS));
-    }
-    if !verdict.message.is_empty() {
-        lines.push(format!("    {}", verdict.message));
-    }
-    if !vector.clauses().is_empty() {
-        lines.push(format!("    spec clauses: {}", vector.clauses().join(", ")));
-    }
-    lines.join("\n")
 }

@@ -9,9 +9,10 @@ use std::collections::BTreeMap;
 
 use crate::choices::Choices;
 use crate::error::{Error, Result};
+use crate::keys::INLINE_SLOTS;
 use crate::small::Small;
 use crate::value::Value;
-use crate::vector::{Expectation, Vector, INLINE_SLOTS};
+use crate::vector::{Expectation, Vector};
 use crate::Suite;
 
 /// The expectation of one vector under one set of alternatives (what a run reads first, first:
@@ -122,50 +123,6 @@ impl Expected {
             (None, 0) => vector.initial()[slot],
             (None, _) => self.state(step - 1).map_or(vector.initial()[slot], |s| s[slot]),
         }
-    }
-}
-
-/// The expectations of the vectors of one run, worked out once: repeated runs (the benchmark,
-/// one test per vector) do not pay for them again.
-#[derive(Clone, Debug)]
-pub struct Plan<'s> {
-    vectors: Vec<&'s Vector>,
-    expected: Vec<Expected>,
-}
-
-impl<'s> Plan<'s> {
-    /// The expectations of `vectors` (from `suite`) under `choices`, checked against the suite's
-    /// interpretations first: an unknown interpretation or alternative is refused.
-    pub fn new(suite: &'s Suite, vectors: Vec<&'s Vector>, choices: &Choices) -> Result<Plan<'s>> {
-        check_choices(suite, choices)?;
-        let defaults = suite.defaults();
-        let expected = vectors.iter().map(|v| Expected::of(v, choices, &defaults)).collect::<Result<Vec<_>>>()?;
-        Ok(Plan { vectors, expected })
-    }
-
-    /// The vectors, in run order.
-    pub fn vectors(&self) -> &[&'s Vector] {
-        &self.vectors
-    }
-
-    /// Each vector with its expectation.
-    pub fn iter(&self) -> impl Iterator<Item = (&'s Vector, &Expected)> {
-        self.vectors.iter().copied().zip(&self.expected)
-    }
-
-    /// The `index`th vector with its expectation.
-    pub fn get(&self, index: usize) -> Option<(&'s Vector, &Expected)> {
-        Some((*self.vectors.get(index)?, &self.expected[index]))
-    }
-
-    /// How many vectors.
-    pub fn len(&self) -> usize {
-        self.vectors.len()
-    }
-
-    /// Whether the plan holds no vector.
-    pub fn is_empty(&self) -> bool {
-        self.vectors.is_empty()
     }
 }
 

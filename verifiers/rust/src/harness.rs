@@ -1,4 +1,4 @@
-//! One test per vector under `cargo test`, named by its id: a custom test harness on
+//! One test per vector under `cargo test`, named by its id exactly: a custom test harness on
 //! libtest-mimic, so cargo's own filters (`cargo test -- fx5-time-add`, `--exact`, `--skip`),
 //! `--list`, parallelism and output formats apply, and nextest sees every vector.
 //!
@@ -15,25 +15,58 @@
 //! }
 //! ```
 //!
-//! The environment chooses what to run without touching the code: `PLCVEC_VECTORS` (another copy
-//! of the vectors), `PLCVEC_EXPECTATIONS` (the known-failures TOML file), and the selections
-//! `PLCVEC_FAMILY`, `PLCVEC_INSTRUCTION`, `PLCVEC_TAG`, `PLCVEC_INTERPRETATION` (comma-separated
-//! lists), `PLCVEC_ID` (a glob) and `PLCVEC_SHARD` (`K/N`).
+//! The environment chooses what to run without touching the code (every plcvec runner reads
+//! the same variables, with the same errors): `PLCVEC_VECTORS` (another copy of the vectors),
+//! `PLCVEC_ID` (exact ids or globs), `PLCVEC_FAMILY`, `PLCVEC_INSTRUCTION`, `PLCVEC_TAG`,
+//! `PLCVEC_INTERPRETATION` (comma-separated names; an unknown or empty name is a usage error
+//! that lists the known ones), `PLCVEC_SHARD` (`K/N`), `PLCVEC_KNOWN_FAILURES` (the TOML file of
+//! known failures), `PLCVEC_WRITE_EXPECTATIONS` (write this run's failures to that file) and
+//! `PLCVEC_TIMEOUT` (seconds a vector may take, default 10).
+//!
+//! A gate never passes by accident:
+//!
+//! - The vectors run in a child process of the test binary (the binary starts itself once
+//!   more), so an implementation that ends the process half way (`exit(0)`, an abort) fails
+//!   the run, naming the vector it was running. `main` therefore runs twice: keep it to the call
+//!   of [`run`]. [`Harness::in_process`] gives that guard up.
+//! - A vector that takes longer than `PLCVEC_TIMEOUT` ends the run, naming the vector.
+//! - A run that judges nothing (every vector skipped, an implementation that supports none of
+//!   the selected instructions, cargo's own filter matching no vector) fails.
+//!
+//! Exit status: 0 passed; 101 (cargo's) some vector failed, or the run ended early; 2 a usage
+//! error (the environment, a vector or known-failures file); 5 nothing was judged.
 
+use std::collections::BTreeMap;
+use std::fs::{File, OpenOptions};
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
+use std::time::{Duration, Instant};
 
-pub use libtest_mimic::{Arguments, Conclusion};
+pub use libtest_mimic::{Arguments, Conclusion, FormatSetting};
 use libtest_mimic::{Completion, Failed, Trial};
 
-use crate::compare::{describe, judge, Status};
 use crate::error::{Error, Result};
-use crate::expect::Plan;
 use crate::implementation::Implementation;
-use crate::known::KnownFailures;
-use crate::select::Selection;
+use crate::known::{write_expectations, KnownFailures};
+use crate::runner::{judge, Plan};
+use crate::select::{known_names, Kind, Selection};
+use crate::verdict::{describe, Status};
 use crate::Suite;
+
+/// Exit status of a usage error: a bad environment, vector file or known-failures file.
+pub const EXIT_USAGE: u8 = 2;
+/// Exit status of a run that judged nothing.
+pub const EXIT_EMPTY: u8 = 5;
+/// Exit status of a failing run (cargo's test status).
+pub const EXIT_FAILED: u8 = 101;
+/// The seconds a vector may take unless `PLCVEC_TIMEOUT` says otherwise.
+pub const DEFAULT_TIMEOUT_S: f64 = 10.0;
+
+/// Set by the supervising process for the child that runs the vectors: the file in which the
+/// child records each vector as it starts and ends (internal; not for users).
+const PROGRESS_ENV: &str = "PLCVEC_HARNESS_PROGRESS";
 
 /// Run every selected vector as its own test with implementations `factory` builds (one per
 /// vector, so nothing carries over), and return the process's exit code.
@@ -50,48 +83,115 @@ pub struct Harness<F> {
     factory: F,
     suite: Option<Suite>,
     selection: Option<Selection>,
-    expectations: Option<PathBuf>,
+    known_failures: Option<PathBuf>,
+    write_expectations: Option<PathBuf>,
+    timeout: Option<Duration>,
     args: Option<Arguments>,
+    isolated: bool,
 }
 
-struct Shared<F> {
-    factory: F,
-    plan: Plan<'static>,
-    known: Option<KnownFailures>,
+/// Why a run stops before judging anything.
+enum Stop {
+    /// A usage error (exit 2).
+    Usage(Error),
+    /// Nothing to judge (exit 5).
+    Empty(String),
 }
 
-fn env_list(name: &str) -> Vec<String> {
-    std::env::var(name)
-        .map(|v| v.split(',').map(str::trim).filter(|s| !s.is_empty()).map(str::to_owned).collect())
-        .unwrap_or_default()
+impl From<Error> for Stop {
+    fn from(e: Error) -> Stop {
+        Stop::Usage(e)
+    }
 }
 
-/// The selection the `PLCVEC_*` environment variables give.
-pub fn selection_from_env() -> Result<Selection> {
+impl Stop {
+    fn into_error(self) -> Error {
+        match self {
+            Stop::Usage(e) => e,
+            Stop::Empty(why) => Error::new(why),
+        }
+    }
+}
+
+/// One environment variable's comma-separated names; `None` when unset or empty. An empty item
+/// (`PLCVEC_FAMILY=,`) is kept, to be refused with the known names.
+fn env_items(name: &str) -> Option<Vec<String>> {
+    let value = std::env::var(name).ok().filter(|v| !v.is_empty())?;
+    Some(value.split(',').map(|s| s.trim().to_owned()).collect())
+}
+
+fn env_path(name: &str) -> Option<PathBuf> {
+    std::env::var_os(name).filter(|p| !p.is_empty()).map(PathBuf::from)
+}
+
+/// The selection the `PLCVEC_*` environment variables give, checked against `suite`: an unknown
+/// or empty name, a `PLCVEC_ID` item that matches no id, or a malformed `PLCVEC_SHARD` is an
+/// error naming the variable (and listing the known names).
+pub fn selection_from_env(suite: &Suite) -> Result<Selection> {
     let mut s = Selection::all();
-    for f in env_list("PLCVEC_FAMILY") {
-        s = s.family(f);
-    }
-    for i in env_list("PLCVEC_INSTRUCTION") {
-        s = s.instruction(i);
-    }
-    for t in env_list("PLCVEC_TAG") {
-        s = s.tag(t);
-    }
-    for i in env_list("PLCVEC_INTERPRETATION") {
-        s = s.interpretation(i);
-    }
-    if let Ok(glob) = std::env::var("PLCVEC_ID") {
-        if !glob.is_empty() {
-            s = s.id_glob(&glob)?;
+    for (var, kind) in [
+        ("PLCVEC_FAMILY", Kind::Family),
+        ("PLCVEC_INSTRUCTION", Kind::Instruction),
+        ("PLCVEC_TAG", Kind::Tag),
+        ("PLCVEC_INTERPRETATION", Kind::Interpretation),
+    ] {
+        let Some(items) = env_items(var) else { continue };
+        let known = known_names(suite, kind);
+        for name in items {
+            if !known.contains(&name) {
+                let what = if name.is_empty() {
+                    format!("{var}={}: an empty {} name", std::env::var(var).unwrap_or_default(), kind.as_str())
+                } else {
+                    format!("{var}={name}: {} has no such {}", suite.source(), kind.as_str())
+                };
+                return Err(Error::new(format!("{what}; known: {}", known.join(", "))));
+            }
+            s = match kind {
+                Kind::Family => s.family(name),
+                Kind::Instruction => s.instruction(name),
+                Kind::Tag => s.tag(name),
+                Kind::Interpretation => s.interpretation(name),
+            };
         }
     }
-    if let Ok(shard) = std::env::var("PLCVEC_SHARD") {
-        if !shard.is_empty() {
-            s = s.shard_text(&shard).map_err(|e| Error::new(format!("PLCVEC_SHARD: {e}")))?;
+    if let Some(items) = env_items("PLCVEC_ID") {
+        let example = suite.vectors().first().map_or("", |v| v.id());
+        for item in items {
+            if item.is_empty() {
+                return Err(Error::new(format!(
+                    "PLCVEC_ID={}: an empty id (ids look like {example})",
+                    std::env::var("PLCVEC_ID").unwrap_or_default()
+                )));
+            }
+            // An exact id is taken as it is, whatever characters it holds.
+            let pattern = if suite.get(&item).is_some() { glob::Pattern::escape(&item) } else { item.clone() };
+            let one = Selection::all().id_glob(&pattern).map_err(|e| Error::new(format!("PLCVEC_ID={item}: {e}")))?;
+            if !suite.vectors().iter().any(|v| one.matches(v)) {
+                return Err(Error::new(format!(
+                    "PLCVEC_ID={item}: matches no vector id in {} (ids look like {example}; a glob matches the whole id)",
+                    suite.source()
+                )));
+            }
+            s = s.id_glob(&pattern)?;
         }
+    }
+    if let Some(shard) = std::env::var("PLCVEC_SHARD").ok().filter(|v| !v.is_empty()) {
+        s = s.shard_text(&shard).map_err(|e| Error::new(format!("PLCVEC_SHARD={shard}: {e}")))?;
     }
     Ok(s)
+}
+
+/// `PLCVEC_TIMEOUT`: seconds, a positive number; default 10.
+pub fn timeout_from_env() -> Result<Duration> {
+    let Some(text) = std::env::var("PLCVEC_TIMEOUT").ok().filter(|v| !v.trim().is_empty()) else {
+        return Ok(Duration::from_secs_f64(DEFAULT_TIMEOUT_S));
+    };
+    match text.trim().parse::<f64>() {
+        Ok(s) if s.is_finite() && s > 0.0 && s < 1e9 => Ok(Duration::from_secs_f64(s)),
+        _ => Err(Error::new(format!(
+            "PLCVEC_TIMEOUT={text}: the seconds a vector may take must be a positive number (default {DEFAULT_TIMEOUT_S})"
+        ))),
+    }
 }
 
 impl<I, F> Harness<F>
@@ -101,7 +201,16 @@ where
 {
     /// A harness for the implementations `factory` builds.
     pub fn new(factory: F) -> Harness<F> {
-        Harness { factory, suite: None, selection: None, expectations: None, args: None }
+        Harness {
+            factory,
+            suite: None,
+            selection: None,
+            known_failures: None,
+            write_expectations: None,
+            timeout: None,
+            args: None,
+            isolated: true,
+        }
     }
 
     /// Judge against this suite instead of `PLCVEC_VECTORS` or the embedded one.
@@ -116,9 +225,22 @@ where
         self
     }
 
-    /// Read known failures from this file (instead of `PLCVEC_EXPECTATIONS`).
-    pub fn expectations(mut self, path: impl Into<PathBuf>) -> Self {
-        self.expectations = Some(path.into());
+    /// Read known failures from this file (instead of `PLCVEC_KNOWN_FAILURES`).
+    pub fn known_failures(mut self, path: impl Into<PathBuf>) -> Self {
+        self.known_failures = Some(path.into());
+        self
+    }
+
+    /// Write the run's failures to this file as known failures (instead of
+    /// `PLCVEC_WRITE_EXPECTATIONS`), for adopting the suite.
+    pub fn write_expectations(mut self, path: impl Into<PathBuf>) -> Self {
+        self.write_expectations = Some(path.into());
+        self
+    }
+
+    /// The time a vector may take (instead of `PLCVEC_TIMEOUT`).
+    pub fn timeout(mut self, timeout: Duration) -> Self {
+        self.timeout = Some(timeout);
         self
     }
 
@@ -128,8 +250,21 @@ where
         self
     }
 
-    /// The tests, one per selected vector (plus one per stale expectations entry).
+    /// Run the vectors in this process, not in a child: an implementation that ends the process
+    /// then ends the run with whatever status it gives (`exit(0)` reads as a pass). For a test
+    /// binary that cannot be started twice.
+    pub fn in_process(mut self) -> Self {
+        self.isolated = false;
+        self
+    }
+
+    /// The tests, one per selected vector (plus one per known failure the suite has no vector
+    /// for, named by the listed id).
     pub fn trials(self) -> Result<Vec<Trial>> {
+        Ok(self.prepare(None).map_err(Stop::into_error)?.0)
+    }
+
+    fn prepare(self, progress: Option<File>) -> std::result::Result<(Vec<Trial>, Arc<Shared<F>>), Stop> {
         let suite = match self.suite {
             Some(s) => s,
             None => Suite::from_env()?,
@@ -138,18 +273,35 @@ where
         let suite: &'static Suite = Box::leak(Box::new(suite));
         let selection = match self.selection {
             Some(s) => s,
-            None => selection_from_env()?,
+            None => selection_from_env(suite)?,
         };
-        let expectations = self
-            .expectations
-            .or_else(|| std::env::var_os("PLCVEC_EXPECTATIONS").filter(|p| !p.is_empty()).map(PathBuf::from));
-        let known = expectations.map(KnownFailures::load).transpose()?;
-        let vectors = selection.select(suite)?;
+        let timeout = match self.timeout {
+            Some(t) => t,
+            None => timeout_from_env()?,
+        };
+        let known_path = self.known_failures.or_else(|| env_path("PLCVEC_KNOWN_FAILURES"));
+        let known = known_path.map(KnownFailures::load).transpose()?;
+        let write = self.write_expectations.or_else(|| env_path("PLCVEC_WRITE_EXPECTATIONS"));
+        let unknown = selection.unknown_names(suite);
+        if !unknown.is_empty() {
+            return Err(Stop::Usage(Error::new(format!(
+                "the selection names what the suite does not have: {}",
+                unknown.join("; ")
+            ))));
+        }
+        let vectors = selection.apply(suite.vectors());
+        if vectors.is_empty() {
+            return Err(Stop::Empty(format!(
+                "the selection keeps none of the {} vectors of {}: nothing would be judged",
+                suite.vectors().len(),
+                suite.source()
+            )));
+        }
         let probe = (self.factory)();
         let plan = Plan::new(suite, vectors, &probe.interpretations())?;
         let supported: Vec<bool> = plan.vectors().iter().map(|v| probe.supports(v.instruction())).collect();
         if !supported.contains(&true) {
-            return Err(Error::new(format!(
+            return Err(Stop::Empty(format!(
                 "{} supports none of the selected instructions: nothing would be judged",
                 probe.name()
             )));
@@ -158,44 +310,108 @@ where
         let mut trials = Vec::new();
         if let Some(k) = &known {
             for e in k.unknown_ids(|id| suite.get(id).is_some()) {
-                let message = k.unknown_message(e);
-                trials.push(Trial::test(format!("plcvec-expectations/{}", e.id), move || Err(Failed::from(message))));
+                let message = format!("STALE {}\n    {}", e.id, k.unknown_message(e));
+                trials.push(Trial::test(e.id.clone(), move || Err(Failed::from(message))));
             }
         }
-        let shared = Arc::new(Shared { factory: self.factory, plan, known });
+        let shared = Arc::new(Shared {
+            factory: self.factory,
+            plan,
+            known,
+            write,
+            watch: Watch { running: Mutex::new(Vec::new()), timeout, progress },
+            failing: Mutex::new(Vec::new()),
+            skips: Mutex::new(BTreeMap::new()),
+        });
         for (index, v) in shared.plan.vectors().iter().enumerate() {
             let trial = if supported[index] {
                 let shared = Arc::clone(&shared);
                 Trial::ignorable_test(v.id(), move || shared.judge_one(index))
             } else {
+                let why = format!("the implementation does not support {}", v.instruction());
+                *shared.skips.lock().unwrap_or_else(|e| e.into_inner()).entry(why).or_default() += 1;
                 Trial::test(v.id(), || Ok(())).with_ignored_flag(true)
             };
             trials.push(trial);
         }
-        Ok(trials)
+        Ok((trials, shared))
     }
 
-    /// Parse the arguments, run the tests, and give the exit code (101 on a failure, 2 when the
-    /// vectors, the selection or the expectations file cannot be used).
+    /// Parse the arguments, run the tests (in a child process, unless [`Harness::in_process`]),
+    /// and give the exit code: 0, 101 on a failure or a run that ended early, 2 on a usage
+    /// error, 5 when nothing was judged.
     pub fn run(self) -> ExitCode {
-        let listing = self.args.as_ref().map_or_else(|| Arguments::from_args().list, |a| a.list);
-        match self.conclude() {
-            Ok(conclusion) if !listing && judged_nothing(&conclusion) => {
-                eprintln!("plcvec: nothing was judged: every test that ran was skipped or ignored");
-                ExitCode::from(101)
+        let mut args = self.args.clone().unwrap_or_else(Arguments::from_args);
+        // libtest-mimic pads each name to the longest in its "test NAME ... ok" lines, and a
+        // name copied with its padding is no vector id: the terse format (a character per test,
+        // the failures listed by their exact ids) unless a format is asked for.
+        if args.format.is_none() && !args.quiet {
+            args.format = Some(FormatSetting::Terse);
+        }
+        let progress_path = env_path(PROGRESS_ENV);
+        if self.isolated && progress_path.is_none() && !args.list {
+            return supervise();
+        }
+        let progress = match progress_path.as_deref().map(|p| OpenOptions::new().append(true).open(p)) {
+            Some(Ok(f)) => Some(f),
+            Some(Err(e)) => {
+                eprintln!("plcvec: cannot write the harness's progress file: {e}");
+                return ExitCode::from(EXIT_USAGE);
             }
-            Ok(conclusion) => conclusion.exit_code(),
-            Err(e) => {
+            None => None,
+        };
+        let marker = progress.as_ref().and_then(|f| f.try_clone().ok());
+        let code = self.run_here(args, progress);
+        // The supervisor reads this line as "the run came to its end", not ended half way.
+        if let Some(mut f) = marker {
+            let _ = f.write_all(b"=done\n");
+        }
+        ExitCode::from(code)
+    }
+
+    fn run_here(self, args: Arguments, progress: Option<File>) -> u8 {
+        let (trials, shared) = match self.prepare(progress) {
+            Ok(prepared) => prepared,
+            Err(Stop::Usage(e)) => {
                 eprintln!("plcvec: {e}");
-                ExitCode::from(2)
+                return EXIT_USAGE;
+            }
+            Err(Stop::Empty(why)) => {
+                eprintln!("plcvec: {why}");
+                return EXIT_EMPTY;
+            }
+        };
+        if !args.list {
+            Watch::start(Arc::clone(&shared));
+        }
+        let conclusion = libtest_mimic::run(&args, trials);
+        if args.list {
+            return 0;
+        }
+        let mut code = if conclusion.has_failed() { EXIT_FAILED } else { 0 };
+        if code == 0 && conclusion.num_passed == 0 {
+            eprintln!("plcvec: {}", shared.nothing_judged(&args, &conclusion));
+            code = EXIT_EMPTY;
+        }
+        if let Some(path) = &shared.write {
+            let failing = shared.failing.lock().unwrap_or_else(|e| e.into_inner());
+            match write_expectations(path, failing.iter().map(String::as_str), "not yet triaged") {
+                Ok(n) => eprintln!("plcvec: {n} known failures written to {}", path.display()),
+                Err(e) => {
+                    eprintln!("plcvec: {e}");
+                    code = code.max(EXIT_USAGE);
+                }
             }
         }
+        code
     }
 
-    /// Run the tests and give libtest-mimic's conclusion (for a caller that decides itself).
+    /// Run the tests in this process and give libtest-mimic's conclusion (for a caller that
+    /// decides itself; no child process, no check that something was judged).
     pub fn conclude(self) -> Result<Conclusion> {
         let args = self.args.clone().unwrap_or_else(Arguments::from_args);
-        let trials = self.trials()?;
+        let (trials, shared) = self.prepare(None).map_err(Stop::into_error)?;
+        Watch::start(Arc::clone(&shared));
         Ok(libtest_mimic::run(&args, trials))
     }
 }
@@ -205,6 +421,18 @@ pub fn judged_nothing(conclusion: &Conclusion) -> bool {
     conclusion.num_passed == 0 && conclusion.num_failed == 0 && conclusion.num_ignored > 0
 }
 
+struct Shared<F> {
+    factory: F,
+    plan: Plan<'static>,
+    known: Option<KnownFailures>,
+    write: Option<PathBuf>,
+    watch: Watch,
+    /// Ids for the expectations file: failures and known failures that still fail.
+    failing: Mutex<Vec<String>>,
+    /// Skip reason -> how many.
+    skips: Mutex<BTreeMap<String, usize>>,
+}
+
 impl<I, F> Shared<F>
 where
     I: Implementation,
@@ -212,15 +440,193 @@ where
 {
     fn judge_one(&self, index: usize) -> std::result::Result<Completion, Failed> {
         let (vector, expected) = self.plan.get(index).expect("index within the plan");
+        self.watch.begin(index, vector.id());
         let mut implementation = (self.factory)();
         let mut verdict = judge(&mut implementation, vector, expected);
+        self.watch.end(index, vector.id());
+        if matches!(verdict.status, Status::Fail | Status::Error) {
+            self.failing.lock().unwrap_or_else(|e| e.into_inner()).push(vector.id().to_owned());
+        }
         if let Some(k) = &self.known {
             verdict = k.apply(vector.id(), verdict);
+            if verdict.status == Status::XFail {
+                self.failing.lock().unwrap_or_else(|e| e.into_inner()).push(vector.id().to_owned());
+            }
         }
         match verdict.status {
             Status::Pass => Ok(Completion::Completed),
-            Status::Skip | Status::XFail => Ok(Completion::ignored_with(verdict.message)),
+            Status::Skip => {
+                *self.skips.lock().unwrap_or_else(|e| e.into_inner()).entry(verdict.message.clone()).or_default() += 1;
+                Ok(Completion::ignored_with(verdict.message))
+            }
+            Status::XFail => Ok(Completion::ignored_with(verdict.message)),
             _ => Err(Failed::from(describe(vector, Some(expected), &verdict))),
         }
     }
+}
+
+impl<F> Shared<F> {
+    /// Why a run with no failure and no pass judged nothing, and what to do.
+    fn nothing_judged(&self, args: &Arguments, conclusion: &Conclusion) -> String {
+        let filtered = conclusion.num_filtered_out > 0;
+        if filtered && (args.filter.is_some() || !args.skip.is_empty() || args.ignored) {
+            let filter = args.filter.as_deref().unwrap_or("");
+            return format!(
+                "the test filter {filter:?} (or --skip/--ignored) left no vector to judge: nothing was judged. \
+                 Select vectors with PLCVEC_ID (exact ids or globs, comma-separated: PLCVEC_ID='fx5-time-add/TADD/*'), \
+                 PLCVEC_FAMILY or PLCVEC_INSTRUCTION, and run `cargo test --test <this test>` so that other \
+                 tests' filters do not reach it"
+            );
+        }
+        let skips = self.skips.lock().unwrap_or_else(|e| e.into_inner());
+        let mut text = String::from("nothing was judged: every selected vector was skipped");
+        for (why, n) in skips.iter() {
+            text.push_str(&format!("\n    {n} skipped: {why}"));
+        }
+        text
+    }
+}
+
+/// The per-vector bound and the record of what is running: a thread ends the run when a
+/// vector takes longer than the timeout, naming it; the supervising process reads the record
+/// when the process ends early.
+struct Watch {
+    /// (index in the plan, when it started) of each vector being judged.
+    running: Mutex<Vec<(usize, Instant)>>,
+    timeout: Duration,
+    progress: Option<File>,
+}
+
+impl Watch {
+    fn begin(&self, index: usize, id: &str) {
+        if let Some(mut f) = self.progress.as_ref() {
+            // One write each, so that lines from test threads do not interleave.
+            let _ = f.write_all(format!("+{id}\n").as_bytes());
+        }
+        self.running.lock().unwrap_or_else(|e| e.into_inner()).push((index, Instant::now()));
+    }
+
+    fn end(&self, index: usize, id: &str) {
+        self.running.lock().unwrap_or_else(|e| e.into_inner()).retain(|&(i, _)| i != index);
+        if let Some(mut f) = self.progress.as_ref() {
+            let _ = f.write_all(format!("-{id}\n").as_bytes());
+        }
+    }
+
+    /// The watchdog thread: it never holds the process (a thread does not keep it running).
+    fn start<F: Send + Sync + 'static>(shared: Arc<Shared<F>>) {
+        let tick = (shared.watch.timeout / 10).clamp(Duration::from_millis(5), Duration::from_millis(250));
+        let spawned = std::thread::Builder::new().name("plcvec-watchdog".into()).spawn(move || loop {
+            std::thread::sleep(tick);
+            let late = {
+                let running = shared.watch.running.lock().unwrap_or_else(|e| e.into_inner());
+                running.iter().find(|(_, at)| at.elapsed() > shared.watch.timeout).map(|&(i, _)| i)
+            };
+            if let Some(index) = late {
+                let id = shared.plan.vectors()[index].id();
+                let seconds = shared.watch.timeout.as_secs_f64();
+                let _ = std::io::stdout().flush();
+                println!(
+                    "\n\nFAIL {id}\n    the implementation did not return within {seconds} s (PLCVEC_TIMEOUT); \
+                     the run ends here, the vectors not yet judged are not run\n"
+                );
+                eprintln!("plcvec: {id}: no answer within {seconds} s (PLCVEC_TIMEOUT): the run ends");
+                if let Some(mut f) = shared.watch.progress.as_ref() {
+                    let _ = f.write_all(format!("!{id}\n=done\n").as_bytes());
+                }
+                std::process::exit(i32::from(EXIT_FAILED));
+            }
+        });
+        if let Err(e) = spawned {
+            eprintln!("plcvec: cannot start the watchdog thread ({e}); vectors run without a time bound");
+        }
+    }
+}
+
+/// Run this test binary once more as a child that runs the vectors, and judge how it ended:
+/// a child that exits (with any status, 0 included) or dies before the run came to its end
+/// fails the run, naming the vector(s) it was running.
+fn supervise() -> ExitCode {
+    let progress = std::env::temp_dir().join(format!(
+        "plcvec-progress-{}-{}",
+        std::process::id(),
+        std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH).map_or(0, |d| d.as_nanos())
+    ));
+    if let Err(e) = File::create(&progress) {
+        eprintln!("plcvec: cannot create {}: {e}", progress.display());
+        return ExitCode::from(EXIT_USAGE);
+    }
+    let status = std::env::current_exe().and_then(|exe| {
+        std::process::Command::new(exe).args(std::env::args_os().skip(1)).env(PROGRESS_ENV, &progress).status()
+    });
+    let record = std::fs::read_to_string(&progress).unwrap_or_default();
+    let _ = std::fs::remove_file(&progress);
+    let status = match status {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("plcvec: cannot start the test binary again to run the vectors: {e}");
+            return ExitCode::from(EXIT_USAGE);
+        }
+    };
+    let (running, finished, done) = read_progress(&record);
+    if done {
+        return ExitCode::from(status.code().map_or(EXIT_FAILED, |c| u8::try_from(c).unwrap_or(EXIT_FAILED)));
+    }
+    let how = describe_status(&status);
+    let _ = std::io::stdout().flush();
+    if running.is_empty() {
+        println!(
+            "\n\nFAIL the run\n    the test process ended ({how}) before the run came to its end, after {finished} vectors \
+             and while none was being judged; a run that ends early is never a pass"
+        );
+    }
+    for id in &running {
+        println!(
+            "\n\nFAIL {id}\n    the test process ended ({how}) while the implementation ran this vector; \
+             a run that ends early is never a pass"
+        );
+    }
+    eprintln!("plcvec: the test process ended early ({how}) after {finished} vectors");
+    ExitCode::from(EXIT_FAILED)
+}
+
+/// (the vectors started and not ended, how many ended, whether the run came to its end).
+fn read_progress(record: &str) -> (Vec<&str>, usize, bool) {
+    let mut running: Vec<&str> = Vec::new();
+    let mut finished = 0;
+    let mut done = false;
+    for line in record.lines() {
+        if let Some(id) = line.strip_prefix('+') {
+            running.push(id);
+        } else if let Some(id) = line.strip_prefix('-') {
+            if let Some(at) = running.iter().position(|r| *r == id) {
+                running.remove(at);
+                finished += 1;
+            }
+        } else if line == "=done" {
+            done = true;
+        }
+    }
+    (running, finished, done)
+}
+
+fn describe_status(status: &std::process::ExitStatus) -> String {
+    if let Some(code) = status.code() {
+        return format!("exit status {code}");
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt;
+        if let Some(signal) = status.signal() {
+            let name = match signal {
+                6 => " (SIGABRT)",
+                9 => " (SIGKILL)",
+                11 => " (SIGSEGV)",
+                15 => " (SIGTERM)",
+                _ => "",
+            };
+            return format!("killed by signal {signal}{name}");
+        }
+    }
+    status.to_string()
 }

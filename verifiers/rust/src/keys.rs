@@ -3,7 +3,10 @@
 //! rather than a search of the slots.
 
 use crate::small::Small;
-use crate::vector::INLINE_SLOTS;
+
+/// How many devices a vector's tables hold inline (the golden set's vectors list 6 to 14); a
+/// vector with more keeps them on the heap.
+pub(crate) const INLINE_SLOTS: usize = 16;
 
 /// Places in the table: at least twice the slots it indexes, so a probe mostly hits at once and
 /// there is always an empty place to end a search.

@@ -13,8 +13,8 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use crate::compare::{Status, Verdict};
 use crate::error::{Error, Result};
+use crate::verdict::{Status, Verdict};
 
 const SECTION: &str = "known-failure";
 
@@ -88,6 +88,11 @@ impl KnownFailures {
                 Some(id) if !id.is_empty() => id.to_owned(),
                 _ => return Err(Error::new(format!("{path}:{line}: entry without an `id`"))),
             };
+            if id.trim() != id {
+                return Err(Error::new(format!(
+                    "{path}:{line}: id {id:?} starts or ends with a space; an id holds none (copied with a padded test name?)"
+                )));
+            }
             let reason = match table.get("reason").and_then(toml::Value::as_str) {
                 Some(r) if !r.trim().is_empty() => r.trim().to_owned(),
                 _ => return Err(Error::new(format!("{path}:{line}: {id}: every known failure needs a `reason`"))),
@@ -158,6 +163,32 @@ impl KnownFailures {
             self.path, entry.line
         )
     }
+}
+
+/// Write `ids` (the failing vectors of a run) as a new known-failures file with one `reason`
+/// each, for adopting the suite; the file is replaced whole or not at all. Returns how many.
+pub fn write_expectations<'a>(path: &Path, ids: impl IntoIterator<Item = &'a str>, reason: &str) -> Result<usize> {
+    let mut ids: Vec<&str> = ids.into_iter().collect();
+    ids.sort_unstable();
+    ids.dedup();
+    let mut text = String::from("# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n");
+    for id in &ids {
+        text.push_str(&format!("[[{SECTION}]]\nid = {}\nreason = {}\n\n", toml_str(id), toml_str(reason)));
+    }
+    text.pop();
+    let name = path.file_name().map_or_else(|| "known-failures".into(), |n| n.to_string_lossy().into_owned());
+    let partial = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
+    let written = std::fs::write(&partial, text).and_then(|()| std::fs::rename(&partial, path));
+    if let Err(e) = written {
+        let _ = std::fs::remove_file(&partial);
+        return Err(Error::new(format!("{}: cannot write the known failures: {e}", path.display())));
+    }
+    Ok(ids.len())
+}
+
+/// A TOML basic string.
+fn toml_str(s: &str) -> String {
+    format!("\"{}\"", s.replace('\\', "\\\\").replace('"', "\\\""))
 }
 
 #[cfg(test)]

@@ -5,9 +5,10 @@
 //! reporting and the comparison to [`OnMemory`](crate::OnMemory). A write to a device the vector
 //! does not list is kept apart, so the runner can report it (the contract forbids it).
 
+use crate::keys::INLINE_SLOTS;
 use crate::small::Small;
 use crate::value::{Address, Value};
-use crate::vector::{Step, Vector, INLINE_SLOTS, NO_SLOT};
+use crate::vector::{Step, Vector, NO_SLOT};
 
 /// The devices of one vector, slot-aligned with [`Vector::devices`], plus any device written
 /// outside the vector. The image of a vector of the usual size lives inline (building one

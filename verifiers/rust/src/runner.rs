@@ -2,16 +2,108 @@
 //! reads at the end: each failing vector with its field diff, then the totals, with the suite
 //! version, the spec hash, and the alternative followed for every interpretation.
 
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
 use crate::choices::Choices;
-use crate::compare::{describe, judge, Status, Verdict};
+use crate::compare::Steps;
 use crate::error::Result;
-use crate::expect::{check_choices, Plan};
+use crate::expect::{check_choices, Expected};
 use crate::generated::names::Instruction;
-use crate::implementation::Implementation;
+use crate::implementation::{Implementation, Refusal};
 use crate::known::KnownFailures;
 use crate::select::Selection;
 use crate::vector::Vector;
+use crate::verdict::{describe, Status, Verdict};
 use crate::Suite;
+
+/// The expectations of the vectors of one run, worked out once: repeated runs (the benchmark,
+/// one test per vector) do not pay for them again.
+#[derive(Clone, Debug)]
+pub struct Plan<'s> {
+    vectors: Vec<&'s Vector>,
+    expected: Vec<Expected>,
+}
+
+impl<'s> Plan<'s> {
+    /// The expectations of `vectors` (from `suite`) under `choices`, checked against the suite's
+    /// interpretations first: an unknown interpretation or alternative is refused.
+    pub fn new(suite: &'s Suite, vectors: Vec<&'s Vector>, choices: &Choices) -> Result<Plan<'s>> {
+        check_choices(suite, choices)?;
+        let defaults = suite.defaults();
+        let expected = vectors.iter().map(|v| Expected::of(v, choices, &defaults)).collect::<Result<Vec<_>>>()?;
+        Ok(Plan { vectors, expected })
+    }
+
+    /// The vectors, in run order.
+    pub fn vectors(&self) -> &[&'s Vector] {
+        &self.vectors
+    }
+
+    /// Each vector with its expectation.
+    pub fn iter(&self) -> impl Iterator<Item = (&'s Vector, &Expected)> {
+        self.vectors.iter().copied().zip(&self.expected)
+    }
+
+    /// The `index`th vector with its expectation.
+    pub fn get(&self, index: usize) -> Option<(&'s Vector, &Expected)> {
+        Some((*self.vectors.get(index)?, &self.expected[index]))
+    }
+
+    /// How many vectors.
+    pub fn len(&self) -> usize {
+        self.vectors.len()
+    }
+
+    /// Whether the plan holds no vector.
+    pub fn is_empty(&self) -> bool {
+        self.vectors.is_empty()
+    }
+}
+
+/// Run `vector` through `implementation` and judge it against `expected`. A panic of the
+/// implementation is caught and reported as an error on this vector.
+pub fn judge<I: Implementation + ?Sized>(implementation: &mut I, vector: &Vector, expected: &Expected) -> Verdict {
+    let cpu_writes = implementation.cpu_writes();
+    judge_declared(implementation, vector, expected, &cpu_writes)
+}
+
+/// [`judge`] with the implementation's `cpu_writes` asked once for many vectors.
+fn judge_declared<I: Implementation + ?Sized>(
+    implementation: &mut I,
+    vector: &Vector,
+    expected: &Expected,
+    cpu_writes: &[String],
+) -> Verdict {
+    let outcome = catch_unwind(AssertUnwindSafe(|| {
+        let mut steps = Steps::judge(vector, expected, cpu_writes);
+        let ran = implementation.run(vector, &mut steps);
+        (ran, steps.into_problems())
+    }));
+    match outcome {
+        Ok((Ok(()), problems)) if problems.is_empty() => {
+            Verdict { status: Status::Pass, problems, message: String::new() }
+        }
+        Ok((Ok(()), problems)) => Verdict { status: Status::Fail, problems, message: String::new() },
+        Ok((Err(Refusal::Skip(why)), _)) => Verdict { status: Status::Skip, problems: Vec::new(), message: why },
+        Ok((Err(Refusal::Error(why)), _)) => Verdict {
+            status: Status::Error,
+            problems: Vec::new(),
+            message: format!("the implementation reported an error: {why}"),
+        },
+        Err(panic) => {
+            let what = panic
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| panic.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "(no message)".to_owned());
+            Verdict {
+                status: Status::Error,
+                problems: Vec::new(),
+                message: format!("the implementation panicked: {what}"),
+            }
+        }
+    }
+}
 
 /// The alternative followed for one interpretation.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -87,6 +179,7 @@ pub fn judge_plan<I: Implementation + ?Sized>(plan: &Plan<'_>, implementation: &
     // Ask once per instruction the build knows (an unknown one is asked every time), by the
     // enum's index: no hashing per vector.
     let mut asked: Vec<Option<bool>> = vec![None; Instruction::ALL.len()];
+    let cpu_writes = implementation.cpu_writes();
     plan.iter()
         .map(|(v, expected)| {
             let supported = match v.known_instruction().and_then(|i| asked.get_mut(i as usize)) {
@@ -94,7 +187,7 @@ pub fn judge_plan<I: Implementation + ?Sized>(plan: &Plan<'_>, implementation: &
                 None => implementation.supports(v.instruction()),
             };
             if supported {
-                judge(implementation, v, expected)
+                judge_declared(implementation, v, expected, &cpu_writes)
             } else {
                 Verdict {
                     status: Status::Skip,

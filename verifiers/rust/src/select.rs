@@ -114,31 +114,66 @@ impl Selection {
     }
 
     /// Names in the selection that the suite does not have (a misspelt family selects nothing,
-    /// which must not read as a passing run).
+    /// which must not read as a passing run), each with the names the suite has.
     pub fn unknown_names(&self, suite: &crate::Suite) -> Vec<String> {
         let mut out = Vec::new();
-        for f in &self.families {
-            if suite.family(f).is_none() {
-                out.push(format!("family {f:?}"));
-            }
-        }
-        for i in &self.instructions {
-            if !suite.families().iter().any(|f| f.instructions.contains(i)) {
-                out.push(format!("instruction {i:?}"));
-            }
-        }
-        for t in &self.tags {
-            if !suite.families().iter().any(|f| f.tags.contains_key(t)) {
-                out.push(format!("tag {t:?}"));
-            }
-        }
-        for i in &self.interpretations {
-            if !suite.families().iter().any(|f| f.interpretations.iter().any(|x| &x.id == i)) {
-                out.push(format!("interpretation {i:?}"));
+        for (kind, given) in [
+            (Kind::Family, &self.families),
+            (Kind::Instruction, &self.instructions),
+            (Kind::Tag, &self.tags),
+            (Kind::Interpretation, &self.interpretations),
+        ] {
+            let known = known_names(suite, kind);
+            for name in given.iter().filter(|n| !known.contains(n)) {
+                out.push(format!("{} {name:?} (known: {})", kind.as_str(), known.join(", ")));
             }
         }
         out
     }
+}
+
+/// What a selection names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A family (`fx5-time-add`).
+    Family,
+    /// An instruction (`TADDP`).
+    Instruction,
+    /// A tag (`boundary`).
+    Tag,
+    /// An interpretation (`TADD-FLAGS-OFF`).
+    Interpretation,
+}
+
+impl Kind {
+    /// The word (`family`).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Kind::Family => "family",
+            Kind::Instruction => "instruction",
+            Kind::Tag => "tag",
+            Kind::Interpretation => "interpretation",
+        }
+    }
+}
+
+/// Every name of `kind` the suite has, sorted: what an error about an unknown name lists.
+pub fn known_names(suite: &crate::Suite, kind: Kind) -> Vec<String> {
+    let mut names: Vec<String> = suite
+        .families()
+        .iter()
+        .flat_map(|f| -> Vec<String> {
+            match kind {
+                Kind::Family => vec![f.family.clone()],
+                Kind::Instruction => f.instructions.clone(),
+                Kind::Tag => f.tags.keys().cloned().collect(),
+                Kind::Interpretation => f.interpretations.iter().map(|i| i.id.clone()).collect(),
+            }
+        })
+        .collect();
+    names.sort();
+    names.dedup();
+    names
 }
 
 /// The shard (1..=n) a vector id belongs to: `crc32(id) % n + 1`, the Python runner's rule.

@@ -11,7 +11,8 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use serde_json::{json, Map, Value as Json};
 
-use crate::implementation::{Implementation, Refusal, Steps};
+use crate::compare::Steps;
+use crate::implementation::{Implementation, Refusal};
 use crate::vector::Vector;
 
 /// The protocol version spoken.
@@ -115,11 +116,16 @@ fn hello<I: Implementation + ?Sized>(implementation: &I, info: &AdapterInfo, req
         }
     }
     instructions.sort_unstable();
-    json!({
+    let mut hello = json!({
         "type": "hello", "protocol": PROTOCOL_VERSION,
         "adapter": { "name": info.name, "version": info.version },
         "instructions": instructions, "interpretations": interpretations,
-    })
+    });
+    let cpu_writes = implementation.cpu_writes();
+    if !cpu_writes.is_empty() {
+        hello["cpu_writes"] = json!(cpu_writes);
+    }
+    hello
 }
 
 fn result<I: Implementation + ?Sized>(implementation: &mut I, request: &Json) -> Json {
@@ -135,6 +141,16 @@ fn result<I: Implementation + ?Sized>(implementation: &mut I, request: &Json) ->
     }));
     match ran {
         Ok((Ok(()), steps)) => {
+            // A JSON object keeps one value per name: a device reported twice would reach the
+            // runner as whichever value came last. Say so instead.
+            for (n, s) in steps.iter().enumerate() {
+                for (i, (name, v)) in s.devices.iter().enumerate() {
+                    if let Some((_, w)) = s.devices[..i].iter().find(|(other, _)| other == name) {
+                        let why = format!("step {n} reports {name} twice ({w} and {v})");
+                        return json!({ "type": "result", "id": id, "error": why });
+                    }
+                }
+            }
             let steps: Vec<Json> = steps
                 .into_iter()
                 .map(|s| {

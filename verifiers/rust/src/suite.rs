@@ -24,6 +24,7 @@ pub const VECTORS_ENV: &str = "PLCVEC_VECTORS";
 
 /// What a family file's header says about one interpretation.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct InterpretationInfo {
     /// The id (`FX5-SM709-SCOPE`).
     pub id: String,
@@ -39,14 +40,21 @@ pub struct InterpretationInfo {
 
 fn alternative_ids<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Vec<String>, D::Error> {
     #[derive(Deserialize)]
+    #[serde(deny_unknown_fields)]
     struct Alt {
         id: String,
+        #[serde(default, rename = "says")]
+        _says: String,
     }
     Ok(Vec::<Alt>::deserialize(d)?.into_iter().map(|a| a.id).collect())
 }
 
 /// A family file's header: everything but its vectors.
+///
+/// Every key a file holds must be one the schema defines (CONTRACT.md, "Loading"): an unknown
+/// key is a damaged or hand-edited file, refused rather than half read.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct FamilyInfo {
     /// The family (`fx5-time-add`).
     pub family: String,
@@ -70,6 +78,15 @@ pub struct FamilyInfo {
     /// The family's interpretations.
     #[serde(default)]
     pub interpretations: Vec<InterpretationInfo>,
+    /// How many vectors the file holds.
+    #[serde(default)]
+    pub count: Option<usize>,
+    /// Where the spec lives (`spec/fx5-time-add.yaml`).
+    #[serde(default)]
+    pub spec_file: String,
+    /// The note that the file is generated.
+    #[serde(default)]
+    pub generated: String,
 }
 
 /// A loaded vector set.
@@ -97,6 +114,8 @@ struct Index {
 struct IndexEntry {
     file: String,
     count: Option<usize>,
+    /// The sha256 of the file's bytes: a copy cut short or edited is refused before it is read.
+    sha256: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -142,9 +161,16 @@ impl Suite {
             if index_path.is_file() {
                 let index: Index = read_json(&index_path)?;
                 let mut parts = Vec::new();
-                for entry in index.families.values() {
+                for (family, entry) in &index.families {
                     let file = path.join(&entry.file);
-                    parts.push(parse_jsonl(&file.display().to_string(), &read_text(&file)?, entry.count)?);
+                    let Some(sha256) = &entry.sha256 else {
+                        return Err(Error::new(format!(
+                            "{}: family {family} has no sha256 (a copy's files are checked against their index)",
+                            index_path.display()
+                        )));
+                    };
+                    let (text, seal) = read_sealed(&file, sha256, &index_path)?;
+                    parts.push(seal.check(parse_jsonl(&file.display().to_string(), &text, entry.count))?);
                 }
                 return Suite::assemble(source, index.suite_version, index.spec_sha256, parts);
             }
@@ -153,7 +179,11 @@ impl Suite {
                 let mut parts = Vec::new();
                 for entry in manifest.families.values() {
                     let file = path.join(&entry.file);
-                    parts.push(parse_family_json(&file, entry.count)?);
+                    let (text, seal) = match &entry.sha256 {
+                        Some(sha256) => read_sealed(&file, sha256, &manifest_path)?,
+                        None => (read_text(&file)?, Seal(None)),
+                    };
+                    parts.push(seal.check(parse_family_json(&file, &text, entry.count))?);
                 }
                 return Suite::assemble(source, manifest.generator_version, manifest.spec_sha256, parts);
             }
@@ -167,7 +197,7 @@ impl Suite {
         let part = if path.extension().is_some_and(|e| e == "jsonl") {
             parse_jsonl(&source, &read_text(path)?, None)?
         } else {
-            parse_family_json(path, None)?
+            parse_family_json(path, &read_text(path)?, None)?
         };
         Suite::assemble(source, String::new(), String::new(), vec![part])
     }
@@ -268,8 +298,57 @@ impl Suite {
     }
 }
 
+fn read_bytes(path: &Path) -> Result<Vec<u8>> {
+    fs::read(path).map_err(|e| Error::new(format!("{}: cannot read: {e}", path.display())))
+}
+
+/// The bytes as text, or the line and column of the first byte that is not UTF-8.
+fn utf8(path: &Path, bytes: Vec<u8>) -> Result<String> {
+    String::from_utf8(bytes).map_err(|e| {
+        let at = e.utf8_error().valid_up_to();
+        let before = &e.as_bytes()[..at];
+        let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+        let column = at - before.iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1) + 1;
+        Error::new(format!("{}:{line}:{column}: a byte that is not UTF-8 (a damaged copy?)", path.display()))
+    })
+}
+
 fn read_text(path: &Path) -> Result<String> {
-    fs::read_to_string(path).map_err(|e| Error::new(format!("{}: cannot read: {e}", path.display())))
+    utf8(path, read_bytes(path)?)
+}
+
+/// Whether a file's bytes are those its index records: `Some` error when they differ.
+struct Seal(Option<Error>);
+
+impl Seal {
+    /// The file's parse, refused when the seal is broken. A parse error comes first, since it
+    /// names the line; a file that parses but differs from its index is still refused.
+    fn check<T>(self, parsed: Result<T>) -> Result<T> {
+        match (parsed, self.0) {
+            (Err(e), Some(_)) => {
+                Err(Error::new(format!("{e} (and the file's sha256 is not the one its index records)")))
+            }
+            (Err(e), None) | (Ok(_), Some(e)) => Err(e),
+            (Ok(t), None) => Ok(t),
+        }
+    }
+}
+
+/// A file whose sha256 its index records, with the check of its seal: a copy cut short,
+/// interrupted or edited is refused.
+fn read_sealed(path: &Path, sha256: &str, index: &Path) -> Result<(String, Seal)> {
+    use sha2::{Digest, Sha256};
+    let bytes = read_bytes(path)?;
+    let digest = Sha256::digest(&bytes);
+    let hex: String = digest.iter().map(|b| format!("{b:02x}")).collect();
+    let seal = (!hex.eq_ignore_ascii_case(sha256)).then(|| {
+        Error::new(format!(
+            "{}: sha256 {hex}, but {} records {sha256} (a damaged, cut or edited copy; copy the vectors again)",
+            path.display(),
+            index.display()
+        ))
+    });
+    Ok((utf8(path, bytes)?, Seal(seal)))
 }
 
 fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T> {
@@ -340,10 +419,11 @@ fn parse_jsonl(name: &str, text: &str, count: Option<usize>) -> Result<(FamilyIn
 }
 
 /// One family file as `plcvec generate` writes it: a JSON object with `vectors`.
-fn parse_family_json(path: &Path, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
+fn parse_family_json(path: &Path, text: &str, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
     let name = path.display().to_string();
-    let mut data: serde_json::Value = read_json(path)?;
-    let vectors = match data.get_mut("vectors").map(serde_json::Value::take) {
+    let mut data: serde_json::Value = serde_json::from_str(text)
+        .map_err(|e| Error::new(format!("{name}:{}: not a readable plcvec file ({e})", e.line())))?;
+    let vectors = match data.as_object_mut().and_then(|o| o.remove("vectors")) {
         Some(serde_json::Value::Array(vs)) => vs,
         _ => return Err(Error::new(format!("{name}: not a plcvec vector file (no `vectors` list)"))),
     };

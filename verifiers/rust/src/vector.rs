@@ -11,13 +11,9 @@ use serde::Deserialize;
 
 use crate::error::{Error, Result};
 use crate::generated::names::{Family, Instruction};
-use crate::keys::SlotKeys;
+use crate::keys::{SlotKeys, INLINE_SLOTS};
 use crate::small::Small;
 use crate::value::{pack, Address, Value};
-
-/// How many devices a vector's tables hold inline (the golden set's vectors list 6 to 14); a
-/// vector with more keeps them on the heap.
-pub(crate) const INLINE_SLOTS: usize = 16;
 
 /// How many words of each device operand have their slots found at load (the instructions of
 /// the suite read at most three consecutive words of an operand).
@@ -371,9 +367,22 @@ impl Vector {
                         bad(format!("{what} names {name}, which initial.devices does not list (the vector must list every device it touches)"))
                     })?;
                     let v = device_value(value).ok_or_else(|| bad(format!("{what}.{name}: {value} {WORD_OR_BIT}")))?;
+                    // A device is a word or a bit throughout a vector: a bit holding 2 in one
+                    // place is a damaged file, not something to blame on an implementation.
+                    if std::mem::discriminant(&v) != std::mem::discriminant(&initial[i]) {
+                        return Err(bad(format!(
+                            "{what}.{name}: {value} is a {}, but initial.devices.{name} is a {} ({}); a device keeps one type",
+                            kind_of(v),
+                            kind_of(initial[i]),
+                            initial[i]
+                        )));
+                    }
                     Ok((i, v))
                 })
                 .collect()
+        };
+        let final_map = |map: &BTreeMap<String, Json>, what: &str| -> Result<BTreeMap<String, Value>> {
+            Ok(listed(what, map)?.into_iter().map(|(i, v)| (devices[i].name().to_owned(), v)).collect())
         };
         let mut operands = Vec::with_capacity(raw.initial.operands.len());
         for (name, op) in raw.initial.operands {
@@ -410,7 +419,7 @@ impl Vector {
             let own = Expectation {
                 choices: Vec::new(),
                 steps: own_expects,
-                final_devices: final_map(&final_devices.devices, "final.devices", &bad)?,
+                final_devices: final_map(&final_devices.devices, "final.devices")?,
                 category: if outcome.interpretations.is_empty() { outcome.category } else { default_category },
             };
             let mut alternatives = Vec::with_capacity(raw.alternatives.len());
@@ -431,7 +440,7 @@ impl Vector {
                 alternatives.push(Expectation {
                     choices: alt.choices.into_iter().collect(),
                     steps: expects,
-                    final_devices: final_map(&alt.final_.devices, &format!("alternatives[{k}].final.devices"), &bad)?,
+                    final_devices: final_map(&alt.final_.devices, &format!("alternatives[{k}].final.devices"))?,
                     category: alt.outcome.category,
                 });
             }
@@ -493,24 +502,30 @@ fn step_expect(e: &RawExpect, what: &str, listed: &ListDevices<'_>) -> Result<St
     Ok(StepExpect { result: e.result, devices: listed(&format!("{what}.devices"), &e.devices)? })
 }
 
-fn final_map(
-    map: &BTreeMap<String, Json>,
-    what: &str,
-    bad: &dyn Fn(String) -> Error,
-) -> Result<BTreeMap<String, Value>> {
-    map.iter()
-        .map(|(n, v)| Ok((n.clone(), device_value(v).ok_or_else(|| bad(format!("{what}.{n}: {v} {WORD_OR_BIT}")))?)))
-        .collect()
+fn kind_of(value: Value) -> &'static str {
+    match value {
+        Value::Bit(_) => "bit",
+        Value::Word(_) => "word",
+    }
 }
 
-// The file shapes (vectors/schema/vector-file.schema.json); unknown fields are ignored, as a
-// minor schema version may add optional ones.
+// The file shapes (vectors/schema/vector-file.schema.json). Every key must be one the schema
+// defines (CONTRACT.md, "Loading"): an unknown key means a damaged or hand-edited file, or one
+// of a schema this crate does not read, and is refused rather than silently dropped. Keys the
+// runner does not use are read as `IgnoredAny` (checked for presence, not kept).
+
+use serde::de::IgnoredAny;
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 pub(crate) struct RawVector {
     pub id: String,
     pub family: String,
     instruction: String,
+    #[serde(default, rename = "st")]
+    _st: Option<IgnoredAny>,
+    #[serde(default, rename = "printed")]
+    _printed: Option<IgnoredAny>,
     #[serde(default)]
     description: String,
     #[serde(default)]
@@ -529,12 +544,14 @@ pub(crate) struct RawVector {
 }
 
 #[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
 struct RawAssumes {
     #[serde(default)]
     device_sizes: BTreeMap<String, u64>,
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawInitial {
     devices: BTreeMap<String, Json>,
     operands: BTreeMap<String, RawOperand>,
@@ -543,12 +560,14 @@ struct RawInitial {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawOperand {
     device: Option<String>,
     constant: Option<i64>,
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawStep {
     #[serde(default)]
     set: BTreeMap<String, Json>,
@@ -561,6 +580,7 @@ struct RawStep {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawExpect {
     result: Option<bool>,
     #[serde(default)]
@@ -568,24 +588,34 @@ struct RawExpect {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawFinal {
     devices: BTreeMap<String, Json>,
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawCategory {
     category: String,
+    #[serde(default, rename = "errors")]
+    _errors: Option<IgnoredAny>,
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawOutcome {
     category: String,
     #[serde(default)]
     interpretations: Vec<String>,
     default: Option<RawCategory>,
+    #[serde(default, rename = "errors")]
+    _errors: Option<IgnoredAny>,
+    #[serde(default, rename = "reason")]
+    _reason: Option<IgnoredAny>,
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
 struct RawAlternative {
     choices: BTreeMap<String, String>,
     expect: Vec<RawExpect>,

@@ -67,17 +67,17 @@ fn known_failures_are_ignored_and_stale_ones_fail() {
     std::fs::write(&path, &text).unwrap();
     KnownFailures::load(&path).unwrap();
     let mutant = || OnMemory(Reference::mutant(Mutant::TaddSm8022NotWritten, Choices::new()));
-    let conclusion = conclude(Harness::new(mutant).select(tadd()).expectations(&path));
+    let conclusion = conclude(Harness::new(mutant).select(tadd()).known_failures(&path));
     assert_eq!((conclusion.num_failed, conclusion.num_ignored), (0, failing.len() as u64));
 
     // The same list against the reference: every entry passes, so every entry is stale.
-    let conclusion = conclude(Harness::new(|| OnMemory(Reference::new())).select(tadd()).expectations(&path));
+    let conclusion = conclude(Harness::new(|| OnMemory(Reference::new())).select(tadd()).known_failures(&path));
     assert_eq!(conclusion.num_failed, failing.len() as u64);
 
     // An id the suite does not have is a failing test of its own.
     text.push_str("[[known-failure]]\nid = \"fx5-time-add/no/such/vector\"\nreason = \"gone\"\n");
     std::fs::write(&path, &text).unwrap();
-    let conclusion = conclude(Harness::new(mutant).select(tadd()).expectations(&path));
+    let conclusion = conclude(Harness::new(mutant).select(tadd()).known_failures(&path));
     assert_eq!(conclusion.num_failed, 1);
     let _ = std::fs::remove_dir_all(&dir);
 }

@@ -43,6 +43,58 @@ fn edited_copy(name: &str, edit: impl Fn(&str, String) -> String) -> Scratch {
     Scratch(dir)
 }
 
+/// `edited_copy` with the index's sha256 of each file brought up to date, so that the edit is
+/// the only damage.
+fn resealed_copy(name: &str, edit: impl Fn(&str, String) -> String) -> Scratch {
+    use sha2::{Digest, Sha256};
+    let dir = edited_copy(name, edit);
+    let index_path = dir.0.join("index.json");
+    let mut index: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(&index_path).unwrap()).unwrap();
+    for (_, entry) in index["families"].as_object_mut().unwrap() {
+        let bytes = std::fs::read(dir.0.join(entry["file"].as_str().unwrap())).unwrap();
+        let hex: String = Sha256::digest(&bytes).iter().map(|b| format!("{b:02x}")).collect();
+        entry["sha256"] = hex.into();
+    }
+    std::fs::write(&index_path, serde_json::to_string_pretty(&index).unwrap()).unwrap();
+    dir
+}
+
+fn edit_tadd(name: &str, from: &'static str, to: &'static str) -> Scratch {
+    resealed_copy(name, move |file, text| if file == "fx5-time-add.jsonl" { text.replacen(from, to, 1) } else { text })
+}
+
+#[test]
+fn a_file_that_differs_from_its_index_is_refused() {
+    // Still valid JSON and a valid vector: only the recorded sha256 tells.
+    let dir = edited_copy("sha", |file, text| {
+        if file == "fx5-time-add.jsonl" {
+            text.replacen("manual example program", "manual example programme", 1)
+        } else {
+            text
+        }
+    });
+    let err = Suite::load(&dir).unwrap_err().to_string();
+    assert!(err.contains("fx5-time-add.jsonl: sha256 ") && err.contains("index.json records"), "{err}");
+}
+
+#[test]
+fn unknown_keys_are_refused() {
+    let err = Suite::load(edit_tadd("key", "\"final\":", "\"surprise\":1,\"final\":")).unwrap_err().to_string();
+    assert!(
+        err.contains("fx5-time-add.jsonl:2: vector fx5-time-add/") && err.contains("unknown field `surprise`"),
+        "{err}"
+    );
+    let err = Suite::load(edit_tadd("header", "{\"count\":", "{\"surprise\":1,\"count\":")).unwrap_err().to_string();
+    assert!(err.contains("fx5-time-add.jsonl:1:") && err.contains("unknown field `surprise`"), "{err}");
+}
+
+#[test]
+fn a_device_keeps_one_type() {
+    // SM700 is a bit in `final`; a 2 in `initial` makes it a word there.
+    let err = Suite::load(edit_tadd("type", "\"SM700\":false", "\"SM700\":2")).unwrap_err().to_string();
+    assert!(err.contains("SM700") && err.contains("a device keeps one type"), "{err}");
+}
+
 #[test]
 fn the_embedded_copy_holds_every_family_and_vector() {
     let suite = Suite::embedded().unwrap();
@@ -97,7 +149,7 @@ fn a_damaged_vector_is_named_by_file_line_and_id() {
     let err = Suite::load(&dir).unwrap_err().to_string();
     // Line 1 is the header: the first vector is on line 2.
     assert!(err.contains("fx5-time-add.jsonl:2: vector fx5-time-add/"), "{err}");
-    assert!(err.contains("no `final`"), "{err}");
+    assert!(err.contains("unknown field `finale`"), "{err}");
 }
 
 #[test]
