@@ -10,7 +10,9 @@ use std::cmp::Ordering;
 
 use super::{read3, rlo_in, word_operand, Condition, Mutant};
 use crate::choices::Choices;
-use crate::generated::names::{Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eNonBcd, Cp1eOutOfRange};
+use crate::generated::names::{
+    Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eErrorFlags, Cp1eNonBcd, Cp1eOutOfRange,
+};
 use crate::implementation::Refusal;
 use crate::memory::Memory;
 use crate::vector::Vector;
@@ -52,6 +54,7 @@ pub(super) struct TimeCompare {
     c_high_bits: Cp1eCHighBits,
     and_or: Cp1eAndOrWhenOff,
     er_flag: Cp1eErFlag,
+    error_flags: Cp1eErrorFlags,
     mutant: Option<Mutant>,
 }
 
@@ -76,6 +79,7 @@ impl TimeCompare {
             c_high_bits: choices.get(),
             and_or: choices.get(),
             er_flag,
+            error_flags: choices.get(),
             mutant,
         }
     }
@@ -125,9 +129,17 @@ impl TimeCompare {
         let s1 = read3(vector, mem, "S1")?;
         let s2 = read3(vector, mem, "S2")?;
         let c = word_operand(vector, mem, "C")?;
-        // Error: P_ER on, the execution condition off, the six arithmetic flags untouched.
+        // Error: P_ER on, the execution condition off. The flag table has no row for an
+        // execution without a comparison result: the six flags keep their values, or
+        // (CP1E-ERROR-FLAGS=off) are all written off.
+        let error_flags = self.error_flags;
         let error = |mem: &mut Memory<'_>| {
             mem.set_bit(ERROR_FLAG, true);
+            if error_flags == Cp1eErrorFlags::Off {
+                for flag in FLAGS {
+                    mem.set_bit(flag, false);
+                }
+            }
             Ok(false)
         };
 

@@ -4,7 +4,9 @@
 
 use super::{device, read3, Mutant};
 use crate::choices::Choices;
-use crate::generated::names::{HourInputOff, HourOutputOff, HourPresetZero};
+use crate::generated::names::{
+    HourFirstScan, HourInputOff, HourM8004Off, HourOutputOff, HourPresetCheck, HourPresetZero,
+};
 use crate::implementation::Refusal;
 use crate::memory::Memory;
 use crate::vector::{Operand, Step, Vector};
@@ -20,10 +22,15 @@ pub(super) struct HourMeter {
     output_off: HourOutputOff,
     input_off: HourInputOff,
     preset_zero: HourPresetZero,
+    first_scan: HourFirstScan,
+    preset_check: HourPresetCheck,
+    m8004_off: HourM8004Off,
     mutant: Option<Mutant>,
     fraction_ms: u64,
     /// For "recompared": D2 stays on across a wrap.
     wrapped: bool,
+    /// The input at the previous execution (off before the first).
+    input_was_on: bool,
 }
 
 fn seconds(hms: [u16; 3]) -> u64 {
@@ -36,15 +43,20 @@ impl HourMeter {
             output_off: choices.get(),
             input_off: choices.get(),
             preset_zero: choices.get(),
+            first_scan: choices.get(),
+            preset_check: choices.get(),
+            m8004_off: choices.get(),
             mutant,
             fraction_ms: 0,
             wrapped: false,
+            input_was_on: false,
         }
     }
 
     pub(super) fn reset(&mut self) {
         self.fraction_ms = 0;
         self.wrapped = false;
+        self.input_was_on = false;
     }
 
     fn bug(&self, m: Mutant) -> bool {
@@ -63,6 +75,8 @@ impl HourMeter {
         let d1 = device(vector, "D1")?;
         let d2 = device(vector, "D2")?;
         let on = step.input.ok_or_else(|| Refusal::Error("HOUR needs the step's input".to_owned()))?;
+        let turned_on = on && !self.input_was_on;
+        self.input_was_on = on;
         if !on {
             // "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF.
             match self.input_off {
@@ -76,11 +90,18 @@ impl HourMeter {
                 // D1 kept; the part of a second already counted is lost.
                 HourInputOff::HoldDropFraction => self.fraction_ms = 0,
             }
+            // HOUR-PRESET-CHECK=every-execution: the preset is checked with the input off too.
+            if self.preset_check == HourPresetCheck::EveryExecution {
+                self.check_preset(vector, mem, d2)?;
+            }
             return Ok(());
         }
-        // The whole elapsed time since the previous execution is ON time.
+        // The elapsed time since the previous execution is ON time; at the execution at which
+        // the input turns on, only under HOUR-FIRST-SCAN=counts.
         let elapsed = step.elapsed_ms.ok_or_else(|| Refusal::Error("HOUR needs the step's elapsed_ms".to_owned()))?;
-        self.fraction_ms += elapsed;
+        if !(turned_on && self.first_scan == HourFirstScan::FromNextScan) {
+            self.fraction_ms += elapsed;
+        }
         let whole = self.fraction_ms / 1000;
         self.fraction_ms %= 1000;
         let mut total = seconds(read3(vector, mem, "D1")?) + whole;
@@ -96,23 +117,7 @@ impl HourMeter {
             mem.set_at(d2, 0, false.into());
         }
 
-        // "When source device S1 is designated by a constant, the preset value can be 0 through
-        // 65,535 in hours, then minutes and seconds are set to 0." A data register: "3
-        // consecutive data registers ... hour, minute, and second data."
-        let preset = match vector.operand("S1") {
-            Some(Operand::Constant(c)) => [*c as u16, 0, 0],
-            Some(Operand::Device(_)) => read3(vector, mem, "S1")?,
-            None => return Err(Refusal::Error("HOUR: no operand S1".to_owned())),
-        };
-        // "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."
-        if preset[1] > 59 || preset[2] > 59 {
-            // "... a user program execution error will result, turning on special internal relay
-            // M8004 ... but the input ON duration is measured." "... is changed to an invalid
-            // value after the comparison output has turned on, the comparison output is turned off."
-            mem.set_bit(ERROR_FLAG, true);
-            mem.set_at(d2, 0, false.into());
-            return Ok(());
-        }
+        let Some(preset) = self.check_preset(vector, mem, d2)? else { return Ok(()) };
         let preset = seconds(preset);
         // "When the measured input ON duration value in destination device D1 reaches the preset
         // value designated by source device S1, the comparison output ... turns on."
@@ -139,5 +144,36 @@ impl HourMeter {
             }
         }
         Ok(())
+    }
+
+    /// Read and check S1: the preset, or `None` when it is invalid (M8004 on, D2 off).
+    fn check_preset(
+        &self,
+        vector: &Vector,
+        mem: &mut Memory<'_>,
+        d2: &crate::value::Address,
+    ) -> Result<Option<[u16; 3]>, Refusal> {
+        // "When source device S1 is designated by a constant, the preset value can be 0 through
+        // 65,535 in hours, then minutes and seconds are set to 0." A data register: "3
+        // consecutive data registers ... hour, minute, and second data."
+        let preset = match vector.operand("S1") {
+            Some(Operand::Constant(c)) => [*c as u16, 0, 0],
+            Some(Operand::Device(_)) => read3(vector, mem, "S1")?,
+            None => return Err(Refusal::Error("HOUR: no operand S1".to_owned())),
+        };
+        // "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."
+        if preset[1] > 59 || preset[2] > 59 {
+            // "... a user program execution error will result, turning on special internal relay
+            // M8004 ... but the input ON duration is measured." "... is changed to an invalid
+            // value after the comparison output has turned on, the comparison output is turned off."
+            mem.set_bit(ERROR_FLAG, true);
+            mem.set_at(d2, 0, false.into());
+            return Ok(None);
+        }
+        // The page never says M8004 turns off; HOUR-M8004-OFF=valid-preset does.
+        if self.m8004_off == HourM8004Off::ValidPreset {
+            mem.set_bit(ERROR_FLAG, false);
+        }
+        Ok(Some(preset))
     }
 }

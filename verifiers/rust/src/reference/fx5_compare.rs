@@ -8,7 +8,7 @@ use std::cmp::Ordering;
 
 use super::{device, read3, rlo_in, signed, word_operand, Condition, Mutant};
 use crate::choices::Choices;
-use crate::generated::names::{Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5Sm709Scope};
+use crate::generated::names::{Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5OrOnError, Fx5Sm709Scope};
 use crate::implementation::Refusal;
 use crate::memory::Memory;
 use crate::vector::{Step, Vector};
@@ -53,6 +53,7 @@ pub(super) struct Fx5Compare {
     scope: Fx5Sm709Scope,
     logic: Fx5AndOrWhenOff,
     clock_s2: Fx5ClockS2DeviceRange,
+    or_on_error: Fx5OrOnError,
     mutant: Option<Mutant>,
 }
 
@@ -68,7 +69,7 @@ impl Fx5Compare {
         if mutant == Some(Mutant::Fx5AndExecutedWhenOff) {
             logic = Fx5AndOrWhenOff::AlwaysExecuted; // declared as it is, implemented otherwise
         }
-        Fx5Compare { scope: choices.get(), logic, clock_s2: choices.get(), mutant }
+        Fx5Compare { scope: choices.get(), logic, clock_s2: choices.get(), or_on_error: choices.get(), mutant }
     }
 
     fn bug(&self, m: Mutant) -> bool {
@@ -104,7 +105,13 @@ impl Fx5Compare {
                 if rlo && logic == Fx5AndOrWhenOff::ShortCircuit {
                     return Ok(true);
                 }
-                let contact = self.contact(kind, condition, vector, step, mem)?;
+                let (contact, failed) = self.contact_checked(kind, condition, vector, step, mem)?;
+                // "SM709 turns on ... and the operation result will be non-continuity": a
+                // non-conductive contact in parallel (contact-off), or the rung's result itself
+                // off (FX5-OR-ON-ERROR=result-off).
+                if failed && self.or_on_error == Fx5OrOnError::ResultOff {
+                    return Ok(false);
+                }
                 Ok(rlo || contact)
             }
         }
@@ -118,19 +125,31 @@ impl Fx5Compare {
         step: &Step,
         mem: &mut Memory<'_>,
     ) -> Result<bool, Refusal> {
+        Ok(self.contact_checked(kind, condition, vector, step, mem)?.0)
+    }
+
+    /// The contact, and whether the execution found invalid data (turned SM709 on).
+    fn contact_checked(
+        &self,
+        kind: Kind,
+        condition: Condition,
+        vector: &Vector,
+        step: &Step,
+        mem: &mut Memory<'_>,
+    ) -> Result<(bool, bool), Refusal> {
         match self.evaluate(kind, condition, vector, step, mem)? {
             Contact::Compared(result) => {
                 if self.bug(Mutant::Fx5Sm709NotLatched) {
                     mem.set_bit(SM709, false);
                 }
-                Ok(result)
+                Ok((result, false))
             }
             // "SM709 turns on after the instruction is executed and the operation result will
             // be non-continuity." "Once SM709 turns on, the on state is held until the CPU
             // module is powered off or reset." -> only ever set here, never cleared.
             Contact::Error => {
                 mem.set_bit(SM709, true);
-                Ok(false)
+                Ok((false, true))
             }
         }
     }

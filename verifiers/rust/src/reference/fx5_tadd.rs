@@ -4,7 +4,7 @@
 
 use super::{device, read3, signed, Mutant};
 use crate::choices::Choices;
-use crate::generated::names::{TaddExact24, TaddFlagsOff, TaddOnError};
+use crate::generated::names::{TaddErrorOrder, TaddExact24, TaddFlagsOff, TaddOnError};
 use crate::implementation::Refusal;
 use crate::memory::Memory;
 use crate::value::Value;
@@ -26,6 +26,7 @@ pub(super) struct TimeAdd {
     flags_off: TaddFlagsOff,
     exact_24: TaddExact24,
     on_error: TaddOnError,
+    error_order: TaddErrorOrder,
     mutant: Option<Mutant>,
     /// TADDP: the state of EN before this scan ("off" before the first).
     previous_en: bool,
@@ -37,6 +38,7 @@ impl TimeAdd {
             flags_off: choices.get(),
             exact_24: choices.get(),
             on_error: choices.get(),
+            error_order: choices.get(),
             mutant,
             previous_en: false,
         }
@@ -73,17 +75,31 @@ impl TimeAdd {
 
     fn add(&self, vector: &Vector, mem: &mut Memory<'_>) -> Result<(), Refusal> {
         let (s1_dev, s2_dev, d_dev) = (device(vector, "s1")?, device(vector, "s2")?, device(vector, "d")?);
+        // "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)", the same for (s2):
+        // 3405H. Only an operand whose three words exist can be read and checked.
+        let ranges = [(0, 23), (0, 59), (0, 59)];
+        let out_of_range = |name: &str, dev| -> Result<bool, Refusal> {
+            if !mem.in_range(dev, 3) {
+                return Ok(false);
+            }
+            let data = read3(vector, mem, name)?.map(signed);
+            Ok(data.iter().zip(ranges).any(|(v, (lo, hi))| !(lo..=hi).contains(v)))
+        };
+        let bad = out_of_range("s1", s1_dev)? || out_of_range("s2", s2_dev)?;
         // "These instructions occupy three points for each of three devices"; out of range:
-        // 2820H, and nothing is read or written.
+        // 2820H, and nothing is read or written. With a field out of range as well,
+        // TADD-ERROR-ORDER says which code is stored.
         if !self.bug(Mutant::TaddDeviceRangeUnchecked) && [s1_dev, s2_dev, d_dev].iter().any(|d| !mem.in_range(d, 3)) {
-            error(mem, ERR_DEVICE_RANGE);
+            let first = if bad && self.error_order == TaddErrorOrder::FieldRangeFirst {
+                ERR_VALUE_RANGE
+            } else {
+                ERR_DEVICE_RANGE
+            };
+            error(mem, first);
             return Ok(());
         }
         let s1 = read3(vector, mem, "s1")?.map(signed);
         let s2 = read3(vector, mem, "s2")?.map(signed);
-        // "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)", the same for (s2).
-        let ranges = [(0, 23), (0, 59), (0, 59)];
-        let bad = [s1, s2].iter().any(|data| data.iter().zip(ranges).any(|(v, (lo, hi))| !(lo..=hi).contains(v)));
         if bad {
             error(mem, ERR_VALUE_RANGE);
             if self.on_error == TaddOnError::NotExecuted {
