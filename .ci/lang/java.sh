@@ -31,6 +31,10 @@ python3 -m plcvec fuzz --examples 500 --seed 2 --adapter "verifiers/java/referen
     --choose HOUR-INPUT-OFF=hold-drop-fraction --choose CP1E-NON-BCD=raw-bytes --choose CP1E-ALL-MASKED=not-compared \
     --choose CP1E-ER-FLAG=held"
 
+# The shared table of faults through the README's entry point (the JUnit 5 factory under
+# Surefire), every row; the modules are built by now, so `--build` only compiles the hostile ones.
+python3 verifiers/parity/run.py --lang java
+
 # The same gate must reject a mutant served the same way (exit 1, not 0 and not 2).
 gate_rejects java "verifiers/java/reference-adapter --mutant tadd-sm8022-not-written" --family fx5-time-add
 echo "java: done in $((SECONDS - started)) s"

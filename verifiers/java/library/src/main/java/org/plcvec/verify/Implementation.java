@@ -1,6 +1,7 @@
 package org.plcvec.verify;
 
 import java.util.List;
+import java.util.Set;
 
 /**
  * An implementation under test, at the level of the contract (CONTRACT.md): one vector's initial
@@ -14,7 +15,8 @@ import java.util.List;
 public interface Implementation {
     /** The name reports show. */
     default String name() {
-        return getClass().getSimpleName();
+        String simple = getClass().getSimpleName();
+        return simple.isEmpty() ? getClass().getName() : simple;   // an anonymous class has no simple name
     }
 
     default String version() {
@@ -32,6 +34,15 @@ public interface Implementation {
      */
     default boolean supports(String instruction) {
         return true;
+    }
+
+    /**
+     * Devices the CPU writes on its own account (diagnostic relays and registers such as
+     * {@code SM0}, {@code SM56}, {@code SD0}), by exact name. A write to one of them that the vector
+     * does not list is not a write outside the vector; one the vector lists is compared as usual.
+     */
+    default Set<String> cpuWrites() {
+        return Set.of();
     }
 
     /**

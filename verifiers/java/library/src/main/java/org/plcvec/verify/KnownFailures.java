@@ -138,7 +138,7 @@ public final class KnownFailures {
     }
 
     /** Turn a listed failure into XFAIL and a listed pass into STALE (in place). */
-    void apply(Result r) {
+    void apply(Verdict r) {
         Entry e = entries.get(r.id());
         if (e == null) {
             return;
@@ -154,11 +154,11 @@ public final class KnownFailures {
     }
 
     /** Entries naming a vector the suite does not have: each is a STALE result. */
-    List<Result> unknownIds(Suite suite) {
-        List<Result> out = new ArrayList<>();
+    List<Verdict> unknownIds(Suite suite) {
+        List<Verdict> out = new ArrayList<>();
         for (Entry e : entries.values()) {
             if (suite.byId(e.id()) == null) {
-                out.add(new Result(e.id(), null, Status.STALE, List.of(), "listed as a known failure (" + path + ":"
+                out.add(new Verdict(e.id(), null, Status.STALE, List.of(), "listed as a known failure (" + path + ":"
                         + e.line() + ") but the suite has no such vector; remove it from the expectations file", null));
             }
         }

@@ -10,24 +10,41 @@ import java.util.EnumMap;
 import java.util.List;
 import java.util.Map;
 
-/** The results of a run, and the summary a person reads: every failing vector's diff, then totals. */
+/**
+ * The verdicts of a run, and the summary a person reads: every failing vector's diff, then what
+ * the run followed, the skips by reason and the totals. Built from values (the run's header and
+ * its verdicts), so it can be made by any runner of the suite, JUnit's included.
+ */
 public final class Report {
-    private final Verifier verifier;
-    private final List<Result> results;
+    /** What a run was: the suite, the implementation, the alternatives it followed. */
+    public record Header(Suite suite, String implementation, String version, Map<String, Verifier.Followed> followed,
+                         java.util.Set<String> cpuWrites) {
+        public Header {
+            followed = Map.copyOf(new java.util.TreeMap<>(followed));
+            cpuWrites = java.util.Set.copyOf(cpuWrites);
+        }
+    }
+
+    private final Header header;
+    private final List<Verdict> results;
     private final double seconds;
 
-    Report(Verifier verifier, List<Result> results, double seconds) {
-        this.verifier = verifier;
-        this.results = List.copyOf(results);
+    public Report(Header header, List<Verdict> verdicts, double seconds) {
+        this.header = header;
+        this.results = List.copyOf(verdicts);
         this.seconds = seconds;
     }
 
-    public List<Result> results() {
+    public Header header() {
+        return header;
+    }
+
+    public List<Verdict> verdicts() {
         return results;
     }
 
-    public List<Result> failing() {
-        return results.stream().filter(Result::failing).toList();
+    public List<Verdict> failing() {
+        return results.stream().filter(Verdict::failing).toList();
     }
 
     public Map<Status, Integer> counts() {
@@ -57,7 +74,7 @@ public final class Report {
     public int writeExpectations(Path file, String reason) {
         StringBuilder sb = new StringBuilder("# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n");
         int n = 0;
-        for (Result r : results.stream().sorted(java.util.Comparator.comparing(Result::id)).toList()) {
+        for (Verdict r : results.stream().sorted(java.util.Comparator.comparing(Verdict::id)).toList()) {
             if (r.vector() != null && (r.status() == Status.FAIL || r.status() == Status.ERROR || r.status() == Status.XFAIL)) {
                 sb.append("[[").append(KnownFailures.SECTION).append("]]\nid = ").append(toml(r.id())).append("\nreason = ")
                         .append(toml(reason)).append("\n\n");
@@ -93,38 +110,52 @@ public final class Report {
         return sb.append('"').toString();
     }
 
-    /** What {@code plcvec verify} prints at the end of a run. */
+    /** What {@code plcvec verify} prints at the end of a run: each failure, then {@link #totals()}. */
     public String summary() {
-        List<String> lines = new ArrayList<>();
-        for (Result r : results) {
+        StringBuilder sb = new StringBuilder();
+        for (Verdict r : results) {
             if (r.failing()) {
-                lines.add(r.report());
+                sb.append(r.report()).append('\n');
             }
         }
-        Suite s = verifier.suite();
-        Implementation impl = verifier.implementation();
-        lines.add("");
-        lines.add("plcvec verify: " + impl.name() + (impl.version().isEmpty() ? "" : " " + impl.version()) + " against "
-                + s.source() + " (suite " + (s.suiteVersion().isEmpty() ? "?" : s.suiteVersion()) + ", schema "
-                + s.schemaVersion() + ", spec sha256 " + s.specSha256().substring(0, Math.min(12, s.specSha256().length()))
-                + ")");
-        StringBuilder declared = new StringBuilder();
-        verifier.followed().forEach((i, f) -> {
-            if (f.declared()) {
-                declared.append(i).append('=').append(f.alternative()).append(", ");
+        return sb.append('\n').append(totals()).toString();
+    }
+
+    /**
+     * The end of a run without the failures (a test runner has shown each already): the suite and
+     * the implementation, every alternative followed, the declared CPU writes, the skips by
+     * reason, the totals.
+     */
+    public String totals() {
+        List<String> lines = new ArrayList<>();
+        Suite s = header.suite();
+        lines.add("plcvec verify: " + header.implementation() + (header.version().isEmpty() ? "" : " " + header.version())
+                + " against " + s.source() + " (suite " + (s.suiteVersion().isEmpty() ? "?" : s.suiteVersion())
+                + ", schema " + s.schemaVersion() + ", spec sha256 "
+                + s.specSha256().substring(0, Math.min(12, s.specSha256().length())) + ")");
+        List<String> followed = new ArrayList<>();
+        new java.util.TreeMap<>(header.followed()).forEach((i, f) -> followed.add(i + "=" + f.alternative()
+                + (f.declared() ? "" : " (default)")));
+        lines.add("interpretations: " + (followed.isEmpty() ? "none" : String.join(", ", followed)));
+        if (!header.cpuWrites().isEmpty()) {
+            lines.add("cpu writes: " + String.join(", ", new java.util.TreeSet<>(header.cpuWrites())));
+        }
+        Map<String, Integer> skips = new java.util.TreeMap<>();
+        for (Verdict r : results) {
+            if (r.status() == Status.SKIP) {
+                skips.merge(r.message(), 1, Integer::sum);
             }
-        });
-        lines.add("interpretations: " + (declared.length() > 0 ? declared.substring(0, declared.length() - 2) + "; " : "")
-                + "others default");
+        }
+        skips.forEach((why, n) -> lines.add("skipped " + n + ": " + why));
         StringBuilder counts = new StringBuilder();
         counts().forEach((st, n) -> {
-            if (n > 0 || st == Status.PASS || st == Status.FAIL) {
+            if (n > 0 || st == Status.PASS || st == Status.FAIL || st == Status.SKIP) {
                 counts.append(counts.length() == 0 ? "" : ", ").append(n).append(' ').append(st.label());
             }
         });
-        lines.add(results.size() + " vectors: " + counts + String.format(" in %.2f s", seconds));
+        lines.add(results.size() + " vectors: " + counts + String.format(java.util.Locale.ROOT, " in %.2f s", seconds));
         if (!passed() && failing().isEmpty()) {
-            lines.add("nothing was run: " + impl.name() + " skipped every selected vector");
+            lines.add("nothing tested: " + header.implementation() + " skipped every selected vector");
         }
         return String.join("\n", lines) + "\n";
     }

@@ -22,10 +22,10 @@ import org.plcvec.spec.Tag;
  * Selection.all().families(Family.FX5_TIME_ADD).tags(Tag.BOUNDARY).shard(2, 4)
  * }</pre>
  *
- * <p>{@link #fromSystemProperties()} reads {@code -Dplcvec.family=...}, {@code plcvec.instruction},
- * {@code plcvec.tag}, {@code plcvec.id} (globs), {@code plcvec.interpretation} (each a
- * comma-separated list) and {@code plcvec.shard=K/N}, so one Maven run can narrow any factory:
- * {@code mvn test -Dtest=MyConformanceTest -Dplcvec.id='fx5-time-add/TADDP/*'}.
+ * <p>{@link #withEnvironment(Suite)} narrows it by {@code PLCVEC_FAMILY}, {@code PLCVEC_INSTRUCTION},
+ * {@code PLCVEC_TAG}, {@code PLCVEC_ID} (globs), {@code PLCVEC_INTERPRETATION} (each a
+ * comma-separated list) and {@code PLCVEC_SHARD=K/N} ({@link Environment}), so one CI variable
+ * narrows any factory: {@code PLCVEC_ID='fx5-time-add/TADDP/*' mvn test}.
  */
 public final class Selection {
     private static final Selection ALL = new Selection(Set.of(), Set.of(), Set.of(), List.of(), Set.of(), 0, 0);
@@ -127,37 +127,17 @@ public final class Selection {
         return (int) (crc.getValue() % n) + 1;
     }
 
-    /**
-     * This selection narrowed by the {@code plcvec.*} system properties (AND: a property can only
-     * narrow what the code selects, never widen it).
-     */
-    public Selection withSystemProperties() {
-        Selection p = all();
-        String v;
-        if ((v = property("plcvec.family")) != null) {
-            p = p.families(split(v));
-        }
-        if ((v = property("plcvec.instruction")) != null) {
-            p = p.instructions(split(v));
-        }
-        if ((v = property("plcvec.tag")) != null) {
-            p = p.tags(split(v));
-        }
-        if ((v = property("plcvec.id")) != null) {
-            p = p.ids(split(v));
-        }
-        if ((v = property("plcvec.interpretation")) != null) {
-            p = p.interpretations(split(v));
-        }
-        if ((v = property("plcvec.shard")) != null) {
-            p = p.shard(v);
-        }
-        return p == ALL ? this : new Selection(this, p);
+    /** Vectors both this selection and {@code other} select. */
+    public Selection and(Selection other) {
+        return other == ALL ? this : this == ALL ? other : new Selection(this, other);
     }
 
-    /** Every vector, narrowed by the {@code plcvec.*} system properties. */
-    public static Selection fromSystemProperties() {
-        return all().withSystemProperties();
+    /**
+     * This selection narrowed by the {@code PLCVEC_*} variables (and their {@code plcvec.*}
+     * system properties): a variable can only narrow what the code selects, never widen it.
+     */
+    public Selection withEnvironment(Suite suite) {
+        return Environment.current().narrow(this, suite);
     }
 
     // Another selection this one is ANDed with ("family A" AND "family B" is not "A or B").
@@ -173,15 +153,6 @@ public final class Selection {
         this.shardK = base.shardK;
         this.shardN = base.shardN;
         this.and = base.and == null ? and : new Selection(base.and, and);
-    }
-
-    private static String property(String name) {
-        String v = System.getProperty(name);
-        return v == null || v.isBlank() ? null : v;
-    }
-
-    private static String[] split(String v) {
-        return Arrays.stream(v.split(",")).map(String::trim).filter(x -> !x.isEmpty()).toArray(String[]::new);
     }
 
     public boolean matches(Vector v) {
@@ -234,6 +205,14 @@ public final class Selection {
         unknown("instruction", instructions, knownInstructions);
         unknown("tag", tags, knownTags);
         unknown("interpretation", interpretations, suite.interpretations().keySet());
+        for (int i = 0; i < ids.size(); i++) {
+            Pattern p = idPatterns.get(i);
+            if (suite.vectors().stream().noneMatch(v -> p.matcher(v.id()).matches())) {
+                String example = suite.vectors().isEmpty() ? "" : " (ids look like " + suite.vectors().get(0).id()
+                        + "; a glob matches the whole id)";
+                throw new VerifyException("id '" + ids.get(i) + "' matches no vector id in " + suite.source() + example);
+            }
+        }
         if (and != null) {
             and.check(suite);
         }

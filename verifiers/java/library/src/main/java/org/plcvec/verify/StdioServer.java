@@ -126,6 +126,9 @@ public final class StdioServer {
         answer.put("adapter", adapter);
         answer.put("instructions", new ArrayList<>(instructions));
         answer.put("interpretations", interpretations);
+        if (!impl.cpuWrites().isEmpty()) {
+            answer.put("cpu_writes", new ArrayList<>(new java.util.TreeSet<>(impl.cpuWrites())));
+        }
         write(o, answer);
         o.flush();
         return null;

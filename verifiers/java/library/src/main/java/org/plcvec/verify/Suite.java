@@ -80,11 +80,8 @@ public final class Suite {
             synchronized (Suite.class) {
                 s = golden;
                 if (s == null) {
-                    String override = System.getProperty(PROPERTY);
-                    if (override == null || override.isBlank()) {
-                        override = System.getenv(ENV);
-                    }
-                    s = override == null || override.isBlank() ? fromResources() : load(Path.of(override));
+                    Path override = Environment.current().vectors();
+                    s = override == null ? fromResources() : load(override);
                     golden = s;
                 }
             }
@@ -161,13 +158,14 @@ public final class Suite {
             String file = e.getValue().path("file").asString(e.getKey() + ".jsonl");
             String text = read(src, file);
             String name = where + file;
+            int before = vectors.size();
+            // Read first: a line that does not parse is named with its number, more use than a hash.
+            readJsonl(text, name, vectors, headers);
             String sha = e.getValue().path("sha256").asString("");
             if (!sha.isEmpty() && !sha.equals(sha256(text))) {
                 throw new VerifyException(name + ": its sha256 is not the one index.json records; the copy is damaged "
                         + "or edited by hand (run `plcvec export` again)");
             }
-            int before = vectors.size();
-            readJsonl(text, name, vectors, headers);
             int count = e.getValue().path("count").asInt(-1);
             if (count >= 0 && vectors.size() - before != count) {
                 throw new VerifyException(name + ": " + (vectors.size() - before) + " vectors, but index.json says " + count);
@@ -246,12 +244,32 @@ public final class Suite {
                     + SuiteInfo.SCHEMA_MAJOR + ".x; this verifier reads " + SuiteInfo.SCHEMA_MAJOR
                     + ".x files only (see CONTRACT.md, Versioning)");
         }
+        String key = VectorParser.unknownKey(data, data.has("vectors") ? withVectors() : VectorParser.HEADER_KEYS, "");
+        int i = 0;
+        for (JsonNode interpretation : data.path("interpretations")) {
+            String path = "interpretations/" + i++;
+            key = key != null ? key : VectorParser.unknownKey(interpretation, VectorParser.INTERPRETATION_KEYS, path);
+            int j = 0;
+            for (JsonNode alt : interpretation.path("alternatives")) {
+                key = key != null ? key
+                        : VectorParser.unknownKey(alt, VectorParser.ALTERNATIVE_HEADER_KEYS, path + "/alternatives/" + j++);
+            }
+        }
+        if (key != null) {
+            throw new VerifyException(name + ": the family header has " + key + ", a key the schema does not have");
+        }
         String family = data.get("family").stringValue();
         if (headers.containsKey(family)) {
             throw new VerifyException(name + ": family " + family + " is loaded twice");
         }
         headers.put(family, data);
         return family;
+    }
+
+    private static java.util.Set<String> withVectors() {
+        java.util.Set<String> keys = new java.util.HashSet<>(VectorParser.HEADER_KEYS);
+        keys.add("vectors");
+        return keys;
     }
 
     /** A test source for JUnit: classpath or file, with the line when known. */

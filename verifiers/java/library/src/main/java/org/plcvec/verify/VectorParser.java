@@ -27,6 +27,82 @@ final class VectorParser {
         }
     }
 
+    // The keys the schema (vectors/schema/vector-file.schema.json) has at each level. A key outside
+    // them is refused, not ignored (CONTRACT.md, Loading): it may carry a meaning this runner would
+    // silently miss.
+    private static final Set<String> VECTOR_KEYS = Set.of("id", "family", "instruction", "st", "printed",
+            "description", "tags", "clauses", "assumes", "initial", "steps", "final", "outcome", "alternatives");
+    private static final Set<String> INITIAL_KEYS = Set.of("devices", "operands", "scratch");
+    private static final Set<String> STEP_KEYS = Set.of("set", "rlo_in", "clock", "en", "input", "elapsed_ms", "expect");
+    private static final Set<String> EXPECT_KEYS = Set.of("devices", "result");
+    private static final Set<String> FINAL_KEYS = Set.of("devices");
+    private static final Set<String> ASSUMES_KEYS = Set.of("device_sizes");
+    private static final Set<String> OUTCOME_KEYS = Set.of("category", "errors");
+    private static final Set<String> DEFINED_KEYS = Set.of("category", "interpretations", "default", "reason");
+    private static final Set<String> ERROR_KEYS = Set.of("step", "code", "device");
+    private static final Set<String> ALTERNATIVE_KEYS = Set.of("choices", "expect", "final", "outcome");
+    static final Set<String> HEADER_KEYS = Set.of("count", "family", "generated", "instructions", "interpretations",
+            "kind", "schema_version", "spec_file", "spec_sha256", "tags", "title");
+    static final Set<String> INTERPRETATION_KEYS = Set.of("id", "question", "default", "alternatives");
+    static final Set<String> ALTERNATIVE_HEADER_KEYS = Set.of("id", "says");
+
+    /** A key the schema does not have at {@code path}: the first one, or null. */
+    static String unknownKey(JsonNode node, Set<String> allowed, String path) {
+        if (node == null || !node.isObject()) {
+            return null;
+        }
+        for (String key : node.propertyNames()) {
+            if (!allowed.contains(key)) {
+                return (path.isEmpty() ? "" : path + "/") + key;
+            }
+        }
+        return null;
+    }
+
+    private static void known(JsonNode node, Set<String> allowed, String path) throws Bad {
+        String key = unknownKey(node, allowed, path);
+        if (key != null) {
+            throw new Bad(key + ": a key the schema does not have");
+        }
+    }
+
+    private static void outcomeKeys(JsonNode outcome, String path) throws Bad {
+        known(outcome, outcome.has("interpretations") ? DEFINED_KEYS : OUTCOME_KEYS, path);
+        int i = 0;
+        for (JsonNode e : outcome.path("errors")) {
+            known(e, ERROR_KEYS, path + "/errors/" + i++);
+        }
+        if (outcome.has("default")) {
+            outcomeKeys(outcome.get("default"), path + "/default");
+        }
+    }
+
+    private static void knownKeys(JsonNode v) throws Bad {
+        known(v, VECTOR_KEYS, "");
+        known(v.path("assumes"), ASSUMES_KEYS, "assumes");
+        known(v.get("initial"), INITIAL_KEYS, "initial");
+        int i = 0;
+        for (JsonNode st : v.get("steps")) {
+            known(st, STEP_KEYS, "steps/" + i);
+            known(st.get("expect"), EXPECT_KEYS, "steps/" + i++ + "/expect");
+        }
+        known(v.get("final"), FINAL_KEYS, "final");
+        outcomeKeys(v.get("outcome"), "outcome");
+        i = 0;
+        for (JsonNode alt : v.path("alternatives")) {
+            String path = "alternatives/" + i++;
+            known(alt, ALTERNATIVE_KEYS, path);
+            int s = 0;
+            for (JsonNode e : alt.path("expect")) {
+                known(e, EXPECT_KEYS, path + "/expect/" + s++);
+            }
+            known(alt.path("final"), FINAL_KEYS, path + "/final");
+            if (alt.has("outcome")) {
+                outcomeKeys(alt.get("outcome"), path + "/outcome");
+            }
+        }
+    }
+
     static Vector vector(JsonNode v, String family) throws Bad {
         if (!v.isObject()) {
             throw new Bad("not a JSON object");
@@ -56,6 +132,7 @@ final class VectorParser {
         if (!v.path("final").path("devices").isObject()) {
             throw new Bad("`final` needs `devices`");
         }
+        knownKeys(v);
         Set<String> names = new LinkedHashSet<>();
         JsonNode outcome = v.get("outcome");
         List<String> interpretations = strings(outcome.path("interpretations"), "outcome.interpretations");

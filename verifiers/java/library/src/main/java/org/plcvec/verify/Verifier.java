@@ -108,8 +108,9 @@ public final class Verifier {
                 }
             }
             this.followed = Collections.unmodifiableMap(followed);
+            long[] cpuWrites = impl.cpuWrites().stream().mapToLong(d -> Address.of(d).key()).toArray();
             for (Vector v : vectors) {
-                expected.put(v.id(), Expected.of(v, all, defaults));
+                expected.put(v.id(), Expected.of(v, all, defaults).cpuWrites(cpuWrites));
             }
             this.memories = new Memory[vectors.size()];
             this.expectedInOrder = vectors.stream().map(v -> expected.get(v.id())).toArray(Expected[]::new);
@@ -144,13 +145,19 @@ public final class Verifier {
         return plan().followed;
     }
 
+    /** What a report of this run says it was. */
+    public Report.Header header() {
+        return new Report.Header(suite(), implementation.name(), implementation.version(), followed(),
+                implementation.cpuWrites());
+    }
+
     /** Run one vector and judge it, known failures applied. */
-    public Result check(Vector v) {
+    public Verdict check(Vector v) {
         Expected e = plan().expected.get(v.id());
         if (e == null) {
             throw new VerifyException("vector " + v.id() + " is not in the selection (" + selection + ")");
         }
-        Result r = judge(v, e, null);
+        Verdict r = judge(v, e, null);
         known.apply(r);
         return r;
     }
@@ -159,20 +166,20 @@ public final class Verifier {
     public Report run() {
         long start = System.nanoTime();
         Plan p = plan();
-        List<Result> results = new ArrayList<>(p.vectors.size());
+        List<Verdict> results = new ArrayList<>(p.vectors.size());
         int i = 0;
         for (Vector v : p.vectors) {
             Memory m = p.memories[i];
             if (m == null && implementation instanceof Emulator) {
                 m = p.memories[i] = v.newMemory();
             }
-            Result r = judge(v, p.expectedInOrder[i], m);
+            Verdict r = judge(v, p.expectedInOrder[i], m);
             known.apply(r);
             results.add(r);
             i++;
         }
         results.addAll(known.unknownIds(suite()));
-        return new Report(this, results, (System.nanoTime() - start) / 1e9);
+        return new Report(header(), results, (System.nanoTime() - start) / 1e9);
     }
 
     /**
@@ -229,22 +236,22 @@ public final class Verifier {
 
     private static final List<Problem> NONE = List.of();
 
-    private Result judge(Vector v, Expected e, Memory reuse) {
+    private Verdict judge(Vector v, Expected e, Memory reuse) {
         if (!implementation.supports(v.instruction())) {
-            return new Result(v.id(), v, Status.SKIP, NONE, implementation.name() + " does not support "
+            return new Verdict(v.id(), v, Status.SKIP, NONE, implementation.name() + " does not support "
                     + v.instruction(), e.judgedBy);
         }
         try {
             List<Problem> problems = implementation instanceof Emulator
                     ? runEmulator((Emulator) implementation, v, e, reuse)
                     : runContract(v, e);
-            return new Result(v.id(), v, problems.isEmpty() ? Status.PASS : Status.FAIL, problems, null, e.judgedBy);
+            return new Verdict(v.id(), v, problems.isEmpty() ? Status.PASS : Status.FAIL, problems, null, e.judgedBy);
         } catch (SkipVector s) {
-            return new Result(v.id(), v, Status.SKIP, NONE, s.getMessage(), e.judgedBy);
+            return new Verdict(v.id(), v, Status.SKIP, NONE, s.getMessage(), e.judgedBy);
         } catch (VirtualMachineError fatal) {
             throw fatal;
         } catch (Throwable t) {   // the implementation's failure on this vector, not the run's
-            return new Result(v.id(), v, Status.ERROR, NONE, describe(t), e.judgedBy);
+            return new Verdict(v.id(), v, Status.ERROR, NONE, describe(t), e.judgedBy).causedBy(t);
         }
     }
 
@@ -296,11 +303,44 @@ public final class Verifier {
         return problems;
     }
 
-    /** {@code IllegalStateException: step 0 has no en (MyCpu.java:42)}. */
+    /**
+     * {@code IllegalStateException: step 0 has no en (MyCpu.java:42)}: located at the
+     * implementation's own frame, the first one outside the JDK and this library (a
+     * {@code DateTimeException} thrown by {@code LocalDate.of} is the caller's line, not
+     * {@code LocalDate.java}).
+     */
     static String describe(Throwable t) {
-        StackTraceElement[] trace = t.getStackTrace();
-        String where = trace.length > 0 && trace[0].getFileName() != null
-                ? " (" + trace[0].getFileName() + ":" + trace[0].getLineNumber() + ")" : "";
+        StackTraceElement frame = ownFrame(t);
+        String where = frame != null && frame.getFileName() != null
+                ? " (" + frame.getFileName() + ":" + frame.getLineNumber() + ")" : "";
         return t.getClass().getSimpleName() + ": " + t.getMessage() + where;
+    }
+
+    /** Whether {@code cls} is this library's own code (by where it was loaded from, not by its package). */
+    private static boolean library(String cls) {
+        if (!cls.startsWith("org.plcvec.verify.")) {
+            return false;
+        }
+        try {
+            Class<?> c = Class.forName(cls, false, Verifier.class.getClassLoader());
+            java.security.CodeSource mine = Verifier.class.getProtectionDomain().getCodeSource();
+            java.security.CodeSource its = c.getProtectionDomain().getCodeSource();
+            return mine != null && its != null && mine.getLocation().equals(its.getLocation());
+        } catch (ClassNotFoundException | SecurityException e) {
+            return false;
+        }
+    }
+
+    /** The first frame of the implementation's own code (else the top frame, else null). */
+    static StackTraceElement ownFrame(Throwable t) {
+        StackTraceElement[] trace = t.getStackTrace();
+        for (StackTraceElement e : trace) {
+            String cls = e.getClassName();
+            if (!(cls.startsWith("java.") || cls.startsWith("javax.") || cls.startsWith("jdk.")
+                    || cls.startsWith("sun.") || cls.startsWith("com.sun.") || library(cls))) {
+                return e;
+            }
+        }
+        return trace.length > 0 ? trace[0] : null;
     }
 }

@@ -14,14 +14,14 @@ import org.junit.jupiter.api.Test;
 class CompareTest {
     static final String PROGRAM = "fx5-time-add/TADD/manual-example/program";
 
-    private static Result judge(Implementation impl) {
+    private static Verdict judge(Implementation impl) {
         Verifier v = Verifier.of(impl).selection(Selection.all().ids(PROGRAM));
         return v.check(v.vectors().get(0));
     }
 
     @Test
     void theExpectedStatePasses() {
-        Result r = judge(Fakes.echo((s, d) -> { }));
+        Verdict r = judge(Fakes.echo((s, d) -> { }));
         assertEquals(Status.PASS, r.status(), r.report());
         assertEquals(13, Suite.golden().byId(PROGRAM).expectation().finalValues()[
                 List.of(Suite.golden().byId(PROGRAM).expectation().finalDevices()).indexOf(Address.of("D30"))]);
@@ -29,21 +29,21 @@ class CompareTest {
 
     @Test
     void aChangedWordIsNamedWithItsValueBefore() {
-        Result r = judge(Fakes.echo((s, d) -> d.put("D31", 41)));
+        Verdict r = judge(Fakes.echo((s, d) -> d.put("D31", 41)));
         assertEquals(Status.FAIL, r.status());
         assertEquals("step 0 D31: expected 40, got 41 (before the step: 65535)", r.problems().get(0).line());
     }
 
     @Test
     void aBitReportedAsOneIsWrong() {
-        Result r = judge(Fakes.echo((s, d) -> d.put("SM700", 0)));
+        Verdict r = judge(Fakes.echo((s, d) -> d.put("SM700", 0)));
         assertEquals(Status.FAIL, r.status());
         assertEquals("step 0 SM700: expected false, got 0 (the step must leave it unchanged)", r.problems().get(0).line());
     }
 
     @Test
     void aWordOutOfRangeOrOfAnotherTypeIsWrong() {
-        Result r = judge(Fakes.echo((s, d) -> d.put("D30", 65536 + 13)));
+        Verdict r = judge(Fakes.echo((s, d) -> d.put("D30", 65536 + 13)));
         assertEquals("step 0 D30: expected 13, got 65549 (Integer) (before the step: 65535)", r.problems().get(0).line());
         r = judge(Fakes.echo((s, d) -> d.put("D30", "13")));
         assertEquals("step 0 D30: expected 13, got \"13\" (before the step: 65535)", r.problems().get(0).line());
@@ -51,14 +51,14 @@ class CompareTest {
 
     @Test
     void aWriteOutsideTheVectorIsReported() {
-        Result r = judge(Fakes.echo((s, d) -> d.put("D33", 0)));
+        Verdict r = judge(Fakes.echo((s, d) -> d.put("D33", 0)));
         assertEquals(Status.FAIL, r.status());
         assertEquals("step 0 D33: expected <not in the vector>, got 0", r.problems().get(0).line());
     }
 
     @Test
     void aMissingDeviceIsNotReported() {
-        Result r = judge(Fakes.echo((s, d) -> d.remove("SD0")));
+        Verdict r = judge(Fakes.echo((s, d) -> d.remove("SD0")));
         assertEquals("step 0 SD0: expected 0, got <not reported> (the step must leave it unchanged)",
                 r.problems().get(0).line());
     }
@@ -66,7 +66,7 @@ class CompareTest {
     @Test
     void theWrongNumberOfStepsFails() {
         Implementation none = request -> List.of();
-        Result r = judge(none);
+        Verdict r = judge(none);
         assertEquals("steps: expected 1 steps, got 0 steps", r.problems().get(0).line());
     }
 
@@ -75,7 +75,7 @@ class CompareTest {
         Implementation boom = request -> {
             throw new IllegalStateException("no such instruction");
         };
-        Result r = judge(boom);
+        Verdict r = judge(boom);
         assertEquals(Status.ERROR, r.status());
         assertTrue(r.message().startsWith("IllegalStateException: no such instruction"), r.message());
         Implementation skip = request -> {
@@ -88,7 +88,7 @@ class CompareTest {
     void theReportNamesIdAlternativesAndClauses() {
         Verifier v = Verifier.of(Fakes.echo((s, d) -> d.put("SM700", true)))
                 .selection(Selection.all().ids("fx5-time-add/TADD/carry/below-wrap/flags-on-before"));
-        Result r = v.check(v.vectors().get(0));
+        Verdict r = v.check(v.vectors().get(0));
         String report = r.report();
         assertTrue(report.startsWith("FAIL fx5-time-add/TADD/carry/below-wrap/flags-on-before\n"), report);
         assertTrue(report.contains("    judged by: TADD-FLAGS-OFF=written-each-execution\n"), report);

@@ -28,7 +28,7 @@ class KnownFailuresTest {
     void aListedFailureIsXfailAndTheRunPasses() {
         Report r = run("[[known-failure]]\nid = \"" + WRONG + "\"\nreason = \"D31 off by one\"\n");
         assertTrue(r.passed(), r.summary());
-        Result x = r.results().stream().filter(y -> y.id().equals(WRONG)).findFirst().orElseThrow();
+        Verdict x = r.verdicts().stream().filter(y -> y.id().equals(WRONG)).findFirst().orElseThrow();
         assertEquals(Status.XFAIL, x.status());
         assertTrue(x.message().startsWith("known failure (known.toml:1): D31 off by one"), x.message());
     }
@@ -38,7 +38,7 @@ class KnownFailuresTest {
         Report r = run("[[known-failure]]\nid = \"" + WRONG + "\"\nreason = \"x\"\n\n[[known-failure]]\nid = \"" + RIGHT
                 + "\"\nreason = \"fixed long ago\"\n");
         assertFalse(r.passed());
-        Result x = r.results().stream().filter(y -> y.id().equals(RIGHT)).findFirst().orElseThrow();
+        Verdict x = r.verdicts().stream().filter(y -> y.id().equals(RIGHT)).findFirst().orElseThrow();
         assertEquals(Status.STALE, x.status());
         assertTrue(x.message().contains("known.toml:5"), x.message());
     }

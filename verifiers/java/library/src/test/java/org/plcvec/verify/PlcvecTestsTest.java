@@ -22,7 +22,8 @@ class PlcvecTestsTest {
     @Test
     void oneTestPerVectorDisplayedByItsId() throws Throwable {
         List<DynamicNode> n = nodes(PlcvecTests.of(Fakes.echo((s, d) -> { })).selection(Selection.all().families(Family.FX5_TIME_ADD)));
-        assertEquals(Selection.all().families(Family.FX5_TIME_ADD).apply(Suite.golden()).size(), n.size());
+        assertEquals(Selection.all().families(Family.FX5_TIME_ADD).apply(Suite.golden()).size() + 1, n.size());
+        assertEquals(PlcvecTests.END, n.get(n.size() - 1).getDisplayName());
         assertEquals(Suite.golden().vectors().stream().filter(v -> v.family().equals("fx5-time-add")).findFirst().orElseThrow().id(),
                 n.get(0).getDisplayName());
         ((DynamicTest) n.get(0)).getExecutable().execute();
@@ -76,8 +77,88 @@ class PlcvecTestsTest {
                 return List.of();
             }
         };
-        List<DynamicNode> m = nodes(PlcvecTests.of(nothing).selection(Selection.all().families(Family.FC6A_HOUR_METER)));
-        assertEquals("plcvec: nothing to run", m.get(0).getDisplayName());
+        AssertionFailedError e = assertThrows(AssertionFailedError.class,
+                () -> runAll(PlcvecTests.of(nothing).selection(Selection.all().families(Family.FC6A_HOUR_METER))));
+        assertTrue(e.getMessage().startsWith("plcvec: nothing tested: every one of the "), e.getMessage());
+    }
+
+    /** Run every node as JUnit would, in order; skipped vectors are aborted and go on. */
+    private static void runAll(PlcvecTests t) throws Throwable {
+        for (DynamicNode node : nodes(t)) {
+            try {
+                ((DynamicTest) node).getExecutable().execute();
+            } catch (TestAbortedException skipped) {
+                // as JUnit: the next test runs
+            }
+        }
+    }
+
+    @Test
+    void skippingEverythingIsNotAPass() {
+        Implementation skips = new Implementation() {
+            @Override
+            public List<StepState> run(VectorRequest vector) {
+                throw new SkipVector("by design");
+            }
+        };
+        AssertionFailedError e = assertThrows(AssertionFailedError.class,
+                () -> runAll(PlcvecTests.of(skips).selection(Selection.all().families(Family.FX5_TIME_ADD))));
+        assertTrue(e.getMessage().contains("nothing tested"), e.getMessage());
+    }
+
+    @Test
+    void aVectorThatNeverAnswersEndsTheRunNamingIt() throws Throwable {
+        Implementation loops = new Implementation() {
+            @Override
+            public List<StepState> run(VectorRequest vector) throws Exception {
+                if (vector.id().equals(CompareTest.PROGRAM)) {
+                    while (true) {
+                        Thread.onSpinWait();   // deaf to interrupts, like a real endless loop
+                    }
+                }
+                return Fakes.echo((s, d) -> { }).run(vector);
+            }
+        };
+        List<DynamicNode> n = nodes(PlcvecTests.of(loops).selection(Selection.all().families(Family.FX5_TIME_ADD))
+                .environment(Environment.of(java.util.Map.of("PLCVEC_TIMEOUT", "0.3"))));
+        int at = indexOf(n, CompareTest.PROGRAM);
+        for (int i = 0; i < at; i++) {
+            ((DynamicTest) n.get(i)).getExecutable().execute();
+        }
+        PlcvecTests.ImplementationError e = assertThrows(PlcvecTests.ImplementationError.class,
+                () -> ((DynamicTest) n.get(at)).getExecutable().execute());
+        assertTrue(e.getMessage().contains("no answer within 0.3 s (PLCVEC_TIMEOUT)"), e.getMessage());
+        assertThrows(TestAbortedException.class, () -> ((DynamicTest) n.get(indexOf(n, CompareTest.PROGRAM) + 1))
+                .getExecutable().execute());
+        AssertionFailedError end = assertThrows(AssertionFailedError.class,
+                () -> ((DynamicTest) n.get(n.size() - 1)).getExecutable().execute());
+        assertTrue(end.getMessage().contains("the run ended at " + CompareTest.PROGRAM), end.getMessage());
+    }
+
+    private static int indexOf(List<DynamicNode> n, String id) {
+        for (int i = 0; i < n.size(); i++) {
+            if (n.get(i).getDisplayName().equals(id)) {
+                return i;
+            }
+        }
+        throw new AssertionError(id);
+    }
+
+    @Test
+    void anExceptionIsAnErrorLocatedInTheImplementation() {
+        Implementation throwsFromTheJdk = new Implementation() {
+            @Override
+            public List<StepState> run(VectorRequest vector) {
+                java.time.LocalDate.of(2023, 2, 29);   // the line the message must give
+                return List.of();
+            }
+        };
+        List<DynamicNode> n = nodes(PlcvecTests.of(throwsFromTheJdk).selection(Selection.all().ids(CompareTest.PROGRAM)));
+        PlcvecTests.ImplementationError e = assertThrows(PlcvecTests.ImplementationError.class,
+                () -> ((DynamicTest) n.get(0)).getExecutable().execute());
+        assertTrue(e.getMessage().contains("DateTimeException: Invalid date 'February 29' as '2023' is not a leap year"
+                + " (PlcvecTestsTest.java:"), e.getMessage());   // the caller's line, not LocalDate.java
+        assertTrue(e.getCause() instanceof java.time.DateTimeException);
     }
 
     @Test

@@ -7,6 +7,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 
 import org.junit.jupiter.api.Test;
@@ -73,15 +74,51 @@ class SelectionTest {
     }
 
     @Test
-    void systemPropertiesNarrowAndNeverWiden() {
+    void theVariablesNarrowAndNeverWiden() {
+        Environment env = Environment.of(Map.of("PLCVEC_INSTRUCTION", "TADDP"));
+        List<Vector> vs = env.narrow(Selection.all().families(Family.FX5_TIME_ADD), suite).apply(suite);
+        assertFalse(vs.isEmpty());
+        assertTrue(vs.stream().allMatch(v -> v.instruction().equals("TADDP")));
+        assertTrue(env.narrow(Selection.all().families(Family.FC6A_HOUR_METER), suite).apply(suite).isEmpty());
+    }
+
+    @Test
+    void aSystemPropertyOverridesItsVariable() {
+        assertEquals("plcvec.known-failures", Environment.property("PLCVEC_KNOWN_FAILURES"));
         System.setProperty("plcvec.instruction", "TADDP");
         try {
-            List<Vector> vs = Selection.all().families(Family.FX5_TIME_ADD).withSystemProperties().apply(suite);
-            assertFalse(vs.isEmpty());
-            assertTrue(vs.stream().allMatch(v -> v.instruction().equals("TADDP")));
-            assertTrue(Selection.all().families(Family.FC6A_HOUR_METER).withSystemProperties().apply(suite).isEmpty());
+            assertEquals("TADDP", Environment.current().get("PLCVEC_INSTRUCTION"));
         } finally {
             System.clearProperty("plcvec.instruction");
         }
+    }
+
+    /** The same usage errors as {@code plcvec verify}, each naming the variable and its value. */
+    @Test
+    void aBadVariableNamesItselfAndItsValue() {
+        String[][] cases = {
+            {"PLCVEC_FAMILY", ",", "an empty name"},
+            {"PLCVEC_FAMILY", "fx5-time-add,", "an empty name"},
+            {"PLCVEC_FAMILY", "no-such-family", "known: "},
+            {"PLCVEC_INSTRUCTION", "NO-SUCH-INSTRUCTION", "TADDP"},
+            {"PLCVEC_TAG", "no-such-tag", "boundary"},
+            {"PLCVEC_INTERPRETATION", "NO-SUCH-INTERPRETATION", "TADD-EXACT-24"},
+            {"PLCVEC_ID", "no-such-family/*", "matches no vector id"},
+            {"PLCVEC_SHARD", "3/2", "between 1 and N"},
+            {"PLCVEC_SHARD", "0/2", "between 1 and N"},
+            {"PLCVEC_SHARD", "half", "K/N"},
+        };
+        for (String[] c : cases) {
+            Environment env = Environment.of(Map.of(c[0], c[1]));
+            VerifyException e = assertThrows(VerifyException.class, () -> env.narrow(Selection.all(), suite), c[1]);
+            assertTrue(e.getMessage().startsWith(c[0] + "=" + c[1] + ": "), e.getMessage());
+            assertTrue(e.getMessage().contains(c[2]), e.getMessage());
+        }
+        for (String t : new String[] {"soon", "0", "-1", "NaN", "Infinity"}) {
+            VerifyException e = assertThrows(VerifyException.class, () -> Environment.of(Map.of("PLCVEC_TIMEOUT", t)).timeout());
+            assertTrue(e.getMessage().startsWith("PLCVEC_TIMEOUT=" + t + ": "), e.getMessage());
+        }
+        assertEquals(java.time.Duration.ofMillis(2500), Environment.of(Map.of("PLCVEC_TIMEOUT", "2.5")).timeout());
+        assertEquals(java.time.Duration.ofSeconds(10), Environment.of(Map.of()).timeout());
     }
 }

@@ -21,7 +21,7 @@ import org.junit.jupiter.api.TestFactory;
 import org.plcvec.spec.Family;
 import org.plcvec.verify.Problem;
 import org.plcvec.verify.Report;
-import org.plcvec.verify.Result;
+import org.plcvec.verify.Verdict;
 import org.plcvec.verify.Selection;
 import org.plcvec.verify.Status;
 import org.plcvec.verify.Suite;
@@ -78,7 +78,7 @@ class MutantsTest {
             Report report = verifier.run();
             assertFalse(report.passed(), m.name() + " passed every vector of " + m.families());
 
-            Result r = verifier.check(Suite.golden().byId(c.vector()));
+            Verdict r = verifier.check(Suite.golden().byId(c.vector()));
             assertEquals(Status.FAIL, r.status(), m.name() + " on " + c.vector() + ": " + r.report());
             Problem p = r.problems().stream().filter(x -> x.field().equals(c.field())).findFirst().orElse(null);
             assertNotNull(p, m.name() + " on " + c.vector() + " should differ at " + c.field() + ":\n" + r.report());

@@ -5,7 +5,7 @@ import java.util.List;
 import java.util.Map;
 
 /** The verdict on one vector, with everything a person needs to read it. */
-public final class Result {
+public final class Verdict {
     /** Field lines shown per failing vector in a report. */
     static final int SHOW_PROBLEMS = 12;
 
@@ -15,8 +15,9 @@ public final class Result {
     private final List<Problem> problems;
     private String message;
     private final Map<String, String> judgedBy;
+    private Throwable cause;              // what the implementation threw (ERROR), or null
 
-    Result(String id, Vector vector, Status status, List<Problem> problems, String message, Map<String, String> judgedBy) {
+    Verdict(String id, Vector vector, Status status, List<Problem> problems, String message, Map<String, String> judgedBy) {
         this.id = id;
         this.vector = vector;
         this.status = status;
@@ -55,6 +56,16 @@ public final class Result {
     /** interpretation → the alternative the vector was judged by (only those it depends on). */
     public Map<String, String> judgedBy() {
         return judgedBy;
+    }
+
+    /** What the implementation threw, for an {@link Status#ERROR} it caused; else null. */
+    public Throwable cause() {
+        return cause;
+    }
+
+    Verdict causedBy(Throwable t) {
+        this.cause = t;
+        return this;
     }
 
     void mark(Status status, String message) {

@@ -1,0 +1,27 @@
+package org.plcvec.verify;
+
+import org.junit.platform.launcher.TestExecutionListener;
+import org.junit.platform.launcher.TestPlan;
+
+/**
+ * Speaks when a test run filtered by the test runner's own filter ({@code mvn test -Dtest=...})
+ * ran no plcvec vector: a filter matching nothing is not a pass, and the vectors are selected
+ * with {@code PLCVEC_ID}. Registered with the JUnit Platform through
+ * {@code META-INF/services}; it only prints (a listener cannot fail a run), so whether such a run
+ * fails is the test runner's: Surefire fails a class pattern that matches nothing, but not a
+ * method pattern ({@code -Dtest=MyTest#nothing}).
+ */
+public final class FilterWatch implements TestExecutionListener {
+    /** Set by {@link PlcvecTests} when a factory's tests are built in this process. */
+    static volatile boolean factoryRan;
+
+    @Override
+    public void testPlanExecutionFinished(TestPlan plan) {
+        String filter = System.getProperty("test");
+        if (filter != null && !filter.isBlank() && !factoryRan) {
+            System.err.println("plcvec: the test runner's own filter (-Dtest=" + filter + ") ran no plcvec vector; a "
+                    + "filter that matches nothing tests nothing. Select vectors with " + Environment.ID
+                    + " instead (e.g. " + Environment.ID + "='fx5-time-add/TADDP/*' mvn test).");
+        }
+    }
+}
