@@ -29,7 +29,9 @@ python3 -m plcvec fuzz --examples 500 --seed 2 --adapter "verifiers/java/referen
     --choose FX5-SM709-SCOPE=compared-operands --choose FX5-AND-OR-WHEN-OFF=short-circuit \
     --choose TADD-EXACT-24=carry-above-24 --choose TADD-ON-ERROR=computed --choose HOUR-OUTPUT-OFF=recompared \
     --choose HOUR-INPUT-OFF=hold-drop-fraction --choose CP1E-NON-BCD=raw-bytes --choose CP1E-ALL-MASKED=not-compared \
-    --choose CP1E-ER-FLAG=held"
+    --choose CP1E-ER-FLAG=held --choose CP1E-ERROR-FLAGS=off --choose HOUR-FIRST-SCAN=from-next-scan \
+    --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset --choose FX5-OR-ON-ERROR=result-off \
+    --choose TADD-ERROR-ORDER=field-range-first"
 
 # The shared table of faults through the README's entry point (the JUnit 5 factory under
 # Surefire), every row; the modules are built by now, so `--build` only compiles the hostile ones.

@@ -143,9 +143,14 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         }
     }
 
-    /** Error: P_ER on, execution condition OFF, the six arithmetic flags untouched. */
+    /** Error: P_ER on, execution condition OFF, the six arithmetic flags as CP1E-ERROR-FLAGS says. */
     protected boolean error() {
         mem.setBit(P_ER, true);
+        if (settings.cp1eErrorFlagsOff) {
+            for (Address flag : FLAGS) {
+                mem.setBit(flag, false);
+            }
+        }
         return false;
     }
 

@@ -25,6 +25,8 @@ public class Fc6aHourMeter implements Emulator.Scan {
     protected long fractionMs;
     /** For HOUR-OUTPUT-OFF=recompared: D2 stays on across a wrap. */
     protected boolean wrapped;
+    /** The input at the previous execution; before the first step it counts as off (HOUR-FIRST-SCAN). */
+    protected boolean inputWasOn;
 
     public Fc6aHourMeter(VectorRequest vector, Memory memory, Settings settings) {
         if (!vector.instruction().equals("HOUR")) {
@@ -39,6 +41,8 @@ public class Fc6aHourMeter implements Emulator.Scan {
 
     @Override
     public Boolean execute(Step step) {
+        boolean turnedOn = step.input() && !inputWasOn;
+        inputWasOn = step.input();
         if (!step.input()) {
             // "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF.
             switch (settings.hourInputOff) {
@@ -51,10 +55,16 @@ public class Fc6aHourMeter implements Emulator.Scan {
                     break;
                 default:                // HOLD: nothing changes
             }
+            if (settings.hourPresetEveryExecution) {
+                checkPreset();          // HOUR-PRESET-CHECK=every-execution: with the input off too
+            }
             return null;
         }
-        // The whole elapsed time since the previous execution is ON time.
-        fractionMs += step.elapsedMs();
+        // The elapsed time since the previous execution is ON time; at the execution the input
+        // turns on, only under HOUR-FIRST-SCAN=counts.
+        if (!(turnedOn && settings.hourFromNextScan)) {
+            fractionMs += step.elapsedMs();
+        }
         long whole = fractionMs / 1000;
         fractionMs %= 1000;
         long total = measured() + whole;
@@ -65,13 +75,8 @@ public class Fc6aHourMeter implements Emulator.Scan {
         total %= cycle();
         store(total);
 
-        int[] p = preset();
-        if (!presetValid(p)) {
-            // "... a user program execution error will result, turning on special internal relay
-            // M8004 ... but the input ON duration is measured." "... is changed to an invalid value
-            // after the comparison output has turned on, the comparison output is turned off."
-            mem.setBit(M8004, true);
-            mem.setBit(d2, false);
+        int[] p = checkPreset();
+        if (p == null) {
             return null;
         }
         long preset = p[0] * 3600L + p[1] * 60L + p[2];
@@ -95,6 +100,23 @@ public class Fc6aHourMeter implements Emulator.Scan {
             mem.setBit(d2, reached || (wrapped && mem.bit(d2)));
         }
         return null;
+    }
+
+    /** Read and check S1: the preset, or null when it is invalid (M8004 on, D2 off). */
+    protected int[] checkPreset() {
+        int[] p = preset();
+        if (!presetValid(p)) {
+            // "... a user program execution error will result, turning on special internal relay
+            // M8004 ... but the input ON duration is measured." "... is changed to an invalid value
+            // after the comparison output has turned on, the comparison output is turned off."
+            mem.setBit(M8004, true);
+            mem.setBit(d2, false);
+            return null;
+        }
+        if (settings.hourM8004OffWhenValid) {
+            mem.setBit(M8004, false);   // the page never says M8004 turns off: HOUR-M8004-OFF=valid-preset
+        }
+        return p;
     }
 
     protected long cycle() {

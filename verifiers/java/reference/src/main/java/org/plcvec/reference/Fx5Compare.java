@@ -62,9 +62,16 @@ public class Fx5Compare implements Emulator.Scan {
         // "(Devices are used as a normally open contact.)" NOTES.md (iQ-R processing times): "an
         // AND/OR comparison is not executed while the preceding logic is off" (FX5-AND-OR-WHEN-OFF).
         Fx5AndOrWhenOff logic = settings.fx5Logic;
-        return Contact.result(form, step, logic != Fx5AndOrWhenOff.ALWAYS_EXECUTED, logic == Fx5AndOrWhenOff.SHORT_CIRCUIT,
-                () -> evaluate(step));
+        erred = false;
+        boolean result = Contact.result(form, step, logic != Fx5AndOrWhenOff.ALWAYS_EXECUTED,
+                logic == Fx5AndOrWhenOff.SHORT_CIRCUIT, () -> evaluate(step));
+        // An execution that turns SM709 on is a non-conductive contact, ORed like any other; under
+        // FX5-OR-ON-ERROR=result-off it turns the OR form's result off too.
+        return erred && form == Contact.Form.OR && settings.fx5OrResultOffOnError ? false : result;
     }
+
+    /** Whether this execution turned SM709 on. */
+    protected boolean erred;
 
     /** The comparison itself (the "contact"). */
     protected boolean evaluate(Step step) {
@@ -130,6 +137,7 @@ public class Fx5Compare implements Emulator.Scan {
     /** SM709 on and non-continuity. "Once SM709 turns on, the on state is held": never cleared here. */
     protected boolean error() {
         mem.setBit(SM709, true);
+        erred = true;
         return false;
     }
 

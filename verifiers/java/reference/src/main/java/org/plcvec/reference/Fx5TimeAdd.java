@@ -62,7 +62,10 @@ public class Fx5TimeAdd implements Emulator.Scan {
         // "These instructions occupy three points for each of three devices"; out of range:
         // error 2820H, nothing read or written.
         if (!mem.inRange(s1, 3) || !mem.inRange(s2, 3) || !mem.inRange(d, 3)) {
-            error(ERR_DEVICE_RANGE);
+            // Both conditions in one execution: TADD-ERROR-ORDER says which code. Only an operand
+            // whose three words exist can be read and checked; nothing else is written.
+            boolean fieldBad = (mem.inRange(s1, 3) && !valid(read(s1))) || (mem.inRange(s2, 3) && !valid(read(s2)));
+            error(fieldBad && settings.taddFieldRangeFirst ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
             return;
         }
         int[] a = read(s1);

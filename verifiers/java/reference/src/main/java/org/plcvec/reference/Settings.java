@@ -4,6 +4,12 @@ import static org.plcvec.spec.Alternatives.Cp1eAllMasked;
 import static org.plcvec.spec.Alternatives.Cp1eAndOrWhenOff;
 import static org.plcvec.spec.Alternatives.Cp1eCHighBits;
 import static org.plcvec.spec.Alternatives.Cp1eErFlag;
+import static org.plcvec.spec.Alternatives.Cp1eErrorFlags;
+import static org.plcvec.spec.Alternatives.Fx5OrOnError;
+import static org.plcvec.spec.Alternatives.HourFirstScan;
+import static org.plcvec.spec.Alternatives.HourM8004Off;
+import static org.plcvec.spec.Alternatives.HourPresetCheck;
+import static org.plcvec.spec.Alternatives.TaddErrorOrder;
 import static org.plcvec.spec.Alternatives.Cp1eNonBcd;
 import static org.plcvec.spec.Alternatives.Cp1eOutOfRange;
 import static org.plcvec.spec.Alternatives.Fx5AndOrWhenOff;
@@ -27,14 +33,19 @@ public final class Settings {
     final Fx5Sm709Scope sm709Scope;
     final Fx5AndOrWhenOff fx5Logic;
     final boolean clockS2RangeChecked;
+    final boolean fx5OrResultOffOnError;
     // FX5 TADD
     final boolean taddFlagsSetOnly;
     final boolean taddCarryAbove24;
     final boolean taddComputedOnError;
+    final boolean taddFieldRangeFirst;
     // FC6A HOUR
     final boolean hourRecompared;
     final HourInputOff hourInputOff;
     final boolean hourZeroPresetNever;
+    final boolean hourFromNextScan;
+    final boolean hourPresetEveryExecution;
+    final boolean hourM8004OffWhenValid;
     // CP1E
     final boolean cp1eNonBcdError;
     final boolean cp1eOutOfRangeError;
@@ -42,6 +53,7 @@ public final class Settings {
     final boolean cp1eHighBitsError;
     final Cp1eAndOrWhenOff cp1eLogic;
     final boolean cp1eErHeld;
+    final boolean cp1eErrorFlagsOff;
 
     public Settings(Choices c) {
         sm709Scope = follows(c, Fx5Sm709Scope.values());
@@ -59,6 +71,12 @@ public final class Settings {
         cp1eHighBitsError = c.follows(Cp1eCHighBits.ERROR);
         cp1eLogic = follows(c, Cp1eAndOrWhenOff.values());
         cp1eErHeld = c.follows(Cp1eErFlag.HELD);
+        cp1eErrorFlagsOff = c.follows(Cp1eErrorFlags.OFF);
+        fx5OrResultOffOnError = c.follows(Fx5OrOnError.RESULT_OFF);
+        taddFieldRangeFirst = c.follows(TaddErrorOrder.FIELD_RANGE_FIRST);
+        hourFromNextScan = c.follows(HourFirstScan.FROM_NEXT_SCAN);
+        hourPresetEveryExecution = c.follows(HourPresetCheck.EVERY_EXECUTION);
+        hourM8004OffWhenValid = c.follows(HourM8004Off.VALID_PRESET);
     }
 
     private static <A extends org.plcvec.spec.Alternative> A follows(Choices c, A[] alternatives) {
