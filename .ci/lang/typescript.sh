@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# The TypeScript verifier: install, type-check, lint, build, test under node:test, the README's
-# examples under node:test and Vitest, and the reference adapter through `plcvec verify`.
+# The TypeScript verifier: install, type-check, lint, build, test under node:test; the package as
+# npm would publish it, from a clean copy; the README's code blocks built and run by an outside
+# project that installs the packed tarball; the reference adapter through `plcvec verify`; and the
+# shared table of faults.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 cd "$(dirname "$0")/../.."
 root=$PWD
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
 (
     cd verifiers/typescript
     # The README's own install command: the lock file records every platform's optional packages.
@@ -13,10 +17,91 @@ root=$PWD
     npm run --silent lint
     npm run --silent build
     npm test
-    npm run --silent example:node-test
-    npm run --silent example:vitest
+    # The licence in the tarball is the repository's, word for word.
+    cmp LICENSE "$root/LICENSE"
 )
-cd "$root"
+
+# Publishing, from a clean copy of the tracked files (no dist/, no node_modules/): `prepack` builds,
+# and `npm publish --dry-run` must pass without a warning (a `bin` npm would rewrite, a missing field).
+clean="$work/clean"
+mkdir -p "$clean"
+git ls-files -z verifiers/typescript | tar --null -T - -cf - | tar -xf - -C "$clean"
+(
+    cd "$clean/verifiers/typescript"
+    npm ci --no-audit --no-fund --loglevel=error
+    npm publish --dry-run >"$work/publish.log" 2>&1 || { cat "$work/publish.log"; exit 1; }
+    # The one warning a dry run cannot avoid without a registry account: not logged in.
+    if grep -i "warn" "$work/publish.log" | grep -v "requires you to be logged in"; then
+        echo "npm publish --dry-run warned (above)" >&2
+        exit 1
+    fi
+    npm pack --silent --pack-destination "$work" >/dev/null
+)
+tarball="$work/plcvec-0.1.0.tgz"
+listing=$(tar -tzf "$tarball")
+for f in package/LICENSE package/README.md package/dist/src/index.js package/dist/src/index.d.ts \
+    package/bin/plcvec-reference-adapter.js package/dist/src/bin/reference-adapter.js package/src/index.ts \
+    package/vectors/index.json; do
+    grep -qx "$f" <<<"$listing" || { echo "the tarball lacks $f" >&2; exit 1; }
+done
+# Every source map points at a source the tarball ships.
+tar -xzf "$tarball" -C "$work"
+node -e '
+const fs = require("node:fs"), path = require("node:path");
+const root = process.argv[1]; let n = 0;
+for (const f of fs.readdirSync(path.join(root, "dist/src"), { recursive: true })) {
+  if (!f.endsWith(".map")) continue;
+  const map = path.join(root, "dist/src", f);
+  for (const s of JSON.parse(fs.readFileSync(map, "utf8")).sources) {
+    if (!fs.existsSync(path.resolve(path.dirname(map), s))) { console.error(`${map}: ${s} is not in the tarball`); process.exit(1); }
+    n++;
+  }
+}
+if (n === 0) { console.error("no source map checked"); process.exit(1); }' "$work/package"
+
+# The README's code blocks, as an outside project: every block is marked, the runnable ones are
+# extracted (never retyped), compiled against the tarball's type declarations and run.
+python3 .ci/readme_snippets.py check verifiers/typescript/README.md
+outside="$work/outside"
+python3 .ci/readme_snippets.py extract verifiers/typescript/README.md --out "$outside"
+version() { node -p "require('$root/verifiers/typescript/node_modules/$1/package.json').version"; }
+cat >"$outside/package.json" <<EOF
+{
+  "name": "an-outside-emulator",
+  "private": true,
+  "type": "module",
+  "devDependencies": {
+    "plcvec": "file:$tarball",
+    "typescript": "$(version typescript)",
+    "@types/node": "$(version @types/node)",
+    "vitest": "$(version vitest)"
+  }
+}
+EOF
+cat >"$outside/tsconfig.json" <<'EOF'
+{
+  "compilerOptions": {
+    "target": "ES2022", "module": "NodeNext", "moduleResolution": "NodeNext", "types": ["node"],
+    "strict": true, "noUncheckedIndexedAccess": true, "exactOptionalPropertyTypes": true,
+    "outDir": "dist", "rootDir": "src"
+  },
+  "include": ["src"],
+  "exclude": ["src/vitest"]
+}
+EOF
+(
+    cd "$outside"
+    npm install --no-audit --no-fund --loglevel=error
+    npx tsc -p .
+    bash -euo pipefail node-test.sh
+    grep -q "fx5-time-add/TADD/manual-example/program" plcvec.xml
+    bash -euo pipefail known.sh
+    node dist/gate.js
+    # The command the package installs serves the protocol (hello, then bye).
+    printf '%s\n' '{"type":"hello","protocol":1,"families":{}}' '{"type":"bye"}' | npx plcvec-reference-adapter | grep -q '"type":"hello"'
+    bash -euo pipefail vitest.sh
+)
+
 python3 -m plcvec verify --adapter verifiers/typescript/reference-adapter -q
 # A mutant served the same way is rejected (exit 1): the gate is not passing by accident.
 gate_rejects typescript "verifiers/typescript/reference-adapter --mutant tadd-hour-not-wrapped" --family fx5-time-add
