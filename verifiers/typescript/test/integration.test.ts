@@ -128,7 +128,7 @@ test("no way out of the gate: an early exit, an abort, a loop, a filter of nothi
     [{ PLCVEC_HOSTILE: "exit-zero" }, [], /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: the implementation ended the process \(exit status 0\)/],
     [{ PLCVEC_HOSTILE: "crash" }, [], /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: the implementation aborted the process/],
     [{ PLCVEC_HOSTILE: "loop-forever", PLCVEC_TIMEOUT: "0.5" }, [], /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: no answer within 0.5 s \(PLCVEC_TIMEOUT\)/],
-    [{}, ["--test-name-pattern=^nothing is called this$"], /none of the 292 selected vectors ran: .*PLCVEC_ID=/],
+    [{}, ["--test-name-pattern=^nothing is called this$"], /none of the \d+ selected vectors ran: .*PLCVEC_ID=/],
     // The README's own pattern, with an implementation that skips everything: 0 passed is no pass.
     [{ PLCVEC_HOSTILE: "skips-everything" }, ["--test-name-pattern=fx5-time-add/TADDP/"], /RUN FAILS: nothing passed: all \d+ selected vectors were skipped/],
     [{ PLCVEC_HOSTILE: "bad-choice" }, [], /plcvec: error: declared interpretation "NO-SUCH-INTERPRETATION" is not in the suite \(known: CP1E-/],

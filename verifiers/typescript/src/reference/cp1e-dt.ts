@@ -61,6 +61,9 @@ export class Cp1eTimeCompare extends BaseMachine {
   /** Error: P_ER on, the result off, the six arithmetic flags untouched. */
   protected error(): boolean {
     this.mem.write(ERROR_FLAG, true);
+    // The flag table has no row for an execution without a comparison result: the six flags keep
+    // their values, or (CP1E-ERROR-FLAGS=off) are all written off.
+    if (this.choice("CP1E-ERROR-FLAGS") === "off") for (const [, flag] of FLAGS) this.mem.write(flag, false);
     return false;
   }
 

@@ -13,6 +13,8 @@ export class HourMeter extends BaseMachine {
   private fractionMs = 0;
   /** For "recompared": D2 stays on across a wrap. */
   private wrapped = false;
+  /** The input at the previous execution (before the first one it counts as off). */
+  private inputWasOn = false;
 
   protected preset(op: Operand): number[] {
     // A constant: "0 through 65,535 in hours, then minutes and seconds are set to 0."
@@ -28,12 +30,30 @@ export class HourMeter extends BaseMachine {
     return total >= preset;
   }
 
+  /** Read and check S1: the preset, or undefined when it is invalid (M8004 on, D2 off). */
+  protected checkPreset(operands: Operands, d2: string): number[] | undefined {
+    const p = this.preset(operands["S1"]!);
+    if (!this.presetValid(p)) {
+      // "a user program execution error ... turning on ... M8004 ... but the input ON duration is measured";
+      // "... changed to an invalid value after the comparison output has turned on, the comparison output is turned off."
+      this.mem.write(ERROR_FLAG, true);
+      this.mem.write(d2, false);
+      return undefined;
+    }
+    // The page never says M8004 turns off; HOUR-M8004-OFF=valid-preset does.
+    if (this.choice("HOUR-M8004-OFF") === "valid-preset") this.mem.write(ERROR_FLAG, false);
+    return p;
+  }
+
   execute(instruction: string, operands: Operands, step: StepInputs): undefined {
     if (instruction !== "HOUR") throw new Error(`not HOUR: ${instruction}`);
     const mem = this.mem;
     const d1 = deviceOf(operands["D1"], "D1");
     const d2 = deviceOf(operands["D2"], "D2");
-    if (step.input !== true) {
+    const on = step.input === true;
+    const turnedOn = on && !this.inputWasOn;
+    this.inputWasOn = on;
+    if (!on) {
       const off = this.choice("HOUR-INPUT-OFF");
       if (off === "reset") {
         mem.writeWords(d1, [0, 0, 0]);
@@ -41,10 +61,13 @@ export class HourMeter extends BaseMachine {
       } else if (off === "hold-drop-fraction") {
         this.fractionMs = 0; // D1 kept; the part of a second already measured is lost
       }
+      // HOUR-PRESET-CHECK=every-execution: the preset is checked with the input off too.
+      if (this.choice("HOUR-PRESET-CHECK") === "every-execution") this.checkPreset(operands, d2);
       return undefined;
     }
-    // The whole elapsed time since the previous execution is ON time.
-    this.fractionMs += step.elapsed_ms ?? 0;
+    // The elapsed time since the previous execution is ON time; at the execution the input turns
+    // on, only under HOUR-FIRST-SCAN=counts.
+    if (!(turnedOn && this.choice("HOUR-FIRST-SCAN") === "from-next-scan")) this.fractionMs += step.elapsed_ms ?? 0;
     const whole = Math.floor(this.fractionMs / 1000);
     this.fractionMs %= 1000;
     const [h, m, s] = mem.words(d1, 3) as [number, number, number];
@@ -53,14 +76,8 @@ export class HourMeter extends BaseMachine {
     total %= this.cycle;
     mem.writeWords(d1, [Math.floor(total / 3600), Math.floor((total % 3600) / 60), total % 60]);
 
-    const p = this.preset(operands["S1"]!);
-    if (!this.presetValid(p)) {
-      // "a user program execution error ... turning on ... M8004 ... but the input ON duration is measured";
-      // "... changed to an invalid value after the comparison output has turned on, the comparison output is turned off."
-      mem.write(ERROR_FLAG, true);
-      mem.write(d2, false);
-      return undefined;
-    }
+    const p = this.checkPreset(operands, d2);
+    if (p === undefined) return undefined;
     const preset = p[0]! * 3600 + p[1]! * 60 + p[2]!;
     let reached = this.reached(total, preset);
     if (preset === 0 && this.choice("HOUR-PRESET-ZERO") === "never") reached = false;

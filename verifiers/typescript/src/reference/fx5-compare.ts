@@ -46,7 +46,11 @@ export class Fx5CompareMachine extends BaseMachine {
   }
 
   /** "SM709 turns on ... and the operation result will be non-continuity"; held until power-off: never cleared here. */
+  /** Whether the last evaluation found invalid data (turned SM709 on). */
+  protected failed = false;
+
   protected error(): boolean {
+    this.failed = true;
     this.mem.write(SM709, true);
     return false;
   }
@@ -121,7 +125,11 @@ export class Fx5CompareMachine extends BaseMachine {
       return rlo && contact;
     }
     if (rlo && logic === "short-circuit") return true;
+    this.failed = false;
     const contact = this.evaluate(condition, operands, step.clock);
+    // "SM709 turns on ... and the operation result will be non-continuity": a non-conductive
+    // contact in parallel (contact-off), or the rung's result itself off (result-off).
+    if (this.failed && this.choice("FX5-OR-ON-ERROR") === "result-off") return false;
     return rlo || contact;
   }
 

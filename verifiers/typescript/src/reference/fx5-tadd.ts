@@ -49,12 +49,18 @@ export class TaddMachine extends BaseMachine {
     const s1Dev = deviceOf(operands["s1"], "s1");
     const s2Dev = deviceOf(operands["s2"], "s2");
     const dDev = deviceOf(operands["d"], "d");
-    // "These instructions occupy three points for each of three devices": nothing read or written past the range.
-    if (!mem.inRange(s1Dev, 3) || !mem.inRange(s2Dev, 3) || !mem.inRange(dDev, 3)) return this.error(ERR_DEVICE_RANGE);
+    // "These instructions occupy three points for each of three devices": an operand past its
+    // device's range is 2820H; only an operand whose three words exist can be read and checked (3405H).
+    const outOfRange = (data: readonly number[]): boolean => data.some((v, i) => v < this.ranges[i]![0] || v > this.ranges[i]![1]);
+    const fieldsBad = (dev: string): boolean => mem.inRange(dev, 3) && outOfRange(mem.words(dev, 3).map(signed16));
+    if (!mem.inRange(s1Dev, 3) || !mem.inRange(s2Dev, 3) || !mem.inRange(dDev, 3)) {
+      // Both conditions at once: TADD-ERROR-ORDER says which code; nothing else is written.
+      const both = fieldsBad(s1Dev) || fieldsBad(s2Dev);
+      return this.error(both && this.choice("TADD-ERROR-ORDER") === "field-range-first" ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
+    }
     const s1 = mem.words(s1Dev, 3).map(signed16);
     const s2 = mem.words(s2Dev, 3).map(signed16);
-    const bad = [s1, s2].some((data) => data.some((v, i) => v < this.ranges[i]![0] || v > this.ranges[i]![1]));
-    if (bad) {
+    if (outOfRange(s1) || outOfRange(s2)) {
       this.error(ERR_VALUE_RANGE);
       if (this.choice("TADD-ON-ERROR") === "not-executed") return;
     }
