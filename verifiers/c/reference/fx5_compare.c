@@ -100,10 +100,18 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
     uint16_t s1[3], s2[3];
     read_block(m, s1_dev, s1);
     if (use_clock) {
+        /* The clock as an emulator reads it: only the fields its `fields` mask says are given. */
         const plcvec_clock *c = step->clock;
-        s2[0] = (uint16_t)(c ? (date ? c->year : c->hour) : 0);
-        s2[1] = (uint16_t)(c ? (date ? c->month : c->minute) : 0);
-        s2[2] = (uint16_t)(c ? (date ? c->day : c->second) : 0);
+        unsigned need = date ? PLCVEC_CLOCK_YEAR | PLCVEC_CLOCK_MONTH | PLCVEC_CLOCK_DAY
+                             : PLCVEC_CLOCK_HOUR | PLCVEC_CLOCK_MINUTE | PLCVEC_CLOCK_SECOND;
+        if (!c || (c->fields & need) != need) {
+            ref->input_error = date ? "the step gives no current clock with year, month and day"
+                                    : "the step gives no current clock with hour, minute and second";
+            return 0;
+        }
+        s2[0] = (uint16_t)(date ? c->year : c->hour);
+        s2[1] = (uint16_t)(date ? c->month : c->minute);
+        s2[2] = (uint16_t)(date ? c->day : c->second);
     } else
         read_block(m, s2_dev, s2);
 

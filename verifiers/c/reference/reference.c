@@ -76,6 +76,11 @@ static int run(void *ctx, const plcvec_vector *v, plcvec_out *out)
         }
         if (m->overflow)
             return plcvec_out_error(out, "the reference's memory is full");
+        if (ref->input_error) {
+            const char *why = ref->input_error;
+            ref->input_error = NULL;
+            return plcvec_out_error(out, why);
+        }
         memory_report(m, out, result);
     }
     return 0;

@@ -62,6 +62,7 @@ typedef struct plcvec_reference {
     hour_rules hour;
     cp1e_rules cp1e;
     memory mem;
+    const char *input_error;                        /* set by a step whose inputs cannot be read */
 } plcvec_reference;
 
 /* The reference following the default alternatives. */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "guard.h"
 #include "table.h"
 
 const char *const plcvec_status_names[] = {"pass", "fail", "error", "skip", "xfail", "stale"};
@@ -182,6 +183,13 @@ plcvec_judge *plcvec_judge_new(const plcvec_impl *impl, char *err, size_t errlen
         snprintf(err, errlen, "out of memory");
         return NULL;
     }
+    long bound = plcvec_timeout_ms(err, errlen);
+    if (bound < 0) {
+        free(j);
+        return NULL;
+    }
+    /* The watchdog, the crash handlers and the exit guard: once per process. */
+    plcvec_guard_install(bound);
     j->impl = *impl;
     for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
         j->alternative[i] = plcvec_interpretations[i].default_alternative;
@@ -294,6 +302,14 @@ static const plcvec_cell *cell_of(const plcvec_cell *state, size_t n, int device
     return NULL;
 }
 
+static int cpu_writes(const plcvec_judge *j, const char *name)
+{
+    for (const char *const *d = j->impl.cpu_writes; d && *d; d++)
+        if (strcmp(*d, name) == 0)
+            return 1;
+    return 0;
+}
+
 /* Compare step `s`: what was reported (cells [lo, hi)) with the expected state. */
 static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const plcvec_cell *state, size_t n_state,
                          const plcvec_cell *before, size_t n_before)
@@ -312,10 +328,29 @@ static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const p
     if (k == hi && i == n_state)
         return;
     for (i = 0; i < n_state; i++) {
-        const reported *got = NULL;
-        for (k = lo; k < hi && !got; k++)
-            if (r[k].device == state[i].device)
-                got = &r[k];
+        const reported *got = NULL, *again = NULL;
+        for (k = lo; k < hi && !again; k++)
+            if (r[k].device == state[i].device) {
+                if (!got)
+                    got = &r[k];
+                else if (r[k].type != got->type || r[k].value != got->value)
+                    again = &r[k];      /* one device, two values: neither can be believed */
+            }
+        if (again) {
+            plcvec_problem *p = problem(j, s, state[i].device);
+            if (!p)
+                return;
+            p->has_expected = 1;
+            p->expected_type = state[i].type;
+            p->expected = state[i].value;
+            p->has_actual = 1;
+            p->actual_type = got->type;
+            p->actual = got->value;
+            p->twice = 1;
+            p->second_type = again->type;
+            p->second = again->value;
+            continue;
+        }
         if (got && got->type == state[i].type && got->value == state[i].value)
             continue;
         plcvec_problem *p = problem(j, s, state[i].device);
@@ -339,6 +374,8 @@ static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const p
     for (k = lo; k < hi; k++) {     /* a write outside the vector */
         if (r[k].device >= 0 && (is_scratch(v, r[k].device) || cell_of(state, n_state, r[k].device)))
             continue;
+        if (cpu_writes(j, r[k].device >= 0 ? plcvec_device(r[k].device)->name : r[k].name))
+            continue;   /* a device the CPU writes on its own account, declared, and not in the vector */
         plcvec_problem *p = problem(j, s, r[k].device);
         if (!p)
             return;
@@ -369,7 +406,10 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
     vd->n_problems = 0;
     j->n_problems = 0;
     judged_by(j, v);
-    if (j->impl.supports && !j->impl.supports(j->impl.ctx, v->instruction)) {
+    plcvec_guard_enter(v->id);      /* supports() is the implementation's code too */
+    int supported = !j->impl.supports || j->impl.supports(j->impl.ctx, v->instruction);
+    plcvec_guard_leave();
+    if (!supported) {
         vd->status = PLCVEC_SKIP;
         snprintf(vd->message, sizeof vd->message, "the implementation does not support %s",
                  plcvec_instruction_names[v->instruction]);
@@ -383,7 +423,9 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
         return vd;
     }
     plcvec_out_reset(out);
+    plcvec_guard_enter(v->id);
     int rc = j->impl.run(j->impl.ctx, v, out);
+    plcvec_guard_leave();
     if (out->status == SKIPPED || rc == SKIPPED) {
         vd->status = PLCVEC_SKIP;
         snprintf(vd->message, sizeof vd->message, "%.300s", out->message[0] ? out->message : "skipped");
@@ -529,6 +571,15 @@ size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *vd)
             continue;
         }
         add(&t, "%s: expected ", p->name[0] ? p->name : p->device == -1 ? "result" : plcvec_device(p->device)->name);
+        if (p->twice) {
+            value(&t, 1, p->expected_type, p->expected, "");
+            add(&t, ", got two values: ");
+            value(&t, 1, p->actual_type, p->actual, "");
+            add(&t, " and ");
+            value(&t, 1, p->second_type, p->second, "");
+            add(&t, " (the device was reported twice)\n");
+            continue;
+        }
         value(&t, p->has_expected, p->expected_type, p->expected, "<not in the vector>");
         add(&t, ", got ");
         value(&t, p->has_actual, p->actual_type, p->actual, "<not reported>");

@@ -60,5 +60,6 @@ plcvec_impl plcvec_machine_impl(const plcvec_machine *m)
     impl.n_choices = m->n_choices;
     impl.supports = machine_supports;
     impl.run = machine_run;
+    impl.cpu_writes = m->cpu_writes;
     return impl;
 }

@@ -1,7 +1,9 @@
-/* Running a selection of vectors and reporting it: the C counterpart of `plcvec verify`. */
+/* Running a selection of vectors and reporting it: the C counterpart of `plcvec verify`, with its
+ * options, its environment variables, its exit statuses and its words. */
 #include <stdlib.h>
 #include <string.h>
 
+#include "guard.h"
 #include "table.h"
 
 static void header(FILE *log, const plcvec_impl *impl, plcvec_judge *j, const plcvec_vector **list, size_t selected)
@@ -23,6 +25,12 @@ static void header(FILE *log, const plcvec_impl *impl, plcvec_judge *j, const pl
         first = 0;
     }
     fprintf(log, "\n");
+    if (impl->cpu_writes && impl->cpu_writes[0]) {
+        fprintf(log, "devices the CPU writes on its own account:");
+        for (const char *const *d = impl->cpu_writes; *d; d++)
+            fprintf(log, "%s %s", d == impl->cpu_writes ? "" : ",", *d);
+        fprintf(log, "\n");
+    }
 }
 
 int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summary *summary)
@@ -32,26 +40,37 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         opt = &none;
     FILE *log = opt->log ? opt->log : stdout;
     plcvec_summary sum = {0};
-    char err[256];
+    char err[1024];
     const plcvec_vector **list = NULL;
     long n = plcvec_select(&opt->selection, &list, err, sizeof err);
     if (n < 0) {
         fprintf(log, "plcvec: %s\n", err);
-        return 2;
+        return PLCVEC_EXIT_USAGE;
     }
     if (n == 0) {
-        fprintf(log, "plcvec: the selection holds no vector (an empty selection never passes)\n");
+        fprintf(log, "plcvec: no vector selected: the selection matches nothing (an empty selection never passes)\n");
         free(list);
-        return 2;
+        return PLCVEC_EXIT_NOTHING_TESTED;
     }
     plcvec_judge *j = plcvec_judge_new(impl, err, sizeof err);
     if (!j) {
         fprintf(log, "plcvec: %s\n", err);
         free(list);
-        return 2;
+        return PLCVEC_EXIT_USAGE;
     }
     header(log, impl, j, list, (size_t)n);
+    /* Nothing of the run is left in a buffer while an implementation runs: a crash, an exit() or
+     * the watchdog inside it ends the process without flushing stdio. */
+    fflush(log);
     sum.selected = (size_t)n;
+    const char **failing = opt->write_expectations ? malloc((size_t)n * sizeof *failing) : NULL;
+    size_t n_failing = 0;
+    if (opt->write_expectations && !failing) {
+        fprintf(log, "plcvec: %s: out of memory\n", opt->write_expectations);
+        plcvec_judge_free(j);
+        free(list);
+        return PLCVEC_EXIT_USAGE;
+    }
     for (long i = 0; i < n; i++) {
         plcvec_verdict vd = *plcvec_judge_vector(j, list[i]);
         plcvec_apply_known(&vd, opt->known, opt->n_known);
@@ -63,9 +82,13 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         case PLCVEC_XFAIL: sum.xfail++; break;
         case PLCVEC_STALE: sum.stale++; break;
         }
+        if (failing && (vd.status == PLCVEC_FAIL || vd.status == PLCVEC_ERROR || vd.status == PLCVEC_XFAIL))
+            failing[n_failing++] = list[i]->id;
         if (vd.status == PLCVEC_FAIL || vd.status == PLCVEC_ERROR || vd.status == PLCVEC_STALE ||
-            (opt->verbose && (vd.status == PLCVEC_SKIP || vd.status == PLCVEC_XFAIL)))
+            (opt->verbose && (vd.status == PLCVEC_SKIP || vd.status == PLCVEC_XFAIL))) {
             plcvec_print_verdict(log, &vd);
+            fflush(log);
+        }
     }
     for (size_t k = 0; k < opt->n_known; k++)
         if (!opt->known[k].id || !plcvec_find(opt->known[k].id)) {
@@ -76,110 +99,331 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
     plcvec_judge_free(j);
     free(list);
     size_t bad = sum.failed + sum.errors + sum.stale;
-    int all_skipped = sum.skipped == sum.selected;
-    if (all_skipped)
-        fprintf(log, "plcvec: every selected vector was skipped: nothing was verified\n");
+    int rc = bad ? PLCVEC_EXIT_FAILED : sum.passed == 0 ? PLCVEC_EXIT_NOTHING_TESTED : PLCVEC_EXIT_PASSED;
+    if (rc == PLCVEC_EXIT_NOTHING_TESTED)
+        fprintf(log, "plcvec: nothing passed (%zu skipped, %zu known failures): the run proves nothing\n", sum.skipped,
+                sum.xfail);
     fprintf(log, "(%zu failed, %zu errors, %zu stale, %zu known failures)\n", sum.failed, sum.errors, sum.stale, sum.xfail);
     fprintf(log, "plcvec: %zu passed, %zu failed, %zu skipped\n", sum.passed, bad, sum.skipped);
+    if (opt->write_expectations) {
+        if (plcvec_known_write(opt->write_expectations, failing, n_failing, "not yet triaged", err, sizeof err)) {
+            fprintf(log, "plcvec: %s\n", err);
+            rc = PLCVEC_EXIT_USAGE;
+        } else
+            fprintf(log, "plcvec: %zu known failures written to %s\n", n_failing, opt->write_expectations);
+    }
+    free(failing);
     fflush(log);
     if (summary)
         *summary = sum;
-    return bad || all_skipped ? 1 : 0;
+    return rc;
 }
+
+/* ---- plcvec_main: the options and variables of `plcvec verify` ------------------------------ */
 
 static void usage(FILE *f, const char *prog)
 {
     fprintf(f,
             "usage: %s [--family F] [--instruction I] [--tag T] [--id GLOB] [--interpretation ID]\n"
-            "          [--shard K/N] [--list] [--verbose]\n"
+            "          [--shard K/N] [--choose ID=ALT] [--expectations FILE] [--write-expectations FILE]\n"
+            "          [--list] [--verbose]\n"
             "Judge the compiled-in plcvec vectors (filters repeat: OR within one, AND between them).\n"
-            "Exit 0 passed, 1 failures, 2 usage error.\n",
+            "Each option defaults to its variable: PLCVEC_FAMILY, PLCVEC_INSTRUCTION, PLCVEC_TAG, PLCVEC_ID,\n"
+            "PLCVEC_INTERPRETATION (comma-separated), PLCVEC_SHARD, PLCVEC_KNOWN_FAILURES,\n"
+            "PLCVEC_WRITE_EXPECTATIONS; PLCVEC_TIMEOUT bounds each vector (seconds, default 10).\n"
+            "Exit 0 passed, 1 failures, 2 usage error, 5 nothing tested.\n",
             prog);
+}
+
+enum { F_FAMILY, F_INSTRUCTION, F_TAG, F_ID, F_INTERPRETATION, N_FILTERS };
+static const char *const filter_flags[N_FILTERS] = {"--family", "--instruction", "--tag", "--id", "--interpretation"};
+static const char *const filter_vars[N_FILTERS] = {"PLCVEC_FAMILY", "PLCVEC_INSTRUCTION", "PLCVEC_TAG", "PLCVEC_ID",
+                                                  "PLCVEC_INTERPRETATION"};
+
+typedef struct cli {
+    const char *prog;
+    const char **lists[N_FILTERS];
+    size_t counts[N_FILTERS], caps[N_FILTERS];
+    char *env_copy[N_FILTERS];
+    plcvec_choice *choices;
+    size_t n_choices;
+} cli;
+
+static int push(cli *c, int l, const char *name)
+{
+    if (c->counts[l] == c->caps[l]) {
+        size_t cap = c->caps[l] ? c->caps[l] * 2 : 8;
+        const char **grown = realloc(c->lists[l], cap * sizeof *grown);
+        if (!grown)
+            return -1;
+        c->lists[l] = grown, c->caps[l] = cap;
+    }
+    c->lists[l][c->counts[l]++] = name;
+    return 0;
+}
+
+/* PLCVEC_FAMILY=a,b: the names, split in place of a copy. An empty item is a mistake, not "no
+ * filter": `PLCVEC_FAMILY=,` must not run everything. */
+static int from_environment(cli *c, int l, char *err, size_t errlen)
+{
+    const char *text = getenv(filter_vars[l]);
+    if (!text)
+        return 0;
+    size_t len = strlen(text);
+    char *copy = c->env_copy[l] = malloc(len + 1);
+    if (!copy) {
+        snprintf(err, errlen, "out of memory");
+        return -1;
+    }
+    memcpy(copy, text, len + 1);
+    for (char *item = copy;;) {
+        char *comma = strchr(item, ',');
+        if (comma)
+            *comma = '\0';
+        char *end = item + strlen(item);
+        while (*item == ' ')
+            item++;
+        while (end > item && end[-1] == ' ')
+            *--end = '\0';
+        if (!*item) {
+            snprintf(err, errlen, "%s=%s: an empty name (the variable takes comma-separated names; unset it to select "
+                                  "everything)", filter_vars[l], text);
+            return -1;
+        }
+        if (push(c, l, item)) {
+            snprintf(err, errlen, "out of memory");
+            return -1;
+        }
+        if (!comma)
+            break;
+        item = comma + 1;
+    }
+    return 0;
+}
+
+static int parse_shard(const char *what, const char *text, plcvec_selection *sel, char *err, size_t errlen)
+{
+    unsigned k, n;
+    char tail;
+    if (sscanf(text, "%u/%u%c", &k, &n, &tail) != 2 || strchr(text, '-') || strchr(text, ' ')) {
+        snprintf(err, errlen, "%s takes K/N (e.g. 2/4), got '%s'", what, text);
+        return -1;
+    }
+    if (k < 1 || k > n) {
+        snprintf(err, errlen, "%s %s: K must be between 1 and N", what, text);
+        return -1;
+    }
+    sel->shard_k = k, sel->shard_n = n;
+    return 0;
+}
+
+/* What the variables every plcvec runner reads say, for a runner of its own (GoogleTest). */
+static int environment_checks(char *err, size_t errlen)
+{
+    if (getenv("PLCVEC_VECTORS")) {
+        snprintf(err, errlen, "PLCVEC_VECTORS=%s: the C library's vectors are compiled in; export that folder into a "
+                              "copy of the library (plcvec export --lang c --vectors DIR --root COPY) and build the copy "
+                              "(README.md, \"The vectors in the library\")", getenv("PLCVEC_VECTORS"));
+        return -1;
+    }
+    return plcvec_timeout_ms(err, errlen) < 0 ? -1 : 0;
+}
+
+static void selection_of(const cli *c, plcvec_selection *sel)
+{
+    sel->families = c->lists[F_FAMILY], sel->n_families = c->counts[F_FAMILY];
+    sel->instructions = c->lists[F_INSTRUCTION], sel->n_instructions = c->counts[F_INSTRUCTION];
+    sel->tags = c->lists[F_TAG], sel->n_tags = c->counts[F_TAG];
+    sel->ids = c->lists[F_ID], sel->n_ids = c->counts[F_ID];
+    sel->interpretations = c->lists[F_INTERPRETATION], sel->n_interpretations = c->counts[F_INTERPRETATION];
+}
+
+static void cli_free(cli *c)
+{
+    for (int l = 0; l < N_FILTERS; l++) {
+        free(c->lists[l]);
+        free(c->env_copy[l]);
+    }
+    free(c->choices);
+}
+
+long plcvec_select_from_environment(const char *family, const plcvec_vector ***out, char *err, size_t errlen)
+{
+    cli c = {0};
+    plcvec_selection sel = {0};
+    *out = NULL;
+    long n = -1;
+    int l = 0;
+    while (l < N_FILTERS && from_environment(&c, l, err, errlen) == 0)
+        l++;
+    const char *shard = getenv("PLCVEC_SHARD");
+    if (l == N_FILTERS && (!shard || parse_shard("PLCVEC_SHARD", shard, &sel, err, errlen) == 0) &&
+        environment_checks(err, errlen) == 0) {
+        selection_of(&c, &sel);
+        n = plcvec_select(&sel, out, err, errlen);
+    }
+    if (n >= 0 && family) {
+        int f = 0;
+        while (f < PLCVEC_FAMILY_COUNT && strcmp(plcvec_family_names[f], family) != 0)
+            f++;
+        if (f == PLCVEC_FAMILY_COUNT) {
+            snprintf(err, errlen, "unknown family '%s': the suite has no such family", family);
+            free(*out);
+            *out = NULL;
+            n = -1;
+        } else {
+            long k = 0;
+            for (long i = 0; i < n; i++)
+                if ((int)(*out)[i]->family == f)
+                    (*out)[k++] = (*out)[i];
+            n = k;
+        }
+    }
+    cli_free(&c);
+    return n;
+}
+
+static int parse_choice(cli *c, const char *text)
+{
+    const char *eq = strchr(text, '=');
+    char id[96];
+    snprintf(id, sizeof id, "%.*s", eq ? (int)(eq - text < 90 ? eq - text : 90) : 90, text);
+    int interp = eq ? plcvec_interpretation_named(id) : -1;
+    if (interp < 0) {
+        fprintf(stderr, "%s: --choose %s: %s; known:", c->prog, text,
+                eq ? "no such interpretation" : "takes INTERPRETATION=ALTERNATIVE");
+        for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
+            fprintf(stderr, "%s %s", i ? "," : "", plcvec_interpretations[i].id);
+        fprintf(stderr, "\n");
+        return -1;
+    }
+    int alt = plcvec_alternative_named(interp, eq + 1);
+    if (alt < 0) {
+        const plcvec_interpretation_info *info = &plcvec_interpretations[interp];
+        fprintf(stderr, "%s: --choose %s: %s has no alternative '%s'; known:", c->prog, text, info->id, eq + 1);
+        for (int a = 0; a < info->n_alternatives; a++)
+            fprintf(stderr, "%s %s", a ? "," : "", info->alternatives[a]);
+        fprintf(stderr, "\n");
+        return -1;
+    }
+    plcvec_choice *grown = realloc(c->choices, (c->n_choices + 1) * sizeof *grown);
+    if (!grown)
+        return -1;
+    c->choices = grown;
+    c->choices[c->n_choices].interpretation = (uint8_t)interp;
+    c->choices[c->n_choices++].alternative = (uint8_t)alt;
+    return 0;
 }
 
 int plcvec_main(const plcvec_impl *impl, const plcvec_known_failure *known, size_t n_known, int argc, char **argv)
 {
-    const char *prog = argc > 0 ? argv[0] : "plcvec";
-    /* Each filter list holds at most argc names: one array sliced five ways. */
-    const char **names = calloc((size_t)(argc > 0 ? argc : 1) * 5, sizeof *names);
-    if (!names)
-        return 2;
-    const char **lists[5];
-    size_t counts[5] = {0};
-    for (int l = 0; l < 5; l++)
-        lists[l] = names + (size_t)l * (size_t)(argc > 0 ? argc : 1);
-    static const char *const flags[5] = {"--family", "--instruction", "--tag", "--id", "--interpretation"};
+    cli c = {0};
+    c.prog = argc > 0 ? argv[0] : "plcvec";
     plcvec_options opt = {0};
-    opt.known = known;
-    opt.n_known = n_known;
-    int list_only = 0, rc = 0;
-    for (int i = 1; i < argc; i++) {
-        int matched = 0;
-        for (int l = 0; l < 5 && !matched; l++)
-            if (strcmp(argv[i], flags[l]) == 0) {
-                matched = 1;
-                if (i + 1 >= argc) {
-                    fprintf(stderr, "%s: %s needs a value\n", prog, argv[i]);
-                    rc = 2;
-                } else
-                    lists[l][counts[l]++] = argv[++i];
-            }
-        if (matched)
-            continue;
-        if (strcmp(argv[i], "--shard") == 0 && i + 1 >= argc) {
-            fprintf(stderr, "%s: --shard needs a value (K/N)\n", prog);
+    int list_only = 0, rc = 0, given[N_FILTERS] = {0}, shard_flag = 0;
+    const char *expectations = NULL, *shard = NULL;
+    plcvec_known_failure *file_known = NULL, *all_known = NULL;
+    size_t n_file_known = 0;
+    char err[1024] = "";
+    for (int i = 1; i < argc && !rc; i++) {
+        const char *a = argv[i];
+        int l = 0;
+        while (l < N_FILTERS && strcmp(a, filter_flags[l]) != 0)
+            l++;
+        int takes_value = l < N_FILTERS || !strcmp(a, "--shard") || !strcmp(a, "--choose") ||
+                          !strcmp(a, "--expectations") || !strcmp(a, "--write-expectations");
+        if (takes_value && i + 1 >= argc) {
+            fprintf(stderr, "%s: %s needs a value\n", c.prog, a);
             rc = 2;
-        } else if (strcmp(argv[i], "--shard") == 0) {
-            char tail;
-            if (sscanf(argv[++i], "%u/%u%c", &opt.selection.shard_k, &opt.selection.shard_n, &tail) != 2) {
-                fprintf(stderr, "%s: --shard takes K/N (e.g. 2/4), got '%s'\n", prog, argv[i]);
-                rc = 2;
-            }
-        } else if (strcmp(argv[i], "--list") == 0)
+        } else if (l < N_FILTERS) {
+            given[l] = 1;
+            rc = push(&c, l, argv[++i]) ? 2 : 0;
+        } else if (!strcmp(a, "--shard"))
+            shard = argv[++i];
+        else if (!strcmp(a, "--choose"))
+            rc = parse_choice(&c, argv[++i]) ? 2 : 0;
+        else if (!strcmp(a, "--expectations"))
+            expectations = argv[++i];
+        else if (!strcmp(a, "--write-expectations"))
+            opt.write_expectations = argv[++i];
+        else if (!strcmp(a, "--list"))
             list_only = 1;
-        else if (strcmp(argv[i], "--verbose") == 0 || strcmp(argv[i], "-v") == 0)
+        else if (!strcmp(a, "--verbose") || !strcmp(a, "-v"))
             opt.verbose = 1;
-        else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            usage(stdout, prog);
-            free(names);
-            return 0;
+        else if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            usage(stdout, c.prog);
+            goto done;
         } else {
-            fprintf(stderr, "%s: unknown argument '%s'\n", prog, argv[i]);
-            usage(stderr, prog);
+            fprintf(stderr, "%s: unknown argument '%s'\n", c.prog, a);
+            usage(stderr, c.prog);
             rc = 2;
         }
     }
-    /* PLCVEC_SHARD=K/N splits a CI matrix without changing the test's command line. */
-    const char *env = getenv("PLCVEC_SHARD");
-    if (!rc && !opt.selection.shard_n && env && *env) {
-        char tail;
-        if (sscanf(env, "%u/%u%c", &opt.selection.shard_k, &opt.selection.shard_n, &tail) != 2) {
-            fprintf(stderr, "%s: PLCVEC_SHARD takes K/N (e.g. 2/4), got '%s'\n", prog, env);
+    /* The variables are the options' defaults: a CI matrix or a shared job sets them once for
+     * every runner of every language. */
+    for (int l = 0; l < N_FILTERS && !rc; l++)
+        if (!given[l] && from_environment(&c, l, err, sizeof err))
             rc = 2;
-        }
-    }
+    if (!rc && environment_checks(err, sizeof err))
+        rc = 2;
+    if (!rc && (shard || (shard = getenv("PLCVEC_SHARD")) != NULL))
+        rc = parse_shard(shard_flag ? "--shard" : "PLCVEC_SHARD", shard, &opt.selection, err, sizeof err) ? 2 : 0;
+    if (!rc && !opt.write_expectations)
+        opt.write_expectations = getenv("PLCVEC_WRITE_EXPECTATIONS");
+    if (!rc && !expectations)
+        expectations = getenv("PLCVEC_KNOWN_FAILURES");
+    if (!rc && expectations && plcvec_known_load(expectations, &file_known, &n_file_known, err, sizeof err))
+        rc = 2;
     if (rc) {
-        free(names);
-        return rc;
+        if (err[0])
+            fprintf(stderr, "%s: %s\n", c.prog, err);
+        goto done;
     }
-    opt.selection.families = lists[0], opt.selection.n_families = counts[0];
-    opt.selection.instructions = lists[1], opt.selection.n_instructions = counts[1];
-    opt.selection.tags = lists[2], opt.selection.n_tags = counts[2];
-    opt.selection.ids = lists[3], opt.selection.n_ids = counts[3];
-    opt.selection.interpretations = lists[4], opt.selection.n_interpretations = counts[4];
+    /* The list in code and the file's entries together. */
+    all_known = malloc((n_known + n_file_known + 1) * sizeof *all_known);
+    if (!all_known) {
+        rc = 2;
+        goto done;
+    }
+    if (n_known)
+        memcpy(all_known, known, n_known * sizeof *known);
+    if (n_file_known)
+        memcpy(all_known + n_known, file_known, n_file_known * sizeof *file_known);
+    opt.known = all_known;
+    opt.n_known = n_known + n_file_known;
+    selection_of(&c, &opt.selection);
     if (list_only) {
         const plcvec_vector **sel = NULL;
-        char err[256];
         long n = plcvec_select(&opt.selection, &sel, err, sizeof err);
         if (n < 0) {
-            fprintf(stderr, "%s: %s\n", prog, err);
+            fprintf(stderr, "%s: %s\n", c.prog, err);
             rc = 2;
         }
         for (long i = 0; i < n; i++)
             printf("%s\n", sel[i]->id);
         free(sel);
-    } else
-        rc = plcvec_run(impl, &opt, NULL);
-    free(names);
+    } else {
+        /* --choose on the command line declares on top of what the implementation declares. */
+        plcvec_impl run_impl = *impl;
+        plcvec_choice *merged = NULL;
+        if (c.n_choices) {
+            merged = malloc((impl->n_choices + c.n_choices) * sizeof *merged);
+            if (!merged) {
+                rc = 2;
+                goto done;
+            }
+            if (impl->n_choices)
+                memcpy(merged, impl->choices, impl->n_choices * sizeof *merged);
+            memcpy(merged + impl->n_choices, c.choices, c.n_choices * sizeof *merged);
+            run_impl.choices = merged;
+            run_impl.n_choices = impl->n_choices + c.n_choices;
+        }
+        rc = plcvec_run(&run_impl, &opt, NULL);
+        free(merged);
+    }
+done:
+    cli_free(&c);
+    free(all_known);
+    plcvec_known_free(file_known, n_file_known);
     return rc;
 }

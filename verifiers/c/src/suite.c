@@ -309,12 +309,16 @@ int plcvec_selected(const plcvec_selection *sel, const plcvec_vector *v)
     return 1;
 }
 
+/* An unknown name is a usage error that lists the known ones: a typo in a CI file must not turn a
+ * gate off by selecting nothing. */
 static int check_names(const char *what, const char *const *list, size_t n, const char *const *names,
                        size_t count, char *err, size_t errlen)
 {
     for (size_t i = 0; i < n; i++)
         if (!in_list(names, count, list[i])) {
-            snprintf(err, errlen, "unknown %s '%s': the suite has no such %s", what, list[i], what);
+            size_t len = (size_t)snprintf(err, errlen, "unknown %s '%s': the suite has no such %s; known:", what, list[i], what);
+            for (size_t k = 0; k < count && len < errlen; k++)
+                len += (size_t)snprintf(err + len, errlen - len, "%s %s", k ? "," : "", names[k]);
             return -1;
         }
     return 0;
@@ -340,6 +344,16 @@ long plcvec_select(const plcvec_selection *sel, const plcvec_vector ***out, char
         return -1;
     }
     size_t total = plcvec_count(), n = 0;
+    for (size_t i = 0; i < sel->n_ids; i++) {
+        size_t k = 0;
+        while (k < total && !plcvec_glob(sel->ids[i], plcvec_at(k)->id))
+            k++;
+        if (k == total) {
+            snprintf(err, errlen, "id %s: matches no vector id in the suite (ids look like %s; a glob matches the whole id)",
+                     sel->ids[i], total ? plcvec_at(0)->id : "family/instruction/...");
+            return -1;
+        }
+    }
     const plcvec_vector **list = malloc((total ? total : 1) * sizeof *list);
     if (!list) {
         snprintf(err, errlen, "out of memory");

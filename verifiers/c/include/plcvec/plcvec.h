@@ -191,6 +191,11 @@ typedef struct plcvec_selection {
  * nothing is not an error here; plcvec_run() treats it as one. */
 long plcvec_select(const plcvec_selection *sel, const plcvec_vector ***out, char *err, size_t errlen);
 int plcvec_selected(const plcvec_selection *sel, const plcvec_vector *v);  /* after validation */
+/* The vectors of `family` (NULL: every family) that the variables PLCVEC_FAMILY, PLCVEC_INSTRUCTION,
+ * PLCVEC_TAG, PLCVEC_ID, PLCVEC_INTERPRETATION (comma-separated) and PLCVEC_SHARD select, as
+ * plcvec_main reads them, for a test runner of your own (plcvec/gtest.hpp). -1 and err on a
+ * mistake in any PLCVEC_* variable. */
+long plcvec_select_from_environment(const char *family, const plcvec_vector ***out, char *err, size_t errlen);
 uint32_t plcvec_crc32(const char *text);                /* zlib's CRC-32 of the bytes */
 int plcvec_glob(const char *pattern, const char *text); /* fnmatchcase: 1 if it matches */
 
@@ -240,6 +245,10 @@ typedef struct plcvec_impl {
      * for each step apply `set`, execute with the step's inputs, then report with plcvec_out_*.
      * Return 0, or what plcvec_out_skip()/plcvec_out_error() return. */
     int (*run)(void *ctx, const plcvec_vector *v, plcvec_out *out);
+    /* Devices the CPU writes on its own account (diagnostic relays and registers: "SM0", "SD0"),
+     * NULL-terminated; NULL: none. A write to one outside the vector is not a stray write; one the
+     * vector lists is compared as usual. */
+    const char *const *cpu_writes;
 } plcvec_impl;
 
 /* The thin helper: "execute this instruction on my memory". The runner writes the vector's
@@ -261,6 +270,7 @@ typedef struct plcvec_machine {
     /* Optional: call `seen` for each device written since reset() (so writes outside the vector
      * are caught). NULL: only the vector's own devices are read back. */
     void (*written)(void *ctx, void (*seen)(void *arg, const char *device, plcvec_type type, unsigned value), void *arg);
+    const char *const *cpu_writes;  /* as plcvec_impl.cpu_writes */
 } plcvec_machine;
 
 /* An impl running `m` (which must outlive it). */
@@ -282,6 +292,8 @@ typedef struct plcvec_problem {
     char name[24];
     uint8_t has_expected, expected_type, has_actual, actual_type, has_before, before_type;
     uint32_t expected, actual, before;
+    uint8_t twice, second_type; /* reported twice with two values: actual, then second */
+    uint32_t second;
 } plcvec_problem;
 
 /* A known failure: listed vectors that fail are XFAIL; listed vectors that pass are STALE (a
@@ -290,6 +302,13 @@ typedef struct plcvec_known_failure {
     const char *id;
     const char *reason;
 } plcvec_known_failure;
+
+/* Read a known-failures TOML file (CONTRACT.md: [[known-failure]] entries of `id` and `reason`):
+ * 0 and a malloc'd list (free it with plcvec_known_free), or -1 with "FILE:LINE: why" in err. */
+int plcvec_known_load(const char *path, plcvec_known_failure **list, size_t *n, char *err, size_t errlen);
+void plcvec_known_free(plcvec_known_failure *list, size_t n);
+/* Write ids (sorted in place) as a known-failures file, each with `reason`; 0, or -1 and err. */
+int plcvec_known_write(const char *path, const char **ids, size_t n, const char *reason, char *err, size_t errlen);
 
 /* The verdict on one vector. */
 typedef struct plcvec_verdict {
@@ -332,22 +351,34 @@ typedef struct plcvec_options {
     size_t n_known;
     FILE *log;                  /* where failures and the summary go; NULL: stdout */
     int verbose;                /* also print skipped and xfail verdicts */
+    const char *write_expectations; /* write the run's failures here as a known-failures file */
 } plcvec_options;
+
+/* plcvec_run's and plcvec_main's exit statuses, those of `plcvec verify` (CONTRACT.md). */
+enum {
+    PLCVEC_EXIT_PASSED = 0,     /* every selected vector passed or is a known failure; one passed */
+    PLCVEC_EXIT_FAILED = 1,     /* a failure, an error, a stale known failure, a run ended early */
+    PLCVEC_EXIT_USAGE = 2,      /* an unknown name, a bad variable or file, a bad declaration */
+    PLCVEC_EXIT_NOTHING_TESTED = 5  /* no vector selected, or none passed (all skipped) */
+};
 
 typedef struct plcvec_summary {
     size_t selected, passed, failed, errors, skipped, xfail, stale;
 } plcvec_summary;
 
 /* Print the suite and the alternatives followed, judge every selected vector, print each failure
- * as a field-level diff, then the closing "plcvec: N passed, N failed, N skipped" line. Returns 0
- * if everything passed (or is a known failure, or was skipped), 1 on any failure, error or stale
- * entry, or when every selected vector was skipped, 2 on a usage error (an unknown name, a bad
- * shard, an empty selection, an unknown declared alternative). */
+ * as a field-level diff, then the closing "plcvec: N passed, N failed, N skipped" line. Returns a
+ * PLCVEC_EXIT_*: 1 on any failure, error or stale entry; 5 when nothing was selected or nothing
+ * passed; 2 on a usage error (an unknown name, an id glob matching no id, a bad shard, an unknown
+ * declared alternative, a bad PLCVEC_TIMEOUT). */
 int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summary *summary);
 
-/* A test program's main(): parses --family, --instruction, --tag, --id GLOB, --interpretation,
- * --shard K/N, --list, --verbose (repeatable filters), then plcvec_run(). Without --shard, the
- * environment variable PLCVEC_SHARD=K/N gives the shard (for a CI matrix). */
+/* A test program's main(): the options of `plcvec verify` (--family, --instruction, --tag,
+ * --id GLOB, --interpretation, each repeatable; --shard K/N, --choose ID=ALT, --expectations FILE,
+ * --write-expectations FILE, --list, --verbose), each defaulting to its environment variable
+ * (PLCVEC_FAMILY ... PLCVEC_SHARD, PLCVEC_KNOWN_FAILURES, PLCVEC_WRITE_EXPECTATIONS; lists
+ * comma-separated; PLCVEC_TIMEOUT bounds each vector), then plcvec_run(). `known` (may be NULL)
+ * is added to the file's entries. */
 int plcvec_main(const plcvec_impl *impl, const plcvec_known_failure *known, size_t n_known,
                 int argc, char **argv);
 

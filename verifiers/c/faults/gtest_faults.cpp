@@ -1,0 +1,35 @@
+// The reference under the README's GoogleTest pattern (plcvec/gtest.hpp), for the row of the
+// table of faults in which GoogleTest's own filter matches no test: the run must not be green.
+#include "plcvec/gtest.hpp"
+
+#include "reference.h"
+
+namespace {
+
+plcvec_judge *judge() {
+    static plcvec_reference ref;
+    static plcvec_impl impl;
+    static plcvec_judge *j = [] {
+        plcvec_reference_init(&ref);
+        impl = plcvec_reference_impl(&ref);
+        char err[256];
+        plcvec_judge *made = plcvec_judge_new(&impl, err, sizeof err);
+        if (!made)
+            std::fprintf(stderr, "plcvec: %s\n", err);
+        return made;
+    }();
+    return j;
+}
+
+class Reference : public ::testing::TestWithParam<const plcvec_vector *> {};
+
+TEST_P(Reference, Vector) { plcvec::gtest::check(judge(), GetParam()); }
+
+INSTANTIATE_TEST_SUITE_P(Plcvec, Reference, ::testing::ValuesIn(plcvec::gtest::vectors()), plcvec::gtest::test_name);
+
+}  // namespace
+
+int main(int argc, char **argv) {
+    ::testing::InitGoogleTest(&argc, argv);
+    return plcvec::gtest::run_all_tests();
+}

@@ -1,0 +1,150 @@
+// plcvec under GoogleTest: one test per vector, and a gate that a filter or a skip cannot turn
+// green. Header-only; include it in the test program of your emulator (C++17, GoogleTest 1.10+).
+//
+//   class Conformance : public ::testing::TestWithParam<const plcvec_vector *> {};
+//   TEST_P(Conformance, Vector) { plcvec::gtest::check(judge(), GetParam()); }
+//   INSTANTIATE_TEST_SUITE_P(Hour, Conformance, ::testing::ValuesIn(plcvec::gtest::vectors("fc6a-hour-meter")),
+//                            plcvec::gtest::test_name);
+//   int main(int argc, char **argv) {
+//       ::testing::InitGoogleTest(&argc, argv);
+//       return plcvec::gtest::run_all_tests();
+//   }
+//
+// vectors() selects as plcvec_main does, from the PLCVEC_* variables. check() judges one vector:
+// a failure is a test failure with the field-level text, a skip is a skipped test, a vector listed
+// in PLCVEC_KNOWN_FAILURES that fails is skipped as a known failure and one that passes fails as
+// stale. run_all_tests() is RUN_ALL_TESTS() followed by the checks GoogleTest does not make: exit 5
+// when no vector was judged (a --gtest_filter that matches nothing, an empty selection) or none
+// passed (an implementation that skips everything), 1 when a listed known failure names no vector.
+#ifndef PLCVEC_GTEST_HPP
+#define PLCVEC_GTEST_HPP
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "plcvec/plcvec.h"
+
+namespace plcvec::gtest {
+
+namespace detail {
+struct Run {
+    size_t judged = 0, passed = 0, skipped = 0, known = 0;
+    std::vector<plcvec_known_failure> known_failures;
+    bool known_loaded = false;
+};
+inline Run &run() {
+    static Run r;
+    return r;
+}
+// A mistake in the set-up (a variable, the known-failures file) ends the program with a message
+// and the status plcvec_main gives it, 2, before any test runs.
+[[noreturn]] inline void usage_error(const std::string &message) {
+    std::fprintf(stderr, "plcvec: %s\n", message.c_str());
+    std::fflush(nullptr);
+    std::_Exit(PLCVEC_EXIT_USAGE);
+}
+inline const std::vector<plcvec_known_failure> &known_failures() {
+    Run &r = run();
+    if (!r.known_loaded) {
+        r.known_loaded = true;
+        if (const char *path = std::getenv("PLCVEC_KNOWN_FAILURES")) {
+            plcvec_known_failure *list = nullptr;
+            size_t n = 0;
+            char err[1024];
+            if (plcvec_known_load(path, &list, &n, err, sizeof err) != 0)
+                usage_error(err);
+            r.known_failures.assign(list, list + n);    // kept for the whole program
+        }
+    }
+    return r.known_failures;
+}
+}  // namespace detail
+
+// The vectors of `family` (nullptr: every family) that the PLCVEC_* variables select.
+inline std::vector<const plcvec_vector *> vectors(const char *family = nullptr) {
+    const plcvec_vector **list = nullptr;
+    char err[1024];
+    long n = plcvec_select_from_environment(family, &list, err, sizeof err);
+    if (n < 0)
+        detail::usage_error(err);
+    std::vector<const plcvec_vector *> out(list, list + n);
+    std::free(list);
+    return out;
+}
+
+// GoogleTest names allow letters, digits and '_' alone: plcvec_test_name spells the id so. The
+// id itself is the first line of every failure, and recorded as the test's `plcvec_id` property.
+inline std::string test_name(const ::testing::TestParamInfo<const plcvec_vector *> &info) {
+    std::string name(plcvec_test_name(info.param, nullptr, 0), '\0');
+    plcvec_test_name(info.param, name.data(), name.size() + 1);
+    return name;
+}
+
+// The verdict as text, without a terminating NUL in the string.
+inline std::string describe(const plcvec_verdict *vd) {
+    std::string text(plcvec_format_verdict(nullptr, 0, vd), '\0');
+    plcvec_format_verdict(text.data(), text.size() + 1, vd);
+    return text;
+}
+
+// Judge one vector inside a TEST_P.
+inline void check(plcvec_judge *judge, const plcvec_vector *v) {
+    ASSERT_NE(judge, nullptr) << "no judge (plcvec_judge_new refused the implementation)";
+    ::testing::Test::RecordProperty("plcvec_id", v->id);
+    plcvec_verdict vd = *plcvec_judge_vector(judge, v);
+    const auto &known = detail::known_failures();
+    plcvec_apply_known(&vd, known.data(), known.size());
+    detail::Run &r = detail::run();
+    r.judged++;
+    switch (vd.status) {
+    case PLCVEC_PASS:
+        r.passed++;
+        return;
+    case PLCVEC_SKIP:
+        r.skipped++;
+        GTEST_SKIP() << v->id << ": " << vd.message;
+    case PLCVEC_XFAIL:
+        r.known++;
+        GTEST_SKIP() << v->id << ": " << vd.message;
+    default:
+        ADD_FAILURE() << describe(&vd);
+    }
+}
+
+// RUN_ALL_TESTS(), then what makes a run of nothing a failure. Use it as main's return value.
+inline int run_all_tests() {
+    int rc = RUN_ALL_TESTS();
+    const detail::Run &r = detail::run();
+    int stale = 0;
+    for (const plcvec_known_failure &k : detail::known_failures())
+        if (!plcvec_find(k.id)) {
+            std::printf("STALE %s\n    listed as a known failure (%s) but the suite has no such vector; remove it\n", k.id,
+                        k.reason);
+            stale++;
+        }
+    std::printf("plcvec: %zu passed, %zu failed, %zu skipped\n", r.passed, r.judged - r.passed - r.skipped - r.known,
+                r.skipped);
+    if (rc != 0 || stale)
+        return PLCVEC_EXIT_FAILED;
+    if (r.judged == 0) {
+        std::printf("plcvec: no vector was run: the test filter or the selection matched none (an empty run never "
+                    "passes). Select vectors with PLCVEC_ID (an id or glob, comma-separated) rather than "
+                    "--gtest_filter, whose names are not the ids\n");
+        return PLCVEC_EXIT_NOTHING_TESTED;
+    }
+    if (r.passed == 0) {
+        std::printf("plcvec: nothing passed (%zu skipped, %zu known failures): the run proves nothing\n", r.skipped,
+                    r.known);
+        return PLCVEC_EXIT_NOTHING_TESTED;
+    }
+    return PLCVEC_EXIT_PASSED;
+}
+
+}  // namespace plcvec::gtest
+
+#endif
