@@ -216,4 +216,59 @@ def test_unknown_language_is_a_usage_error(repo, toy_language, capsys):
 
 def test_missing_vector_folder_is_named(tmp_path, toy_language, capsys):
     assert main(["export", "--lang", "toy", "--vectors", str(tmp_path / "nope"), "--root", str(toy_language)]) == 2
-    assert "nope/manifest.json: no such file" in capsys.readouterr().err
+    assert "nope: no such vector folder" in capsys.readouterr().err
+
+
+# -- the vector folder is refused as `plcvec verify` refuses it -------------------------------------
+
+def _damaged_copy(repo, tmp_path, damage):
+    """A copy of the golden folder with one damage to fx5-time-add.json (resealed in manifest.json
+    unless the damage is the seal itself)."""
+    import hashlib
+
+    folder = tmp_path / "vectors"
+    shutil.copytree(repo / "vectors", folder)
+    path = folder / "fx5-time-add.json"
+    data = json.loads(path.read_text(encoding="utf-8"))
+    target = next(v for v in data["vectors"] if v["id"] == "fx5-time-add/TADD/manual-example/program")
+    if damage == "duplicate-id":
+        data["vectors"].insert(data["vectors"].index(target) + 1, json.loads(json.dumps(target)))
+    elif damage == "unknown-key":
+        target["surprise"] = 1
+    elif damage == "bit-holds-2":
+        bit = next(d for d, v in target["initial"]["devices"].items() if v is False or v is True)
+        target["initial"]["devices"][bit] = 2
+    elif damage == "major-version":
+        data["schema_version"] = "2.0.0"
+    path.write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
+    manifest = json.loads((folder / "manifest.json").read_text())
+    manifest["families"]["fx5-time-add"]["sha256"] = (
+        "0" * 64 if damage == "sha-mismatch" else hashlib.sha256(path.read_bytes()).hexdigest())
+    (folder / "manifest.json").write_text(json.dumps(manifest, indent=1))
+    return folder
+
+
+@pytest.mark.parametrize("damage, says", [
+    ("duplicate-id", "vector id fx5-time-add/TADD/manual-example/program appears twice"),
+    ("unknown-key", "'surprise' was unexpected"),
+    ("bit-holds-2", "vector fx5-time-add/TADD/manual-example/program: SM"),
+    ("major-version", "fx5-time-add.json: schema_version 2.0.0 is not 1.x"),
+    ("sha-mismatch", "fx5-time-add.json: sha256"),
+])
+def test_export_refuses_a_damaged_folder_and_writes_nothing(repo, tmp_path, toy_language, damage, says, capsys):
+    folder = _damaged_copy(repo, tmp_path, damage)
+    assert main(["export", "--lang", "toy", "--vectors", str(folder), "--root", str(toy_language)]) == 2
+    captured = capsys.readouterr()
+    assert says in captured.err and "Traceback" not in captured.err
+    assert not toy_language.exists()                         # nothing half-written
+
+
+def test_device_types_problem_names_both_places():
+    from plcvec.export.validate import device_types_problem
+
+    vector = {"initial": {"devices": {"SM700": 2, "D0": 5}}, "steps": [{"expect": {"devices": {"D0": 6}}}],
+              "final": {"devices": {"SM700": False, "D0": 6}}}
+    assert device_types_problem(vector) == ("SM700 is a word in initial (2) and a bit in final (false): a device "
+                                            "holds one type throughout a vector")
+    vector["initial"]["devices"]["SM700"] = True
+    assert device_types_problem(vector) == ""

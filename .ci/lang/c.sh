@@ -67,5 +67,9 @@ python3 -m plcvec verify -q --adapter "verifiers/c/reference-adapter --choose FX
     --choose CP1E-ALL-MASKED=not-compared --choose TADD-FLAGS-OFF=set-only --choose HOUR-INPUT-OFF=reset"
 gate_rejects c "verifiers/c/reference-adapter --mutant cp1e-and-as-or"
 
+# The shared table of faults through plcvec_main and the GoogleTest pattern: every row gives
+# plcvec verify's verdict (verifiers/parity/README.md).
+python3 verifiers/parity/run.py --lang c
+
 # Live differential run: fresh cases drawn from the spec through the C reference and the spec engine.
 python3 -m plcvec fuzz --adapter verifiers/c/reference-adapter --examples 500 --seed 3

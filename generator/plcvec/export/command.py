@@ -6,6 +6,7 @@ from pathlib import Path
 from plcvec.errors import PlcvecError
 from plcvec.export.model import load_model
 from plcvec.export.targets import languages, render
+from plcvec.export.validate import check_vectors
 from plcvec.output.atomic import write_atomic
 from plcvec.output.drift import report_drift
 
@@ -50,6 +51,8 @@ def run(args):
         raise PlcvecError(f"--lang {', '.join(unknown)}: no such language (known: {', '.join(known) or 'none'})")
     if not args.root or not args.vectors:
         raise PlcvecError("export: not in a plcvec checkout; name the repository with --root and the vectors with --vectors")
+    # Refused as `plcvec verify` refuses it, before anything is rendered or written.
+    check_vectors(args.vectors)
     model = load_model(args.vectors, args.spec_dir)
     root = Path(args.root)
     differ, written, total = [], 0, 0

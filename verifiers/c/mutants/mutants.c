@@ -5,6 +5,8 @@
 
 #include "reference.h"
 
+static int sm709_id = -1;     /* memory_device_named() */
+
 /* -- FX5 time and date comparison -- */
 
 /* The selected fields compared from (s1)+2 up: second before hour, day before year. */
@@ -26,7 +28,7 @@ static void fx5_clock_bit_ignored(plcvec_reference *ref) { ref->fx5.clock_bit = 
 /* SM709 written on every execution, off when the data are good. */
 static void sm709_each_execution(memory *m, int error)
 {
-    memory_write_named(m, PLCVEC_DEV_SM709, PLCVEC_BIT, (uint16_t)(error != 0));
+    memory_write_named(m, memory_device_named("SM709", &sm709_id), PLCVEC_BIT, (uint16_t)(error != 0));
 }
 static void fx5_sm709_not_latched(plcvec_reference *ref) { ref->fx5.sm709 = sm709_each_execution; }
 

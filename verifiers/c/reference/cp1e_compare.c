@@ -25,8 +25,8 @@ const cp1e_rules cp1e_reference_rules = {fields, is_bcd, and_form, 1};
 
 /* The flag table: rows S1 = S2, S1 > S2, S1 < S2; columns =, <>, <, <=, >, >=. */
 static const char *const symbols[6] = {"=", "<>", "<", "<=", ">", ">="};
-static const int flag_devices[6] = {PLCVEC_DEV_P_EQ, PLCVEC_DEV_P_NE, PLCVEC_DEV_P_LT,
-                                    PLCVEC_DEV_P_LE, PLCVEC_DEV_P_GT, PLCVEC_DEV_P_GE};
+static const char *const flag_names[6] = {"P_EQ", "P_NE", "P_LT", "P_LE", "P_GT", "P_GE"};
+static int flag_devices[6] = {-1, -1, -1, -1, -1, -1}, p_er = -1;
 
 static int holds(int symbol, int order)
 {
@@ -43,7 +43,7 @@ static int holds(int symbol, int order)
 /* Error: P_ER on, the execution condition OFF, the six arithmetic flags untouched. */
 static int error(memory *m)
 {
-    memory_write_named(m, PLCVEC_DEV_P_ER, PLCVEC_BIT, 1);
+    memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 1);
     return 0;
 }
 
@@ -72,7 +72,7 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
     if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_NOT_COMPARED) {
         /* Nothing compared, no result: OFF, the flags untouched, no error. */
         if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
-            memory_write_named(m, PLCVEC_DEV_P_ER, PLCVEC_BIT, 0);
+            memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 0);
         return 0;
     }
     int order = 0;
@@ -101,10 +101,10 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
     /* "the result of a time comparison instruction is reflected in the arithmetic flags" */
     if (r->reflect_flags)
         for (int s = 0; s < 6; s++)
-            memory_write_named(m, flag_devices[s], PLCVEC_BIT, (uint16_t)holds(s, order));
+            memory_write_named(m, memory_device_named(flag_names[s], &flag_devices[s]), PLCVEC_BIT, (uint16_t)holds(s, order));
     /* P_ER is a condition flag reflecting the instruction just executed: CP1E-ER-FLAG. */
     if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
-        memory_write_named(m, PLCVEC_DEV_P_ER, PLCVEC_BIT, 0);
+        memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 0);
     return holds(symbol, order);
 }
 

@@ -3,6 +3,8 @@
  * the work area D3, D3+1, which vectors list as scratch and never compare). */
 #include "reference.h"
 
+static int m8004 = -1;     /* memory_device_named() */
+
 /* "When the D1 value reaches the S1 value, an output ... is turned on." */
 static int reached(long total, long preset)
 {
@@ -70,7 +72,7 @@ int hour_execute(plcvec_reference *ref, hour_state *st, const plcvec_vector *v, 
      * error ... turning on special internal relay M8004 ... but the input ON duration is
      * measured", and "the comparison output is turned off". */
     if (p[1] > 59 || p[2] > 59) {
-        memory_write_named(m, PLCVEC_DEV_M8004, PLCVEC_BIT, 1);
+        memory_write_named(m, memory_device_named("M8004", &m8004), PLCVEC_BIT, 1);
         memory_write(m, d2, PLCVEC_BIT, 0);
         return PLCVEC_NONE;
     }

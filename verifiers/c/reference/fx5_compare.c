@@ -5,6 +5,8 @@
 
 #include "reference.h"
 
+static int sm709_id = -1;     /* memory_device_named() */
+
 /* 'Set the "hour" data ... within the range 0 to 23.' ... '(1) Set "second" as comparison
  * target. (2) ... "minute" ... (3) ... "hour"': (word offset, lo, hi, (s3) bit), most
  * significant first. */
@@ -36,7 +38,7 @@ static int selector_valid(unsigned s3)
 static void sm709(memory *m, int error)
 {
     if (error)
-        memory_write_named(m, PLCVEC_DEV_SM709, PLCVEC_BIT, 1);
+        memory_write_named(m, memory_device_named("SM709", &sm709_id), PLCVEC_BIT, 1);
 }
 
 const fx5_rules fx5_reference_rules = {time_fields, date_fields, order, 0x8000, selector_valid, memory_in_range, sm709};

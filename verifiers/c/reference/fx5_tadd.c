@@ -1,6 +1,8 @@
 /* Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data). From fx5-time-add-TADD.txt. */
 #include "reference.h"
 
+static int sd0 = -1, sd8067 = -1;     /* memory_device_named() */
+
 #define DAY (24L * 3600)
 #define ERR_DEVICE_RANGE 0x2820     /* "2820H The device range ... exceeds the corresponding device range." */
 #define ERR_VALUE_RANGE 0x3405      /* "3405H Any of values specified by (s1) and (s2) is outside ..." */
@@ -18,8 +20,8 @@ const tadd_rules tadd_reference_rules = {carry_flags, 2, 23, memory_in_range, pu
 static void error_code(memory *m, uint16_t code)
 {
     /* "Error code (SD0/SD8067)" */
-    memory_write_named(m, PLCVEC_DEV_SD0, PLCVEC_WORD, code);
-    memory_write_named(m, PLCVEC_DEV_SD8067, PLCVEC_WORD, code);
+    memory_write_named(m, memory_device_named("SD0", &sd0), PLCVEC_WORD, code);
+    memory_write_named(m, memory_device_named("SD8067", &sd8067), PLCVEC_WORD, code);
 }
 
 static void flag(memory *m, const char *name, int on, int set_only)
