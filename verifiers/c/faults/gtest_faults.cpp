@@ -1,10 +1,17 @@
 // The reference under the README's GoogleTest pattern (plcvec/gtest.hpp), for the row of the
-// table of faults in which GoogleTest's own filter matches no test: the run must not be green.
+// table of faults in which GoogleTest's own filter matches no test, and with
+// PLCVEC_HOSTILE=skips-everything for an implementation that skips every vector: neither run may
+// be green.
 #include "plcvec/gtest.hpp"
+
+#include <cstdlib>
+#include <string>
 
 #include "reference.h"
 
 namespace {
+
+int skip(void *, const plcvec_vector *, plcvec_out *out) { return plcvec_out_skip(out, "skips every vector"); }
 
 plcvec_judge *judge() {
     static plcvec_reference ref;
@@ -12,6 +19,9 @@ plcvec_judge *judge() {
     static plcvec_judge *j = [] {
         plcvec_reference_init(&ref);
         impl = plcvec_reference_impl(&ref);
+        const char *hostile = std::getenv("PLCVEC_HOSTILE");
+        if (hostile && std::string(hostile) == "skips-everything")
+            impl.run = skip;            // the README's pattern must not turn this green
         char err[256];
         plcvec_judge *made = plcvec_judge_new(&impl, err, sizeof err);
         if (!made)
