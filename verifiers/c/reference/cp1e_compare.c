@@ -40,10 +40,14 @@ static int holds(int symbol, int order)
     }
 }
 
-/* Error: P_ER on, the execution condition OFF, the six arithmetic flags untouched. */
-static int error(memory *m)
+/* Error: P_ER on, the execution condition OFF. The flag table has no row for an execution without
+ * a comparison result: the six flags keep their values, or (CP1E-ERROR-FLAGS=off) are written off. */
+static int error(plcvec_reference *ref, memory *m)
 {
     memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 1);
+    if (ref->follows[PLCVEC_INTERP_CP1E_ERROR_FLAGS] == PLCVEC_CP1E_ERROR_FLAGS_OFF)
+        for (int s = 0; s < 6; s++)
+            memory_write_named(m, memory_device_named(flag_names[s], &flag_devices[s]), PLCVEC_BIT, 0);
     return 0;
 }
 
@@ -62,13 +66,13 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
     }
     /* Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS). */
     if ((c & 0xFFC0) && ref->follows[PLCVEC_INTERP_CP1E_C_HIGH_BITS] == PLCVEC_CP1E_C_HIGH_BITS_ERROR)
-        return error(m);
+        return error(ref, m);
     /* "To mask a time value, set the corresponding bit in the control word (C) to 1." */
     int unmasked = 0;
     for (int f = 0; f < 6; f++)
         unmasked += !(c >> r->fields[f].bit & 1);
     if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_ERROR)
-        return error(m);
+        return error(ref, m);
     if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_NOT_COMPARED) {
         /* Nothing compared, no result: OFF, the flags untouched, no error. */
         if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
@@ -86,12 +90,12 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
             if (!r->is_bcd(raw[k])) {
                 /* "Second (00 to 59, BCD)" ...: CP1E-NON-BCD */
                 if (ref->follows[PLCVEC_INTERP_CP1E_NON_BCD] == PLCVEC_CP1E_NON_BCD_ERROR)
-                    return error(m);
+                    return error(ref, m);
             } else {
                 int value = (int)(raw[k] >> 4) * 10 + (int)(raw[k] & 0xF);
                 if ((value < fd->lo || value > fd->hi) &&
                     ref->follows[PLCVEC_INTERP_CP1E_OUT_OF_RANGE] == PLCVEC_CP1E_OUT_OF_RANGE_ERROR)
-                    return error(m);
+                    return error(ref, m);
             }
         }
         /* "limited to comparing 8-bit time values": for BCD the byte order is the numeric order. */

@@ -27,36 +27,9 @@ static void write_hms(memory *m, address base, long total)
         memory_write(m, memory_offset(base, i), PLCVEC_WORD, (uint16_t)hms[i]);
 }
 
-int hour_execute(plcvec_reference *ref, hour_state *st, const plcvec_vector *v, const plcvec_step *step)
+/* S1, the preset, in seconds; or -1 when it is invalid (M8004 on, D2 off). */
+static long check_preset(plcvec_reference *ref, memory *m, const plcvec_operand *s1, address d2)
 {
-    const hour_rules *r = &ref->hour;
-    memory *m = &ref->mem;
-    address d1 = memory_device(plcvec_operand_named(v, "D1")->device);
-    address d2 = memory_device(plcvec_operand_named(v, "D2")->device);
-    const plcvec_operand *s1 = plcvec_operand_named(v, "S1");
-
-    if (step->input != 1) {
-        /* "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF. */
-        if (ref->follows[PLCVEC_INTERP_HOUR_INPUT_OFF] == PLCVEC_HOUR_INPUT_OFF_RESET) {
-            write_hms(m, d1, 0);
-            st->fraction_ms = 0;
-        } else if (ref->follows[PLCVEC_INTERP_HOUR_INPUT_OFF] == PLCVEC_HOUR_INPUT_OFF_HOLD_DROP_FRACTION)
-            st->fraction_ms = 0;        /* D1 kept; the part of a second is lost */
-        return PLCVEC_NONE;
-    }
-    /* The whole elapsed time since the previous execution is ON time. */
-    long elapsed = step->elapsed_ms > 0 ? (long)step->elapsed_ms : 0;
-    long whole = (st->fraction_ms + elapsed) / 1000;
-    st->fraction_ms = r->keep_fraction ? (st->fraction_ms + elapsed) % 1000 : 0;
-    if (r->fraction_offset)
-        memory_write(m, memory_offset(d1, r->fraction_offset), PLCVEC_WORD, (uint16_t)st->fraction_ms);
-    long total = seconds_of(m, d1) + whole;
-    /* "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds, the
-     * value returns to 0 hours 0 minutes 0 seconds ... with the comparison output remaining on." */
-    int wrapped_now = total >= r->cycle;
-    total %= r->cycle;
-    write_hms(m, d1, total);
-
     /* "When source device S1 is designated by a constant, the preset value can be 0 through
      * 65,535 in hours, then minutes and seconds are set to 0." Otherwise 3 data registers. */
     long p[3];
@@ -74,9 +47,56 @@ int hour_execute(plcvec_reference *ref, hour_state *st, const plcvec_vector *v, 
     if (p[1] > 59 || p[2] > 59) {
         memory_write_named(m, memory_device_named("M8004", &m8004), PLCVEC_BIT, 1);
         memory_write(m, d2, PLCVEC_BIT, 0);
+        return -1;
+    }
+    /* The page never says M8004 turns off: HOUR-M8004-OFF=valid-preset turns it off. */
+    if (ref->follows[PLCVEC_INTERP_HOUR_M8004_OFF] == PLCVEC_HOUR_M8004_OFF_VALID_PRESET)
+        memory_write_named(m, memory_device_named("M8004", &m8004), PLCVEC_BIT, 0);
+    return p[0] * 3600 + p[1] * 60 + p[2];
+}
+
+int hour_execute(plcvec_reference *ref, hour_state *st, const plcvec_vector *v, const plcvec_step *step)
+{
+    const hour_rules *r = &ref->hour;
+    memory *m = &ref->mem;
+    address d1 = memory_device(plcvec_operand_named(v, "D1")->device);
+    address d2 = memory_device(plcvec_operand_named(v, "D2")->device);
+    const plcvec_operand *s1 = plcvec_operand_named(v, "S1");
+
+    /* The input at the previous execution; before the first one it counts as off. */
+    int turned_on = step->input == 1 && !st->input_was_on;
+    st->input_was_on = step->input == 1;
+    if (step->input != 1) {
+        /* "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF. */
+        if (ref->follows[PLCVEC_INTERP_HOUR_INPUT_OFF] == PLCVEC_HOUR_INPUT_OFF_RESET) {
+            write_hms(m, d1, 0);
+            st->fraction_ms = 0;
+        } else if (ref->follows[PLCVEC_INTERP_HOUR_INPUT_OFF] == PLCVEC_HOUR_INPUT_OFF_HOLD_DROP_FRACTION)
+            st->fraction_ms = 0;        /* D1 kept; the part of a second is lost */
+        /* HOUR-PRESET-CHECK=every-execution: the preset is checked with the input off too. */
+        if (ref->follows[PLCVEC_INTERP_HOUR_PRESET_CHECK] == PLCVEC_HOUR_PRESET_CHECK_EVERY_EXECUTION)
+            check_preset(ref, m, s1, d2);
         return PLCVEC_NONE;
     }
-    long preset = p[0] * 3600 + p[1] * 60 + p[2];
+    /* The elapsed time since the previous execution is ON time; at the execution at which the
+     * input turns on, only under HOUR-FIRST-SCAN=counts. */
+    long elapsed = step->elapsed_ms > 0 ? (long)step->elapsed_ms : 0;
+    if (turned_on && ref->follows[PLCVEC_INTERP_HOUR_FIRST_SCAN] == PLCVEC_HOUR_FIRST_SCAN_FROM_NEXT_SCAN)
+        elapsed = 0;
+    long whole = (st->fraction_ms + elapsed) / 1000;
+    st->fraction_ms = r->keep_fraction ? (st->fraction_ms + elapsed) % 1000 : 0;
+    if (r->fraction_offset)
+        memory_write(m, memory_offset(d1, r->fraction_offset), PLCVEC_WORD, (uint16_t)st->fraction_ms);
+    long total = seconds_of(m, d1) + whole;
+    /* "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds, the
+     * value returns to 0 hours 0 minutes 0 seconds ... with the comparison output remaining on." */
+    int wrapped_now = total >= r->cycle;
+    total %= r->cycle;
+    write_hms(m, d1, total);
+
+    long preset = check_preset(ref, m, s1, d2);
+    if (preset < 0)
+        return PLCVEC_NONE;
     int on = r->reached(total, preset);
     if (preset == 0 && ref->follows[PLCVEC_INTERP_HOUR_PRESET_ZERO] == PLCVEC_HOUR_PRESET_ZERO_NEVER)
         on = 0;

@@ -96,6 +96,7 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
     int s2_checked = !use_clock ||
                      ref->follows[PLCVEC_INTERP_FX5_CLOCK_S2_DEVICE_RANGE] == PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_CHECKED;
     if (!r->in_range(m, s1_dev, 3) || (s2_checked && !r->in_range(m, s2_dev, 3))) {
+        ref->fx5_failed = 1;
         r->sm709(m, 1);
         return 0;
     }
@@ -123,6 +124,7 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
     if (ref->follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_ALL_WORDS) {
         error = out_of_range(fields, s1, 1, s3) || (!use_clock && out_of_range(fields, s2, 1, s3));
         if (error || !valid) {
+            ref->fx5_failed = error;
             r->sm709(m, error);
             return 0;
         }
@@ -136,6 +138,7 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
         int all = ref->follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_COMPARED_OPERANDS;
         error = out_of_range(fields, s1, all, s3) || (!use_clock && out_of_range(fields, s2, all, s3));
         if (error) {
+            ref->fx5_failed = 1;
             r->sm709(m, 1);
             return 0;
         }
@@ -166,5 +169,11 @@ int fx5_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step
     }
     if (rlo && logic == PLCVEC_FX5_AND_OR_WHEN_OFF_SHORT_CIRCUIT)
         return 1;
-    return evaluate(ref, v, step, date, symbol) || rlo;
+    ref->fx5_failed = 0;
+    int contact = evaluate(ref, v, step, date, symbol);
+    /* "SM709 turns on ... and the operation result will be non-continuity": a non-conductive
+     * contact in parallel (contact-off), or the rung's result itself off (result-off). */
+    if (ref->fx5_failed && ref->follows[PLCVEC_INTERP_FX5_OR_ON_ERROR] == PLCVEC_FX5_OR_ON_ERROR_RESULT_OFF)
+        return 0;
+    return contact || rlo;
 }

@@ -32,6 +32,20 @@ static void flag(memory *m, const char *name, int on, int set_only)
     memory_write_named(m, device, PLCVEC_BIT, (uint16_t)on);
 }
 
+/* An operand whose three words exist and hold a field out of range (hour 0 to 23; minute,
+ * second 0 to 59): the 3405H condition. */
+static int fields_bad(const tadd_rules *r, const memory *m, address base)
+{
+    if (!r->in_range(m, base, 3))
+        return 0;
+    for (int i = 0; i < 3; i++) {
+        int x = to_signed16(memory_read(m, memory_offset(base, i)));
+        if (x < 0 || x > (i == 0 ? r->hour_max : 59))
+            return 1;
+    }
+    return 0;
+}
+
 static void add(plcvec_reference *ref, const plcvec_vector *v)
 {
     const tadd_rules *r = &ref->tadd;
@@ -42,17 +56,19 @@ static void add(plcvec_reference *ref, const plcvec_vector *v)
     /* "These instructions occupy three points for each of three devices"; out of range: 2820H,
      * nothing read or written. */
     if (!r->in_range(m, s1, 3) || !r->in_range(m, s2, 3) || !r->in_range(m, d, 3)) {
-        error_code(m, ERR_DEVICE_RANGE);
+        /* Both conditions at once (a readable s1/s2 holds a field out of range too):
+         * TADD-ERROR-ORDER says which code is stored. */
+        int both = fields_bad(r, m, s1) || fields_bad(r, m, s2);
+        error_code(m, both && ref->follows[PLCVEC_INTERP_TADD_ERROR_ORDER] == PLCVEC_TADD_ERROR_ORDER_FIELD_RANGE_FIRST
+                          ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
         return;
     }
-    int a[3], b[3], bad = 0;
+    int a[3], b[3];
     for (int i = 0; i < 3; i++) {
         a[i] = to_signed16(memory_read(m, memory_offset(s1, i)));
         b[i] = to_signed16(memory_read(m, memory_offset(s2, i)));
-        int hi = i == 0 ? r->hour_max : 59;     /* hour 0 to 23; minute, second 0 to 59 */
-        bad |= a[i] < 0 || a[i] > hi || b[i] < 0 || b[i] > hi;
     }
-    if (bad) {
+    if (fields_bad(r, m, s1) || fields_bad(r, m, s2)) {
         error_code(m, ERR_VALUE_RANGE);
         if (ref->follows[PLCVEC_INTERP_TADD_ON_ERROR] == PLCVEC_TADD_ON_ERROR_NOT_EXECUTED)
             return;

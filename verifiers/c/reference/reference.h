@@ -63,6 +63,7 @@ typedef struct plcvec_reference {
     cp1e_rules cp1e;
     memory mem;
     const char *input_error;                        /* set by a step whose inputs cannot be read */
+    int fx5_failed;                                 /* the last FX5 comparison found invalid data */
 } plcvec_reference;
 
 /* The reference following the default alternatives. */
@@ -74,7 +75,7 @@ plcvec_impl plcvec_reference_impl(plcvec_reference *ref);
 
 /* The family machines: execute one step on ref->mem; return the contact result or PLCVEC_NONE. */
 typedef struct tadd_state { int previous_en; } tadd_state;
-typedef struct hour_state { long fraction_ms; int wrapped; } hour_state;
+typedef struct hour_state { long fraction_ms; int wrapped; int input_was_on; } hour_state;
 
 int fx5_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step);
 int tadd_execute(plcvec_reference *ref, tadd_state *st, const plcvec_vector *v, const plcvec_step *step);
