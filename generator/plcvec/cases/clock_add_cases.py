@@ -24,10 +24,10 @@ class AddCases:
         self.every_scan, self.pulse_form = by_exec.get("every_scan"), by_exec.get("rising_edge")
 
     def case(self, instr, key, *, tags, description, values, heads=None, steps=None, flags_on=False,
-             clauses=(), printed=None, result_initial=None):
+             clauses=(), printed=None, result_initial=None, registers_before=0):
         heads = dict(self.place, **(heads or {}))
         devices = {d: flags_on for d in self.flag_devices}
-        devices.update({r: 0 for r in self.registers})
+        devices.update({r: registers_before for r in self.registers})
         for op in self.addends + [self.result]:
             if op == self.result:
                 # (d) starts with words no valid result holds, so an unwritten (d) shows.
@@ -116,6 +116,17 @@ class AddCases:
                             tags=["invalid-range", "device-range"], values=values, heads={past_op: head}, flags_on=True,
                             description=f"{bad_op} {f['name']} = {value} (outside {f['min']}..{f['max']}) while {past_op} at {head} "
                                         f"runs {beyond} past the last {prefix} device: both error conditions in one execution.")
+
+    def registers_after_success(self):
+        """The error registers holding each code from an earlier error: an execution without error stores
+        no code, so they keep it."""
+        for check in self.doc["errors"]["checks"]:
+            code = check["code"]
+            yield self.case(self.every_scan, f"error-registers/{code:04X}H-before/valid", tags=["boundary"],
+                            values={o: self.ops.values() for o in self.addends}, registers_before=code,
+                            clauses=[self.doc["errors"]["registers"]["clause"]],
+                            description=f"{', '.join(self.registers)} hold {code:04X}H from an earlier error; a valid addition "
+                                        "stores no error code, so they keep it.")
 
     def same_device(self):
         """(s1) and (d) the same device: TADD adds again every scan, TADDP once per rising edge."""
@@ -206,7 +217,7 @@ class AddCases:
 def clock_add_cases(fam, builder):
     c = AddCases(fam, builder)
     vectors = []
-    for family in (c.manual_examples, c.carries, c.range_errors, c.device_range, c.both_errors, c.same_device, c.pulse,
-                   c.random):
+    for family in (c.manual_examples, c.carries, c.range_errors, c.device_range, c.both_errors, c.registers_after_success,
+                   c.same_device, c.pulse, c.random):
         vectors += family()
     return vectors + model_cases(builder, vectors, c.from_row, ("instructions",))

@@ -31,9 +31,11 @@ class HourCases:
         return self.ops.codec.from_units(n)
 
     def case(self, key, *, tags, description, preset, measured, steps, output=False, error=False,
-             preset_raw=None, clauses=()):
-        devices = {self.error_device: error, self.place[self.output]: output}
-        operands = {op: {"device": self.place[op]} for op in (self.measured, self.output, self.work)}
+             preset_raw=None, clauses=(), output_device=None):
+        output_device = output_device or self.place[self.output]
+        devices = {self.error_device: error, output_device: output}
+        operands = {op: {"device": self.place[op]} for op in (self.measured, self.work)}
+        operands[self.output] = {"device": output_device}
         if isinstance(preset, int):
             operands[self.preset] = {"constant": preset}
         else:
@@ -95,6 +97,14 @@ class HourCases:
         below = self.ops.codec.from_units(self.ops.codec.modulus() - 2)
         yield self.case("wrap/reach-then-wrap", tags=["wrap"], preset=top, measured=below,
                         steps=self.on(self.unit, 3), description="Reach the largest preset, wrap, and keep measuring.")
+        # One long scan carries D1 past the top and on into the next cycle: two units of the top field
+        # (two hours) from one unit below the top.
+        per_top = self.ops.codec.modulus() // (self.fields[0]["max"] + 1)
+        start = self.ops.codec.from_units(self.ops.codec.modulus() - per_top)
+        yield self.case("wrap/one-long-step", tags=["wrap", "scan-sequence"], preset=one_top_unit, measured=start,
+                        steps=self.on(self.unit * 2 * per_top),
+                        description=f"D1 at {start[self.names[0]]}:00:00 and one scan of {2 * per_top} s: D1 wraps and ends at 1:00:00, "
+                                    "which reaches the preset of 1:00:00 in the new cycle.")
 
     def invalid_preset(self):
         for f in self.fields[1:]:
@@ -112,6 +122,34 @@ class HourCases:
                         measured=self.hms(), steps=self.on(self.unit) + [{"input": True, "elapsed_ms": self.unit,
                         "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(self.seconds(1))))}],
                         description="An invalid preset, then a valid one already reached: D2 turns on; the error flag stays as it was.")
+
+    def measured_out_of_range(self):
+        """D1 holding a minute or a second above its range when the input is on (HOUR-D1-OUT-OF-RANGE)."""
+        hour, minute, second = self.names
+        preset = self.seconds(self.ops.codec.modulus() // (self.fields[0]["max"] + 1))   # 1:00:00
+        for name, value, ms in ((minute, self.by_max(minute) + 16, self.unit), (second, self.by_max(second) + 1, self.unit),
+                                (second, self.by_max(second) + 16, self.unit // 2), (minute, 0xFFFF, self.unit)):
+            measured = self.hms(**{name: value})
+            yield self.case(f"measured-out-of-range/{name}={value}/{ms}ms", tags=["invalid-range"], preset=preset,
+                            measured=measured, steps=self.on(ms),
+                            description=f"D1 {name} = {value} (over {self.by_max(name)}) and one scan of {ms} ms with the input on; "
+                                        "the preset is 1:00:00.")
+
+    def by_max(self, name):
+        return self.ops.by_name[name]["max"]
+
+    def output_relay(self):
+        """D2 an output relay, as the device table has it, beside the internal relay the other vectors use."""
+        relay = self.doc["generation"]["output_relay"]
+        yield self.case("output-relay/reach", tags=["scan-sequence"], preset=self.seconds(2), measured=self.hms(),
+                        steps=self.on(self.unit, 3), output_device=relay,
+                        description=f"D2 is the output relay {relay}: it turns on when the preset of 2 s is reached.")
+        invalid = self.hms(**{self.names[1]: self.by_max(self.names[1]) + 1})
+        yield self.case("output-relay/invalid-preset", tags=["invalid-range"], preset=self.seconds(1), measured=self.seconds(5),
+                        output=True, output_device=relay,
+                        steps=[{"input": True, "elapsed_ms": self.unit,
+                                "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(invalid)))}],
+                        description=f"D2 is the output relay {relay}, on; the preset is changed to an invalid one: {relay} turns off.")
 
     def error_flag(self):
         """M8004 already on, or an invalid preset, at executions with the input on and off: whether a valid
@@ -182,6 +220,7 @@ class HourCases:
 def hour_meter_cases(fam, builder):
     c = HourCases(fam, builder)
     vectors = []
-    for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.error_flag, c.input_off, c.random):
+    for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.error_flag, c.measured_out_of_range, c.output_relay,
+                   c.input_off, c.random):
         vectors += family()
     return vectors + model_cases(builder, vectors, c.from_row, ())

@@ -274,6 +274,7 @@ class CompareCases:
     def device_range(self):
         dr = self.doc["validity"]["device_range"]
         if not dr["check"]:
+            yield from self._top_of_area()
             return
         eq_symbol = self.symbol_for("eq")
         equal = self.ops.words(self.ops.values())
@@ -299,6 +300,20 @@ class CompareCases:
                                         s1=equal[:self.words - beyond] if op == self.first and beyond else equal,
                                         s2=equal[:self.words - beyond] if op == self.second and beyond else equal,
                                         sel=sel, heads={op: head}, clock=self.ops.values() if clock else None)
+
+    def _top_of_area(self):
+        """Without a device-range check in the spec: each operand at the top of its area, its last word the
+        area's last, the data differing only in the least significant field."""
+        s1, s2 = self.pair_with(self.names[-1], "gt")
+        symbol = self.symbol_for("gt")
+        for op in (self.first, self.second, self.selop):
+            prefix = split_address(self.place[op])[0]
+            size = self.b.sizes[prefix]
+            head = top_head(prefix, size, self.doc["operands"][op].get("words", 1), 0)
+            yield self.case(self.load_form, symbol, f"device-range/{op}={head}", tags=["boundary", "device-range"],
+                            description=f"{op} at {head}: its last word is the last {prefix} device ({prefix}{size - 1}); "
+                                        f"{self.first} is after {self.second} in the {self.names[-1]} alone.",
+                            s1=self.ops.words(s1), s2=self.ops.words(s2), sel=self.all_fields(), heads={op: head})
 
     def current_clock(self):
         if not self.clock_bit:

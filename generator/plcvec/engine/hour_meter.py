@@ -33,6 +33,16 @@ class HourMeter:
                 ctx["fraction"] = 0
             self._check_when_off(operands, state, ctx, trace, record)
             return None
+        # A measured value out of its fields' range decides something only through the spec's reading
+        # of it, so only then is the reading asked.
+        held = self.codec.read(state, d1)
+        if (not all(self.codec.in_range(f, held[f["name"]]) for f in self.codec.fields)
+                and self.knobs["measured_invalid"] == "error"):
+            trace.add(self.doc["data"]["measured_range_clause"])
+            state[self.error["device"]] = True
+            ctx["error"] = {"device": self.error["device"]}
+            record["error"] = True
+            return None
         elapsed = step["elapsed_ms"]
         # Whether the execution at which the input turns on counts its elapsed time decides something
         # only when there is some, so only then is it asked.
@@ -43,7 +53,7 @@ class HourMeter:
         record["whole"] = whole
         if whole and state[d2]:
             trace.add(self.doc["data"].get("keep_measuring_clause"))  # D1 goes on growing past the preset
-        total = self.codec.to_units(self.codec.read(state, d1)) + whole
+        total = self.codec.to_units(held) + whole
         modulus = self.codec.modulus()
         if total >= modulus:
             trace.add(self.doc["wrap"]["clause"])

@@ -13,10 +13,10 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "56a56a621203b9cebf78d2272bf5a14b4ac6d4e600de7a571df7db42f7df0bb9"
+const SpecSHA256 = "c23c2e3d487253c74c2e70b61246559e44d9f57557804031fe19cd8a1203be0d"
 
 // Total is the number of vectors in the exported copy.
-const Total = 3685
+const Total = 3696
 
 // Families (one vector file each).
 
@@ -300,6 +300,15 @@ const HourM8004OffNever = "never"
 // HourM8004OffValidPreset: An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off.
 const HourM8004OffValidPreset = "valid-preset"
 
+// InterpHourD1OutOfRange: What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?
+const InterpHourD1OutOfRange = "HOUR-D1-OUT-OF-RANGE"
+
+// HourD1OutOfRangeAsSeconds: D1 is read as the count hour x 3600 + minute x 60 + second seconds; the execution adds its whole seconds to that count, writes the count back with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), so D1 is rewritten in range even when no whole second is added, and compares the count with S1 as with any D1. (the default)
+const HourD1OutOfRangeAsSeconds = "as-seconds"
+
+// HourD1OutOfRangeError: It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read.
+const HourD1OutOfRangeError = "error"
+
 // InterpFx5Sm709Scope: Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?
 const InterpFx5Sm709Scope = "FX5-SM709-SCOPE"
 
@@ -401,8 +410,8 @@ type Interpretation struct {
 
 // Families lists every family in the exported copy.
 var Families = []Family{
-	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags}},
-	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagInputOff, TagInvalidRange, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero, InterpHourFirstScan, InterpHourPresetCheck, InterpHourM8004Off}},
+	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags}},
+	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagInputOff, TagInvalidRange, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero, InterpHourFirstScan, InterpHourPresetCheck, InterpHourM8004Off, InterpHourD1OutOfRange}},
 	{Name: FamilyFx5DateCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 date comparison (LDDT\U000025a1, ANDDT\U000025a1, ORDT\U000025a1)", Instructions: []string{InstrAnddtLt, InstrAnddtLe, InstrAnddtNe, InstrAnddtEq, InstrAnddtGt, InstrAnddtGe, InstrLddtLt, InstrLddtLe, InstrLddtNe, InstrLddtEq, InstrLddtGt, InstrLddtGe, InstrOrdtLt, InstrOrdtLe, InstrOrdtNe, InstrOrdtEq, InstrOrdtGt, InstrOrdtGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagNonexistentDate, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
 	{Name: FamilyFx5TimeAdd, Kind: "clock_add", Title: "Mitsubishi MELSEC iQ-F FX5 clock data addition (TADD, TADDP)", Instructions: []string{InstrTadd, InstrTaddp}, Tags: []string{TagBoundary, TagDeviceRange, TagInvalidRange, TagManualExample, TagModel, TagPulse, TagRandom, TagRegression, TagSameDevice, TagWrap}, Interpretations: []string{InterpTaddFlagsOff, InterpTaddExact24, InterpTaddOnError, InterpTaddErrorOrder}},
 	{Name: FamilyFx5TimeCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 time comparison (LDTM\U000025a1, ANDTM\U000025a1, ORTM\U000025a1)", Instructions: []string{InstrAndtmLt, InstrAndtmLe, InstrAndtmNe, InstrAndtmEq, InstrAndtmGt, InstrAndtmGe, InstrLdtmLt, InstrLdtmLe, InstrLdtmNe, InstrLdtmEq, InstrLdtmGt, InstrLdtmGe, InstrOrtmLt, InstrOrtmLe, InstrOrtmNe, InstrOrtmEq, InstrOrtmGt, InstrOrtmGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
@@ -423,6 +432,7 @@ var Interpretations = []Interpretation{
 	{ID: InterpHourFirstScan, Question: "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?", Default: HourFirstScanCounts, Alternatives: []string{HourFirstScanCounts, HourFirstScanFromNextScan}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourPresetCheck, Question: "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?", Default: HourPresetCheckInputOn, Alternatives: []string{HourPresetCheckInputOn, HourPresetCheckEveryExecution}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourM8004Off, Question: "Does an HOUR execution that checks the preset and finds it valid turn M8004 off?", Default: HourM8004OffNever, Alternatives: []string{HourM8004OffNever, HourM8004OffValidPreset}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourD1OutOfRange, Question: "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?", Default: HourD1OutOfRangeAsSeconds, Alternatives: []string{HourD1OutOfRangeAsSeconds, HourD1OutOfRangeError}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpFx5Sm709Scope, Question: "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?", Default: Fx5Sm709ScopeSelectedFields, Alternatives: []string{Fx5Sm709ScopeSelectedFields, Fx5Sm709ScopeAllWords, Fx5Sm709ScopeComparedOperands}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5AndOrWhenOff, Question: "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on?", Default: Fx5AndOrWhenOffAndSkipped, Alternatives: []string{Fx5AndOrWhenOffAndSkipped, Fx5AndOrWhenOffAlwaysExecuted, Fx5AndOrWhenOffShortCircuit}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5ClockS2DeviceRange, Question: "In current-date mode (s2) is dummy data; is its device range still checked?", Default: Fx5ClockS2DeviceRangeIgnored, Alternatives: []string{Fx5ClockS2DeviceRangeIgnored, Fx5ClockS2DeviceRangeChecked}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},

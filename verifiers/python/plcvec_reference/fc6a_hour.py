@@ -13,6 +13,7 @@ ALTERNATIVES = {
     "HOUR-FIRST-SCAN": ("counts", "from-next-scan"),
     "HOUR-PRESET-CHECK": ("input-on", "every-execution"),
     "HOUR-M8004-OFF": ("never", "valid-preset"),
+    "HOUR-D1-OUT-OF-RANGE": ("as-seconds", "error"),
 }
 
 DEFAULTS = {
@@ -22,6 +23,7 @@ DEFAULTS = {
     "HOUR-FIRST-SCAN": "counts",      # or "from-next-scan"
     "HOUR-PRESET-CHECK": "input-on",  # or "every-execution"
     "HOUR-M8004-OFF": "never",        # or "valid-preset"
+    "HOUR-D1-OUT-OF-RANGE": "as-seconds",  # or "error"
 }
 
 ERROR_FLAG = "M8004"
@@ -115,6 +117,14 @@ class HourMeter:
             # HOUR-PRESET-CHECK=every-execution: the preset is checked with the input off too.
             if self.choices["HOUR-PRESET-CHECK"] == "every-execution":
                 self.check_preset(operands, d2)
+            return None
+
+        # "Minute and second data can be 0 through 59."  A D1 the program set outside
+        # that is counted as seconds and carried back into range (HOUR-D1-OUT-OF-RANGE
+        # as-seconds), or is an error that stops this execution (error).
+        held = mem.read_block(d1, 3)
+        if (held[1] > 59 or held[2] > 59) and self.choices["HOUR-D1-OUT-OF-RANGE"] == "error":
+            mem.write(ERROR_FLAG, True)
             return None
 
         # Measure: the elapsed time since the previous execution is ON time; at the

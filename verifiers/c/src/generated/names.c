@@ -213,6 +213,10 @@ static const char *const alternatives_hour_m8004_off[] = {
     "never",
     "valid-preset",
 };
+static const char *const alternatives_hour_d1_out_of_range[] = {
+    "as-seconds",
+    "error",
+};
 static const char *const alternatives_fx5_sm709_scope[] = {
     "selected-fields",
     "all-words",
@@ -275,6 +279,8 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-M8004-OFF", "Does an HOUR execution that checks the preset and finds it valid turn M8004 off\?", alternatives_hour_m8004_off, 2, PLCVEC_HOUR_M8004_OFF_NEVER,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-D1-OUT-OF-RANGE", "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)\?", alternatives_hour_d1_out_of_range, 2, PLCVEC_HOUR_D1_OUT_OF_RANGE_AS_SECONDS,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects\?", alternatives_fx5_sm709_scope, 3, PLCVEC_FX5_SM709_SCOPE_SELECTED_FIELDS,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
     {"FX5-AND-OR-WHEN-OFF", "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on\?", alternatives_fx5_and_or_when_off, 3, PLCVEC_FX5_AND_OR_WHEN_OFF_AND_SKIPPED,
@@ -318,6 +324,9 @@ const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT] = {
     {"D7997", "D", 7997},
     {"D7998", "D", 7998},
     {"D7999", "D", 7999},
+    {"D8189", "D", 8189},
+    {"D8190", "D", 8190},
+    {"D8191", "D", 8191},
     {"M10", "M", 10},
     {"M8004", "M", 8004},
     {"P_EQ", "P_EQ", -1},
@@ -327,6 +336,7 @@ const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT] = {
     {"P_LE", "P_LE", -1},
     {"P_LT", "P_LT", -1},
     {"P_NE", "P_NE", -1},
+    {"Q0", "Q", 0},
     {"SD0", "SD", 0},
     {"SD8067", "SD", 8067},
     {"SM700", "SM", 700},

@@ -10,9 +10,9 @@ pub const SUITE_VERSION: &str = "0.1.0";
 /// The vector files' `schema_version`.
 pub const SCHEMA_VERSION: &str = "1.0.0";
 /// The hash of the spec the embedded vectors were generated from.
-pub const SPEC_SHA256: &str = "56a56a621203b9cebf78d2272bf5a14b4ac6d4e600de7a571df7db42f7df0bb9";
+pub const SPEC_SHA256: &str = "c23c2e3d487253c74c2e70b61246559e44d9f57557804031fe19cd8a1203be0d";
 /// How many vectors the embedded copy holds.
-pub const TOTAL: usize = 3685;
+pub const TOTAL: usize = 3696;
 
 /// An instruction family: one vector file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -554,6 +554,7 @@ pub const INTERPRETATIONS: &[Interpretation] = &[
     HourFirstScan::INTERPRETATION,
     HourPresetCheck::INTERPRETATION,
     HourM8004Off::INTERPRETATION,
+    HourD1OutOfRange::INTERPRETATION,
     Fx5Sm709Scope::INTERPRETATION,
     Fx5AndOrWhenOff::INTERPRETATION,
     Fx5ClockS2DeviceRange::INTERPRETATION,
@@ -998,6 +999,39 @@ impl Alternative for HourM8004Off {
         match self {
             HourM8004Off::Never => "never",
             HourM8004Off::ValidPreset => "valid-preset",
+        }
+    }
+}
+
+#[doc = "`HOUR-D1-OUT-OF-RANGE`: What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum HourD1OutOfRange {
+    #[doc = "`as-seconds` (the default): D1 is read as the count hour x 3600 + minute x 60 + second seconds; the execution adds its whole seconds to that count, writes the count back with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), so D1 is rewritten in range even when no whole second is added, and compares the count with S1 as with any D1."]
+    AsSeconds,
+    #[doc = "`error`: It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read."]
+    Error,
+}
+
+impl HourD1OutOfRange {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "HOUR-D1-OUT-OF-RANGE",
+        question: "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?",
+        default: "as-seconds",
+        alternatives: &["as-seconds", "error"],
+        families: &[Family::Fc6aHourMeter],
+    };
+}
+
+impl Alternative for HourD1OutOfRange {
+    const ID: &'static str = "HOUR-D1-OUT-OF-RANGE";
+    const DEFAULT: Self = HourD1OutOfRange::AsSeconds;
+    const ALL: &'static [Self] = &[HourD1OutOfRange::AsSeconds, HourD1OutOfRange::Error];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            HourD1OutOfRange::AsSeconds => "as-seconds",
+            HourD1OutOfRange::Error => "error",
         }
     }
 }

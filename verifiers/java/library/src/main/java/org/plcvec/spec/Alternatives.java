@@ -480,6 +480,42 @@ public final class Alternatives {
         }
     }
 
+    /** HOUR-D1-OUT-OF-RANGE: What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)? */
+    public enum HourD1OutOfRange implements Alternative {
+        /** D1 is read as the count hour x 3600 + minute x 60 + second seconds; the execution adds its whole seconds to that count, writes the count back with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), so D1 is rewritten in range even when no whole second is added, and compares the count with S1 as with any D1. (the default) */
+        AS_SECONDS("as-seconds", "D1 is read as the count hour x 3600 + minute x 60 + second seconds; the execution adds its whole seconds to that count, writes the count back with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), so D1 is rewritten in range even when no whole second is added, and compares the count with S1 as with any D1."),
+        /** It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read. */
+        ERROR("error", "It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read.");
+
+        private final String id;
+        private final String says;
+
+        HourD1OutOfRange(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_D1_OUT_OF_RANGE;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_D1_OUT_OF_RANGE.id() + "=" + id;
+        }
+    }
+
     /** FX5-SM709-SCOPE: Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects? */
     public enum Fx5Sm709Scope implements Alternative {
         /** Only the fields (s3) selects are checked; an unselected word may hold anything, and nothing is checked when (s3) selects nothing. (the default) */

@@ -36,6 +36,8 @@ public enum Interpretation {
     HOUR_PRESET_CHECK("HOUR-PRESET-CHECK", "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?"),
     /** Does an HOUR execution that checks the preset and finds it valid turn M8004 off? */
     HOUR_M8004_OFF("HOUR-M8004-OFF", "Does an HOUR execution that checks the preset and finds it valid turn M8004 off?"),
+    /** What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)? */
+    HOUR_D1_OUT_OF_RANGE("HOUR-D1-OUT-OF-RANGE", "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?"),
     /** Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects? */
     FX5_SM709_SCOPE("FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?"),
     /** Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on? */
@@ -99,6 +101,8 @@ public enum Interpretation {
                 return Alternatives.HourPresetCheck.INPUT_ON;
             case HOUR_M8004_OFF:
                 return Alternatives.HourM8004Off.NEVER;
+            case HOUR_D1_OUT_OF_RANGE:
+                return Alternatives.HourD1OutOfRange.AS_SECONDS;
             case FX5_SM709_SCOPE:
                 return Alternatives.Fx5Sm709Scope.SELECTED_FIELDS;
             case FX5_AND_OR_WHEN_OFF:
@@ -149,6 +153,8 @@ public enum Interpretation {
                 return List.of(Alternatives.HourPresetCheck.values());
             case HOUR_M8004_OFF:
                 return List.of(Alternatives.HourM8004Off.values());
+            case HOUR_D1_OUT_OF_RANGE:
+                return List.of(Alternatives.HourD1OutOfRange.values());
             case FX5_SM709_SCOPE:
                 return List.of(Alternatives.Fx5Sm709Scope.values());
             case FX5_AND_OR_WHEN_OFF:
@@ -198,6 +204,8 @@ public enum Interpretation {
             case HOUR_PRESET_CHECK:
                 return List.of(Family.FC6A_HOUR_METER);
             case HOUR_M8004_OFF:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_D1_OUT_OF_RANGE:
                 return List.of(Family.FC6A_HOUR_METER);
             case FX5_SM709_SCOPE:
                 return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
