@@ -18,6 +18,8 @@ if [ -n "$unformatted" ]; then
 fi
 (cd "$GO_DIR" && go vet ./...)
 (cd "$GO_DIR" && go test -race -count=1 ./...)
+# The shared table of faults: every row gets `plcvec verify`'s verdict through go test + plcvec.Run.
+python3 verifiers/parity/run.py --lang go
 # The README's example: its own module, pointed at this one by a `replace` line.
 unformatted=$(cd "$GO_DIR/examples/minimal" && gofmt -l .)
 [ -z "$unformatted" ] || { echo "gofmt: $unformatted" >&2; exit 1; }

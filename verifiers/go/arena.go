@@ -28,6 +28,7 @@ type arena struct {
 	requests     slab[Request]
 	expects      slab[expected]
 	cases        slab[Case]
+	names        slab[string]
 	strings      map[string]string // nil: no interning
 	parsed       []Addr            // a request's addresses while its keys are worked out
 }

@@ -23,6 +23,11 @@ type expected struct {
 	results  []Result // per step: the contact result expected, NoResult when none
 	choices  map[string]string
 	category string
+	// requested are the names of the request's devices, the order of StepResult.Values.
+	requested []string
+	// cpuWrites are the devices the implementation declares its CPU writes on its own account:
+	// written outside the vector, they are not stray writes.
+	cpuWrites map[string]bool
 }
 
 // state is the full state expected after step i; before, the state the step started from.
@@ -36,7 +41,7 @@ func (e *expected) before(i int) []Value {
 	return e.befores[i*n : (i+1)*n : (i+1)*n]
 }
 
-func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request) (*expected, error) {
+func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request, cpuWrites map[string]bool) (*expected, error) {
 	touched := v.Outcome.Interpretations
 	applied := make(map[string]string, len(touched))
 	isDefault := true
@@ -100,6 +105,8 @@ func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request)
 		names[i] = d.Name
 		index[d.Name] = i
 	}
+	requested := a.names.take(len(names), a.chunk)
+	copy(requested, names)
 	extra := []string{}
 	note := func(name string) {
 		if _, ok := index[name]; !ok {
@@ -126,7 +133,8 @@ func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request)
 		}
 	}
 	e := a.expects.one(a.chunk)
-	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: applied, category: category}
+	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: applied, category: category,
+		requested: requested, cpuWrites: cpuWrites}
 	n, steps := len(names), len(v.Steps)
 	e.states, e.befores = a.values.take(n*steps, a.chunk), a.befores.take(n*steps, a.chunk)
 	e.results = a.results.take(steps, a.chunk)

@@ -1,4 +1,4 @@
-module plcvec
+module github.com/plcvec/plcvec/verifiers/go
 
 go 1.22
 

@@ -29,6 +29,10 @@ type Hello struct {
 	// Interpretations: interpretation id -> the alternative followed (spec.Interp... ->
 	// spec.<Interp><Alternative>). Undeclared interpretations take their default.
 	Interpretations map[string]string
+	// CPUWrites are devices the implementation's CPU writes on its own account (diagnostic
+	// relays and registers such as SM0, SM1, SM56, SD0): a write to one of them that a vector
+	// does not list is not a stray write. A declared device the vector lists is compared as usual.
+	CPUWrites []string
 }
 
 func (h Hello) supports(instruction string) bool {
@@ -79,12 +83,20 @@ type StepResult struct {
 
 // Image is the whole device image of a step result of req, as Devices alone.
 func (s StepResult) Image(req *Request) []Device {
+	names := make([]string, len(req.Devices))
+	for i, d := range req.Devices {
+		names[i] = d.Name
+	}
+	return s.image(names)
+}
+
+func (s StepResult) image(names []string) []Device {
 	if s.Values == nil {
 		return s.Devices
 	}
 	out := make([]Device, 0, len(s.Values)+len(s.Devices))
 	for i, v := range s.Values {
-		out = append(out, Device{req.Devices[i].Name, v})
+		out = append(out, Device{names[i], v})
 	}
 	return append(out, s.Devices...)
 }

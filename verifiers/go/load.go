@@ -21,10 +21,6 @@ import (
 // file may mean something else by the same fields, so it is refused rather than misread.
 const SchemaMajor = 1
 
-// EnvVectors names the environment variable that points the verifier at another copy of the
-// vectors than the one embedded in the package.
-const EnvVectors = "PLCVEC_VECTORS"
-
 // Suite is a loaded vector set: every family's header and vectors.
 type Suite struct {
 	Source        string // where it was read from ("embedded" or a path)
@@ -100,10 +96,10 @@ type listing struct {
 }
 
 func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
-	name, compact := "index.json", true
+	name := "index.json"
 	raw, err := fs.ReadFile(fsys, name)
 	if errors.Is(err, fs.ErrNotExist) {
-		name, compact = "manifest.json", false
+		name = "manifest.json"
 		raw, err = fs.ReadFile(fsys, name)
 	}
 	if err != nil {
@@ -137,12 +133,6 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 			return nil, fmt.Errorf("%s%s: cannot read it (listed in %s)", prefix, entry.File, name)
 		}
 		where := prefix + entry.File
-		if compact && entry.SHA256 != "" {
-			sum := sha256.Sum256(data)
-			if hex.EncodeToString(sum[:]) != entry.SHA256 {
-				return nil, fmt.Errorf("%s: its sha256 is not the one %s gives: the file is damaged or edited; export it again (plcvec export --lang go)", where, name)
-			}
-		}
 		var header *Header
 		var vectors []*Vector
 		if path.Ext(entry.File) == ".jsonl" {
@@ -152,6 +142,13 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 		}
 		if err != nil {
 			return nil, err
+		}
+		// After parsing, so that a line that does not parse is named by its line.
+		if entry.SHA256 != "" {
+			sum := sha256.Sum256(data)
+			if hex.EncodeToString(sum[:]) != entry.SHA256 {
+				return nil, fmt.Errorf("%s: its sha256 is not the one %s gives: the file is damaged or edited; export it again (plcvec export --lang go)", where, name)
+			}
 		}
 		if header.Family != family {
 			return nil, fmt.Errorf("%s: holds family %q, but %s lists it as %q", where, header.Family, name, family)
@@ -212,8 +209,11 @@ func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
 	if len(lines) == 0 {
 		return nil, nil, fmt.Errorf("%s: empty; not a plcvec vector file", where)
 	}
+	if err := checkUTF8(lines[0], where, 1); err != nil {
+		return nil, nil, err
+	}
 	header := &Header{}
-	if err := json.Unmarshal(lines[0], header); err != nil {
+	if err := decodeStrict(lines[0], header); err != nil {
 		return nil, nil, fmt.Errorf("%s:1: the header is not valid (%v)", where, err)
 	}
 	if err := checkHeader(header, where); err != nil {
@@ -222,8 +222,11 @@ func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
 	vectors := make([]*Vector, 0, len(lines)-1)
 	for i, line := range lines[1:] {
 		lineNo := i + 2
+		if err := checkUTF8(line, where, lineNo); err != nil {
+			return nil, nil, err
+		}
 		v := &Vector{}
-		if err := json.Unmarshal(line, v); err != nil {
+		if err := decodeStrict(line, v); err != nil {
 			return nil, nil, fmt.Errorf("%s:%d: %s not a valid vector (%v)", where, lineNo, idOf(line), err)
 		}
 		if p := v.shapeProblem(header.Family); p != "" {
@@ -236,11 +239,14 @@ func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
 
 // parseFamilyJSON reads a repository family file: one JSON object, the header and `vectors`.
 func parseFamilyJSON(data []byte, where string) (*Header, []*Vector, error) {
+	if err := checkUTF8(data, where, 1); err != nil {
+		return nil, nil, err
+	}
 	var file struct {
 		Header
 		Vectors []json.RawMessage `json:"vectors"`
 	}
-	if err := json.Unmarshal(data, &file); err != nil {
+	if err := decodeStrict(data, &file); err != nil {
 		return nil, nil, fmt.Errorf("%s:%d: not valid JSON (%v)", where, jsonErrorLine(data, err), err)
 	}
 	if err := checkHeader(&file.Header, where); err != nil {
@@ -252,7 +258,7 @@ func parseFamilyJSON(data []byte, where string) (*Header, []*Vector, error) {
 	vectors := make([]*Vector, 0, len(file.Vectors))
 	for i, raw := range file.Vectors {
 		v := &Vector{}
-		if err := json.Unmarshal(raw, v); err != nil {
+		if err := decodeStrict(raw, v); err != nil {
 			return nil, nil, fmt.Errorf("%s: vector %s: not a valid vector (%v)", where, nameOr(idOfString(raw), i), err)
 		}
 		if p := v.shapeProblem(file.Family); p != "" {

@@ -7,10 +7,11 @@ import (
 	"regexp"
 	"strings"
 	"testing"
+	"time"
 
-	"plcvec"
-	"plcvec/reference"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/reference"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 // The manual's TADD example (fx5-time-add-TADD.txt): 10:30:10 + 3:10:05 = 13:40:15, in D30..D32.
@@ -198,9 +199,15 @@ func TestSelection(t *testing.T) {
 		}
 	}
 	// An empty selection never passes a gate.
-	if _, err := plcvec.Verify(manualAnswer{}, plcvec.Options{Selection: plcvec.Selection{IDs: []string{"nothing/*"}}}); err == nil ||
+	sel := plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}, IDs: []string{"fx5-time-compare/*"}}
+	if _, err := plcvec.Verify(manualAnswer{}, plcvec.Options{Selection: sel}); err == nil ||
 		!strings.Contains(err.Error(), "selects no vector") {
 		t.Errorf("an empty selection was not refused: %v", err)
+	}
+	// A glob that matches no id of the suite is a mistake of its own, named.
+	if _, err := plcvec.Verify(manualAnswer{}, plcvec.Options{Selection: plcvec.Selection{IDs: []string{"nothing/*"}}}); err == nil ||
+		!strings.Contains(err.Error(), `"nothing/*" matches no vector id`) {
+		t.Errorf("a glob matching nothing was not refused: %v", err)
 	}
 }
 
@@ -279,6 +286,18 @@ func TestLoadRefusesDamage(t *testing.T) {
 			ls[1] = strings.Replace(ls[1], `"SM700":false`, `"SM700":1.5`, 1)
 			return ls
 		}, "fx5-time-add.jsonl:2: vector fx5-time-add/"},
+		{"a key the schema does not have", func(ls []string) []string {
+			ls[1] = strings.Replace(ls[1], `{"assumes"`, `{"surprise":1,"assumes"`, 1)
+			return ls
+		}, `fx5-time-add.jsonl:2: vector fx5-time-add/`},
+		{"a bit holding 2", func(ls []string) []string {
+			ls[1] = strings.Replace(ls[1], `"SM700":false`, `"SM700":2`, 1)
+			return ls
+		}, "device SM700 is a bit in `initial` but a word in `final`"},
+		{"a byte that is not UTF-8", func(ls []string) []string {
+			ls[3] = strings.Replace(ls[3], `"description":"`, "\"description\":\"\xff", 1)
+			return ls
+		}, "fx5-time-add.jsonl:4: byte 0xff at column"},
 		{"schema 2", func(ls []string) []string {
 			ls[0] = strings.Replace(ls[0], `"schema_version":"1.`, `"schema_version":"2.`, 1)
 			return ls
@@ -308,8 +327,8 @@ func TestLoadRefusesDamage(t *testing.T) {
 	entries, _ := os.ReadDir(src)
 	for _, e := range entries {
 		data, _ := os.ReadFile(filepath.Join(src, e.Name()))
-		if e.Name() == "fc6a-hour-meter.jsonl" {
-			data = append(data, ' ')
+		if e.Name() == "fc6a-hour-meter.jsonl" { // still a valid file, but not the one exported
+			data = []byte(strings.Replace(string(data), `"description":"`, `"description":"x`, 1))
 		}
 		_ = os.WriteFile(filepath.Join(dir, e.Name()), data, 0o644)
 	}
@@ -457,5 +476,61 @@ func TestWriteExpectations(t *testing.T) {
 	}
 	if _, err := report.WriteExpectations(filepath.Join(t.TempDir(), "no", "such", "dir", "k.toml"), "r"); err == nil {
 		t.Error("writing into a missing folder succeeded")
+	}
+}
+
+// TestInProcess: Options.InProcess judges in the test's own process, with the same verdicts.
+func TestInProcess(t *testing.T) {
+	ref, err := reference.New(nil)
+	if err != nil {
+		t.Fatal(err)
+	}
+	report := plcvec.Run(t, ref.Implementation(), plcvec.Options{InProcess: true,
+		Selection: plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}}})
+	if c := report.Counts(); c[plcvec.StatusPass] != len(report.Verdicts) || len(report.Verdicts) == 0 {
+		t.Errorf("%v", c)
+	}
+}
+
+// looping never answers on the manual's TADD example.
+type looping struct{ plcvec.Implementation }
+
+func (l looping) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
+	if req.ID == manualTADD {
+		for {
+		}
+	}
+	return l.Implementation.Run(req)
+}
+
+// TestTimeout: a vector that never answers is reported against its id within PLCVEC_TIMEOUT,
+// and the run ends, in a second process (the default) and in this one (Options.InProcess). Run
+// in a child test binary, since the in-process watchdog ends its process.
+func TestTimeout(t *testing.T) {
+	if mode := os.Getenv("PLCVEC_TEST_LOOP"); mode != "" {
+		ref, err := reference.New(nil)
+		if err != nil {
+			t.Fatal(err)
+		}
+		plcvec.Run(t, looping{ref.Implementation()}, plcvec.Options{InProcess: mode == "in-process",
+			Selection: plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}}})
+		return
+	}
+	for _, mode := range []string{"isolated", "in-process"} {
+		t.Run(mode, func(t *testing.T) {
+			cmd := exec.Command(os.Args[0], "-test.run", "^TestTimeout$", "-test.v")
+			cmd.Env = append(os.Environ(), "PLCVEC_TEST_LOOP="+mode, "PLCVEC_TIMEOUT=0.5")
+			start := time.Now()
+			out, err := cmd.CombinedOutput()
+			if err == nil {
+				t.Fatalf("a vector that never answers passed:\n%s", out)
+			}
+			if !strings.Contains(string(out), manualTADD) || !strings.Contains(string(out), "no answer within 0.5 s (PLCVEC_TIMEOUT)") {
+				t.Errorf("the vector is not named with the bound:\n%s", out)
+			}
+			if d := time.Since(start); d > 60*time.Second {
+				t.Errorf("took %s", d)
+			}
+		})
 	}
 }

@@ -52,9 +52,16 @@ func (r *Report) Summary() string {
 		}
 	}
 	b.WriteString(r.Plan.Header())
+	b.WriteString(r.Totals())
+	return b.String()
+}
+
+// Totals is the line of counts that ends a run's report.
+func (r *Report) Totals() string {
 	c := r.Counts()
+	var b strings.Builder
 	fmt.Fprintf(&b, "%d vectors: %d pass, %d fail", len(r.Verdicts), c[StatusPass], c[StatusFail])
-	for _, s := range []Status{StatusError, StatusSkip, StatusXFail, StatusStale} {
+	for _, s := range []Status{StatusError, StatusSkip, StatusXFail, StatusStale, StatusNotRun} {
 		if c[s] > 0 {
 			fmt.Fprintf(&b, ", %d %s", c[s], s)
 		}
@@ -77,6 +84,10 @@ func (p *Plan) Header() string {
 	if len(hash) > 12 {
 		hash = hash[:12]
 	}
-	return fmt.Sprintf("plcvec: %s against %s (suite %s, schema %s, spec sha256 %s)\ninterpretations: %s\n",
+	text := fmt.Sprintf("plcvec: %s against %s (suite %s, schema %s, spec sha256 %s)\ninterpretations: %s\n",
 		name, p.Suite.Source, p.Suite.SuiteVersion, p.Suite.SchemaVersion, hash, p.Interpretations())
+	if len(p.Hello.CPUWrites) > 0 {
+		text += "cpu writes: " + strings.Join(p.Hello.CPUWrites, ", ") + "\n"
+	}
+	return text
 }

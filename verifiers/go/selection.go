@@ -3,6 +3,7 @@ package plcvec
 import (
 	"fmt"
 	"hash/crc32"
+	"sort"
 	"strconv"
 	"strings"
 )
@@ -87,13 +88,10 @@ func (sel *Selection) Matches(v *Vector) bool {
 }
 
 // Select returns the vectors the selection takes, in suite order. Unknown family, instruction,
-// tag or interpretation names are an error, not an empty selection: a misspelt filter must not
-// pass a gate by selecting nothing.
+// tag or interpretation names, and an id glob that matches no vector of the suite, are an error,
+// not an empty selection: a misspelt filter must not pass a gate by selecting nothing.
 func (s *Suite) Select(sel Selection) ([]*Vector, error) {
-	if err := sel.check(); err != nil {
-		return nil, err
-	}
-	if err := s.checkNames(sel); err != nil {
+	if err := s.checkSelection(sel); err != nil {
 		return nil, err
 	}
 	var out []*Vector
@@ -105,31 +103,58 @@ func (s *Suite) Select(sel Selection) ([]*Vector, error) {
 	return out, nil
 }
 
-func (s *Suite) checkNames(sel Selection) error {
-	families, instructions, tags := map[string]bool{}, map[string]bool{}, map[string]bool{}
-	for _, f := range s.Families {
-		families[f] = true
-		for _, i := range s.Headers[f].Instructions {
-			instructions[i] = true
-		}
-		for t := range s.Headers[f].Tags {
-			tags[t] = true
+// checkSelection names the first thing in sel the suite does not have, with what it has.
+func (s *Suite) checkSelection(sel Selection) error {
+	if err := sel.check(); err != nil {
+		return err
+	}
+	known := map[string][]string{}
+	seen := map[string]bool{}
+	add := func(what, name string) {
+		if !seen[what+"\x00"+name] {
+			seen[what+"\x00"+name] = true
+			known[what] = append(known[what], name)
 		}
 	}
-	interps := map[string]bool{}
+	for _, f := range s.Families {
+		add("family", f)
+		for _, i := range s.Headers[f].Instructions {
+			add("instruction", i)
+		}
+		for t := range s.Headers[f].Tags {
+			add("tag", t)
+		}
+	}
 	for _, i := range s.Interpretations() {
-		interps[i.ID] = true
+		add("interpretation", i.ID)
 	}
 	for _, c := range []struct {
 		what  string
 		names []string
-		known map[string]bool
-	}{{"family", sel.Families, families}, {"instruction", sel.Instructions, instructions},
-		{"tag", sel.Tags, tags}, {"interpretation", sel.Interpretations, interps}} {
+	}{{"family", sel.Families}, {"instruction", sel.Instructions}, {"tag", sel.Tags}, {"interpretation", sel.Interpretations}} {
 		for _, n := range c.names {
-			if !c.known[n] {
-				return fmt.Errorf("no %s %q in %s", c.what, n, s.Source)
+			if !seen[c.what+"\x00"+n] {
+				names := known[c.what]
+				sort.Strings(names)
+				return fmt.Errorf("%s has no such %s %q; known: %s", s.Source, c.what, n, strings.Join(names, ", "))
 			}
+		}
+	}
+	for _, p := range sel.IDs {
+		g, _ := compileGlob(p)
+		hit := false
+		for _, v := range s.Vectors {
+			if g.MatchString(v.ID) {
+				hit = true
+				break
+			}
+		}
+		if !hit {
+			example := "cp1e-time-compare/AND <=DT/logic/rlo-off/eq"
+			if len(s.Vectors) > 0 {
+				example = s.Vectors[0].ID
+			}
+			return fmt.Errorf("%q matches no vector id in %s (ids look like %s; a glob matches the whole id)", p, s.Source, example)
 		}
 	}
 	return nil

@@ -1,57 +1,112 @@
 package plcvec
 
 import (
+	"fmt"
 	"os"
-	"regexp"
+	"runtime"
 	"strconv"
 	"strings"
+	"sync/atomic"
 	"testing"
-	"unicode"
+	"time"
 )
 
 // Run verifies impl inside a Go test: one subtest per selected vector, named by the vector's
-// id, so that `go test -run`, `-json`, `-v`, `-failfast` and CI's test reports work per vector.
-// It is meant for the implementer's own _test.go:
+// id, so that `-json`, `-v`, `-failfast` and CI's test reports work per vector. It is meant for
+// the implementer's own _test.go:
 //
 //	func TestPlcvec(t *testing.T) {
-//		plcvec.Run(t, myemu.Implementation(), plcvec.Options{})
+//		plcvec.Run(t, plcvec.Emulate(myEmulator{}), plcvec.Options{})
 //	}
 //
 // A failing vector's subtest fails with the field-level diff (Verdict.Text); a vector the
-// implementation skips, or a known failure of the expectations file, is skipped with its reason.
-// Run fails the test itself when the run cannot start (a bad selection, an unknown
-// interpretation, a bad expectations file), when a listed known failure names no vector, and
-// when every vector that ran was skipped: a gate never passes by accident.
+// implementation skips, or a known failure of the known-failures file, is skipped with its
+// reason. Run fails the test itself when the run cannot start (a bad selection, an unknown
+// interpretation, a bad known-failures file or PLCVEC_* variable), when a listed known failure
+// names no vector, when every vector that ran was skipped, and when `go test -run` leaves no
+// vector to run: a gate never passes by accident.
 //
-// Subtest names: Go's testing package writes a subtest name with each space as '_' (and an
-// unprintable character as its escape), and matches -run level by level at each '/'. An id
-// such as "cp1e-time-compare/AND <=DT/logic/rlo-off/eq" is therefore the subtest
-// "TestPlcvec/cp1e-time-compare/AND_<=DT/logic/rlo-off/eq"; RunPattern gives the -run pattern
-// that selects exactly one id, and -run 'TestPlcvec/fx5-time-add/TADDP/' one instruction.
-// $PLCVEC_SHARD=K/N runs one shard of the selection (when Options give no shard).
+// The PLCVEC_* variables (PLCVEC_ID, PLCVEC_FAMILY, PLCVEC_INSTRUCTION, PLCVEC_TAG,
+// PLCVEC_INTERPRETATION, PLCVEC_SHARD, PLCVEC_VECTORS, PLCVEC_KNOWN_FAILURES,
+// PLCVEC_WRITE_EXPECTATIONS, PLCVEC_TIMEOUT) narrow and steer the run as they do every plcvec
+// runner's. PLCVEC_ID=<id> runs one vector by its exact id, with no quoting.
+//
+// The vectors are judged in a second run of the test binary (isolate.go), so that an
+// implementation that hangs (PLCVEC_TIMEOUT, default 10 s per vector), exits or crashes is
+// reported against the vector it was running, and the run ends there; Options.InProcess judges
+// them in this process instead (for a debugger, or coverage of the implementation).
 func Run(t *testing.T, impl Implementation, opts Options) *Report {
 	t.Helper()
-	if text := os.Getenv(EnvShard); text != "" && opts.Selection.Shard == (Shard{}) {
-		shard, err := ParseShard(text)
-		if err != nil {
-			t.Fatalf("plcvec: $%s: %v", EnvShard, err)
+	ordinal := nextRunCall(t.Name())
+	if spec, inChild := os.LookupEnv(envChild); inChild {
+		if spec != t.Name()+"\n"+strconv.Itoa(ordinal) {
+			return &Report{} // another Run call: its own child judges it
 		}
-		opts.Selection.Shard = shard
+		plan, _, err := prepareRun(impl, opts)
+		childServe(plan, impl, err) // does not return
 	}
-	plan, err := Prepare(impl, opts)
+	plan, env, err := prepareRun(impl, opts)
 	if err != nil {
 		t.Fatalf("plcvec: %v", err)
 	}
 	t.Log(strings.TrimSuffix(plan.Header(), "\n"))
 	report := &Report{Plan: plan, Verdicts: make([]Verdict, 0, len(plan.Cases))}
-	for _, c := range plan.Cases {
-		t.Run(c.Vector.ID, func(t *testing.T) {
+
+	filter, err := testFilter()
+	if err != nil {
+		t.Fatalf("plcvec: -run: %v", err)
+	}
+	wanted, count := make([]bool, len(plan.Cases)), 0
+	prefix := t.Name() + "/"
+	for i, c := range plan.Cases {
+		if wanted[i] = filter.takes(prefix + SubtestName(c.id)); wanted[i] {
+			count++
+		}
+	}
+	if count == 0 {
+		t.Errorf("plcvec: the test runner's filter (-run %q) matches none of the %d selected vectors: nothing was verified. "+
+			"Choose vectors with PLCVEC_ID=<id or glob>[,...] (exact ids, no quoting) rather than -run", runFlag(), len(plan.Cases))
+		return report
+	}
+
+	var src source
+	if opts.InProcess || !canIsolate() {
+		src = newInProcess(plan, impl, env.timeout)
+	} else {
+		c, err := startChild(t.Name(), ordinal, wanted)
+		if err != nil {
+			t.Fatalf("plcvec: cannot start the test binary again to judge the vectors in it (%v); Options.InProcess judges them in this process", err)
+		}
+		src = &isolated{plan: plan, child: c, wanted: wanted, timeout: env.timeout, last: -1, timer: time.NewTimer(time.Hour)}
+	}
+	defer src.close()
+	if err := src.start(); err != nil {
+		t.Fatalf("plcvec: %v", err)
+	}
+
+	ended := ""
+	for i, c := range plan.Cases {
+		if ended != "" {
+			if wanted[i] {
+				report.Verdicts = append(report.Verdicts, verdictOf(c, wire{Status: StatusNotRun, Message: "not run: " + ended}))
+			}
+			continue
+		}
+		t.Run(c.id, func(t *testing.T) {
 			t.Helper() // the report names the vector; a line of this file would say nothing
-			v := c.Judge(impl)
+			if !wanted[i] {
+				t.Errorf("plcvec: -run %q selects this vector, which plcvec did not foresee; choose vectors with PLCVEC_ID instead", runFlag())
+				return
+			}
+			w, end := src.verdict(i)
+			v := verdictOf(c, w)
 			if plan.Known != nil {
 				plan.Known.apply(&v)
 			}
 			report.Verdicts = append(report.Verdicts, v)
+			if end {
+				ended = "the run ended at " + c.id
+			}
 			switch v.Status {
 			case StatusPass:
 			case StatusSkip, StatusXFail:
@@ -61,6 +116,10 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 			}
 		})
 	}
+	if ended != "" {
+		notRun := report.Counts()[StatusNotRun]
+		t.Errorf("plcvec: %s (%d vectors after it not run)", ended, notRun)
+	}
 	if plan.Known != nil {
 		for _, v := range plan.Known.unknownIDs(plan.Suite) {
 			report.Verdicts = append(report.Verdicts, v)
@@ -68,43 +127,197 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 		}
 	}
 	c := report.Counts()
-	if len(report.Verdicts) > 0 && c[StatusPass]+c[StatusXFail]+c[StatusFail]+c[StatusError] == 0 {
+	switch {
+	case len(report.Verdicts) == 0:
+		t.Errorf("plcvec: no vector was run; choose vectors with PLCVEC_ID=<id or glob>[,...]")
+	case c[StatusPass]+c[StatusXFail]+c[StatusFail]+c[StatusError]+c[StatusNotRun] == 0:
 		t.Errorf("plcvec: every one of the %d vectors run was skipped; nothing was verified", len(report.Verdicts))
 	}
+	if env.write != "" {
+		n, err := report.WriteExpectations(env.write, "not yet triaged")
+		if err != nil {
+			t.Errorf("plcvec: $%s: %v", EnvWriteExpectations, err)
+		} else {
+			t.Logf("plcvec: %d known failures written to %s", n, env.write)
+		}
+	}
+	t.Log(strings.TrimSuffix(report.Totals(), "\n"))
 	return report
 }
 
-// EnvShard names the environment variable that gives Run a shard K/N when Options do not, so a
-// CI matrix splits the suite without changing the test: PLCVEC_SHARD=2/4 go test ./...
-const EnvShard = "PLCVEC_SHARD"
+// prepareRun is the plan of a Run: Options, narrowed and completed by the PLCVEC_* variables.
+func prepareRun(impl Implementation, opts Options) (*Plan, environment, error) {
+	env, err := readEnvironment()
+	if err != nil {
+		return nil, env, err
+	}
+	if opts.Expectations == "" {
+		opts.Expectations = env.known
+	}
+	if env.narrowed {
+		opts.env = &env
+	}
+	plan, err := Prepare(impl, opts)
+	return plan, env, err
+}
 
-// SubtestName is the name Go's testing package gives the subtest of a vector id: each space
-// becomes '_' and each unprintable character its escape, as testing.T.Run writes it.
-func SubtestName(id string) string {
-	var b strings.Builder
-	for _, r := range id {
-		switch {
-		case unicode.IsSpace(r):
-			b.WriteByte('_')
-		case !strconv.IsPrint(r):
-			q := strconv.QuoteRune(r)
-			b.WriteString(q[1 : len(q)-1])
-		default:
-			b.WriteRune(r)
+// verdictOf is the verdict of case c from what the judging said.
+func verdictOf(c *Case, w wire) Verdict {
+	v := Verdict{ID: c.id, Family: c.family, Instruction: c.instruction, Vector: c.Vector,
+		Status: w.Status, Problems: w.Problems, Message: w.Message}
+	if c.expect != nil {
+		v.Choices = c.expect.choices
+	}
+	return v
+}
+
+// canIsolate reports whether the test binary can be started again with a pipe of its own.
+func canIsolate() bool {
+	switch runtime.GOOS {
+	case "windows", "js", "wasip1", "plan9", "ios", "android":
+		return false
+	}
+	return true
+}
+
+// source gives the verdict of each wanted case, in order; end says the run ends with it.
+type source interface {
+	start() error
+	verdict(i int) (w wire, end bool)
+	close()
+}
+
+// isolated judges in the child process.
+type isolated struct {
+	plan    *Plan
+	child   *child
+	wanted  []bool
+	timeout time.Duration
+	last    int // the index of the last verdict read
+	timer   *time.Timer
+	done    bool
+}
+
+func (s *isolated) start() error {
+	line, err := s.child.next(readyBound, s.timer)
+	switch {
+	case err == errHung:
+		s.child.stop()
+		return fmt.Errorf("the test binary, started again to judge the vectors, did not reach plcvec.Run within %s", readyBound)
+	case err != nil:
+		return fmt.Errorf("the test binary, started again to judge the vectors, %s", s.child.ending())
+	case strings.HasPrefix(line, "error "):
+		msg, _ := strconv.Unquote(strings.TrimPrefix(line, "error "))
+		return fmt.Errorf("%s (in the test binary started again to judge the vectors)", msg)
+	case line != "ready "+planDigest(s.plan):
+		return fmt.Errorf("the test binary, started again, prepared other vectors than this run (%s, not %s): does the test choose them at random?",
+			strings.TrimPrefix(line, "ready "), planDigest(s.plan))
+	}
+	return nil
+}
+
+func (s *isolated) verdict(i int) (wire, bool) {
+	for {
+		line, err := s.child.next(s.timeout, s.timer)
+		if err != nil {
+			// The child is on the first wanted case after the last verdict it gave.
+			at := s.last + 1
+			for at < len(s.wanted) && !s.wanted[at] {
+				at++
+			}
+			w := wire{Status: StatusError}
+			if err == errHung {
+				s.child.stop()
+				w.Message = fmt.Sprintf("no answer within %s s (%s); the implementation was stopped and the run ends here",
+					strconv.FormatFloat(s.timeout.Seconds(), 'g', -1, 64), EnvTimeout)
+			} else {
+				w.Message = "the implementation " + s.child.ending() + "\n(while running this vector; the run ends here)"
+			}
+			s.done = true
+			if at != i && at < len(s.plan.Cases) {
+				w.Message = "while vector " + s.plan.Cases[at].id + " ran: " + w.Message
+			}
+			return w, true
+		}
+		j, w, perr := parseVerdict(line)
+		if perr != nil || j <= s.last || j >= len(s.plan.Cases) {
+			s.child.stop()
+			s.done = true
+			return wire{Status: StatusError, Message: fmt.Sprintf("the test binary judging the vectors wrote something else on its pipe: %.80q", line)}, true
+		}
+		s.last = j
+		if j == i {
+			return w, false
+		}
+		// A verdict of a case this process did not run (-failfast): read past it.
+	}
+}
+
+func (s *isolated) close() {
+	if !s.done {
+		// Every verdict read: the child ends on its own (a bound, in case it does not).
+		select {
+		case <-s.child.exited:
+		case <-time.After(10 * time.Second):
 		}
 	}
-	return b.String()
+	s.child.stop()
 }
 
-// RunPattern is the `go test -run` pattern that selects exactly the vector id under the test
-// function test: each '/'-separated level quoted and anchored, as -run matches level by level.
-//
-//	go test -run "$(... RunPattern("TestPlcvec", "cp1e-time-compare/AND <=DT/logic/rlo-off/eq"))"
-//	-> ^TestPlcvec$/^cp1e-time-compare$/^AND_<=DT$/^logic$/^rlo-off$/^eq$
-func RunPattern(test, id string) string {
-	levels := append([]string{test}, strings.Split(SubtestName(id), "/")...)
-	for i, l := range levels {
-		levels[i] = "^" + regexp.QuoteMeta(l) + "$"
-	}
-	return strings.Join(levels, "/")
+// inProcess judges in this process, with a watchdog: a vector that holds the run longer than
+// the bound is reported on stderr and the process ends (a goroutine cannot be stopped). An
+// implementation that ends the process itself is named only by `go test -v`'s `=== RUN` line.
+type inProcess struct {
+	plan    *Plan
+	impl    Implementation
+	timeout time.Duration
+	running atomic.Int64 // index + 1 of the case being judged, 0 between cases
+	seq     atomic.Int64 // cases started: the watchdog sees progress without a clock read per case
+	stop    chan struct{}
 }
+
+func newInProcess(plan *Plan, impl Implementation, timeout time.Duration) *inProcess {
+	return &inProcess{plan: plan, impl: impl, timeout: timeout, stop: make(chan struct{})}
+}
+
+func (s *inProcess) start() error {
+	go s.watch()
+	return nil
+}
+
+func (s *inProcess) watch() {
+	tick := s.timeout / 8
+	if tick < 10*time.Millisecond {
+		tick = 10 * time.Millisecond
+	}
+	ticker := time.NewTicker(tick)
+	defer ticker.Stop()
+	seen, since := int64(-1), time.Now()
+	for {
+		select {
+		case <-s.stop:
+			return
+		case now := <-ticker.C:
+			if seq := s.seq.Load(); seq != seen {
+				seen, since = seq, now
+				continue
+			}
+			if r := s.running.Load(); r > 0 && now.Sub(since) >= s.timeout {
+				fmt.Fprintf(os.Stderr, "plcvec: vector %s: no answer within %s s (%s); the run ends here\n",
+					s.plan.Cases[r-1].id, strconv.FormatFloat(s.timeout.Seconds(), 'g', -1, 64), EnvTimeout)
+				os.Exit(1)
+			}
+		}
+	}
+}
+
+func (s *inProcess) verdict(i int) (wire, bool) {
+	s.running.Store(int64(i) + 1)
+	s.seq.Add(1)
+	var v Verdict
+	s.plan.Cases[i].judge(s.impl, &v)
+	s.running.Store(0)
+	return wire{v.Status, v.Problems, v.Message}, false
+}
+
+func (s *inProcess) close() { close(s.stop) }

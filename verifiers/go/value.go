@@ -33,8 +33,15 @@ func (v Value) Word() uint16 { return uint16(v) }
 // Bit returns a bit's state (a word reads as true when it is not 0).
 func (v Value) Bit() bool { return uint16(v) != 0 }
 
+// Valid reports whether v is a word (0..65535) or a bit: a Value built from a number out of
+// range (Value(70000)) is neither, and never equals an expected value.
+func (v Value) Valid() bool { return v <= 0xFFFF || v == Bit(false) || v == Bit(true) }
+
 // String shows v as the vector files write it: 13, 65535, true, false.
 func (v Value) String() string {
+	if !v.Valid() {
+		return strconv.FormatUint(uint64(v), 10) + " (neither a word 0..65535 nor a bit)"
+	}
 	if v.IsBit() {
 		return strconv.FormatBool(v.Bit())
 	}

@@ -17,10 +17,15 @@ const (
 	StatusSkip  Status = "skip"
 	StatusXFail Status = "xfail"
 	StatusStale Status = "stale"
+	// StatusNotRun: the run ended before the vector (an implementation that hung or ended the
+	// process on an earlier one).
+	StatusNotRun Status = "not-run"
 )
 
 // Failing reports whether the status fails a run.
-func (s Status) Failing() bool { return s == StatusFail || s == StatusError || s == StatusStale }
+func (s Status) Failing() bool {
+	return s == StatusFail || s == StatusError || s == StatusStale || s == StatusNotRun
+}
 
 // Verdict is the judgement of one vector.
 type Verdict struct {
@@ -41,9 +46,17 @@ type Options struct {
 	// Selection of vectors; the zero value selects all. A selection that selects nothing is an
 	// error: a gate never passes by accident.
 	Selection Selection
-	// Expectations is the path of a TOML expectations file of known failures (CONTRACT.md):
-	// a listed vector that fails is xfail, one that passes is stale and fails the run.
+	// Expectations is the path of a TOML file of known failures (CONTRACT.md); Run's default is
+	// $PLCVEC_KNOWN_FAILURES. A listed vector that fails is xfail, one that passes is stale and
+	// fails the run.
 	Expectations string
+	// InProcess makes Run judge the vectors in the test's own process rather than in a second
+	// run of the test binary: for a debugger, or for the coverage of the implementation. Then a
+	// vector that hangs still ends the run (reported on stderr), but an implementation that
+	// ends the process is named only by `go test -v`'s `=== RUN` line.
+	InProcess bool
+	// env: the PLCVEC_* selection, which narrows Selection (Run sets it).
+	env *environment
 }
 
 // Plan is a run prepared once: the selected vectors with their requests and their expectations
@@ -80,6 +93,11 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 	if err != nil {
 		return nil, err
 	}
+	if opts.env != nil {
+		if vectors, err = suite.narrow(vectors, *opts.env); err != nil {
+			return nil, err
+		}
+	}
 	if len(vectors) == 0 {
 		return nil, fmt.Errorf("the selection selects no vector of %s (%d vectors): nothing would be verified", suite.Source, len(suite.Vectors))
 	}
@@ -88,13 +106,20 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 	if err != nil {
 		return nil, err
 	}
+	var cpuWrites map[string]bool
+	if len(hello.CPUWrites) > 0 {
+		cpuWrites = make(map[string]bool, len(hello.CPUWrites))
+		for _, name := range hello.CPUWrites {
+			cpuWrites[name] = true
+		}
+	}
 	p := &Plan{Suite: suite, Hello: hello, Choices: choices, Cases: make([]*Case, len(vectors))}
 	a := runArena()
 	for i, v := range vectors {
 		c := a.cases.one(a.chunk)
 		*c = Case{Vector: v, Request: requestOf(a, v), id: v.ID, family: a.intern(v.Family), instruction: a.intern(v.Instruction)}
 		if hello.supports(v.Instruction) {
-			if c.expect, err = expectationOf(a, v, choices, c.Request); err != nil {
+			if c.expect, err = expectationOf(a, v, choices, c.Request, cpuWrites); err != nil {
 				return nil, fmt.Errorf("%s: %w", suite.Source, err)
 			}
 		}
@@ -139,7 +164,7 @@ func (c *Case) judge(impl Implementation, verdict *Verdict) {
 		}
 		return
 	}
-	if verdict.Problems = c.expect.compare(c.Request, steps); verdict.Problems != nil {
+	if verdict.Problems = c.expect.compare(steps); verdict.Problems != nil {
 		verdict.Status = StatusFail
 	} else {
 		verdict.Status = StatusPass

@@ -12,9 +12,9 @@ import (
 	"strings"
 	"time"
 
-	"plcvec"
-	"plcvec/reference"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/reference"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 // Mutant is one single-bug variant.

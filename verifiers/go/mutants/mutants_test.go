@@ -5,9 +5,9 @@ import (
 	"strings"
 	"testing"
 
-	"plcvec"
-	"plcvec/mutants"
-	"plcvec/reference"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/mutants"
+	"github.com/plcvec/plcvec/verifiers/go/reference"
 )
 
 // TestMutantsRejected: the verifier rejects every mutant, by name, in each family its bug is in.

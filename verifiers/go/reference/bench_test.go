@@ -5,7 +5,7 @@ import (
 	"testing"
 	"time"
 
-	"plcvec"
+	"github.com/plcvec/plcvec/verifiers/go"
 )
 
 // BenchmarkJudgeGolden judges the whole golden set with the Go reference in process, after

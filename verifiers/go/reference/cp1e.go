@@ -6,8 +6,8 @@ package reference
 import (
 	"fmt"
 
-	"plcvec"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 var pER = plcvec.Addr{Kind: "P_ER", N: -1}

@@ -7,8 +7,8 @@ package reference
 import (
 	"fmt"
 
-	"plcvec"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 var sm709 = plcvec.Addr{Kind: "SM", N: 709}

@@ -3,8 +3,8 @@ package reference
 // IDEC FC6A MICROSmart: HOUR (hour meter), from fc6a-hour-meter-HOUR.txt.
 
 import (
-	"plcvec"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 var m8004 = plcvec.Addr{Kind: "M", N: 8004} // "special internal relay M8004"

@@ -1,6 +1,6 @@
 package reference
 
-import "plcvec"
+import "github.com/plcvec/plcvec/verifiers/go"
 
 // Parts are the small pieces of the reference that a single-bug variant replaces (package
 // mutants); Correct gives the reference's own. Each is one decision the manual states, so a

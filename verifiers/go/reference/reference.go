@@ -11,8 +11,8 @@ import (
 	"sync"
 	"sync/atomic"
 
-	"plcvec"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 // Name and Version are what the reference says in the handshake.

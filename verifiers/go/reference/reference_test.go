@@ -5,8 +5,8 @@ import (
 	"strings"
 	"testing"
 
-	"plcvec"
-	"plcvec/reference"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/reference"
 )
 
 func mustNew(t testing.TB, choices map[string]string) plcvec.Implementation {

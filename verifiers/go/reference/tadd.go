@@ -5,8 +5,8 @@ package reference
 import (
 	"fmt"
 
-	"plcvec"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 const day = 24 * 3600

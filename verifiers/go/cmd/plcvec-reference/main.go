@@ -19,9 +19,9 @@ import (
 	"sort"
 	"strings"
 
-	"plcvec"
-	"plcvec/mutants"
-	"plcvec/reference"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/mutants"
+	"github.com/plcvec/plcvec/verifiers/go/reference"
 )
 
 const protocol = 1

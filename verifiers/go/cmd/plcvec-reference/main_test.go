@@ -7,7 +7,7 @@ import (
 	"strings"
 	"testing"
 
-	"plcvec"
+	"github.com/plcvec/plcvec/verifiers/go"
 )
 
 func answers(t *testing.T, input string) ([]map[string]any, int) {

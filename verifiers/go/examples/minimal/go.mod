@@ -2,9 +2,10 @@ module myemu
 
 go 1.22
 
-require plcvec v0.0.0
+require github.com/plcvec/plcvec/verifiers/go v0.1.0
 
 require github.com/BurntSushi/toml v1.6.0 // indirect
 
-// Until plcvec is published, point the module at a checkout of the repository.
-replace plcvec => ../..
+// This example lives inside the repository and builds against the checkout; a project of your
+// own leaves this line out (CI builds the README's example as such a project, from a module proxy).
+replace github.com/plcvec/plcvec/verifiers/go => ../..

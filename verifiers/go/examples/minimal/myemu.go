@@ -3,8 +3,8 @@
 package myemu
 
 import (
-	"plcvec"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 // Emulator is the whole emulator: it runs TADD and follows the default alternatives.

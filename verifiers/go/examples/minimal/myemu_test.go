@@ -3,8 +3,8 @@ package myemu
 import (
 	"testing"
 
-	"plcvec"
-	"plcvec/spec"
+	"github.com/plcvec/plcvec/verifiers/go"
+	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
 // TestPlcvec runs every TADD vector as a subtest named by its id:

@@ -1,0 +1,292 @@
+package plcvec
+
+import (
+	"bufio"
+	"encoding/hex"
+	"encoding/json"
+	"errors"
+	"flag"
+	"fmt"
+	"hash/crc32"
+	"io"
+	"os"
+	"os/exec"
+	"regexp"
+	"strconv"
+	"strings"
+	"sync"
+	"sync/atomic"
+	"time"
+)
+
+// Run judges the vectors in a second process, the same test binary started again on the same
+// test: an implementation that ends the process (os.Exit, a crash in a goroutine of its own),
+// or never returns, can then be reported against the vector it was running, and the run ends
+// there. In one process none of that can be told: Go has no hook at exit, and a goroutine that
+// never returns cannot be stopped. The child runs the test function up to the same Run call,
+// judges the vectors it is given and writes one line per vector to a pipe (file descriptor 3);
+// the parent reads them, one subtest per vector, and bounds each by PLCVEC_TIMEOUT.
+
+const (
+	envChild  = "PLCVEC_GO_CHILD"  // set in the child: "<test name>\n<ordinal of the Run call>"
+	envWanted = "PLCVEC_GO_WANTED" // the cases the child judges: a bitmap in hex, or "all"
+	// readyBound is how long the child may take to reach Run (load the suite, build the plan).
+	readyBound = 120 * time.Second
+	outputKept = 16 << 10 // bytes of the child's own output kept for a report
+)
+
+// runCalls counts the Run calls of each test in this process, so that the child acts on the
+// same call as its parent.
+var runCalls sync.Map // test name -> *atomic.Int32
+
+func nextRunCall(name string) int {
+	n, _ := runCalls.LoadOrStore(name, new(atomic.Int32))
+	return int(n.(*atomic.Int32).Add(1))
+}
+
+// wire is one verdict on the pipe: what the parent cannot work out itself.
+type wire struct {
+	Status   Status    `json:"s"`
+	Problems []Problem `json:"p,omitempty"`
+	Message  string    `json:"m,omitempty"`
+}
+
+// planDigest tells the parent the child built the same plan: the number of cases and a crc32 of
+// their ids in order.
+func planDigest(p *Plan) string {
+	h := crc32.NewIEEE()
+	for _, c := range p.Cases {
+		io.WriteString(h, c.id)
+		h.Write([]byte{0})
+	}
+	return fmt.Sprintf("%d:%08x", len(p.Cases), h.Sum32())
+}
+
+func encodeWanted(wanted []bool) string {
+	all := true
+	b := make([]byte, (len(wanted)+7)/8)
+	for i, w := range wanted {
+		if w {
+			b[i/8] |= 1 << (i % 8)
+		} else {
+			all = false
+		}
+	}
+	if all {
+		return "all"
+	}
+	return hex.EncodeToString(b)
+}
+
+func decodeWanted(text string, n int) ([]bool, error) {
+	wanted := make([]bool, n)
+	if text == "all" {
+		for i := range wanted {
+			wanted[i] = true
+		}
+		return wanted, nil
+	}
+	b, err := hex.DecodeString(text)
+	if err != nil || len(b) != (n+7)/8 {
+		return nil, fmt.Errorf("$%s does not fit a plan of %d vectors", envWanted, n)
+	}
+	for i := range wanted {
+		wanted[i] = b[i/8]&(1<<(i%8)) != 0
+	}
+	return wanted, nil
+}
+
+// childServe is Run in the child: judge the wanted cases, one line each, then end the process.
+func childServe(plan *Plan, impl Implementation, setupErr error) {
+	pipe := os.NewFile(3, "plcvec-pipe")
+	w := bufio.NewWriter(pipe)
+	if setupErr != nil {
+		fmt.Fprintf(w, "error %s\n", strconv.Quote(setupErr.Error()))
+		w.Flush()
+		os.Exit(0)
+	}
+	wanted, err := decodeWanted(os.Getenv(envWanted), len(plan.Cases))
+	if err != nil {
+		fmt.Fprintf(w, "error %s\n", strconv.Quote(err.Error()))
+		w.Flush()
+		os.Exit(0)
+	}
+	fmt.Fprintf(w, "ready %s\n", planDigest(plan))
+	w.Flush()
+	var v Verdict
+	for i, c := range plan.Cases {
+		if !wanted[i] {
+			continue
+		}
+		v = Verdict{}
+		c.judge(impl, &v)
+		if v.Status == StatusPass {
+			w.WriteString(strconv.Itoa(i))
+		} else {
+			line, _ := json.Marshal(wire{v.Status, v.Problems, v.Message})
+			fmt.Fprintf(w, "%d %s", i, line)
+		}
+		w.WriteByte('\n')
+		// One line per vector, written before the next starts: if the process ends during a
+		// vector, the parent knows which.
+		if w.Flush() != nil {
+			os.Exit(1) // the parent has gone
+		}
+	}
+	w.WriteString("done\n")
+	w.Flush()
+	os.Exit(0)
+}
+
+// child is the parent's view of the second process.
+type child struct {
+	cmd    *exec.Cmd
+	lines  chan string // closed at the end of the pipe
+	output *tail
+	exited chan struct{}
+	err    error // the process's end, once exited is closed
+}
+
+// tail keeps the last bytes written to it: the child's own output, for a report.
+type tail struct {
+	mu  sync.Mutex
+	buf []byte
+}
+
+func (t *tail) Write(p []byte) (int, error) {
+	t.mu.Lock()
+	defer t.mu.Unlock()
+	t.buf = append(t.buf, p...)
+	if len(t.buf) > outputKept {
+		t.buf = append(t.buf[:0], t.buf[len(t.buf)-outputKept:]...)
+	}
+	return len(p), nil
+}
+
+func (t *tail) String() string {
+	t.mu.Lock()
+	defer t.mu.Unlock()
+	return strings.TrimSpace(string(t.buf))
+}
+
+// startChild starts the test binary again on the test name, for the Run call ordinal.
+func startChild(name string, ordinal int, wanted []bool) (*child, error) {
+	self, err := os.Executable()
+	if err != nil {
+		return nil, err
+	}
+	levels := strings.Split(name, "/")
+	for i, l := range levels {
+		levels[i] = "^" + regexp.QuoteMeta(l) + "$"
+	}
+	args := []string{"-test.run=" + strings.Join(levels, "/"), "-test.count=1"}
+	if fl := flag.Lookup("test.timeout"); fl != nil {
+		// The child lives no longer than the parent may.
+		args = append(args, "-test.timeout="+fl.Value.String())
+	}
+	r, w, err := os.Pipe()
+	if err != nil {
+		return nil, err
+	}
+	c := &child{cmd: exec.Command(self, args...), lines: make(chan string, 256), output: &tail{}, exited: make(chan struct{})}
+	c.cmd.Env = append(os.Environ(), envChild+"="+name+"\n"+strconv.Itoa(ordinal), envWanted+"="+encodeWanted(wanted))
+	c.cmd.Stdout, c.cmd.Stderr = c.output, c.output
+	c.cmd.ExtraFiles = []*os.File{w}
+	if err := c.cmd.Start(); err != nil {
+		r.Close()
+		w.Close()
+		return nil, err
+	}
+	w.Close() // the child holds the write end now: the pipe ends when the child does
+	go func() {
+		s := bufio.NewScanner(r)
+		s.Buffer(make([]byte, 64<<10), 64<<20)
+		for s.Scan() {
+			c.lines <- s.Text()
+		}
+		close(c.lines)
+		r.Close()
+	}()
+	go func() {
+		c.err = c.cmd.Wait()
+		close(c.exited)
+	}()
+	return c, nil
+}
+
+// errEnded is a child that ended before its answer; errHung one that gave none within the bound.
+var (
+	errEnded = errors.New("ended")
+	errHung  = errors.New("hung")
+)
+
+// next is the child's next line within bound.
+func (c *child) next(bound time.Duration, timer *time.Timer) (string, error) {
+	timer.Reset(bound)
+	select {
+	case line, ok := <-c.lines:
+		if !timer.Stop() {
+			<-timer.C
+		}
+		if !ok {
+			return "", errEnded
+		}
+		return line, nil
+	case <-timer.C:
+		return "", errHung
+	}
+}
+
+// stop kills the child (a hung one) and waits for it.
+func (c *child) stop() {
+	c.cmd.Process.Kill()
+	select {
+	case <-c.exited:
+	case <-time.After(10 * time.Second):
+	}
+}
+
+// ending says how the child ended, with the end of its own output.
+func (c *child) ending() string {
+	select {
+	case <-c.exited:
+	case <-time.After(10 * time.Second):
+		c.stop()
+	}
+	how := "ended"
+	var exit *exec.ExitError
+	if errors.As(c.err, &exit) {
+		if exit.Exited() {
+			how = fmt.Sprintf("ended the test process with exit status %d", exit.ExitCode())
+		} else {
+			how = "ended the test process: " + exit.String()
+		}
+	} else if c.err == nil {
+		how = "ended the test process with exit status 0"
+	}
+	if out := c.output.String(); out != "" {
+		lines := strings.Split(out, "\n")
+		if len(lines) > 40 {
+			lines = append([]string{"..."}, lines[len(lines)-40:]...)
+		}
+		how += "; the process's last output:\n" + strings.Join(lines, "\n")
+	}
+	return how
+}
+
+// parseVerdict reads one verdict line: "<index>" for a pass, "<index> <json>" otherwise.
+func parseVerdict(line string) (int, wire, error) {
+	head, rest, _ := strings.Cut(line, " ")
+	i, err := strconv.Atoi(head)
+	if err != nil {
+		return 0, wire{}, fmt.Errorf("not a verdict: %.80q", line)
+	}
+	if rest == "" {
+		return i, wire{Status: StatusPass}, nil
+	}
+	var w wire
+	if err := json.Unmarshal([]byte(rest), &w); err != nil {
+		return 0, wire{}, fmt.Errorf("not a verdict: %.80q", line)
+	}
+	return i, w, nil
+}
