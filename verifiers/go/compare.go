@@ -6,45 +6,6 @@ import (
 	"sort"
 )
 
-// Problem is one field that differs: where, what the vector expects, what was reported.
-type Problem struct {
-	Step     int    // -1: about the vector as a whole (the number of steps)
-	Field    string // "result", a device name, or "steps"
-	Expected string // as the vector files write values: 13, true; or <not in the vector>
-	Actual   string // likewise; <not reported> when the implementation left it out
-	Before   string // a device's value before the step ("" when unknown or not a device)
-}
-
-const (
-	notReported = "<not reported>"
-	notListed   = "<not in the vector>"
-)
-
-// String is the problem as a line of a failure report.
-func (p Problem) String() string {
-	where := ""
-	if p.Step >= 0 {
-		where = fmt.Sprintf("step %d ", p.Step)
-	}
-	text := fmt.Sprintf("%s%s: expected %s, got %s", where, p.Field, p.Expected, p.Actual)
-	switch {
-	case p.Expected == notListed:
-		text += " (a write outside the vector: the instruction must not write it)"
-	case p.Before != "" && p.Before == p.Expected:
-		text += " (the step must leave it unchanged)"
-	case p.Before != "":
-		text += fmt.Sprintf(" (before the step: %s)", p.Before)
-	}
-	return text
-}
-
-func show(v Value) string {
-	if v == absent {
-		return notListed
-	}
-	return v.String()
-}
-
 // compare judges reported steps against the expectation: nil when everything matches exactly.
 // Most vectors pass, and the fast form (values in the request's order) is what Emulate gives,
 // so that case is checked first, apart: the full comparison builds the differences.
@@ -168,11 +129,4 @@ func (e *expected) deviceProblems(step int, got []Device) []Problem {
 	}
 	sort.SliceStable(problems, func(a, b int) bool { return problems[a].Field < problems[b].Field })
 	return problems
-}
-
-func showBefore(v Value) string {
-	if v == absent {
-		return ""
-	}
-	return v.String()
 }

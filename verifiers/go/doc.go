@@ -13,5 +13,5 @@
 //
 // Implementation is the contract's level; Emulator, through Emulate, is the "execute this
 // instruction on my memory" level. Verify and Prepare run the suite outside a test. The spec's
-// names are constants in package plcvec/spec.
+// names are constants in package github.com/plcvec/plcvec/verifiers/go/spec.
 package plcvec

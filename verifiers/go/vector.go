@@ -185,3 +185,139 @@ type HeaderInterpretation struct {
 		Says string `json:"says"`
 	} `json:"alternatives"`
 }
+
+// Request is one vector without its expectations: what an implementation needs to run it.
+type Request struct {
+	ID          string
+	Family      string
+	Instruction string
+	DeviceSizes map[string]int     // points of each device type: {"D": 8000} is D0..D7999
+	Devices     []Device           // the initial device image, sorted by name
+	Operands    map[string]Operand // s1, s2, d, S1, D1, C, ...
+	Scratch     []string           // work-area words: start at 0, never compared
+	Steps       []Inputs
+	// What a run reads of every vector, together: keys, table and initial for its memory,
+	// operands and sizes for its CPU. addrs only when a name's key is not exact.
+	keys     []uint64       // parallel to Devices: addrKey of each
+	table    []uint16       // keys hashed: index + 1 of each device, 0 empty (Memory.slot)
+	shift    uint           // 64 - log2(len(table))
+	runs     []uint16       // parallel to Devices: how many devices from this one are consecutive words
+	initial  []Value        // parallel to Devices: the initial image every memory copies
+	operands []namedOperand // Operands by name, their addresses parsed once
+	sizes    []kindSize     // DeviceSizes as a list: a few entries, read on every range check
+	addrs    []Addr         // parallel to Devices
+}
+
+type kindSize struct {
+	kind string
+	size int
+}
+
+// DeviceSize is the number of points of a device type the vector assumes, and whether it says.
+func (r *Request) DeviceSize(kind string) (int, bool) {
+	if r.sizes == nil && len(r.DeviceSizes) > 0 {
+		r.prepareSizes()
+	}
+	for _, s := range r.sizes {
+		if s.kind == kind {
+			return s.size, true
+		}
+	}
+	return 0, false
+}
+
+func (r *Request) prepareSizes() { r.prepareSizesIn(&arena{}) }
+
+func (r *Request) prepareSizesIn(a *arena) {
+	r.sizes = a.sizes.take(len(r.DeviceSizes), a.chunk)[:0]
+	for k, n := range r.DeviceSizes {
+		r.sizes = append(r.sizes, kindSize{a.intern(k), n})
+	}
+	sort.Slice(r.sizes, func(i, j int) bool { return r.sizes[i].kind < r.sizes[j].kind })
+}
+
+type namedOperand struct {
+	name string
+	op   Operand
+}
+
+// Operand is the named operand (s1, d, C, ...) and whether the vector has it. It is what
+// Operands[name] holds, with the device address parsed once for the whole run.
+func (r *Request) Operand(name string) (Operand, bool) {
+	if r.operands == nil && len(r.Operands) > 0 {
+		r.prepareOperands(&arena{})
+	}
+	for i := range r.operands {
+		if sameShort(r.operands[i].name, name) {
+			return r.operands[i].op, true
+		}
+	}
+	return Operand{}, false
+}
+
+// sameShort is a == b for short strings such as operand names, compared in place: most
+// differ in their last character (s1, s2, s3), and most that match are a few bytes long.
+func sameShort(a, b string) bool {
+	if len(a) != len(b) {
+		return false
+	}
+	for i := len(a) - 1; i >= 0; i-- {
+		if a[i] != b[i] {
+			return false
+		}
+	}
+	return true
+}
+
+func (r *Request) prepareOperands(a *arena) {
+	r.operands = a.operands.take(len(r.Operands), a.chunk)[:0]
+	for name, op := range r.Operands {
+		if op.Device != "" {
+			op.addr = a.operandAddrs.one(a.chunk)
+			*op.addr = ParseAddr(op.Device)
+			op.addr.Kind = a.intern(op.addr.Kind)
+		}
+		if op.Constant != nil { // a copy beside the others, not the decoder's own
+			c := a.ints.one(a.chunk)
+			*c = *op.Constant
+			op.Constant = c
+		}
+		r.operands = append(r.operands, namedOperand{a.intern(name), op})
+	}
+	sort.Slice(r.operands, func(i, j int) bool { return r.operands[i].name < r.operands[j].name })
+}
+
+// NewRequest builds the request of a vector (or of a run message received over stdio).
+func NewRequest(id, family, instruction string, sizes map[string]int, devices map[string]Value,
+	operands map[string]Operand, scratch []string, steps []Inputs) *Request {
+	return newRequest(&arena{}, id, family, instruction, sizes, devices, operands, scratch, steps)
+}
+
+// newRequest builds a request in the arena, with everything a run reads worked out once.
+func newRequest(a *arena, id, family, instruction string, sizes map[string]int, devices map[string]Value,
+	operands map[string]Operand, scratch []string, steps []Inputs) *Request {
+	r := a.requests.one(a.chunk)
+	*r = Request{ID: id, Family: a.intern(family), Instruction: a.intern(instruction), DeviceSizes: sizes,
+		Operands: operands, Scratch: scratch, Steps: steps}
+	for i := range steps {
+		steps[i].prepare(a)
+	}
+	r.Devices = a.devices.take(len(devices), a.chunk)[:0]
+	for name, v := range devices {
+		r.Devices = append(r.Devices, Device{name, v})
+	}
+	sort.Slice(r.Devices, func(i, j int) bool { return r.Devices[i].Name < r.Devices[j].Name })
+	r.prepareAddrs(a)
+	r.prepareOperands(a)
+	r.prepareSizesIn(a)
+	return r
+}
+
+func requestOf(a *arena, v *Vector) *Request {
+	steps := a.inputs.take(len(v.Steps), a.chunk)
+	for i, st := range v.Steps {
+		steps[i] = st.Inputs
+	}
+	return newRequest(a, v.ID, v.Family, v.Instruction, v.Assumes.DeviceSizes, v.Initial.Devices,
+		v.Initial.Operands, v.Initial.Scratch, steps)
+}

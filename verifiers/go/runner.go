@@ -7,38 +7,6 @@ import (
 	"strings"
 )
 
-// Status is a vector's verdict. Only pass, skip and xfail let a run pass.
-type Status string
-
-const (
-	StatusPass  Status = "pass"
-	StatusFail  Status = "fail"
-	StatusError Status = "error"
-	StatusSkip  Status = "skip"
-	StatusXFail Status = "xfail"
-	StatusStale Status = "stale"
-	// StatusNotRun: the run ended before the vector (an implementation that hung or ended the
-	// process on an earlier one).
-	StatusNotRun Status = "not-run"
-)
-
-// Failing reports whether the status fails a run.
-func (s Status) Failing() bool {
-	return s == StatusFail || s == StatusError || s == StatusStale || s == StatusNotRun
-}
-
-// Verdict is the judgement of one vector.
-type Verdict struct {
-	ID          string
-	Family      string
-	Instruction string
-	Status      Status
-	Problems    []Problem         // for Fail: the fields that differ
-	Message     string            // for Error, Skip, XFail, Stale: why
-	Choices     map[string]string // interpretation -> alternative the vector was judged by (those it depends on)
-	Vector      *Vector           // nil for an expectations-file id the suite does not have
-}
-
 // Options tell a run what to verify.
 type Options struct {
 	// Suite to run; nil is Default(): $PLCVEC_VECTORS or the embedded copy.

@@ -2,45 +2,8 @@ package plcvec
 
 import (
 	"fmt"
-	"sort"
 	"strings"
 )
-
-// maxProblems is the number of field lines shown per failing vector.
-const maxProblems = 12
-
-// Text is the verdict as a person reads it: the id, what the vector is about, the alternatives
-// it was judged by, the field-level diff (step, device, expected, actual) and the spec clauses
-// it exercises.
-func (v *Verdict) Text() string {
-	var b strings.Builder
-	fmt.Fprintf(&b, "%s %s\n", strings.ToUpper(string(v.Status)), v.ID)
-	if v.Vector != nil && v.Vector.Description != "" {
-		fmt.Fprintf(&b, "    %s: %s\n", v.Instruction, v.Vector.Description)
-	}
-	if len(v.Choices) > 0 {
-		keys := make([]string, 0, len(v.Choices))
-		for id, alt := range v.Choices {
-			keys = append(keys, id+"="+alt)
-		}
-		sort.Strings(keys)
-		fmt.Fprintf(&b, "    judged by: %s\n", strings.Join(keys, ", "))
-	}
-	for i, p := range v.Problems {
-		if i == maxProblems {
-			fmt.Fprintf(&b, "    ... and %d more differences\n", len(v.Problems)-maxProblems)
-			break
-		}
-		fmt.Fprintf(&b, "    %s\n", p)
-	}
-	if v.Message != "" {
-		fmt.Fprintf(&b, "    %s\n", strings.ReplaceAll(v.Message, "\n", "\n    "))
-	}
-	if v.Vector != nil && len(v.Vector.Clauses) > 0 {
-		fmt.Fprintf(&b, "    spec clauses: %s\n", strings.Join(v.Vector.Clauses, ", "))
-	}
-	return b.String()
-}
 
 // Summary is the report as a person reads it at the end of a run: each failing vector with its
 // diff, then what was run against what, and the totals.
