@@ -280,8 +280,91 @@ static void test_run_and_known_failures(void)
     plcvec_out_free(t.scratch);
 }
 
+/* Write `text` to a temporary file; its name into path. */
+static void temp_file(const char *text, char *path, size_t size)
+{
+    static int n;
+    snprintf(path, size, "%s/plcvec-known-%d-%d.toml", getenv("TMPDIR") ? getenv("TMPDIR") : "/tmp", (int)(size_t)&n % 9973, n++);
+    FILE *f = fopen(path, "wb");
+    fputs(text, f);
+    fclose(f);
+}
+
+/* Load `text` as a known-failures file: 0 and the entries, or -1 with the error (path replaced by FILE). */
+static int load_known(const char *text, plcvec_known_failure **list, size_t *n, char *err, size_t errlen)
+{
+    char path[256], raw[1024];
+    temp_file(text, path, sizeof path);
+    int rc = plcvec_known_load(path, list, n, raw, sizeof raw);
+    remove(path);
+    if (rc && strncmp(raw, path, strlen(path)) == 0)
+        snprintf(err, errlen, "FILE%s", raw + strlen(path));
+    else
+        snprintf(err, errlen, "%s", raw);
+    return rc;
+}
+
+static void test_known_failures_file(void)
+{
+    plcvec_known_failure *list;
+    size_t n;
+    char err[1024];
+    /* The format of CONTRACT.md, with comments, blank lines, both string kinds and escapes. */
+    CHECK(load_known("# ours\n\n[[known-failure]]\nid = \"a/b<c\"  # trailing comment\nreason = 'no \\escape'\n"
+                     "[[known-failure]]\r\nid = \"x\\u00e9\\\"y\"\r\nreason = \"tab\\there\"\r\n",
+                     &list, &n, err, sizeof err) == 0);
+    CHECK(n == 2 && strcmp(list[0].id, "a/b<c") == 0 && strcmp(list[0].reason, "no \\escape") == 0);
+    CHECK(n == 2 && strcmp(list[1].id, "x\xc3\xa9\"y") == 0 && strcmp(list[1].reason, "tab\there") == 0);
+    plcvec_known_free(list, n);
+    CHECK(load_known("", &list, &n, err, sizeof err) == 0 && n == 0);
+    /* Each refusal names the file and the line, as every plcvec runner does. */
+    static const struct { const char *text, *says; } bad[] = {
+        {"[[known-failure]]\nid = \"a\nreason = \"r\"\n", "FILE:2: not valid TOML: the string is not closed on its line"},
+        {"[[known-failure]]\nid = \"a\"\nreason = \"r\"\ncolour = \"red\"\n", "FILE:4: unknown key 'colour' (an entry has `id` and `reason`)"},
+        {"id = \"a\"\n", "FILE:1: unknown key 'id'; an expectations file holds only [[known-failure]] entries"},
+        {"[known-failure]\nid = \"a\"\n", "FILE:1: unknown table [known-failure]"},
+        {"[[known-failure]]\n\n\nreason = \"r\"\n", "FILE:1: entry without an `id`"},
+        {"[[known-failure]]\nid = \"a\"\nreason = \"  \"\n", "FILE:1: a: every known failure needs a `reason`"},
+        {"[[known-failure]]\nid = \"a\"\nreason = \"r\"\n[[known-failure]]\nid = \"a\"\nreason = \"s\"\n",
+         "FILE:4: a is listed twice (first at line 1)"},
+        {"[[known-failure]]\nid = 3\n", "FILE:2: not valid TOML here: `id` and `reason` are strings"},
+        {"[[known-failure]]\nid = \"a\" b\n", "FILE:2: not valid TOML: unexpected text after the value"},
+        {"[[known-failure]]\nid = \"a\"\nid = \"b\"\n", "FILE:3: not valid TOML: `id` is given twice in one entry"},
+        {"[[known-failure]]\nid = \"\"\"a\"\"\"\n", "FILE:2: multi-line strings are not used"},
+        {"[[known-failure]]\nid = \"a\\q\"\n", "FILE:2: not valid TOML: an unknown escape"},
+        {"[[known-failure]]\nid = \"\xff\"\n", "FILE:2: not UTF-8 text"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        int rc = load_known(bad[i].text, &list, &n, err, sizeof err);
+        CHECK(rc == -1 && strncmp(err, bad[i].says, strlen(bad[i].says)) == 0);
+        if (rc != -1 || strncmp(err, bad[i].says, strlen(bad[i].says)) != 0)
+            fprintf(stderr, "    case %zu: %s\n", i, err);
+    }
+    CHECK(plcvec_known_load("/no/such/dir/known.toml", &list, &n, err, sizeof err) == -1 &&
+          strstr(err, "/no/such/dir/known.toml: cannot read the expectations file") != NULL);
+
+    /* Writing: what `plcvec verify --write-expectations` writes, byte for byte, and it reads back. */
+    char path[256];
+    temp_file("", path, sizeof path);
+    const char *ids[] = {"b/2", "a/\"1\""};
+    CHECK(plcvec_known_write(path, ids, 2, "not yet triaged", err, sizeof err) == 0);
+    FILE *f = fopen(path, "rb");
+    char text[1024] = "";
+    size_t len = f ? fread(text, 1, sizeof text - 1, f) : 0;
+    text[len] = '\0';
+    if (f)
+        fclose(f);
+    CHECK(strcmp(text, "# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n"
+                       "[[known-failure]]\nid = \"a/\\\"1\\\"\"\nreason = \"not yet triaged\"\n\n"
+                       "[[known-failure]]\nid = \"b/2\"\nreason = \"not yet triaged\"\n") == 0);
+    CHECK(plcvec_known_load(path, &list, &n, err, sizeof err) == 0 && n == 2 && strcmp(list[0].id, "a/\"1\"") == 0);
+    plcvec_known_free(list, n);
+    remove(path);
+}
+
 int main(void)
 {
+    test_known_failures_file();
     test_names_and_selection();
     test_comparison();
     test_alternatives();
