@@ -19,25 +19,53 @@ if [ ${#need[@]} -gt 0 ]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
 fi
 
-# An emulator's own project uses the library the three ways README.md shows.
+# The README's blocks, extracted (never retyped) and run as an emulator's own project runs them:
+# the library installed as the README says, then found by CMake (find_package after
+# cmake --install) and by pkg-config; and FetchContent from a source archive of this folder (what
+# `plcvec release` publishes as plcvec-c-<version>.tar.gz), given to FetchContent as a local source.
 start=$SECONDS
-consumer="$C/examples/consumer"
-out="$C/build-consumer"
+python3 .ci/readme_snippets.py check "$C/README.md"
+out="$PWD/$C/build-readme"
 rm -rf "$out"
-cmake -S "$consumer" -B "$out/subdirectory" -G Ninja -DPLCVEC_HOW=subdirectory -DPLCVEC_SOURCE="$PWD" >/dev/null
-cmake --build "$out/subdirectory" -j 2 >/dev/null
-ctest --test-dir "$out/subdirectory" --output-on-failure
-cmake --install "$out/subdirectory" --prefix "$out/prefix" >/dev/null
-cmake -S "$consumer" -B "$out/package" -G Ninja -DPLCVEC_HOW=package -DCMAKE_PREFIX_PATH="$PWD/$out/prefix" >/dev/null
-cmake --build "$out/package" -j 2 >/dev/null
-ctest --test-dir "$out/package" --output-on-failure
-if git rev-parse --verify -q HEAD >/dev/null; then      # FetchContent clones the committed tree
-    cmake -S "$consumer" -B "$out/fetchcontent" -G Ninja -DPLCVEC_HOW=fetchcontent -DPLCVEC_SOURCE="$PWD" \
-        -DPLCVEC_GIT_TAG="$(git rev-parse HEAD)" >/dev/null
-    cmake --build "$out/fetchcontent" -j 2 >/dev/null
-    ctest --test-dir "$out/fetchcontent" --output-on-failure
-fi
-echo "c: add_subdirectory, install + find_package and FetchContent consumers in $((SECONDS - start)) s"
+mkdir -p "$out/work" "$out/home"
+python3 .ci/readme_snippets.py extract "$C/README.md" --out "$out/snippets" >/dev/null
+ln -s "$PWD/verifiers" "$out/work/verifiers"
+(cd "$out/work" && HOME="$out/home" bash "$out/snippets/install/install.sh" >/dev/null)
+prefix="$out/home/.local/plcvec"
+test -f "$prefix/lib/cmake/plcvec/plcvecConfigVersion.cmake" && test -f "$prefix/lib/pkgconfig/plcvec.pc"
+cmp "$prefix/share/licenses/plcvec/LICENSE" LICENSE
+(cd "$out/snippets/consumer" && CMAKE_PREFIX_PATH="$prefix" bash run.sh)
+# GoogleTest's own filter matching nothing, and a run of nothing but skips, are not green (exit 5).
+set +e
+"$out/snippets/consumer/build/my_emulator_tests" --gtest_filter='NoSuchTest.*' >"$out/filter.txt" 2>&1
+rc=$?
+PLCVEC_FAMILY=fx5-time-add "$out/snippets/consumer/build/my_emulator_tests" >"$out/empty.txt" 2>&1
+rc_empty=$?
+# The README's known-failures file parses, and its entry (a vector this emulator passes) is stale.
+PLCVEC_KNOWN_FAILURES="$out/snippets/known/known-failures.toml" "$out/snippets/consumer/build/my_emulator_tests" \
+    >"$out/known.txt" 2>&1
+rc_known=$?
+set -e
+[ "$rc_known" = 1 ] && grep -q "but it passes" "$out/known.txt" || { cat "$out/known.txt"; echo "c: known failures gave $rc_known"; exit 1; }
+[ "$rc" = 5 ] && grep -q PLCVEC_ID "$out/filter.txt" || { cat "$out/filter.txt"; echo "c: a filter of nothing gave $rc"; exit 1; }
+[ "$rc_empty" = 5 ] || { cat "$out/empty.txt"; echo "c: an empty selection gave $rc_empty"; exit 1; }
+(cd "$out/snippets/consumer" && PKG_CONFIG_PATH="$prefix/lib/pkgconfig" bash pkgconfig.sh && ./my_emulator_tests >/dev/null)
+# The version file: 0.1 is found (the project above), 0.2 is not.
+mkdir -p "$out/version"
+printf 'cmake_minimum_required(VERSION 3.16)\nproject(v NONE)\nfind_package(plcvec 0.2 QUIET)\nif(plcvec_FOUND)\n  message(FATAL_ERROR "0.2 found")\nendif()\n' \
+    > "$out/version/CMakeLists.txt"
+cmake -S "$out/version" -B "$out/version/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+version=$(python3 -c 'import plcvec; print(plcvec.__version__)')
+mkdir -p "$out/archive"
+git ls-files -z "$C" | tar --null -T - --transform "s|^$C|plcvec-c-$version|" -cf "$out/archive/c.tar"
+tar --transform "s|^|plcvec-c-$version/|" -rf "$out/archive/c.tar" LICENSE
+tar -C "$out/archive" -xf "$out/archive/c.tar"
+cp "$out/snippets/consumer/my_emulator_tests.cpp" "$out/snippets/fetchcontent/"
+cmake -S "$out/snippets/fetchcontent" -B "$out/snippets/fetchcontent/build" -G Ninja \
+    -DFETCHCONTENT_SOURCE_DIR_PLCVEC="$out/archive/plcvec-c-$version" >/dev/null
+cmake --build "$out/snippets/fetchcontent/build" -j 2 >/dev/null
+"$out/snippets/fetchcontent/build/my_emulator_tests" >/dev/null
+echo "c: the README's CMake package, pkg-config and FetchContent projects in $((SECONDS - start)) s"
 
 
 start=$SECONDS
