@@ -31,14 +31,42 @@ step "cargo clippy --all-targets -D warnings"
 cargo clippy --locked --manifest-path "$crate/Cargo.toml" --workspace --all-targets -- -D warnings
 
 # Release: the reference adapter below and the benchmark reuse the same build.
-step "cargo test (one test per vector, mutants, loading, the README's example crate)"
+step "cargo test (one test per vector, mutants, loading, the harness)"
 cargo test --locked --release --manifest-path "$crate/Cargo.toml" --workspace
+
+step "the crate's LICENSE is the repository's (MIT asks for the notice in every copy)"
+cmp LICENSE "$crate/LICENSE"
+
+step "the README's emulator, extracted from the README and run as an outside crate"
+readme=$(mktemp -d)
+trap 'rm -rf "$readme"' EXIT
+python3 .ci/readme_snippets.py extract "$crate/README.md" --out "$readme" >/dev/null
+# The README depends on plcvec = "0.1" from crates.io: this checkout's crate stands in for it.
+printf '\n[workspace]\n\n[patch.crates-io]\nplcvec = { path = "%s" }\n' "$PWD/$crate" >> "$readme/emulator/Cargo.toml"
+(cd "$readme/emulator" && CARGO_TARGET_DIR="$OLDPWD/$crate/target/readme" bash -euo pipefail run.sh >/dev/null)
+
+step "cargo publish --dry-run: packaged and built as crates.io would, no warning"
+# The one warning a dry run always gives is that it does not upload.
+published=$(cargo publish --dry-run --locked --manifest-path "$crate/Cargo.toml" -p plcvec 2>&1) || {
+    echo "$published"; exit 1; }
+if echo "$published" | grep '^warning:' | grep -v 'aborting upload due to dry run'; then
+    echo "rust.sh: cargo publish --dry-run warns (above)" >&2
+    exit 1
+fi
+
+step "the declared rust-version (1.82) builds the committed Cargo.lock"
+# Cargo.lock is resolved with CARGO_RESOLVER_INCOMPATIBLE_RUST_VERSIONS=fallback (stable cargo),
+# which keeps every dependency at a version whose rust-version is 1.82 or older.
+rustup toolchain install 1.82 --profile minimal >/dev/null 2>&1 || {
+    echo "rust.sh: cannot install the 1.82 toolchain with rustup" >&2; exit 1; }
+CARGO_TARGET_DIR="$crate/target/msrv" cargo +1.82 check --locked --manifest-path "$crate/Cargo.toml" --workspace --all-targets
 
 step "the shared table of faults (verifiers/parity/faults.toml) through the cargo test harness"
 verifiers/rust/faults-entry --build
 python3 verifiers/parity/run.py --lang rust --no-build
 
-step "the reference over the stdio protocol: plcvec verify"
+step "the reference over the stdio protocol: plcvec verify (built first, as the README says)"
+"$crate/reference-adapter" --build
 python3 -m plcvec verify --adapter "$crate/reference-adapter" -q
 step "the gate rejects a mutant of the reference served over stdio"
 gate_rejects rust "$crate/reference-adapter --mutant tadd-device-range-unchecked" --family fx5-time-add

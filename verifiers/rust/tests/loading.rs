@@ -112,8 +112,13 @@ fn the_embedded_copy_holds_every_family_and_vector() {
 
 #[test]
 fn the_repository_vectors_load_the_same() {
-    // PLCVEC_VECTORS may name the repository's vectors/ folder (manifest.json + *.json).
+    // PLCVEC_VECTORS may name the repository's vectors/ folder (manifest.json + *.json). The
+    // crate as published has no repository around it: then there is nothing to compare with.
     let repo = crate_dir().join("../../vectors");
+    if !crate_dir().join("../../spec").is_dir() {
+        eprintln!("not in the plcvec repository: the repository's vectors/ are not there to compare");
+        return;
+    }
     let from_repo = Suite::load(&repo).unwrap();
     let embedded = Suite::embedded().unwrap();
     assert_eq!(from_repo.vectors(), embedded.vectors());
