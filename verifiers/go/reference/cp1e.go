@@ -46,6 +46,7 @@ type cp1eConfig struct {
 	parts                   *Parts
 	nonBCDError, rangeError bool   // CP1E-NON-BCD, CP1E-OUT-OF-RANGE
 	highBitsErr, erEach     bool   // CP1E-C-HIGH-BITS, CP1E-ER-FLAG
+	errorFlagsOff           bool   // CP1E-ERROR-FLAGS
 	allMasked, andOrWhenOff string // CP1E-ALL-MASKED, CP1E-AND-OR-WHEN-OFF
 	cpus                    *spare[cp1e]
 }
@@ -92,6 +93,7 @@ func configureCP1E(r *Reference) (c cp1eConfig, err error) {
 		{spec.InterpCp1eOutOfRange, spec.Cp1eOutOfRangeError, spec.Cp1eOutOfRangeCompared, &c.rangeError},
 		{spec.InterpCp1eCHighBits, spec.Cp1eCHighBitsError, spec.Cp1eCHighBitsIgnored, &c.highBitsErr},
 		{spec.InterpCp1eErFlag, spec.Cp1eErFlagReflectsEachExecution, spec.Cp1eErFlagHeld, &c.erEach},
+		{spec.InterpCp1eErrorFlags, spec.Cp1eErrorFlagsOff, spec.Cp1eErrorFlagsKept, &c.errorFlagsOff},
 	} {
 		alt, err := r.choice(q.id, q.when, q.other)
 		if err != nil {
@@ -198,9 +200,16 @@ func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
 	return holds(c.condition, order)
 }
 
-// error: P_ER on, execution condition OFF, the six arithmetic flags untouched.
+// error: P_ER on, execution condition OFF. The flag table has no row for an execution without a
+// comparison result: the six arithmetic flags keep their values, or (CP1E-ERROR-FLAGS=off) are
+// all written off.
 func (c *cp1e) error(mem *plcvec.Memory) bool {
 	mem.SetBit(pER, true)
+	if c.errorFlagsOff {
+		for _, f := range cp1eFlags {
+			mem.SetBit(f.addr, false)
+		}
+	}
 	return false
 }
 

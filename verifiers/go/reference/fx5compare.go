@@ -35,6 +35,7 @@ type fx5Config struct {
 	scope        string // FX5-SM709-SCOPE
 	andOrWhenOff string // FX5-AND-OR-WHEN-OFF
 	checkClockS2 bool   // FX5-CLOCK-S2-DEVICE-RANGE
+	orErrorOff   bool   // FX5-OR-ON-ERROR: an error in an OR form turns the result off
 	cpus         *spare[fx5Compare]
 }
 
@@ -46,6 +47,7 @@ type fx5Compare struct {
 	condition condition
 	s1, s2    plcvec.Addr
 	s3        plcvec.Operand
+	failed    bool // the last evaluation found invalid data (SM709 on)
 }
 
 func newFX5Compare(r *Reference, req *plcvec.Request, fields *[3]field) (plcvec.CPU, error) {
@@ -92,6 +94,11 @@ func configureFX5(r *Reference) (c fx5Config, err error) {
 		return c, err
 	}
 	c.checkClockS2 = s2range == spec.Fx5ClockS2DeviceRangeChecked
+	orError, err := r.choice(spec.InterpFx5OrOnError, spec.Fx5OrOnErrorContactOff, spec.Fx5OrOnErrorResultOff)
+	if err != nil {
+		return c, err
+	}
+	c.orErrorOff = orError == spec.Fx5OrOnErrorResultOff
 	return c, nil
 }
 
@@ -112,7 +119,13 @@ func (c *fx5Compare) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Re
 	if step.RLOIn && c.andOrWhenOff == spec.Fx5AndOrWhenOffShortCircuit {
 		return plcvec.Contact(true), nil
 	}
+	c.failed = false
 	contact := c.evaluate(mem, step)
+	// "SM709 turns on ... and the operation result will be non-continuity": a non-conductive
+	// contact in parallel (contact-off), or the rung's result itself off (FX5-OR-ON-ERROR=result-off).
+	if c.failed && c.orErrorOff {
+		return plcvec.Contact(false), nil
+	}
 	return plcvec.Contact(step.RLOIn || contact), nil
 }
 
@@ -223,6 +236,7 @@ func (c *fx5Compare) order(s1, s2 [3]int, s3 uint16) int {
 }
 
 func (c *fx5Compare) invalid(mem *plcvec.Memory) bool {
+	c.failed = true
 	c.parts.FX5SetSM709(mem, true)
 	return false
 }

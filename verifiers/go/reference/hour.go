@@ -22,8 +22,13 @@ type hourMeter struct {
 	recompared bool   // HOUR-OUTPUT-OFF
 	inputOff   string // HOUR-INPUT-OFF
 	zeroNever  bool   // HOUR-PRESET-ZERO
+	fromNext   bool   // HOUR-FIRST-SCAN: the scan the input turns on does not count
+	presetAll  bool   // HOUR-PRESET-CHECK: the preset checked at every execution
+	m8004Off   bool   // HOUR-M8004-OFF: a valid preset turns M8004 off
+	d1Error    bool   // HOUR-D1-OUT-OF-RANGE: a D1 minute or second above 59 is an error
 	fractionMS int64
 	wrapped    bool // for "recompared": D2 stays on across a wrap
+	inputWasOn bool // the input at the previous execution (off before the first)
 	cpus       *spare[hourMeter]
 }
 
@@ -70,43 +75,27 @@ func configureHour(r *Reference) (h hourMeter, err error) {
 	}
 	h.recompared = output == spec.HourOutputOffRecompared
 	h.zeroNever = zero == spec.HourPresetZeroNever
+	for _, q := range []struct {
+		id, when, other string
+		flag            *bool
+	}{
+		{spec.InterpHourFirstScan, spec.HourFirstScanFromNextScan, spec.HourFirstScanCounts, &h.fromNext},
+		{spec.InterpHourPresetCheck, spec.HourPresetCheckEveryExecution, spec.HourPresetCheckInputOn, &h.presetAll},
+		{spec.InterpHourM8004Off, spec.HourM8004OffValidPreset, spec.HourM8004OffNever, &h.m8004Off},
+		{spec.InterpHourD1OutOfRange, spec.HourD1OutOfRangeError, spec.HourD1OutOfRangeAsSeconds, &h.d1Error},
+	} {
+		alt, err := r.choice(q.id, q.when, q.other)
+		if err != nil {
+			return h, err
+		}
+		*q.flag = alt == q.when
+	}
 	return h, nil
 }
 
-// measureKeepingFraction: "While input is on, the ON duration of the input is measured": all
-// the elapsed time counts, and the part of a second not yet whole is kept for the next scan.
-func measureKeepingFraction(fractionMS, elapsedMS int64) (int64, int64) {
-	total := fractionMS + elapsedMS
-	return total / 1000, total % 1000
-}
-
-func (h *hourMeter) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
-	if !step.Input {
-		switch h.inputOff { // HOUR-INPUT-OFF
-		case spec.HourInputOffReset:
-			mem.SetWords(h.d1, 0, 0, 0)
-			h.fractionMS = 0
-		case spec.HourInputOffHoldDropFraction:
-			h.fractionMS = 0 // D1 kept; the part of a second is lost
-		}
-		return plcvec.NoResult, nil
-	}
-	var whole int64
-	whole, h.fractionMS = h.parts.HourMeasure(h.fractionMS, step.ElapsedMS)
-	h.parts.HourWorkArea(mem, h.d3, h.fractionMS)
-	var d1 [3]uint16
-	mem.ReadWords(h.d1, d1[:])
-	total := int64(d1[0])*3600 + int64(d1[1])*60 + int64(d1[2]) + whole
-	// "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds, the
-	// value returns to 0 hours 0 minutes 0 seconds to repeat another measuring cycle, with the
-	// comparison output remaining on."
-	wrappedNow := total >= hourCycle
-	total %= hourCycle
-	mem.SetWords(h.d1, uint16(total/3600), uint16(total%3600/60), uint16(total%60))
-	if wrappedNow {
-		h.parts.HourOnWrap(mem, h.d2)
-	}
-
+// checkPreset reads S1 and checks it: the preset in seconds, or false when it is invalid
+// (M8004 on, D2 off).
+func (h *hourMeter) checkPreset(mem *plcvec.Memory) (int64, bool) {
 	// "When source device S1 is designated by a constant, the preset value can be 0 through
 	// 65,535 in hours, then minutes and seconds are set to 0." A data register: "3 consecutive
 	// data registers ... to store hour, minute, and second data."
@@ -123,9 +112,70 @@ func (h *hourMeter) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Res
 		// after the comparison output has turned on, the comparison output is turned off."
 		mem.SetBit(m8004, true)
 		mem.SetBit(h.d2, false)
+		return 0, false
+	}
+	if h.m8004Off { // the page never says M8004 turns off; HOUR-M8004-OFF=valid-preset does
+		mem.SetBit(m8004, false)
+	}
+	return int64(p[0])*3600 + int64(p[1])*60 + int64(p[2]), true
+}
+
+// measureKeepingFraction: "While input is on, the ON duration of the input is measured": all
+// the elapsed time counts, and the part of a second not yet whole is kept for the next scan.
+func measureKeepingFraction(fractionMS, elapsedMS int64) (int64, int64) {
+	total := fractionMS + elapsedMS
+	return total / 1000, total % 1000
+}
+
+func (h *hourMeter) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
+	turnedOn := step.Input && !h.inputWasOn
+	h.inputWasOn = step.Input
+	if !step.Input {
+		switch h.inputOff { // HOUR-INPUT-OFF
+		case spec.HourInputOffReset:
+			mem.SetWords(h.d1, 0, 0, 0)
+			h.fractionMS = 0
+		case spec.HourInputOffHoldDropFraction:
+			h.fractionMS = 0 // D1 kept; the part of a second is lost
+		}
+		if h.presetAll { // HOUR-PRESET-CHECK=every-execution: checked with the input off too
+			h.checkPreset(mem)
+		}
 		return plcvec.NoResult, nil
 	}
-	preset := int64(p[0])*3600 + int64(p[1])*60 + int64(p[2])
+	var d1 [3]uint16
+	mem.ReadWords(h.d1, d1[:])
+	// "Minute and second data can be 0 through 59." A D1 the program set outside that is
+	// counted as seconds and carried back into range, or (HOUR-D1-OUT-OF-RANGE=error) is an
+	// error that stops this execution.
+	if h.d1Error && (d1[1] > 59 || d1[2] > 59) {
+		mem.SetBit(m8004, true)
+		return plcvec.NoResult, nil
+	}
+	// The elapsed time since the previous execution is ON time; at the execution the input
+	// turns on, only under HOUR-FIRST-SCAN=counts.
+	elapsed := step.ElapsedMS
+	if turnedOn && h.fromNext {
+		elapsed = 0
+	}
+	var whole int64
+	whole, h.fractionMS = h.parts.HourMeasure(h.fractionMS, elapsed)
+	h.parts.HourWorkArea(mem, h.d3, h.fractionMS)
+	total := int64(d1[0])*3600 + int64(d1[1])*60 + int64(d1[2]) + whole
+	// "When the measured input ON duration value exceeds 65,535 hours 59 minutes 59 seconds, the
+	// value returns to 0 hours 0 minutes 0 seconds to repeat another measuring cycle, with the
+	// comparison output remaining on."
+	wrappedNow := total >= hourCycle
+	total %= hourCycle
+	mem.SetWords(h.d1, uint16(total/3600), uint16(total%3600/60), uint16(total%60))
+	if wrappedNow {
+		h.parts.HourOnWrap(mem, h.d2)
+	}
+
+	preset, valid := h.checkPreset(mem)
+	if !valid {
+		return plcvec.NoResult, nil
+	}
 	// "When the measured input ON duration value in destination device D1 reaches the preset
 	// value designated by source device S1, the comparison output ... turns on."
 	reached := total >= preset

@@ -32,6 +32,7 @@ type tadd struct {
 	flagsEach    bool // TADD-FLAGS-OFF: written-each-execution
 	carryAt24    bool // TADD-EXACT-24
 	computeOnErr bool // TADD-ON-ERROR: computed
+	fieldFirst   bool // TADD-ERROR-ORDER: 3405H stored when both conditions meet
 	previousEN   bool // TADDP: the state before the first scan is off
 	cpus         *spare[tadd]
 }
@@ -80,6 +81,11 @@ func configureTADD(r *Reference) (t tadd, err error) {
 	t.flagsEach = flags == spec.TaddFlagsOffWrittenEachExecution
 	t.carryAt24 = exact == spec.TaddExact24CarryAt24
 	t.computeOnErr = onError == spec.TaddOnErrorComputed
+	order, err := r.choice(spec.InterpTaddErrorOrder, spec.TaddErrorOrderDeviceRangeFirst, spec.TaddErrorOrderFieldRangeFirst)
+	if err != nil {
+		return t, err
+	}
+	t.fieldFirst = order == spec.TaddErrorOrderFieldRangeFirst
 	return t, nil
 }
 
@@ -106,7 +112,13 @@ func (t *tadd) add(mem *plcvec.Memory) {
 	// three devices")
 	for _, a := range []plcvec.Addr{t.s1, t.s2, t.d} {
 		if !mem.InRange(a, 3) {
-			t.error(mem, errDeviceRange)
+			// Both conditions: TADD-ERROR-ORDER says which code; nothing else is written, since
+			// an operand past its device cannot be read or written.
+			code := uint16(errDeviceRange)
+			if t.fieldFirst && (t.fieldOutOfRange(mem, t.s1) || t.fieldOutOfRange(mem, t.s2)) {
+				code = errValueRange
+			}
+			t.error(mem, code)
 			return
 		}
 	}
@@ -134,6 +146,22 @@ func (t *tadd) add(mem *plcvec.Memory) {
 	mem.SetWords(t.d, uint16(result/3600), uint16(result%3600/60), uint16(result%60))
 	// "If the result is 0 (0:00:00), the zero flag turns on."
 	t.setFlags(mem, carry, result == 0)
+}
+
+// fieldOutOfRange: "3405H Any of values specified by (s1) and (s2) is outside the following
+// range." Only an operand whose three words exist can be read and checked.
+func (t *tadd) fieldOutOfRange(mem *plcvec.Memory, a plcvec.Addr) bool {
+	if !mem.InRange(a, 3) {
+		return false
+	}
+	var raw [3]uint16
+	mem.ReadWords(a, raw[:])
+	for k, r := range taddRanges {
+		if v := signed16(raw[k]); v < r[0] || v > r[1] {
+			return true
+		}
+	}
+	return false
 }
 
 // wrapDay: "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result
