@@ -94,7 +94,8 @@ python3 -m plcvec verify --adapter verifiers/c/reference-adapter -q
 python3 -m plcvec verify -q --adapter "verifiers/c/reference-adapter --choose FX5-SM709-SCOPE=compared-operands \
     --choose CP1E-ALL-MASKED=not-compared --choose TADD-FLAGS-OFF=set-only --choose HOUR-INPUT-OFF=reset \
     --choose CP1E-ERROR-FLAGS=off --choose HOUR-FIRST-SCAN=from-next-scan --choose FX5-OR-ON-ERROR=result-off \
-    --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset"
+    --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset \
+    --choose HOUR-D1-OUT-OF-RANGE=error"
 gate_rejects c "verifiers/c/reference-adapter --mutant cp1e-and-as-or"
 
 # The shared table of faults through plcvec_main and the GoogleTest pattern: every row gives

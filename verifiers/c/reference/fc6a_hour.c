@@ -80,6 +80,14 @@ int hour_execute(plcvec_reference *ref, hour_state *st, const plcvec_vector *v, 
     }
     /* The elapsed time since the previous execution is ON time; at the execution at which the
      * input turns on, only under HOUR-FIRST-SCAN=counts. */
+    /* "Minute and second data can be 0 through 59": D1 holding more is HOUR-D1-OUT-OF-RANGE.
+     * as-seconds: the count is measured on and written back in range (below); error: M8004 on,
+     * nothing else read or written, the elapsed time not counted. */
+    if (ref->follows[PLCVEC_INTERP_HOUR_D1_OUT_OF_RANGE] == PLCVEC_HOUR_D1_OUT_OF_RANGE_ERROR &&
+        (memory_read(m, memory_offset(d1, 1)) > 59 || memory_read(m, memory_offset(d1, 2)) > 59)) {
+        memory_write_named(m, memory_device_named("M8004", &m8004), PLCVEC_BIT, 1);
+        return PLCVEC_NONE;
+    }
     long elapsed = step->elapsed_ms > 0 ? (long)step->elapsed_ms : 0;
     if (turned_on && ref->follows[PLCVEC_INTERP_HOUR_FIRST_SCAN] == PLCVEC_HOUR_FIRST_SCAN_FROM_NEXT_SCAN)
         elapsed = 0;

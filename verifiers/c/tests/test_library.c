@@ -192,7 +192,7 @@ static void test_names_and_selection(void)
     for (size_t i = 0; i < plcvec_count(); i += 97)
         CHECK(plcvec_find(plcvec_at(i)->id) == plcvec_at(i));
     CHECK(plcvec_find("fx5-time-add/no/such/vector") == NULL);
-    CHECK(plcvec_device_named("SM709") == PLCVEC_DEV_SM709 && plcvec_device_named("Q0") == -1);
+    CHECK(plcvec_device_named("SM709") == PLCVEC_DEV_SM709 && plcvec_device_named("Q999") == -1);
     CHECK(strcmp(plcvec_devices[PLCVEC_DEV_D100].kind, "D") == 0 && plcvec_devices[PLCVEC_DEV_D100].number == 100);
     CHECK(plcvec_devices[PLCVEC_DEV_P_EQ].number == -1);
     int scope = plcvec_interpretation_named("FX5-SM709-SCOPE");
