@@ -408,6 +408,132 @@ type Interpretation struct {
 	Families     []string
 }
 
+// Form is where a contact instruction stands in its rung: LD starts it, AND and OR combine its
+// comparison with the logic before it. An instruction that is not a contact has the empty Form.
+type Form string
+
+// FormLd: the LD form.
+const FormLd Form = "LD"
+
+// FormAnd: the AND form.
+const FormAnd Form = "AND"
+
+// FormOr: the OR form.
+const FormOr Form = "OR"
+
+// Condition is the comparison a contact makes of (s1) against (s2); the empty Condition compares
+// nothing.
+type Condition string
+
+// ConditionEq: =.
+const ConditionEq Condition = "="
+
+// ConditionNe: <>.
+const ConditionNe Condition = "<>"
+
+// ConditionLt: <.
+const ConditionLt Condition = "<"
+
+// ConditionLe: <=.
+const ConditionLe Condition = "<="
+
+// ConditionGt: >.
+const ConditionGt Condition = ">"
+
+// ConditionGe: >=.
+const ConditionGe Condition = ">="
+
+// Execution is when an instruction executes.
+type Execution string
+
+// ExecutionEveryScan: every-scan.
+const ExecutionEveryScan Execution = "every-scan"
+
+// ExecutionRisingEdge: rising-edge.
+const ExecutionRisingEdge Execution = "rising-edge"
+
+// Instruction is one instruction and what it is, as values, so that an implementation need not
+// parse `LDTM<=` or `AND <=DT` (two different shapes).
+type Instruction struct {
+	Name      string // as in a vector's `instruction`
+	Family    string
+	ST        string // the structured-text spelling; "" where the page gives none
+	Form      Form
+	Condition Condition
+	Execution Execution
+}
+
+// Instructions lists every instruction, family by family.
+var Instructions = []Instruction{
+	{Name: InstrAndLeDt, Family: "cp1e-time-compare", ST: "AND <=DT", Form: FormAnd, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrAndNeDt, Family: "cp1e-time-compare", ST: "AND <>DT", Form: FormAnd, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrAndLtDt, Family: "cp1e-time-compare", ST: "AND <DT", Form: FormAnd, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrAndEqDt, Family: "cp1e-time-compare", ST: "AND =DT", Form: FormAnd, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrAndGeDt, Family: "cp1e-time-compare", ST: "AND >=DT", Form: FormAnd, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrAndGtDt, Family: "cp1e-time-compare", ST: "AND >DT", Form: FormAnd, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrLdLeDt, Family: "cp1e-time-compare", ST: "LD <=DT", Form: FormLd, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrLdNeDt, Family: "cp1e-time-compare", ST: "LD <>DT", Form: FormLd, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrLdLtDt, Family: "cp1e-time-compare", ST: "LD <DT", Form: FormLd, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrLdEqDt, Family: "cp1e-time-compare", ST: "LD =DT", Form: FormLd, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrLdGeDt, Family: "cp1e-time-compare", ST: "LD >=DT", Form: FormLd, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrLdGtDt, Family: "cp1e-time-compare", ST: "LD >DT", Form: FormLd, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrOrLeDt, Family: "cp1e-time-compare", ST: "OR <=DT", Form: FormOr, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrOrNeDt, Family: "cp1e-time-compare", ST: "OR <>DT", Form: FormOr, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrOrLtDt, Family: "cp1e-time-compare", ST: "OR <DT", Form: FormOr, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrOrEqDt, Family: "cp1e-time-compare", ST: "OR =DT", Form: FormOr, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrOrGeDt, Family: "cp1e-time-compare", ST: "OR >=DT", Form: FormOr, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrOrGtDt, Family: "cp1e-time-compare", ST: "OR >DT", Form: FormOr, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrHour, Family: "fc6a-hour-meter", ST: "", Form: "", Condition: "", Execution: ExecutionEveryScan},
+	{Name: InstrAnddtLt, Family: "fx5-date-compare", ST: "ANDDT_LT", Form: FormAnd, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrAnddtLe, Family: "fx5-date-compare", ST: "ANDDT_LE", Form: FormAnd, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrAnddtNe, Family: "fx5-date-compare", ST: "ANDDT_NE", Form: FormAnd, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrAnddtEq, Family: "fx5-date-compare", ST: "ANDDT_EQ", Form: FormAnd, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrAnddtGt, Family: "fx5-date-compare", ST: "ANDDT_GT", Form: FormAnd, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrAnddtGe, Family: "fx5-date-compare", ST: "ANDDT_GE", Form: FormAnd, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrLddtLt, Family: "fx5-date-compare", ST: "LDDT_LT", Form: FormLd, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrLddtLe, Family: "fx5-date-compare", ST: "LDDT_LE", Form: FormLd, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrLddtNe, Family: "fx5-date-compare", ST: "LDDT_NE", Form: FormLd, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrLddtEq, Family: "fx5-date-compare", ST: "LDDT_EQ", Form: FormLd, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrLddtGt, Family: "fx5-date-compare", ST: "LDDT_GT", Form: FormLd, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrLddtGe, Family: "fx5-date-compare", ST: "LDDT_GE", Form: FormLd, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrOrdtLt, Family: "fx5-date-compare", ST: "ORDT_LT", Form: FormOr, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrOrdtLe, Family: "fx5-date-compare", ST: "ORDT_LE", Form: FormOr, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrOrdtNe, Family: "fx5-date-compare", ST: "ORDT_NE", Form: FormOr, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrOrdtEq, Family: "fx5-date-compare", ST: "ORDT_EQ", Form: FormOr, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrOrdtGt, Family: "fx5-date-compare", ST: "ORDT_GT", Form: FormOr, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrOrdtGe, Family: "fx5-date-compare", ST: "ORDT_GE", Form: FormOr, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrTadd, Family: "fx5-time-add", ST: "TADD", Form: "", Condition: "", Execution: ExecutionEveryScan},
+	{Name: InstrTaddp, Family: "fx5-time-add", ST: "TADDP", Form: "", Condition: "", Execution: ExecutionRisingEdge},
+	{Name: InstrAndtmLt, Family: "fx5-time-compare", ST: "ANDTM_LT", Form: FormAnd, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrAndtmLe, Family: "fx5-time-compare", ST: "ANDTM_LE", Form: FormAnd, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrAndtmNe, Family: "fx5-time-compare", ST: "ANDTM_NE", Form: FormAnd, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrAndtmEq, Family: "fx5-time-compare", ST: "ANDTM_EQ", Form: FormAnd, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrAndtmGt, Family: "fx5-time-compare", ST: "ANDTM_GT", Form: FormAnd, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrAndtmGe, Family: "fx5-time-compare", ST: "ANDTM_GE", Form: FormAnd, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrLdtmLt, Family: "fx5-time-compare", ST: "LDTM_LT", Form: FormLd, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrLdtmLe, Family: "fx5-time-compare", ST: "LDTM_LE", Form: FormLd, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrLdtmNe, Family: "fx5-time-compare", ST: "LDTM_NE", Form: FormLd, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrLdtmEq, Family: "fx5-time-compare", ST: "LDTM_EQ", Form: FormLd, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrLdtmGt, Family: "fx5-time-compare", ST: "LDTM_GT", Form: FormLd, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrLdtmGe, Family: "fx5-time-compare", ST: "LDTM_GE", Form: FormLd, Condition: ConditionGe, Execution: ExecutionEveryScan},
+	{Name: InstrOrtmLt, Family: "fx5-time-compare", ST: "ORTM_LT", Form: FormOr, Condition: ConditionLt, Execution: ExecutionEveryScan},
+	{Name: InstrOrtmLe, Family: "fx5-time-compare", ST: "ORTM_LE", Form: FormOr, Condition: ConditionLe, Execution: ExecutionEveryScan},
+	{Name: InstrOrtmNe, Family: "fx5-time-compare", ST: "ORTM_NE", Form: FormOr, Condition: ConditionNe, Execution: ExecutionEveryScan},
+	{Name: InstrOrtmEq, Family: "fx5-time-compare", ST: "ORTM_EQ", Form: FormOr, Condition: ConditionEq, Execution: ExecutionEveryScan},
+	{Name: InstrOrtmGt, Family: "fx5-time-compare", ST: "ORTM_GT", Form: FormOr, Condition: ConditionGt, Execution: ExecutionEveryScan},
+	{Name: InstrOrtmGe, Family: "fx5-time-compare", ST: "ORTM_GE", Form: FormOr, Condition: ConditionGe, Execution: ExecutionEveryScan},
+}
+
+// InstructionOf is the instruction of this name (a vector's `instruction`), and whether there is one.
+func InstructionOf(name string) (Instruction, bool) {
+	for _, i := range Instructions {
+		if i.Name == name {
+			return i, true
+		}
+	}
+	return Instruction{}, false
+}
+
 // Families lists every family in the exported copy.
 var Families = []Family{
 	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags}},
