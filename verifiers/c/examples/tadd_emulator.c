@@ -113,7 +113,7 @@ static int execute(void *ctx, const plcvec_vector *v, const plcvec_step *step)
 {
     emulator *e = ctx;
     int en = step->en == 1;
-    int run = v->instruction == PLCVEC_INSTR_TADDP ? en && !e->previous_en : en;
+    int run = plcvec_instructions[v->instruction].execution == PLCVEC_EXECUTION_RISING_EDGE ? en && !e->previous_en : en;
     e->previous_en = en;
     if (run)
         tadd(e, number(v, "s1"), number(v, "s2"), number(v, "d"));

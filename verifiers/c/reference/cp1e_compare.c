@@ -24,7 +24,6 @@ static int and_form(int rlo, int contact)
 const cp1e_rules cp1e_reference_rules = {fields, is_bcd, and_form, 1};
 
 /* The flag table: rows S1 = S2, S1 > S2, S1 < S2; columns =, <>, <, <=, >, >=. */
-static const char *const symbols[6] = {"=", "<>", "<", "<=", ">", ">="};
 static const char *const flag_names[6] = {"P_EQ", "P_NE", "P_LT", "P_LE", "P_GT", "P_GE"};
 static int flag_devices[6] = {-1, -1, -1, -1, -1, -1}, p_er = -1;
 
@@ -51,7 +50,7 @@ static int error(plcvec_reference *ref, memory *m)
     return 0;
 }
 
-static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
+static int evaluate(plcvec_reference *ref, const plcvec_vector *v, plcvec_condition condition)
 {
     const cp1e_rules *r = &ref->cp1e;
     memory *m = &ref->mem;
@@ -109,28 +108,25 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, int symbol)
     /* P_ER is a condition flag reflecting the instruction just executed: CP1E-ER-FLAG. */
     if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
         memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 0);
-    return holds(symbol, order);
+    return reference_condition_holds(condition, order);
 }
 
 int cp1e_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step)
 {
-    const char *name = plcvec_instruction_names[v->instruction];      /* "AND <=DT" */
-    const char *sym = strchr(name, ' ');
-    int symbol = 0;
-    for (int s = 0; s < 6 && sym; s++)
-        if (strncmp(sym + 1, symbols[s], strlen(symbols[s])) == 0 && sym[1 + strlen(symbols[s])] == 'D')
-            symbol = s;
+    /* The instruction as values: LD/AND/OR, and the condition (no parsing of "AND <=DT"). */
+    const plcvec_instruction_info *info = &plcvec_instructions[v->instruction];
+    plcvec_condition condition = info->condition;
     /* "treated just like the LD, AND, and OR instructions" */
-    if (name[0] == 'L')
-        return evaluate(ref, v, symbol);
+    if (info->form == PLCVEC_FORM_LD)
+        return evaluate(ref, v, condition);
     int rlo = step->rlo_in == 1;
     int logic = ref->follows[PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF];
-    if (name[0] == 'A') {
+    if (info->form == PLCVEC_FORM_AND) {
         if (!rlo && logic != PLCVEC_CP1E_AND_OR_WHEN_OFF_ALWAYS_EXECUTED)   /* and-skipped, short-circuit */
             return 0;
-        return ref->cp1e.and_form(rlo, evaluate(ref, v, symbol));
+        return ref->cp1e.and_form(rlo, evaluate(ref, v, condition));
     }
     if (rlo && logic == PLCVEC_CP1E_AND_OR_WHEN_OFF_SHORT_CIRCUIT)
         return 1;
-    return evaluate(ref, v, symbol) || rlo;
+    return evaluate(ref, v, condition) || rlo;
 }

@@ -55,21 +55,6 @@ static int out_of_range(const fx5_field *fields, const uint16_t *w, int all, uns
     return 0;
 }
 
-static int condition_holds(const char *symbol, int c)
-{
-    if (strcmp(symbol, "=") == 0)
-        return c == 0;
-    if (strcmp(symbol, "<>") == 0)
-        return c != 0;
-    if (strcmp(symbol, ">") == 0)
-        return c > 0;
-    if (strcmp(symbol, "<=") == 0)
-        return c <= 0;
-    if (strcmp(symbol, "<") == 0)
-        return c < 0;
-    return c >= 0;      /* ">=" */
-}
-
 static void read_block(const memory *m, address base, uint16_t *w)
 {
     for (int i = 0; i < 3; i++)
@@ -77,7 +62,7 @@ static void read_block(const memory *m, address base, uint16_t *w)
 }
 
 /* The comparison itself (the "contact"). */
-static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step, int date, const char *symbol)
+static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step, int date, plcvec_condition condition)
 {
     const fx5_rules *r = &ref->fx5;
     memory *m = &ref->mem;
@@ -146,31 +131,30 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
     /* Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
      * the data are within the setting range." So 02/30 is compared as it is. */
     r->sm709(m, 0);
-    return condition_holds(symbol, r->order(fields, s1, s2, s3));
+    return reference_condition_holds(condition, r->order(fields, s1, s2, s3));
 }
 
 int fx5_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step)
 {
-    const char *name = plcvec_instruction_names[v->instruction];
+    /* The instruction as values: LD/AND/OR, and the condition (no parsing of "ANDTM<="). */
+    const plcvec_instruction_info *info = &plcvec_instructions[v->instruction];
     int date = v->family == PLCVEC_FAMILY_FX5_DATE_COMPARE;
-    const char *kind = date ? "DT" : "TM";
-    size_t form = strncmp(name, "LD", 2) == 0 ? 2 : strncmp(name, "AND", 3) == 0 ? 3 : 2;   /* LD, AND, OR */
-    const char *symbol = name + form + strlen(kind);
-    if (name[0] == 'L')
-        return evaluate(ref, v, step, date, symbol);
+    plcvec_condition condition = info->condition;
+    if (info->form == PLCVEC_FORM_LD)
+        return evaluate(ref, v, step, date, condition);
     int rlo = step->rlo_in == 1;
     int logic = ref->follows[PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF];
     /* "(Devices are used as a normally open contact.)"; NOTES.md (iQ-R processing times): an
      * AND/OR comparison is not executed while the preceding logic is off: FX5-AND-OR-WHEN-OFF. */
-    if (name[0] == 'A') {
+    if (info->form == PLCVEC_FORM_AND) {
         if (!rlo && logic != PLCVEC_FX5_AND_OR_WHEN_OFF_ALWAYS_EXECUTED)
             return 0;
-        return evaluate(ref, v, step, date, symbol) && rlo;
+        return evaluate(ref, v, step, date, condition) && rlo;
     }
     if (rlo && logic == PLCVEC_FX5_AND_OR_WHEN_OFF_SHORT_CIRCUIT)
         return 1;
     ref->fx5_failed = 0;
-    int contact = evaluate(ref, v, step, date, symbol);
+    int contact = evaluate(ref, v, step, date, condition);
     /* "SM709 turns on ... and the operation result will be non-continuity": a non-conductive
      * contact in parallel (contact-off), or the rung's result itself off (result-off). */
     if (ref->fx5_failed && ref->follows[PLCVEC_INTERP_FX5_OR_ON_ERROR] == PLCVEC_FX5_OR_ON_ERROR_RESULT_OFF)

@@ -11,8 +11,8 @@ static const char *const carry_flags[] = {"SM700", "SM8022"};     /* "SM700 Carr
 
 static int pulse(int en, int previous_en, plcvec_instruction instruction)
 {
-    /* TADD: every scan while EN is on; TADDP: its rising edge only. */
-    return instruction == PLCVEC_INSTR_TADDP ? en && !previous_en : en;
+    /* TADD: every scan while EN is on; TADDP: its rising edge only (the instruction's execution). */
+    return plcvec_instructions[instruction].execution == PLCVEC_EXECUTION_RISING_EDGE ? en && !previous_en : en;
 }
 
 const tadd_rules tadd_reference_rules = {carry_flags, 2, 23, memory_in_range, pulse, 1};

@@ -86,6 +86,19 @@ static int run(void *ctx, const plcvec_vector *v, plcvec_out *out)
     return 0;
 }
 
+int reference_condition_holds(plcvec_condition condition, int order)
+{
+    switch (condition) {
+    case PLCVEC_CONDITION_EQ: return order == 0;
+    case PLCVEC_CONDITION_NE: return order != 0;
+    case PLCVEC_CONDITION_LT: return order < 0;
+    case PLCVEC_CONDITION_LE: return order <= 0;
+    case PLCVEC_CONDITION_GT: return order > 0;
+    case PLCVEC_CONDITION_GE: return order >= 0;
+    default: return 0;
+    }
+}
+
 plcvec_impl plcvec_reference_impl(plcvec_reference *ref)
 {
     plcvec_impl impl = {0};

@@ -73,6 +73,10 @@ int plcvec_reference_choose(plcvec_reference *ref, const char *interpretation, c
 /* The reference as a plcvec_impl (which points into ref). */
 plcvec_impl plcvec_reference_impl(plcvec_reference *ref);
 
+/* Whether an instruction's condition (= <> < <= > >=) holds for an ordering of s1 against s2
+ * (-1, 0, 1). */
+int reference_condition_holds(plcvec_condition condition, int order);
+
 /* The family machines: execute one step on ref->mem; return the contact result or PLCVEC_NONE. */
 typedef struct tadd_state { int previous_en; } tadd_state;
 typedef struct hour_state { long fraction_ms; int wrapped; int input_was_on; } hour_state;

@@ -304,6 +304,27 @@ static int load_known(const char *text, plcvec_known_failure **list, size_t *n, 
     return rc;
 }
 
+/* The instructions as values, against the manual's spellings (the pages' own names). */
+static void test_instruction_metadata(void)
+{
+    const plcvec_instruction_info *i = &plcvec_instructions[PLCVEC_INSTR_LDTM_LE];
+    CHECK(strcmp(i->name, "LDTM<=") == 0 && i->family == PLCVEC_FAMILY_FX5_TIME_COMPARE && i->form == PLCVEC_FORM_LD &&
+          i->condition == PLCVEC_CONDITION_LE && i->execution == PLCVEC_EXECUTION_EVERY_SCAN);
+    i = &plcvec_instructions[PLCVEC_INSTR_AND_NE_DT];       /* "AND <>DT": CP1E, the AND form of <> */
+    CHECK(i->family == PLCVEC_FAMILY_CP1E_TIME_COMPARE && i->form == PLCVEC_FORM_AND && i->condition == PLCVEC_CONDITION_NE);
+    i = &plcvec_instructions[PLCVEC_INSTR_ORDT_GT];
+    CHECK(i->form == PLCVEC_FORM_OR && i->condition == PLCVEC_CONDITION_GT && i->family == PLCVEC_FAMILY_FX5_DATE_COMPARE);
+    i = &plcvec_instructions[PLCVEC_INSTR_TADDP];           /* the P suffix: executed on the rising edge */
+    CHECK(i->form == PLCVEC_FORM_NONE && i->condition == PLCVEC_CONDITION_NONE &&
+          i->execution == PLCVEC_EXECUTION_RISING_EDGE);
+    CHECK(plcvec_instructions[PLCVEC_INSTR_TADD].execution == PLCVEC_EXECUTION_EVERY_SCAN);
+    CHECK(plcvec_instructions[PLCVEC_INSTR_HOUR].form == PLCVEC_FORM_NONE);
+    CHECK(strcmp(plcvec_condition_names[PLCVEC_CONDITION_GE], ">=") == 0 && strcmp(plcvec_form_names[PLCVEC_FORM_OR], "OR") == 0);
+    for (int k = 0; k < PLCVEC_INSTRUCTION_COUNT; k++)
+        CHECK(strcmp(plcvec_instructions[k].name, plcvec_instruction_names[k]) == 0 &&
+              plcvec_instructions[k].family == plcvec_instruction_family[k]);
+}
+
 static void test_known_failures_file(void)
 {
     plcvec_known_failure *list;
@@ -364,6 +385,7 @@ static void test_known_failures_file(void)
 
 int main(void)
 {
+    test_instruction_metadata();
     test_known_failures_file();
     test_names_and_selection();
     test_comparison();

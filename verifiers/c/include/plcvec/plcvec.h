@@ -128,6 +128,20 @@ extern const char *const plcvec_instruction_names[PLCVEC_INSTRUCTION_COUNT];
 extern const plcvec_family plcvec_instruction_family[PLCVEC_INSTRUCTION_COUNT];
 extern const char *const plcvec_tag_names[PLCVEC_TAG_COUNT];
 
+/* What each instruction is, as values: no need to parse "LDTM<=" or "AND <=DT". */
+typedef struct plcvec_instruction_info {
+    const char *name;           /* "LDTM<=", "AND <=DT", "TADDP" */
+    const char *st;             /* the structured-text spelling ("LDTM_LE"), "" where the page gives none */
+    plcvec_family family;
+    plcvec_form form;           /* LD / AND / OR; PLCVEC_FORM_NONE for TADD, TADDP, HOUR */
+    plcvec_condition condition; /* = <> < <= > >=; PLCVEC_CONDITION_NONE for what compares nothing */
+    plcvec_execution execution; /* every scan, or on the rising edge of its condition (TADDP) */
+} plcvec_instruction_info;
+extern const plcvec_instruction_info plcvec_instructions[PLCVEC_INSTRUCTION_COUNT];
+extern const char *const plcvec_form_names[PLCVEC_FORM_COUNT];           /* "" for NONE, "LD", ... */
+extern const char *const plcvec_condition_names[PLCVEC_CONDITION_COUNT]; /* "" for NONE, "=", "<>", ... */
+extern const char *const plcvec_execution_names[PLCVEC_EXECUTION_COUNT]; /* "every-scan", "rising-edge" */
+
 typedef struct plcvec_interpretation_info {
     const char *id;             /* "FX5-SM709-SCOPE" */
     const char *question;

@@ -83,6 +83,33 @@ typedef enum plcvec_instruction {
     PLCVEC_INSTRUCTION_COUNT
 } plcvec_instruction;
 
+/* What an instruction is, as values (plcvec_instructions[]): its form, the condition it compares,
+ * when it executes. NONE where the instruction is not a contact or compares nothing. */
+typedef enum plcvec_form {
+    PLCVEC_FORM_NONE,
+    PLCVEC_FORM_LD,  /* LD */
+    PLCVEC_FORM_AND,  /* AND */
+    PLCVEC_FORM_OR,  /* OR */
+    PLCVEC_FORM_COUNT
+} plcvec_form;
+
+typedef enum plcvec_condition {
+    PLCVEC_CONDITION_NONE,
+    PLCVEC_CONDITION_EQ,  /* = */
+    PLCVEC_CONDITION_NE,  /* <> */
+    PLCVEC_CONDITION_LT,  /* < */
+    PLCVEC_CONDITION_LE,  /* <= */
+    PLCVEC_CONDITION_GT,  /* > */
+    PLCVEC_CONDITION_GE,  /* >= */
+    PLCVEC_CONDITION_COUNT
+} plcvec_condition;
+
+typedef enum plcvec_execution {
+    PLCVEC_EXECUTION_EVERY_SCAN,  /* every-scan */
+    PLCVEC_EXECUTION_RISING_EDGE,  /* rising-edge */
+    PLCVEC_EXECUTION_COUNT
+} plcvec_execution;
+
 /* Tags: why a vector exists. A vector's tags are a bit set of (1 << tag). */
 typedef enum plcvec_tag {
     PLCVEC_TAG_BOUNDARY,  /* boundary */
