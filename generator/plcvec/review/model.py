@@ -10,10 +10,11 @@ import re
 
 from plcvec.cases.build import instruction_list
 from plcvec.review import coverage as cov
+from plcvec.review import provenance as prov
 
 # Spec sections drawn as their own tables, or shown in their own part of the report; every other
 # top-level section is listed parameter by parameter under "Rule parameters".
-_OWN_SECTIONS = {"spec_version", "family", "title", "manual", "kind", "clauses", "interpretations", "errata",
+_OWN_SECTIONS = {"spec_version", "family", "title", "manual", "kind", "clauses", "interpretations", "errata", "documents",
                  "assumptions", "examples", "generation", "coverage", "operands", "instructions"}
 # Roles of the operands whose words hold the data fields (the others are selectors, bits, work areas).
 _DATA_ROLES = ("data", "addend", "result", "preset", "measured")
@@ -73,8 +74,9 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=N
         kind, _, ident = q.owner.partition(" ")
         problems.add("quote", by_name[q.family], q.line, m.message(),
                      anchor(kind, q.family, ident) if kind in _ANCHOR_PREFIX else anchor("family", q.family))
+    manuals = {fam.doc["manual"] for fam in families}
     fams = [_FamilyView(fam, vectors_by_family[fam.name], quotes is not None, missing, problems).build(
-                audit, (cells or {}).get(fam.name)) for fam in families]
+                audit, (cells or {}).get(fam.name), manuals) for fam in families]
     all_vectors = [v for fam in families for v in vectors_by_family[fam.name]]
     audit_rows = [f for fm in fams for f in fm["audit"]]
     coverage_rows = [r for fm in fams for r in fm["coverage"]]
@@ -97,6 +99,9 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=N
         "audit_unrecorded": sum(f["problem"] for f in audit_rows),
         "model_required": sum(fm["model"]["required"] for fm in fams if fm["model"]),
         "model_missing": sum(len(fm["model"]["missing"]) for fm in fams if fm["model"]),
+        "derived": sum(len(fm["provenance"]["derived"]) for fm in fams),
+        "citations": sum(len(fm["provenance"]["citations"]) for fm in fams),
+        "documents": sum(len(fm["provenance"]["documents"]) for fm in fams),
         "problems": len(problems.items),
     }
     return {"summary": summary, "problems": problems.items, "problem_lines": problems.lines(),
@@ -115,14 +120,27 @@ class _FamilyView:
         return anchor(kind, self.name, ident)
 
     def source(self, where, node):
-        """A quote with its source and whether the manual holds it (missing quotes are problems, see build_model)."""
+        """A quote with its source and whether the manual holds it (missing quotes are problems, see build_model);
+        a citation of another document or a derivation is shown in the same shape, with what it states."""
+        if "states" in node:
+            documents = {d["id"]: d for d in self.doc.get("documents", ())}
+            document = documents.get(node["document"])
+            label = prov.document_label(document) if document else f"unknown document {node['document']}"
+            return {"quote": node["states"], "file": label, "section": node.get("section", "") +
+                    (f", p. {node['page']}" if node.get("page") else ""), "line": self.fam.line_of(*where, "document"),
+                    "status": "stated by another document (not held by the project, not checked)", "reason": None,
+                    "kind": "document"}
+        if "derived" in node and "quote" not in node:
+            return {"quote": node["derived"], "file": "derived", "section": node.get("section", ""),
+                    "line": self.fam.line_of(*where, "derived"), "status": "derived (no document states it)",
+                    "reason": None, "kind": "derived"}
         line = self.fam.line_of(*where, "quote")
         reason = self.missing.get((self.name, line, node["quote"]))
         status = "not checked" if not self.quotes_checked else ("missing" if reason else "found")
         return {"quote": node["quote"], "file": node.get("file") or self.doc["manual"], "section": node.get("section", ""),
-                "line": line, "status": status, "reason": reason}
+                "line": line, "status": status, "reason": reason, "kind": "quote"}
 
-    def build(self, audit, cells=None):
+    def build(self, audit, cells=None, manuals=()):
         fam, doc = self.fam, self.doc
         coverage = cov.family_coverage(fam, self.vectors)
         audit_rows = _audit_rows(fam, audit, self.problems, self.link)
@@ -146,11 +164,14 @@ class _FamilyView:
             "audit_available": audit is not None,
             "coverage": self.coverage(coverage),
             "model": cov.model_coverage(fam, cells, self.problems, self.link) if cells is not None else None,
+            "provenance": prov.family_provenance(fam, set(manuals) or {doc["manual"]}, self.problems, self.link),
         }
 
     def clauses(self, coverage):
         return [{"id": c["id"], "anchor": self.link("clause", c["id"]), "says": c["says"],
                  "source": self.source(("clauses", i, "source"), c["source"]),
+                 "derived": c.get("derived", ""),
+                 "cites": [self.source(("clauses", i, "cites", j), x) for j, x in enumerate(c.get("cites", ()))],
                  "line": self.fam.line_of("clauses", i), "vectors": coverage[c["id"]].total,
                  "status": coverage[c["id"]].status}
                 for i, c in enumerate(self.doc["clauses"])]

@@ -11,7 +11,8 @@ from pathlib import Path
 from plcvec.errors import PlcvecError
 
 # The singular of each top-level list that holds quoted items, for naming a quote's owner.
-_OWNER = {"clauses": "clause", "interpretations": "interpretation", "errata": "erratum", "examples": "example"}
+_OWNER = {"clauses": "clause", "interpretations": "interpretation", "errata": "erratum", "examples": "example",
+          "accounting": "accounting"}
 
 
 @dataclass(frozen=True)
@@ -42,7 +43,7 @@ def spec_quotes(fam):
     def walk(node, where):
         if isinstance(node, dict):
             if isinstance(node.get("quote"), str):
-                found.append(Quote(fam.name, fam.path, fam.line_of(*where, "quote"), _owner(fam.doc, where),
+                found.append(Quote(fam.name, fam.path, fam.line_of(*where, "quote"), owner_of(fam.doc, where),
                                    node.get("file") or fam.doc["manual"], node["quote"]))
             for k, v in node.items():
                 walk(v, where + (k,))
@@ -54,7 +55,8 @@ def spec_quotes(fam):
     return found
 
 
-def _owner(doc, where):
+def owner_of(doc, where):
+    """`clause purpose`, `interpretation FX5-SM709-SCOPE`: the item of the spec a value at `where` belongs to."""
     if len(where) >= 2 and where[0] in _OWNER and isinstance(where[1], int):
         item = doc[where[0]][where[1]]
         return f"{_OWNER[where[0]]} {item.get('id', where[1])}"

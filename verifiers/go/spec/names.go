@@ -13,7 +13,7 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "c23c2e3d487253c74c2e70b61246559e44d9f57557804031fe19cd8a1203be0d"
+const SpecSHA256 = "22ac76d90732f4939819b5377940e49e6d6df4cdcb94447737d2a421a05e57ba"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3696
