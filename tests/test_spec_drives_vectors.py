@@ -21,16 +21,18 @@ DC_FILE, DC = "fx5-date-compare.yaml", "fx5-date-compare"
 TA_FILE, TA = "fx5-time-add.yaml", "fx5-time-add"
 
 
-def edited_spec(tmp_path, name, old, new):
-    """A copy of spec/ in tmp_path with `old` replaced by `new` on the one line of `name` that holds it
-    (found by its text, not its number, so that an edit elsewhere in the file does not move it)."""
+def edited_spec(tmp_path, name, at, old, new):
+    """A copy of spec/ in tmp_path with `old` replaced by `new` (exactly once) on the one line of `name`
+    that contains `at` (found by its text, so that lines added above it do not move the edit)."""
     folder = tmp_path / "spec"
     shutil.copytree(SPEC, folder)
     path = folder / name
     lines = path.read_text(encoding="utf-8").split("\n")
-    holding = [k for k, text in enumerate(lines) if old in text]
-    assert len(holding) == 1 and lines[holding[0]].count(old) == 1, f"{name}: {old!r} is on lines {[k + 1 for k in holding]}"
-    lines[holding[0]] = lines[holding[0]].replace(old, new)
+    hits = [i for i, l in enumerate(lines) if at in l]
+    assert len(hits) == 1, f"{name}: {at!r} is on {len(hits)} lines, not one"
+    line = hits[0] + 1
+    assert lines[line - 1].count(old) == 1, f"{name}:{line} is {lines[line - 1]!r}"
+    lines[line - 1] = lines[line - 1].replace(old, new)
     path.write_text("\n".join(lines), encoding="utf-8")
     return folder
 
@@ -135,7 +137,7 @@ def test_hour_max_22_makes_hour_23_an_error(tmp_path, baseline):
     assert before["outcome"]["category"] == "value"
     assert model_ldtm(before) == (True, False)
 
-    folder = edited_spec(tmp_path, TC_FILE, "min: 0, max: 23, clause: range.hour",
+    folder = edited_spec(tmp_path, TC_FILE, "- {name: hour, word: 0,", "min: 0, max: 23, clause: range.hour",
                          "min: 0, max: 22, clause: range.hour")
     after = generate(folder, TC)[TC]
 
@@ -170,7 +172,7 @@ def test_hour_max_22_makes_hour_23_an_error(tmp_path, baseline):
 
 
 def test_hour_range_edit_touches_no_other_family(tmp_path, baseline):
-    folder = edited_spec(tmp_path, TC_FILE, "max: 23,", "max: 22,")
+    folder = edited_spec(tmp_path, TC_FILE, "- {name: hour, word: 0,", "max: 23,", "max: 22,")
     after = generate(folder)
     assert after[TC] != baseline[TC]
     assert {k: v for k, v in after.items() if k != TC} == {k: v for k, v in baseline.items() if k != TC}
@@ -179,7 +181,7 @@ def test_hour_range_edit_touches_no_other_family(tmp_path, baseline):
 # ------------------------------------------------------------------ (2) swap the (s3) bits of second and minute
 
 def test_swapped_selector_bits_compare_the_other_field(tmp_path, baseline):
-    folder = edited_spec(tmp_path, TC_FILE, "field_bits: {second: 0, minute: 1, hour: 2}",
+    folder = edited_spec(tmp_path, TC_FILE, "field_bits: {second: 0,", "field_bits: {second: 0, minute: 1, hour: 2}",
                          "field_bits: {second: 1, minute: 0, hour: 2}")
     after = generate(folder, TC)[TC]
     swapped = {"second": 1, "minute": 0, "hour": 2}
@@ -213,7 +215,7 @@ def test_swapped_selector_bits_compare_the_other_field(tmp_path, baseline):
 
 def test_tadd_error_code_follows_the_spec(tmp_path, baseline):
     old, new = 0x3405, 0x3499
-    folder = edited_spec(tmp_path, TA_FILE, "code: 0x3405", f"code: {new:#06x}")
+    folder = edited_spec(tmp_path, TA_FILE, "code: 0x3405,", "code: 0x3405", f"code: {new:#06x}")
     after = generate(folder, TA)[TA]
 
     def outside(v):
@@ -269,7 +271,7 @@ def test_tadd_error_code_follows_the_spec(tmp_path, baseline):
 # ------------------------------------------------------------------ (4) another error device for LDDT
 
 def test_error_device_name_follows_the_spec(tmp_path, baseline):
-    folder = edited_spec(tmp_path, DC_FILE, "device: SM709", "device: SM710")
+    folder = edited_spec(tmp_path, DC_FILE, "device: SM709", "device: SM709", "device: SM710")
     # Regression cases (spec/regressions/) give their devices by name, as recorded, so they do not
     # follow a rename (generate reports such a case at its line): only derived vectors are compared.
     (folder / "regressions" / f"{DC}.yaml").unlink()
