@@ -12,11 +12,14 @@
  * PLCVEC_ID, PLCVEC_FAMILY, PLCVEC_INSTRUCTION, PLCVEC_TAG, PLCVEC_INTERPRETATION, PLCVEC_SHARD,
  * PLCVEC_KNOWN_FAILURES, PLCVEC_WRITE_EXPECTATIONS and PLCVEC_TIMEOUT.
  */
-import { resolveChoices } from "./choices.js";
+import { inspect } from "node:util";
+
+import { resolveChoices, type Followed } from "./choices.js";
 import { judge, prepare } from "./compare.js";
 import { VerifyError } from "./errors.js";
 import type { Implementation } from "./implementation.js";
 import { applyKnown, loadKnownFailures, unknownIds, writeExpectations, type KnownFailures } from "./known.js";
+import { summaryText } from "./reports.js";
 import { summarize, type Report } from "./runner.js";
 import { selectWithEnvironment, type Selection } from "./selection.js";
 import { loadSuite, type Suite } from "./suite.js";
@@ -29,6 +32,11 @@ export class VectorFailure extends Error {
   constructor(message: string) {
     super(message);
     this.stack = `${this.name}: ${message}`;
+  }
+
+  /** Reporters that inspect the error show the text as it is, not in the brackets of an error without frames. */
+  [inspect.custom](): string {
+    return this.stack ?? this.message;
   }
 }
 
@@ -59,8 +67,9 @@ export interface Case {
 interface Run {
   readonly impl: Implementation;
   readonly suite: Suite;
-  readonly choices: Readonly<Record<string, string>>;
+  readonly followed: Followed;
   readonly options: CaseOptions;
+  readonly started: number;
   readonly known: KnownFailures | undefined;
   readonly selected: number;
   readonly verdicts: Verdict[];
@@ -95,12 +104,12 @@ export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
       run,
       check(): Verdict {
         const verdict = run();
-        if (FAILING.has(verdict.status)) throw new VectorFailure(describe(verdict));
+        if (FAILING.has(verdict.status)) throw new VectorFailure(describe(verdict, vector, { followed: followed.choices, defaults: followed.defaults }));
         return verdict;
       },
     };
   });
-  runs.set(list, { impl, suite, choices: followed.choices, options, known, selected: vectors.length, verdicts });
+  runs.set(list, { impl, suite, followed, options, started: performance.now(), known, selected: vectors.length, verdicts });
   return list;
 }
 
@@ -114,7 +123,11 @@ export function runReport(list: readonly Case[]): Report {
   const run = runs.get(list);
   if (run === undefined) throw new VerifyError("runReport takes the list cases() returned");
   const verdicts = [...run.verdicts, ...unknownIds(run.known, run.suite)];
-  const report = summarize(run.impl, verdicts, run.suite, run.choices, run.options);
+  const report = summarize(run.impl, verdicts, run.suite, run.followed, {
+    ...run.options,
+    selected: run.verdicts.length,
+    seconds: (performance.now() - run.started) / 1000,
+  });
   const write = process.env["PLCVEC_WRITE_EXPECTATIONS"];
   if (write) writeExpectations(write, verdicts);
   if (run.verdicts.length === 0 && run.selected > 0) {
@@ -126,10 +139,16 @@ export function runReport(list: readonly Case[]): Report {
   return report;
 }
 
-/** Throw unless the run of these cases passed as a whole (see runReport): for an `afterAll` hook. */
+/**
+ * Throw unless the run of these cases passed as a whole (see runReport): for an `afterAll` hook.
+ * The message is the run's text without the failure blocks the test runner has shown already:
+ * the stale ids the suite does not have, the roll-up by reading, the skips, the summary.
+ */
 export function checkRun(list: readonly Case[]): Report {
   const report = runReport(list);
   if (report.passed) return report;
-  const stale = report.verdicts.filter((v) => v.status === "stale" && v.clauses.length === 0).map(describe);
-  throw new VectorFailure(["plcvec: the run fails", ...stale, ...report.runProblems.map((p) => `RUN FAILS: ${p}`)].join("\n"));
+  const stale = report.verdicts.filter((v) => v.status === "stale" && !report.suite.byId.has(v.id)).map((v) => describe(v));
+  throw new VectorFailure(
+    [...stale, ...report.runProblems.map((p) => `RUN FAILS: ${p}`), summaryText(report, { blocks: false }).trimEnd()].join("\n"),
+  );
 }

@@ -21,6 +21,18 @@ import {
 import { requestOf, type Devices, type Vector, type VectorRequest } from "./vector.js";
 
 const NO_CPU_WRITES: ReadonlySet<string> = new Set();
+const byCodePoint = (a: string, b: string): number => (a < b ? -1 : a > b ? 1 : 0);
+
+/**
+ * What the implementation held before step `i`: what the vector gave it for step 0; its own report
+ * of the previous step with this step's `set` written over it after that.
+ */
+function heldBefore(expected: Expected, steps: readonly StepResult[], i: number): Devices {
+  if (i === 0) return expected.befores[0]!;
+  const previous = steps[i - 1]!.devices;
+  const set = expected.sets[i];
+  return { ...(typeof previous === "object" && previous !== null ? previous : {}), ...set };
+}
 
 /**
  * The problems of one vector's reported steps; an empty list means it passed. A device in
@@ -52,11 +64,18 @@ export function compare(expected: Expected, steps: readonly StepResult[], cpuWri
       );
     }
     const before = expected.befores[i]!;
-    const names = [...new Set([...Object.keys(want), ...Object.keys(got)])].sort();
+    const held = heldBefore(expected, steps, i);
+    const has = Object.prototype.hasOwnProperty;
+    const names = [...new Set([...Object.keys(want), ...Object.keys(got)])].sort(byCodePoint);
     for (const dev of names) {
-      const w = Object.prototype.hasOwnProperty.call(want, dev) ? want[dev]! : NOT_IN_VECTOR;
-      const g = Object.prototype.hasOwnProperty.call(got, dev) ? got[dev]! : NOT_REPORTED;
-      if (w !== g) (problems ??= []).push({ step: i, field: dev, expected: w, actual: g, before: before[dev] });
+      const w = has.call(want, dev) ? want[dev]! : NOT_IN_VECTOR;
+      const g = has.call(got, dev) ? got[dev]! : NOT_REPORTED;
+      if (w === g) continue;
+      if (w === NOT_IN_VECTOR) (problems ??= []).push({ step: i, field: dev, expected: w, actual: g });
+      else {
+        const h = has.call(held, dev) ? held[dev]! : NOT_REPORTED;
+        (problems ??= []).push({ step: i, field: dev, expected: w, actual: g, held: h, keep: has.call(before, dev) && before[dev] === w });
+      }
     }
   }
   return problems ?? NO_PROBLEMS;
@@ -107,10 +126,11 @@ export function judge(p: Prepared, impl: Implementation): Verdict {
   if ("steps" in outcome) {
     if (!Array.isArray(outcome.steps)) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered steps that are not a list`);
     const problems = compare(expected, outcome.steps, cpuWritesOf(impl));
-    return verdict(p, problems.length ? FAIL : PASS, problems);
+    if (problems.length === 0) return verdict(p, PASS, problems);
+    return { ...verdict(p, FAIL, problems), answer: outcome.steps };
   }
   if ("skip" in outcome) return verdict(p, SKIP, NO_PROBLEMS, String(outcome.skip));
-  if ("error" in outcome) return verdict(p, ERROR, NO_PROBLEMS, String(outcome.error));
+  if ("error" in outcome) return verdict(p, ERROR, NO_PROBLEMS, `the implementation reported an error: ${String(outcome.error)}`);
   return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered neither steps, skip nor error`);
 }
 

@@ -29,6 +29,8 @@ export interface Expected {
   readonly states: readonly Devices[];
   /** Per step: the state the step started from (after `set`), for messages. */
   readonly befores: readonly Devices[];
+  /** Per step: its `set` (scratch left out), or undefined: what the implementation held before a step is its own report with this written over it. */
+  readonly sets: readonly (Devices | undefined)[];
   readonly outcome: Outcome;
 }
 
@@ -76,9 +78,12 @@ export function expectedOf(
   for (const [k, v] of Object.entries(vector.initial.devices)) if (!scratch.has(k)) state[k] = v;
   const states: Devices[] = [];
   const befores: Devices[] = [];
+  const sets: (Devices | undefined)[] = [];
   const results: (boolean | undefined)[] = [];
   vector.steps.forEach((step, i) => {
-    for (const [k, v] of Object.entries(step.set ?? {})) if (!scratch.has(k)) state[k] = v;
+    const set: Record<string, boolean | number> = {};
+    for (const [k, v] of Object.entries(step.set ?? {})) if (!scratch.has(k)) state[k] = set[k] = v;
+    sets.push(step.set === undefined ? undefined : set);
     befores.push({ ...state });
     const expect = stepsExpect[i] as StepExpect;
     Object.assign(state, expect.devices);
@@ -105,6 +110,7 @@ export function expectedOf(
     id: vector.id,
     states,
     befores,
+    sets,
     outcome,
   };
 }

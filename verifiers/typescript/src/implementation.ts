@@ -19,6 +19,8 @@ export type RunOutcome =
 export interface Implementation {
   /** Shown in reports. */
   readonly name: string;
+  /** Shown in reports after the name. */
+  readonly version?: string;
   /** The instructions it implements; vectors of any other are skipped. Default: all of them. */
   readonly instructions?: readonly string[];
   /** The alternative it follows for each interpretation (INTERPRETATIONS); undeclared ones take the default. */

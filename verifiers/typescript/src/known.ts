@@ -97,6 +97,9 @@ export function applyKnown(verdict: Verdict, known: KnownFailures | undefined): 
   return verdict;
 }
 
+/** The judgedBy of a verdict for an id the suite does not have. */
+const NO_VECTOR: Readonly<Record<string, string>> = Object.freeze({});
+
 /** A stale verdict for each listed id the suite does not have (one merely not selected is not stale). */
 export function unknownIds(known: KnownFailures | undefined, suite: Suite): Verdict[] {
   const out: Verdict[] = [];
@@ -107,7 +110,7 @@ export function unknownIds(known: KnownFailures | undefined, suite: Suite): Verd
       status: STALE,
       problems: [],
       message: `listed as a known failure (${entry.where}) but the suite has no such vector; remove it from the expectations file`,
-      judgedBy: {},
+      judgedBy: NO_VECTOR,
       clauses: [],
     });
   }
@@ -126,7 +129,7 @@ export function writeExpectations(path: string, verdicts: readonly Verdict[], re
   const lines = ["# Known failures: each passing entry fails the run as stale, so fix and delete.", ""];
   let n = 0;
   for (const v of [...verdicts].sort((a, b) => (a.id < b.id ? -1 : a.id > b.id ? 1 : 0))) {
-    const listed = (FAILING.has(v.status) && !(v.status === STALE && v.clauses.length === 0)) || v.status === XFAIL;
+    const listed = (FAILING.has(v.status) && !(v.status === STALE && v.judgedBy === NO_VECTOR)) || v.status === XFAIL;
     if (!listed) continue;
     lines.push(`[[${SECTION}]]`, `id = ${tomlString(v.id)}`, `reason = ${tomlString(reason)}`, "");
     n++;

@@ -1,22 +1,111 @@
 /**
- * Reports: the run as text (suite, choices, every failing vector, the totals line).
+ * Reports: the run's text, in the one text every plcvec runner prints (verifiers/parity/TEXT.md):
+ * each failing vector once, the roll-up by reading, the skips by reason, and the summary lines.
  */
+import { inference } from "./infer.js";
 import type { Report } from "./runner.js";
-import { describe, FAILING } from "./verdict.js";
+import { describe, ERROR, FAIL, FAILING, INDENT, SKIP, type Status, type Verdict } from "./verdict.js";
 
-/** The report as text: suite, choices, every failing vector, and the totals line. */
-export function summaryText(report: Report): string {
+/** Vector ids shown under each group of the roll-up; skip reasons shown. */
+const SHOW_IDS = 5;
+const SHOW_REASONS = 12;
+const STATUS_ORDER: readonly Status[] = ["pass", "fail", "error", "skip", "xfail", "stale"];
+const byCodePoint = (a: string, b: string): number => (a < b ? -1 : a > b ? 1 : 0);
+const pad6 = (n: number): string => String(n).padStart(6);
+
+/** part/whole as a percentage with one decimal, rounded half up in integers. */
+export function percent(part: number, whole: number): string {
+  const w = Math.max(whole, 1);
+  const tenths = Math.floor((2000 * part + w) / (2 * w));
+  return `${Math.floor(tenths / 10)}.${tenths % 10}`;
+}
+
+/** The failure block of one verdict of this report, with its vector and the reading followed. */
+export function block(report: Report, v: Verdict): string {
+  return describe(v, report.suite.byId.get(v.id), { followed: report.choices, defaults: report.defaults });
+}
+
+/** The failing vectors grouped by what would explain them (TEXT.md, "The roll-up by reading"). */
+export function rollupLines(report: Report): string[] {
+  const failing = report.verdicts.filter((v) => v.status === FAIL || v.status === ERROR);
+  if (failing.length === 0) return [];
+  const inferred = inference(report.verdicts, report.suite, report.interpretations, report.choices, report.defaults, new Set(report.cpuWrites));
+  const lines: string[] = [];
+  if (inferred.explained.size) {
+    const groups = new Map<string, number>();
+    for (const change of inferred.explained.values()) {
+      const text = change.map(([i, a]) => `${i}=${a}`).join(", ");
+      groups.set(text, (groups.get(text) ?? 0) + 1);
+    }
+    lines.push(`READINGS: ${inferred.explained.size} of ${failing.length} failing vectors pass under other alternatives:`);
+    for (const [text, n] of [...groups].sort(([a, m], [b, n]) => n - m || byCodePoint(a, b))) lines.push(`${INDENT}${pad6(n)}  ${text}`);
+    const changes = Object.keys(inferred.choice)
+      .sort(byCodePoint)
+      .filter((i) => inferred.choice[i] !== inferred.followed[i])
+      .map((i) => `--choose ${i}=${inferred.choice[i]}`);
+    lines.push(`${INDENT}declare: ${changes.join(" ")}`);
+    if (inferred.broken.length) lines.push(`${INDENT}(so declared, ${inferred.broken.length} vectors that pass now would fail)`);
+  }
+  if (inferred.unexplained.length) {
+    lines.push(`NOT EXPLAINED by any reading: ${inferred.unexplained.length} failing vectors, by the clauses they cite:`);
+    const groups = new Map<string, string[]>();
+    for (const id of inferred.unexplained) {
+      const key = report.suite.byId.get(id)?.clauses.join(", ") || "(no clauses)";
+      (groups.get(key) ?? groups.set(key, []).get(key)!).push(id);
+    }
+    for (const [key, ids] of [...groups].sort(([a, x], [b, y]) => y.length - x.length || byCodePoint(a, b))) {
+      lines.push(`${INDENT}${pad6(ids.length)}  ${key}`);
+      for (const id of [...ids].sort(byCodePoint).slice(0, SHOW_IDS)) lines.push(`${INDENT}${" ".repeat(6)}  ${id}`);
+      if (ids.length > SHOW_IDS) lines.push(`${INDENT}${" ".repeat(6)}  ... and ${ids.length - SHOW_IDS} more`);
+    }
+  }
+  return lines;
+}
+
+/** How many vectors were skipped and why, most common reason first (ties by reason). */
+export function skippedLines(report: Report): string[] {
+  const skipped = report.verdicts.filter((v) => v.status === SKIP).map((v) => v.message ?? "");
+  if (skipped.length === 0) return [];
+  const counts = new Map<string, number>();
+  for (const reason of skipped) counts.set(reason, (counts.get(reason) ?? 0) + 1);
+  const reasons = [...counts].sort(([a, m], [b, n]) => n - m || byCodePoint(a, b));
+  const lines = [`SKIPPED ${skipped.length} of ${report.selected} vectors (${percent(skipped.length, report.selected)}%):`];
+  for (const [reason, n] of reasons.slice(0, SHOW_REASONS)) lines.push(`${INDENT}${pad6(n)}  ${reason || "(no reason given)"}`);
+  if (reasons.length > SHOW_REASONS) lines.push(`${INDENT}... and ${reasons.length - SHOW_REASONS} more reasons (--jsonl lists each vector)`);
+  return lines;
+}
+
+/** The summary lines after the empty line: header, interpretations, cpu_writes, totals (without the time). */
+export function summaryLines(report: Report): string[] {
   const s = report.suite;
   const lines = [
-    `plcvec ${s.suiteVersion || "(unknown version)"}, schema ${s.schemaVersion}, spec ${s.specSha256.slice(0, 12)}, vectors from ${s.source}`,
-    `implementation: ${report.implementation}`,
-    `alternatives: ${Object.entries(report.choices).map(([i, a]) => `${i}=${a}`).join(", ")}`,
+    `plcvec verify: ${report.implementation} against ${s.source} (suite ${s.suiteVersion || "?"}, schema ${s.schemaVersion}, spec sha256 ${s.specSha256.slice(0, 12) || "?"})`,
   ];
-  if (report.cpuWrites.length) lines.push(`cpu writes: ${report.cpuWrites.join(", ")}`);
-  for (const r of report.verdicts) if (FAILING.has(r.status)) lines.push(describe(r));
-  for (const p of report.runProblems) lines.push(`RUN FAILS: ${p}`);
+  const items = [...report.interpretations.keys()]
+    .sort(byCodePoint)
+    .map((i) => `${i}=${report.choices[i]} (${i in report.declared ? "declared" : "default"})`);
+  lines.push(`interpretations: ${items.join(", ") || "(none)"}`);
+  if (report.cpuWrites.length) lines.push(`cpu_writes: ${report.cpuWrites.join(", ")}`);
   const c = report.counts;
-  lines.push(`${c.pass} passed, ${c.fail + c.error + c.stale} failed, ${c.skip} skipped` +
-    (c.xfail ? `, ${c.xfail} known failures` : "") + (c.error ? ` (${c.error} errors)` : "") + (c.stale ? ` (${c.stale} stale)` : ""));
-  return lines.join("\n");
+  const parts = STATUS_ORDER.filter((st) => c[st] || st === "pass" || st === "fail" || st === "skip").map((st) => `${c[st]} ${st}`);
+  lines.push(`${report.verdicts.length} vectors: ${parts.join(", ")}`);
+  return lines;
+}
+
+/**
+ * The run's text (TEXT.md, "The run's text"): a failure block for each failing vector (`blocks:
+ * false` when the test runner has printed each already), the roll-up, the skips, why the run fails
+ * as a whole, an empty line and the summary lines, the totals with the run's seconds.
+ */
+export function summaryText(report: Report, options: { readonly blocks?: boolean } = {}): string {
+  const lines: string[] = [];
+  if (options.blocks !== false) for (const v of report.verdicts) if (FAILING.has(v.status)) lines.push(block(report, v));
+  lines.push(...rollupLines(report), ...skippedLines(report));
+  if (!report.verdicts.some((v) => FAILING.has(v.status)) && report.runProblems.length) {
+    lines.push(`NOT PASSED: ${report.runProblems.join("; ")}`);
+  }
+  const summary = summaryLines(report);
+  summary[summary.length - 1] += ` in ${report.seconds.toFixed(2)} s`;
+  lines.push("", ...summary);
+  return `${lines.join("\n")}\n`;
 }

@@ -2,13 +2,13 @@
  * Plan and run: select, prepare, run and judge, the whole gate in process, and the run's
  * verdict as a whole (CONTRACT.md: a gate never passes by doing nothing).
  */
-import { resolveChoices } from "./choices.js";
+import { resolveChoices, type Followed } from "./choices.js";
 import { judge, prepare } from "./compare.js";
 import { VerifyError } from "./errors.js";
 import type { Implementation } from "./implementation.js";
 import { applyKnown, unknownIds, type KnownFailures } from "./known.js";
 import { select, type Selection } from "./selection.js";
-import { loadSuite, type Suite } from "./suite.js";
+import { interpretationsOf, loadSuite, type Suite } from "./suite.js";
 import { FAILING, type Status, type Verdict } from "./verdict.js";
 import { guarded } from "./watchdog.js";
 
@@ -32,27 +32,40 @@ export interface Report {
   readonly passed: boolean;
   /** The alternative followed for every interpretation, declared or default. */
   readonly choices: Readonly<Record<string, string>>;
+  /** Every interpretation's default. */
+  readonly defaults: Readonly<Record<string, string>>;
+  /** The alternatives the implementation declared. */
+  readonly declared: Readonly<Record<string, string>>;
+  /** The interpretations of the families run, each with its alternatives in file order. */
+  readonly interpretations: ReadonlyMap<string, readonly string[]>;
   /** The devices the implementation declares its CPU writes. */
   readonly cpuWrites: readonly string[];
+  /** The vectors selected (stale ids of the known-failures file not counted). */
+  readonly selected: number;
+  /** The run's seconds, by the clock. */
+  readonly seconds: number;
   readonly suite: Suite;
 }
 
 /** Select, prepare, run and judge: the whole gate, in process. */
 export function runVectors(impl: Implementation, options: RunOptions = {}): Report {
+  const started = performance.now();
   const suite = options.suite ?? loadSuite();
   const vectors = select(suite, options.selection);
   const followed = resolveChoices(suite, impl.choices);
   const verdicts = guarded(vectors.map((v) => v.id), (index) => applyKnown(judge(prepare(vectors[index]!, followed), impl), options.known));
+  const selected = verdicts.length;
   verdicts.push(...unknownIds(options.known, suite));
-  return summarize(impl, verdicts, suite, followed.choices, options);
+  return summarize(impl, verdicts, suite, followed, { ...options, selected, seconds: (performance.now() - started) / 1000 });
 }
 
+/** The report of a run's verdicts (`selected`: how many were selected; default all but stale unknown ids). */
 export function summarize(
-  impl: Pick<Implementation, "name" | "cpuWrites">,
+  impl: Pick<Implementation, "name" | "version" | "choices" | "cpuWrites">,
   verdicts: Verdict[],
   suite: Suite,
-  choices: Readonly<Record<string, string>>,
-  options: Pick<RunOptions, "allowEmpty" | "maxSkipped"> = {},
+  followed: Followed,
+  options: Pick<RunOptions, "allowEmpty" | "maxSkipped"> & { readonly selected?: number; readonly seconds?: number } = {},
 ): Report {
   const counts: Record<Status, number> = { pass: 0, fail: 0, error: 0, skip: 0, xfail: 0, stale: 0 };
   for (const r of verdicts) counts[r.status] += 1;
@@ -67,14 +80,23 @@ export function summarize(
     runProblems.push(`${counts.skip} vectors skipped, more than the ${String(options.maxSkipped)} allowed`);
   }
   const failed = verdicts.some((r) => FAILING.has(r.status));
+  const families = new Set(verdicts.flatMap((v) => suite.byId.get(v.id)?.family ?? []));
+  const interpretations = new Map(
+    [...interpretationsOf(suite, families.size ? families : undefined)].map(([id, info]) => [id, info.alternatives] as const),
+  );
   return {
-    implementation: impl.name,
+    implementation: impl.version ? `${impl.name} ${impl.version}` : impl.name,
     verdicts,
     counts,
     runProblems,
     passed: !failed && runProblems.length === 0,
-    choices,
-    cpuWrites: impl.cpuWrites ?? [],
+    choices: followed.choices,
+    defaults: followed.defaults,
+    declared: impl.choices ?? {},
+    interpretations,
+    cpuWrites: [...(impl.cpuWrites ?? [])].sort(),
+    selected: options.selected ?? verdicts.filter((v) => !(v.status === "stale" && !suite.byId.has(v.id))).length,
+    seconds: options.seconds ?? 0,
     suite,
   };
 }
