@@ -65,6 +65,14 @@ export class HourMeter extends BaseMachine {
       if (this.choice("HOUR-PRESET-CHECK") === "every-execution") this.checkPreset(operands, d2);
       return undefined;
     }
+    // "Minute and second data can be 0 through 59." A D1 the program set outside that is counted
+    // as seconds and carried back into range (HOUR-D1-OUT-OF-RANGE=as-seconds), or is an error that
+    // stops this execution (error).
+    const [, heldMinute, heldSecond] = mem.words(d1, 3) as [number, number, number];
+    if ((heldMinute > 59 || heldSecond > 59) && this.choice("HOUR-D1-OUT-OF-RANGE") === "error") {
+      mem.write(ERROR_FLAG, true);
+      return undefined;
+    }
     // The elapsed time since the previous execution is ON time; at the execution the input turns
     // on, only under HOUR-FIRST-SCAN=counts.
     if (!(turnedOn && this.choice("HOUR-FIRST-SCAN") === "from-next-scan")) this.fractionMs += step.elapsed_ms ?? 0;
