@@ -104,3 +104,27 @@ def test_max_skipped(tmp_path, suite):
     assert rc == 0, out
     rc, out = pytest_in(tmp_path, *args, "--plcvec-max-skipped", str(skipped - 1))
     assert rc == 5 and f"more than --plcvec-max-skipped {skipped - 1}" in out, out
+
+
+def test_infer_turns_failures_a_reading_explains_into_xfail_and_says_which(tmp_path):
+    env_follow = "TADD-FLAGS-OFF=set-only"
+    proc = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q", "--plcvec-python",
+                           f"{REPO / 'tests' / 'adapters' / 'undeclared.py'}:Undeclared", "--plcvec-family",
+                           "fx5-time-add", "--plcvec-infer", "-rx"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=300, env={**__import__("os").environ, "PLCVEC_TEST_FOLLOW": env_follow})
+    out = proc.stdout + proc.stderr
+    assert proc.returncode == 0, out
+    assert "TADD-FLAGS-OFF=set-only (inferred; followed written-each-execution)" in out
+    assert "one choice of alternatives explains every vector" in out
+    assert "explained by another reading: --choose TADD-FLAGS-OFF=set-only" in out
+    assert " failed" not in out.splitlines()[-1]
+    # Without --plcvec-infer the same answers fail, each once, with the roll-up in the summary.
+    proc = subprocess.run([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q", "--plcvec-python",
+                           f"{REPO / 'tests' / 'adapters' / 'undeclared.py'}:Undeclared", "--plcvec-family",
+                           "fx5-time-add"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=300, env={**__import__("os").environ, "PLCVEC_TEST_FOLLOW": env_follow})
+    out = proc.stdout + proc.stderr
+    assert proc.returncode == 1
+    failed = [line for line in out.splitlines() if line.startswith("FAILED ")]
+    assert failed and len(failed) == len(set(failed))
+    assert f"READINGS: {len(failed)} of {len(failed)} failing vectors pass under other alternatives:" in out

@@ -235,7 +235,7 @@ def test_expectations_file_known_failure_and_stale(suite, tmp_path):
     ('[[known-failure]]\nid = "x"\n', ":1: x: every known failure needs a `reason`"),
     ('[[known-failure]]\nid = "x"\nreason = "a"\n[[known-failure]]\nid = "x"\nreason = "b"\n', ":4: x is listed twice"),
     ('[[known-failure]]\nid = "x"\nreason = "a"\nowner = "me"\n', ":1: unknown key 'owner'"),
-    ('[[known-failure]\n', "not valid TOML"),
+    ('[[known-failure]\n', ":1: not valid TOML"),
 ])
 def test_bad_expectations_file_names_file_and_line(tmp_path, text, message):
     path = tmp_path / "known.toml"

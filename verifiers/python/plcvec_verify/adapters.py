@@ -20,7 +20,9 @@ from __future__ import annotations
 
 import importlib
 import json
+import signal
 import sys
+import threading
 import traceback
 from pathlib import Path
 from typing import NamedTuple
@@ -88,10 +90,13 @@ def check_hello(answer, source: str) -> dict:
 class InProcess:
     """Drive a Python adapter object in this process."""
 
-    def __init__(self, adapter, label: str | None = None):
+    def __init__(self, adapter, label: str | None = None, timeout: float | None = None):
         self.adapter = adapter
         self.label = label or type(adapter).__name__
         self.notes: list[tuple[str | None, str]] = []
+        # The bound on one vector (seconds), kept by a timer in the main thread; None: no bound.
+        self.timeout = timeout
+        self._running = 0        # how many vectors have been started: the watchdog's sign of progress
 
     def hello(self, request: dict) -> dict:
         try:
@@ -107,11 +112,20 @@ class InProcess:
         return check_hello(answer, self.label)
 
     def answers(self, requests, wire=None):
+        with _Watchdog(self):
+            yield from self._answers(requests)
+
+    def _answers(self, requests):
         run = self.adapter.run
         for request in requests:
             vid = request["id"]
+            self._running += 1
             try:
                 body = run(request)
+            except VectorTimeout:
+                yield Answer(vid, None, f"{self.label}.run() gave no answer within {self.timeout:g} s (timeout; "
+                                        f"PLCVEC_TIMEOUT or --timeout sets the bound) (while running {vid})")
+                continue
             except Exception as exc:
                 tb = traceback.extract_tb(exc.__traceback__)[-1]
                 yield Answer(vid, None, f"{self.label}.run() raised {type(exc).__name__}: {exc} "
@@ -126,6 +140,49 @@ class InProcess:
         close = getattr(self.adapter, "close", None)
         if close:
             close()
+
+
+class VectorTimeout(BaseException):
+    """Raised inside an adapter object's run() that outlived its bound. A BaseException, so that the
+    adapter's own `except Exception` does not swallow it."""
+
+
+class _Watchdog:
+    """A per-vector bound on an adapter object, at no cost per vector but a counter: a timer in the main
+    thread ticks every quarter of the bound and raises VectorTimeout in run() when no vector has
+    started for a whole bound (so the bound is kept within a quarter). Elsewhere than the main thread
+    (no signals there) there is no bound."""
+
+    def __init__(self, owner: InProcess):
+        self.owner, self.armed = owner, False
+
+    def __enter__(self):
+        owner = self.owner
+        if not owner.timeout or threading.current_thread() is not threading.main_thread() \
+                or not hasattr(signal, "setitimer"):
+            return self
+        tick = owner.timeout / 4
+        state = {"seen": -1, "ticks": 0}
+
+        def on_tick(signum, frame):
+            if owner._running != state["seen"]:
+                state["seen"], state["ticks"] = owner._running, 0
+                return
+            state["ticks"] += 1
+            if state["ticks"] >= 4:
+                state["ticks"] = 0
+                raise VectorTimeout()
+
+        self.previous = signal.signal(signal.SIGALRM, on_tick)
+        signal.setitimer(signal.ITIMER_REAL, tick, tick)
+        self.armed = True
+        return self
+
+    def __exit__(self, *exc):
+        if self.armed:
+            signal.setitimer(signal.ITIMER_REAL, 0)
+            signal.signal(signal.SIGALRM, self.previous)
+        return False
 
 
 def load_python_adapter(spec: str, args=()):

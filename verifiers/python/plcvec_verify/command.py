@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
@@ -49,7 +50,9 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
                    help="write the failing vectors as a new expectations file (reason: 'not yet triaged')")
     p.add_argument("--jsonl", metavar="FILE", help="write one JSON line per vector")
     p.add_argument("--junit", metavar="FILE", help="write JUnit XML")
-    p.add_argument("--timeout", type=float, default=30.0, help="seconds per batch before the adapter is killed (default 30)")
+    p.add_argument("--timeout", type=float, default=None,
+                   help="the bound on an answer: seconds per batch before an adapter process is killed (default "
+                        "30), seconds per vector for an adapter in process (default 10)")
     p.add_argument("--batch-size", type=int, default=256, help="vectors per request line (default 256)")
     p.add_argument("--max-restarts", type=int, default=10, help="restarts after adapter faults before giving up")
     p.add_argument("--quiet", "-q", action="store_true", help="only the totals line")
@@ -64,12 +67,54 @@ def register(sub, spec_parent) -> None:
     p.set_defaults(func=main_args)
 
 
-def build_selection(args):
+# The environment every runner reads (CONTRACT.md, "Running the suite"): each variable is the
+# default of the option beside it; an option given on the command line wins.
+ENVIRONMENT = {"PLCVEC_VECTORS": "vectors", "PLCVEC_ID": "id", "PLCVEC_FAMILY": "family",
+               "PLCVEC_INSTRUCTION": "instruction", "PLCVEC_TAG": "tag", "PLCVEC_INTERPRETATION": "interpretation",
+               "PLCVEC_SHARD": "shard", "PLCVEC_KNOWN_FAILURES": "expectations",
+               "PLCVEC_WRITE_EXPECTATIONS": "write_expectations", "PLCVEC_TIMEOUT": "timeout"}
+_LISTS = ("id", "family", "instruction", "tag", "interpretation")
+
+
+def apply_environment(args, environ=None) -> dict:
+    """Fill the options not given from the PLCVEC_* variables; -> {option: the variable it came from}."""
+    environ = os.environ if environ is None else environ
+    came = {}
+    for variable, option in ENVIRONMENT.items():
+        text = environ.get(variable)
+        if text is None or getattr(args, option):
+            continue
+        if option in _LISTS:
+            # Comma-separated; an empty item (`PLCVEC_FAMILY=,`) stays, to be refused by name.
+            value = [item.strip() for item in text.split(",")]
+        elif option == "timeout":
+            value = parse_timeout(text, variable)
+        else:
+            value = text
+            if not text:
+                raise VerifyError(f"{variable} is set but empty")
+        setattr(args, option, value)
+        came[option] = variable
+    return came
+
+
+def parse_timeout(text: str, option: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise VerifyError(f"{option}={text}: not a number of seconds")
+    if not value > 0 or value == float("inf"):
+        raise VerifyError(f"{option}={text}: the bound must be a positive number of seconds")
+    return value
+
+
+def build_selection(args, came: dict | None = None):
     from .suite import Selection, parse_shard
 
+    came = came or {}
     return Selection(families=tuple(args.family), instructions=tuple(args.instruction), tags=tuple(args.tag),
                      ids=tuple(args.id), interpretations=tuple(args.interpretation),
-                     shard=parse_shard(args.shard) if args.shard else None)
+                     shard=parse_shard(args.shard, came.get("shard", "--shard")) if args.shard else None)
 
 
 def build_gate(allow_empty: bool, max_skipped: str | None, option_prefix: str = "--"):
@@ -91,15 +136,19 @@ def parse_choices(items) -> dict:
     return out
 
 
+IN_PROCESS_TIMEOUT = 10.0     # seconds per vector for an adapter object (PLCVEC_TIMEOUT's default)
+
+
 def make_adapter(args):
     from .adapters import InProcess, load_python_adapter
     from .stdio import StdioAdapter
 
-    if args.python:
-        return InProcess(load_python_adapter(args.python), args.python)
-    if args.timeout <= 0 or args.batch_size < 1:
+    if args.timeout is not None and not args.timeout > 0 or args.batch_size < 1:
         raise VerifyError("--timeout must be > 0 and --batch-size >= 1")
-    return StdioAdapter(args.adapter, timeout=args.timeout, batch_size=args.batch_size, max_restarts=args.max_restarts)
+    if args.python:
+        return InProcess(load_python_adapter(args.python), args.python, timeout=args.timeout or IN_PROCESS_TIMEOUT)
+    return StdioAdapter(args.adapter, timeout=args.timeout or 30.0, batch_size=args.batch_size,
+                        max_restarts=args.max_restarts)
 
 
 def infer_exit_code(report, inferred) -> int:
@@ -133,8 +182,10 @@ def _verify(args) -> int:
     from .suite import Suite
 
     try:
+        came = apply_environment(args)
         suite = Suite.load(args.vectors or default_vectors().path)
-        selection = build_selection(args)
+        selection = build_selection(args, came)
+        selection.check(suite, labels={kind: came[kind] for kind in _LISTS if kind in came})
         gate = build_gate(args.allow_empty, args.max_skipped)
         known = KnownFailures.load(args.expectations) if args.expectations else None
         adapter = make_adapter(args)

@@ -12,6 +12,7 @@ raised about skip lists). Ids are exact, not patterns, for the same reason.
 """
 from __future__ import annotations
 
+import re
 import sys
 from dataclasses import dataclass
 from pathlib import Path
@@ -49,7 +50,10 @@ class KnownFailures:
         try:
             data = tomllib.loads(text)
         except tomllib.TOMLDecodeError as exc:
-            raise VerifyError(f"{path}: not valid TOML: {exc}")
+            # tomllib says where only inside its message: "... (at line 2, column 47)".
+            at = re.search(r" \(at line (\d+), column \d+\)$", str(exc))
+            where = f"{path}:{at.group(1)}" if at else str(path)
+            raise VerifyError(f"{where}: not valid TOML: {str(exc)[:at.start()] if at else exc}")
         unknown = set(data) - {SECTION}
         if unknown:
             raise VerifyError(f"{path}:{_line_of(text, sorted(unknown)[0])}: unknown key {sorted(unknown)[0]!r}; "

@@ -34,7 +34,9 @@ def pytest_addoption(parser):
     g.addoption("--plcvec-expectations", metavar="FILE", help="known failures (TOML)")
     g.addoption("--plcvec-choose", action="append", default=[], metavar="ID=ALT",
                 help="interpretation alternative the implementation follows, if its adapter does not declare it")
-    g.addoption("--plcvec-timeout", type=float, default=30.0, help="seconds per batch (adapter processes)")
+    g.addoption("--plcvec-timeout", type=float, default=None,
+                help="the bound on an answer: seconds per batch for an adapter process (default 30), per vector "
+                     "for an adapter object (default 10); PLCVEC_TIMEOUT")
     g.addoption("--plcvec-batch-size", type=int, default=256)
     for kind, example in (("family", "fx5-time-add"), ("instruction", "TADDP"), ("tag", "boundary"),
                           ("id", "'fx5-time-add/TADD/*'"), ("interpretation", "TADD-EXACT-24")):
@@ -110,19 +112,23 @@ class VectorItem(pytest.Item):
 def pytest_configure(config):
     if not _enabled(config):
         return
-    from .command import build_gate
+    from types import SimpleNamespace
+
+    from .command import _LISTS, apply_environment, build_gate, build_selection
     from .locate import default_vectors
-    from .suite import Selection, Suite, parse_shard
+    from .suite import Suite
 
     try:
-        config._plcvec_suite = Suite.load(config.getoption("plcvec_vectors") or default_vectors().path)
-        shard = config.getoption("plcvec_shard")
-        config._plcvec_selection = Selection(
-            families=tuple(config.getoption("plcvec_family")), instructions=tuple(config.getoption("plcvec_instruction")),
-            tags=tuple(config.getoption("plcvec_tag")), ids=tuple(config.getoption("plcvec_id")),
-            interpretations=tuple(config.getoption("plcvec_interpretation")),
-            shard=parse_shard(shard) if shard else None)
-        config._plcvec_selection.check(config._plcvec_suite, option_prefix="--plcvec-")
+        # The PLCVEC_* variables are the options' defaults, as for plcvec verify.
+        options = SimpleNamespace(**{k: config.getoption(f"plcvec_{k}") for k in (*_LISTS, "vectors", "shard",
+                                                                                    "expectations", "timeout")},
+                                  write_expectations=None)
+        came = apply_environment(options)
+        config._plcvec_options = options
+        config._plcvec_suite = Suite.load(options.vectors or default_vectors().path)
+        config._plcvec_selection = build_selection(options, {"shard": came.get("shard", "--plcvec-shard")})
+        config._plcvec_selection.check(config._plcvec_suite, option_prefix="--plcvec-",
+                                       labels={kind: came[kind] for kind in _LISTS if kind in came})
         config._plcvec_gate = build_gate(config.getoption("plcvec_allow_empty"),
                                          config.getoption("plcvec_max_skipped"), option_prefix="--plcvec-")
     except VerifyError as exc:
@@ -169,7 +175,7 @@ def _results(session):
 
 def _run(session):
     from .adapters import InProcess, load_python_adapter
-    from .command import parse_choices
+    from .command import IN_PROCESS_TIMEOUT, parse_choices
     from .known import KnownFailures
     from .runner import run
     from .stdio import StdioAdapter
@@ -179,13 +185,13 @@ def _run(session):
     suite = config._plcvec_suite
     vectors = [i.vector for i in session.items if isinstance(i, VectorItem)]
     try:
-        known = KnownFailures.load(config.getoption("plcvec_expectations")) \
-            if config.getoption("plcvec_expectations") else None
+        options = config._plcvec_options
+        known = KnownFailures.load(options.expectations) if options.expectations else None
         if config.getoption("plcvec_python"):
             spec = config.getoption("plcvec_python")
-            adapter = InProcess(load_python_adapter(spec), spec)
+            adapter = InProcess(load_python_adapter(spec), spec, timeout=options.timeout or IN_PROCESS_TIMEOUT)
         else:
-            adapter = StdioAdapter(config.getoption("plcvec_adapter"), timeout=config.getoption("plcvec_timeout"),
+            adapter = StdioAdapter(config.getoption("plcvec_adapter"), timeout=options.timeout or 30.0,
                                    batch_size=config.getoption("plcvec_batch_size"))
         # pytest ends on SIGTERM without unwinding; within the run, it ends the adapter first.
         with stop_on_signals((signal.SIGTERM,)):
@@ -235,6 +241,10 @@ class _Everywhere(dict):
         return self.message
 
 
+# Said when -k, -m or a --plcvec- filter left no vector: how to pick vectors by id instead.
+_BY_ID = "; to run vectors by id, give --plcvec-id GLOB or PLCVEC_ID (a glob on the whole id)"
+
+
 @pytest.hookimpl(tryfirst=True)
 def pytest_sessionfinish(session, exitstatus):
     """A session that passed but proves nothing (or too little) exits 5, like `plcvec verify`."""
@@ -246,10 +256,15 @@ def pytest_sessionfinish(session, exitstatus):
     if exitstatus == pytest.ExitCode.OK:
         # No report: no vector item was left to run (-k, -m or the --plcvec- filters removed them all).
         config._plcvec_shortfall = report.shortfall if report is not None else gate.shortfall({}, 0)
+        if report is None and config._plcvec_shortfall:
+            # -k, -m or a --plcvec- filter left no vector: say how to pick vectors by id.
+            config._plcvec_shortfall += _BY_ID
         if config._plcvec_shortfall:
             session.exitstatus = pytest.ExitCode.NO_TESTS_COLLECTED
     elif exitstatus == pytest.ExitCode.NO_TESTS_COLLECTED and gate.allow_empty and report is None:
         session.exitstatus = pytest.ExitCode.OK
+    elif exitstatus == pytest.ExitCode.NO_TESTS_COLLECTED and report is None:
+        config._plcvec_shortfall = gate.shortfall({}, 0) + _BY_ID
 
 
 def pytest_terminal_summary(terminalreporter, config):

@@ -31,6 +31,9 @@ def serve(adapter, stdin=None, stdout=None) -> int:
                 return 1
             answer = {"type": "hello", "protocol": PROTOCOL_VERSION}
             answer.update(adapter.hello(msg))
+            # Devices the CPU writes on its own, declared as an attribute (adapters.InProcess does the same).
+            if getattr(adapter, "cpu_writes", None) is not None and "cpu_writes" not in answer:
+                answer["cpu_writes"] = list(adapter.cpu_writes)
             stdout.write(encode(answer))
             stdout.flush()
         elif kind == "run":

@@ -7,6 +7,7 @@ implementer needs only the published files.
 from __future__ import annotations
 
 import fnmatch
+import hashlib
 import json
 import zlib
 from dataclasses import dataclass, field
@@ -15,6 +16,10 @@ from pathlib import Path
 from .errors import VerifyError
 from .expect import Expectations
 from .validate import schema_for, validate_file
+
+# A vector folder's index: the JSON form's manifest.json (plcvec generate), or the packaged
+# JSON-lines form's index.json (plcvec export, a release bundle's jsonl/).
+INDEXES = ("manifest.json", "index.json")
 
 # The major schema version this verifier understands (CONTRACT.md, "Versioning"): a 2.x file may
 # mean something else by the same fields, so it is refused rather than misread.
@@ -40,26 +45,40 @@ class Suite:
 
     @classmethod
     def load(cls, path) -> "Suite":
+        """A vector folder (`manifest.json` and the JSON family files it names, as `plcvec generate`
+        writes them, or `index.json` and the JSON-lines family files of the packaged form that
+        `plcvec export` and a release bundle's `jsonl/` hold), or one family file of either form."""
         path = Path(path)
         if path.is_dir():
-            manifest = _read_json(path / "manifest.json")
+            index_path = next((path / name for name in INDEXES if (path / name).is_file()), None)
+            if index_path is None:
+                raise VerifyError(f"{path}: no manifest.json (a vector folder) or index.json (the packaged "
+                                  "JSON-lines form); is this a plcvec vector folder?")
+            index = _read_json(index_path)
             try:
-                files = [path / entry["file"] for entry in manifest["families"].values()]
+                entries = [(path / entry["file"], entry.get("sha256"), entry.get("count"))
+                           for entry in index["families"].values()]
             except (KeyError, TypeError, AttributeError):
-                raise VerifyError(f"{path / 'manifest.json'}: no `families` with a `file` each; is this a plcvec vector folder?")
-            suite_version = str(manifest.get("generator_version") or "")
-            manifest_hash = manifest.get("spec_sha256", "")
+                raise VerifyError(f"{index_path}: no `families` with a `file` each; is this a plcvec vector folder?")
+            suite_version = str(index.get("generator_version") or index.get("suite_version") or "")
+            manifest_hash = index.get("spec_sha256", "")
         elif path.exists():
-            files, suite_version, manifest_hash = [path], "", ""
+            index_path, entries, suite_version, manifest_hash = None, [(path, None, None)], "", ""
         else:
             raise VerifyError(f"{path}: no such vector folder or file")
         schema = schema_for(path)
         headers, vectors, spec_hashes, schema_versions = {}, [], set(), set()
-        for file in files:
+        for file, sha256, count in entries:
             raw = _read_bytes(file)
-            data = _parse_json(file, raw)
+            data = _parse_jsonl(file, raw) if file.suffix == ".jsonl" else _parse_json(file, raw)
+            if sha256 is not None and hashlib.sha256(raw).hexdigest() != sha256:
+                raise VerifyError(f"{file}: its sha256 is not the one {index_path.name} records "
+                                  f"({sha256[:12]}…): the file was changed or cut after it was written")
             if not isinstance(data, dict) or not isinstance(data.get("vectors"), list) or "family" not in data:
                 raise VerifyError(f"{file}: not a plcvec vector file (no `family` and `vectors`)")
+            if isinstance(count, int) and count != len(data["vectors"]):
+                raise VerifyError(f"{file}: {len(data['vectors'])} vectors, but {index_path.name} records {count}: "
+                                  "the file was cut or changed after it was written")
             version = str(data.get("schema_version", ""))
             major = version.split(".")[0]
             if major != str(SCHEMA_MAJOR):
@@ -68,10 +87,10 @@ class Suite:
             schema_versions.add(version)
             spec_hashes.add(data.get("spec_sha256", ""))
             headers[data["family"]] = {k: v for k, v in data.items() if k != "vectors"}
-            for index, v in enumerate(data["vectors"]):
+            for index_no, v in enumerate(data["vectors"]):
                 problem = _shape_problem(v, data["family"])
                 if problem:
-                    name = v.get("id") if isinstance(v, dict) and isinstance(v.get("id"), str) else f"#{index}"
+                    name = v.get("id") if isinstance(v, dict) and isinstance(v.get("id"), str) else f"#{index_no}"
                     raise VerifyError(f"{file}: vector {name}: {problem} (is the file a plcvec vector file, unedited?)")
             # Then every value against the schema: a word of 70000 is named where it is, not
             # discovered later as an expectation that "does not add up".
@@ -145,6 +164,28 @@ def _shape_problem(v, family) -> str:
     return ""
 
 
+def _parse_jsonl(path: Path, raw: bytes) -> dict:
+    """A JSON-lines family file: its header on the first line, then one vector per line."""
+    try:
+        text = raw.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = raw[:exc.start].count(b"\n") + 1
+        raise VerifyError(f"{path}:{line}: not UTF-8 text (byte {exc.start})")
+    if not text.endswith("\n"):
+        raise VerifyError(f"{path}:{text.count(chr(10)) + 1}: the last line does not end: the file was cut")
+    lines = text[:-1].split("\n")
+    parsed = []
+    for number, line in enumerate(lines, 1):
+        try:
+            parsed.append(json.loads(line))
+        except json.JSONDecodeError as exc:
+            raise VerifyError(f"{path}:{number}: not valid JSON ({exc.msg})")
+    header = parsed[0] if parsed else None
+    if not isinstance(header, dict) or "vectors" in header:
+        raise VerifyError(f"{path}:1: not the header of a JSON-lines vector file")
+    return {**header, "vectors": parsed[1:]}
+
+
 def _read_json(path: Path):
     return _parse_json(path, _read_bytes(path))
 
@@ -209,25 +250,31 @@ class Selection:
             return list(vectors)
         return [v for v in vectors if self.matches(v)]
 
-    def check(self, suite: "Suite", option_prefix: str = "--") -> None:
+    def check(self, suite: "Suite", option_prefix: str = "--", labels: dict | None = None) -> None:
         """Refuse names the suite does not have, listing those it has, and id globs that match nothing.
 
         An unknown name would select nothing, and a gate that selects nothing must not look like one
-        that passed; a usage error says which word was mistyped.
+        that passed; a usage error says which word was mistyped. `labels` names where a kind of
+        filter came from when not from an option (`{"family": "PLCVEC_FAMILY"}`).
         """
+        labels = labels or {}
         named = (("family", self.families), ("instruction", self.instructions), ("tag", self.tags),
                  ("interpretation", self.interpretations))
         # The names are gathered from every vector: only when a name was given to check.
         known = suite.names() if any(given for _, given in named) else {}
         for kind, given in named:
+            label = labels.get(kind, f"{option_prefix}{kind}")
             for name in given:
                 if name not in known[kind]:
-                    raise VerifyError(f"{option_prefix}{kind} {name}: {suite.source} has no such {kind}; "
-                                      f"known: {', '.join(known[kind]) or '(none)'}")
+                    what = "an empty name is not a filter" if not name.strip() else \
+                        f"{suite.source} has no such {kind}"
+                    shown = f"{label}={','.join(given)}" if not name.strip() else f"{label} {name}"
+                    raise VerifyError(f"{shown}: {what}; known: {', '.join(known[kind]) or '(none)'}")
+        label = labels.get("id", f"{option_prefix}id")
         for pattern in self.ids:
             if not any(fnmatch.fnmatchcase(vid, pattern) for vid in suite.by_id):
                 example = next(iter(suite.by_id), "")
-                raise VerifyError(f"{option_prefix}id {pattern}: matches no vector id in {suite.source} "
+                raise VerifyError(f"{label} {pattern}: matches no vector id in {suite.source} "
                                   f"(ids look like {example}; a glob matches the whole id)")
 
 
@@ -240,11 +287,11 @@ def shard_of(vector_id: str, n: int) -> int:
     return zlib.crc32(vector_id.encode("utf-8")) % n + 1
 
 
-def parse_shard(text: str) -> tuple[int, int]:
+def parse_shard(text: str, option: str = "--shard") -> tuple[int, int]:
     try:
         k, n = (int(x) for x in text.split("/"))
     except ValueError:
-        raise VerifyError(f"--shard takes K/N (e.g. 2/4), got {text!r}")
+        raise VerifyError(f"{option} takes K/N (e.g. 2/4), got {text!r}")
     if not 1 <= k <= n:
-        raise VerifyError(f"--shard {text}: K must be between 1 and N")
+        raise VerifyError(f"{option} {text}: K must be between 1 and N")
     return k, n

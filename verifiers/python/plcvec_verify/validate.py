@@ -75,8 +75,39 @@ def validate_file(file: Path, raw: bytes, data: dict, schema_path: Path) -> None
         lines = [_describe(e, data) for e in errors[:SHOW_ERRORS]]
         more = f"\n  ... and {len(errors) - SHOW_ERRORS} more" if len(errors) > SHOW_ERRORS else ""
         raise VerifyError(f"{file}: does not match {schema_path.name}:\n  " + "\n  ".join(lines) + more)
+    for v in data.get("vectors", ()):
+        problem = vector_problem(v)
+        if problem:
+            raise VerifyError(f"{file}: vector {v.get('id')}: {problem}")
     _VALID.add(key)
     _remember(key)
+
+
+def _kind(value) -> str:
+    return "a bit (true/false)" if type(value) is bool else "a word"
+
+
+def vector_problem(v: dict) -> str:
+    """What the schema cannot say of one vector: each device keeps one JSON type (a bit is true/false
+    everywhere, a word an integer everywhere) across initial, set, expect and final, alternatives
+    included. A bit holding 2 in `initial` would otherwise be blamed on the implementation."""
+    seen: dict[str, tuple] = {}      # device -> (is a bit, the path where it was first met)
+    places = [("initial/devices", v["initial"]["devices"]), ("final/devices", v["final"]["devices"])]
+    for i, step in enumerate(v["steps"]):
+        places.append((f"steps/{i}/set", step.get("set") or {}))
+        places.append((f"steps/{i}/expect/devices", step["expect"].get("devices") or {}))
+    for a, alt in enumerate(v.get("alternatives", ())):
+        for i, expect in enumerate(alt.get("expect", ())):
+            places.append((f"alternatives/{a}/expect/{i}/devices", expect.get("devices") or {}))
+        places.append((f"alternatives/{a}/final/devices", alt["final"]["devices"]))
+    for where, devices in places:
+        for device, value in devices.items():
+            bit = type(value) is bool
+            first = seen.setdefault(device, (bit, where, value))
+            if first[0] is not bit:
+                return (f"at {where}/{device}: {json.dumps(value)} is {_kind(value)}, but at {first[1]}/{device} "
+                        f"the same device holds {json.dumps(first[2])}, {_kind(first[2])}")
+    return ""
 
 
 def _describe(error, data) -> str:
