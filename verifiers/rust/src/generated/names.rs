@@ -78,6 +78,81 @@ impl std::fmt::Display for Family {
     }
 }
 
+/// How a contact instruction combines with the logic before it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Form {
+    #[doc = "`LD`"]
+    Ld,
+    #[doc = "`AND`"]
+    And,
+    #[doc = "`OR`"]
+    Or,
+}
+
+impl Form {
+    /// The spelling (`LD`, `AND`, `OR`).
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Form::Ld => "LD",
+            Form::And => "AND",
+            Form::Or => "OR",
+        }
+    }
+}
+
+/// The comparison a contact instruction makes of (s1) against (s2).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Condition {
+    #[doc = "`=`: equal"]
+    Eq,
+    #[doc = "`<>`: not equal"]
+    Ne,
+    #[doc = "`<`: less than"]
+    Lt,
+    #[doc = "`<=`: less than or equal"]
+    Le,
+    #[doc = "`>`: greater than"]
+    Gt,
+    #[doc = "`>=`: greater than or equal"]
+    Ge,
+}
+
+impl Condition {
+    /// Every condition, in the order the vocabulary lists them.
+    pub const ALL: &'static [Condition] = &[Condition::Eq, Condition::Ne, Condition::Lt, Condition::Le, Condition::Gt, Condition::Ge];
+
+    /// The operator (`<=`).
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Condition::Eq => "=",
+            Condition::Ne => "<>",
+            Condition::Lt => "<",
+            Condition::Le => "<=",
+            Condition::Gt => ">",
+            Condition::Ge => ">=",
+        }
+    }
+}
+
+/// When an instruction executes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum Execution {
+    #[doc = "`every-scan`"]
+    EveryScan,
+    #[doc = "`rising-edge`"]
+    RisingEdge,
+}
+
+impl Execution {
+    /// The spelling (`every-scan`, `rising-edge`).
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Execution::EveryScan => "every-scan",
+            Execution::RisingEdge => "rising-edge",
+        }
+    }
+}
+
 /// An instruction as the spec spells it (`LDTM<=`, `LD <=DT`, `TADDP`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub enum Instruction {
@@ -382,6 +457,258 @@ impl Instruction {
             Instruction::OrtmEq => Family::Fx5TimeCompare,
             Instruction::OrtmGt => Family::Fx5TimeCompare,
             Instruction::OrtmGe => Family::Fx5TimeCompare,
+        }
+    }
+
+    /// The structured-text spelling (`LDTM_LE`), empty where the manual gives none.
+    pub const fn st(self) -> &'static str {
+        match self {
+            Instruction::AndLeDt => "AND <=DT",
+            Instruction::AndNeDt => "AND <>DT",
+            Instruction::AndLtDt => "AND <DT",
+            Instruction::AndEqDt => "AND =DT",
+            Instruction::AndGeDt => "AND >=DT",
+            Instruction::AndGtDt => "AND >DT",
+            Instruction::LdLeDt => "LD <=DT",
+            Instruction::LdNeDt => "LD <>DT",
+            Instruction::LdLtDt => "LD <DT",
+            Instruction::LdEqDt => "LD =DT",
+            Instruction::LdGeDt => "LD >=DT",
+            Instruction::LdGtDt => "LD >DT",
+            Instruction::OrLeDt => "OR <=DT",
+            Instruction::OrNeDt => "OR <>DT",
+            Instruction::OrLtDt => "OR <DT",
+            Instruction::OrEqDt => "OR =DT",
+            Instruction::OrGeDt => "OR >=DT",
+            Instruction::OrGtDt => "OR >DT",
+            Instruction::Hour => "",
+            Instruction::AnddtLt => "ANDDT_LT",
+            Instruction::AnddtLe => "ANDDT_LE",
+            Instruction::AnddtNe => "ANDDT_NE",
+            Instruction::AnddtEq => "ANDDT_EQ",
+            Instruction::AnddtGt => "ANDDT_GT",
+            Instruction::AnddtGe => "ANDDT_GE",
+            Instruction::LddtLt => "LDDT_LT",
+            Instruction::LddtLe => "LDDT_LE",
+            Instruction::LddtNe => "LDDT_NE",
+            Instruction::LddtEq => "LDDT_EQ",
+            Instruction::LddtGt => "LDDT_GT",
+            Instruction::LddtGe => "LDDT_GE",
+            Instruction::OrdtLt => "ORDT_LT",
+            Instruction::OrdtLe => "ORDT_LE",
+            Instruction::OrdtNe => "ORDT_NE",
+            Instruction::OrdtEq => "ORDT_EQ",
+            Instruction::OrdtGt => "ORDT_GT",
+            Instruction::OrdtGe => "ORDT_GE",
+            Instruction::Tadd => "TADD",
+            Instruction::Taddp => "TADDP",
+            Instruction::AndtmLt => "ANDTM_LT",
+            Instruction::AndtmLe => "ANDTM_LE",
+            Instruction::AndtmNe => "ANDTM_NE",
+            Instruction::AndtmEq => "ANDTM_EQ",
+            Instruction::AndtmGt => "ANDTM_GT",
+            Instruction::AndtmGe => "ANDTM_GE",
+            Instruction::LdtmLt => "LDTM_LT",
+            Instruction::LdtmLe => "LDTM_LE",
+            Instruction::LdtmNe => "LDTM_NE",
+            Instruction::LdtmEq => "LDTM_EQ",
+            Instruction::LdtmGt => "LDTM_GT",
+            Instruction::LdtmGe => "LDTM_GE",
+            Instruction::OrtmLt => "ORTM_LT",
+            Instruction::OrtmLe => "ORTM_LE",
+            Instruction::OrtmNe => "ORTM_NE",
+            Instruction::OrtmEq => "ORTM_EQ",
+            Instruction::OrtmGt => "ORTM_GT",
+            Instruction::OrtmGe => "ORTM_GE",
+        }
+    }
+
+    /// LD, AND or OR for a contact instruction; `None` for one that is no contact (TADD, HOUR).
+    pub const fn form(self) -> Option<Form> {
+        match self {
+            Instruction::AndLeDt => Some(Form::And),
+            Instruction::AndNeDt => Some(Form::And),
+            Instruction::AndLtDt => Some(Form::And),
+            Instruction::AndEqDt => Some(Form::And),
+            Instruction::AndGeDt => Some(Form::And),
+            Instruction::AndGtDt => Some(Form::And),
+            Instruction::LdLeDt => Some(Form::Ld),
+            Instruction::LdNeDt => Some(Form::Ld),
+            Instruction::LdLtDt => Some(Form::Ld),
+            Instruction::LdEqDt => Some(Form::Ld),
+            Instruction::LdGeDt => Some(Form::Ld),
+            Instruction::LdGtDt => Some(Form::Ld),
+            Instruction::OrLeDt => Some(Form::Or),
+            Instruction::OrNeDt => Some(Form::Or),
+            Instruction::OrLtDt => Some(Form::Or),
+            Instruction::OrEqDt => Some(Form::Or),
+            Instruction::OrGeDt => Some(Form::Or),
+            Instruction::OrGtDt => Some(Form::Or),
+            Instruction::Hour => None,
+            Instruction::AnddtLt => Some(Form::And),
+            Instruction::AnddtLe => Some(Form::And),
+            Instruction::AnddtNe => Some(Form::And),
+            Instruction::AnddtEq => Some(Form::And),
+            Instruction::AnddtGt => Some(Form::And),
+            Instruction::AnddtGe => Some(Form::And),
+            Instruction::LddtLt => Some(Form::Ld),
+            Instruction::LddtLe => Some(Form::Ld),
+            Instruction::LddtNe => Some(Form::Ld),
+            Instruction::LddtEq => Some(Form::Ld),
+            Instruction::LddtGt => Some(Form::Ld),
+            Instruction::LddtGe => Some(Form::Ld),
+            Instruction::OrdtLt => Some(Form::Or),
+            Instruction::OrdtLe => Some(Form::Or),
+            Instruction::OrdtNe => Some(Form::Or),
+            Instruction::OrdtEq => Some(Form::Or),
+            Instruction::OrdtGt => Some(Form::Or),
+            Instruction::OrdtGe => Some(Form::Or),
+            Instruction::Tadd => None,
+            Instruction::Taddp => None,
+            Instruction::AndtmLt => Some(Form::And),
+            Instruction::AndtmLe => Some(Form::And),
+            Instruction::AndtmNe => Some(Form::And),
+            Instruction::AndtmEq => Some(Form::And),
+            Instruction::AndtmGt => Some(Form::And),
+            Instruction::AndtmGe => Some(Form::And),
+            Instruction::LdtmLt => Some(Form::Ld),
+            Instruction::LdtmLe => Some(Form::Ld),
+            Instruction::LdtmNe => Some(Form::Ld),
+            Instruction::LdtmEq => Some(Form::Ld),
+            Instruction::LdtmGt => Some(Form::Ld),
+            Instruction::LdtmGe => Some(Form::Ld),
+            Instruction::OrtmLt => Some(Form::Or),
+            Instruction::OrtmLe => Some(Form::Or),
+            Instruction::OrtmNe => Some(Form::Or),
+            Instruction::OrtmEq => Some(Form::Or),
+            Instruction::OrtmGt => Some(Form::Or),
+            Instruction::OrtmGe => Some(Form::Or),
+        }
+    }
+
+    /// The comparison a contact instruction makes; `None` for one that compares nothing.
+    pub const fn condition(self) -> Option<Condition> {
+        match self {
+            Instruction::AndLeDt => Some(Condition::Le),
+            Instruction::AndNeDt => Some(Condition::Ne),
+            Instruction::AndLtDt => Some(Condition::Lt),
+            Instruction::AndEqDt => Some(Condition::Eq),
+            Instruction::AndGeDt => Some(Condition::Ge),
+            Instruction::AndGtDt => Some(Condition::Gt),
+            Instruction::LdLeDt => Some(Condition::Le),
+            Instruction::LdNeDt => Some(Condition::Ne),
+            Instruction::LdLtDt => Some(Condition::Lt),
+            Instruction::LdEqDt => Some(Condition::Eq),
+            Instruction::LdGeDt => Some(Condition::Ge),
+            Instruction::LdGtDt => Some(Condition::Gt),
+            Instruction::OrLeDt => Some(Condition::Le),
+            Instruction::OrNeDt => Some(Condition::Ne),
+            Instruction::OrLtDt => Some(Condition::Lt),
+            Instruction::OrEqDt => Some(Condition::Eq),
+            Instruction::OrGeDt => Some(Condition::Ge),
+            Instruction::OrGtDt => Some(Condition::Gt),
+            Instruction::Hour => None,
+            Instruction::AnddtLt => Some(Condition::Lt),
+            Instruction::AnddtLe => Some(Condition::Le),
+            Instruction::AnddtNe => Some(Condition::Ne),
+            Instruction::AnddtEq => Some(Condition::Eq),
+            Instruction::AnddtGt => Some(Condition::Gt),
+            Instruction::AnddtGe => Some(Condition::Ge),
+            Instruction::LddtLt => Some(Condition::Lt),
+            Instruction::LddtLe => Some(Condition::Le),
+            Instruction::LddtNe => Some(Condition::Ne),
+            Instruction::LddtEq => Some(Condition::Eq),
+            Instruction::LddtGt => Some(Condition::Gt),
+            Instruction::LddtGe => Some(Condition::Ge),
+            Instruction::OrdtLt => Some(Condition::Lt),
+            Instruction::OrdtLe => Some(Condition::Le),
+            Instruction::OrdtNe => Some(Condition::Ne),
+            Instruction::OrdtEq => Some(Condition::Eq),
+            Instruction::OrdtGt => Some(Condition::Gt),
+            Instruction::OrdtGe => Some(Condition::Ge),
+            Instruction::Tadd => None,
+            Instruction::Taddp => None,
+            Instruction::AndtmLt => Some(Condition::Lt),
+            Instruction::AndtmLe => Some(Condition::Le),
+            Instruction::AndtmNe => Some(Condition::Ne),
+            Instruction::AndtmEq => Some(Condition::Eq),
+            Instruction::AndtmGt => Some(Condition::Gt),
+            Instruction::AndtmGe => Some(Condition::Ge),
+            Instruction::LdtmLt => Some(Condition::Lt),
+            Instruction::LdtmLe => Some(Condition::Le),
+            Instruction::LdtmNe => Some(Condition::Ne),
+            Instruction::LdtmEq => Some(Condition::Eq),
+            Instruction::LdtmGt => Some(Condition::Gt),
+            Instruction::LdtmGe => Some(Condition::Ge),
+            Instruction::OrtmLt => Some(Condition::Lt),
+            Instruction::OrtmLe => Some(Condition::Le),
+            Instruction::OrtmNe => Some(Condition::Ne),
+            Instruction::OrtmEq => Some(Condition::Eq),
+            Instruction::OrtmGt => Some(Condition::Gt),
+            Instruction::OrtmGe => Some(Condition::Ge),
+        }
+    }
+
+    /// Whether it executes at every scan or on the rising edge of its condition (TADDP).
+    pub const fn execution(self) -> Execution {
+        match self {
+            Instruction::AndLeDt => Execution::EveryScan,
+            Instruction::AndNeDt => Execution::EveryScan,
+            Instruction::AndLtDt => Execution::EveryScan,
+            Instruction::AndEqDt => Execution::EveryScan,
+            Instruction::AndGeDt => Execution::EveryScan,
+            Instruction::AndGtDt => Execution::EveryScan,
+            Instruction::LdLeDt => Execution::EveryScan,
+            Instruction::LdNeDt => Execution::EveryScan,
+            Instruction::LdLtDt => Execution::EveryScan,
+            Instruction::LdEqDt => Execution::EveryScan,
+            Instruction::LdGeDt => Execution::EveryScan,
+            Instruction::LdGtDt => Execution::EveryScan,
+            Instruction::OrLeDt => Execution::EveryScan,
+            Instruction::OrNeDt => Execution::EveryScan,
+            Instruction::OrLtDt => Execution::EveryScan,
+            Instruction::OrEqDt => Execution::EveryScan,
+            Instruction::OrGeDt => Execution::EveryScan,
+            Instruction::OrGtDt => Execution::EveryScan,
+            Instruction::Hour => Execution::EveryScan,
+            Instruction::AnddtLt => Execution::EveryScan,
+            Instruction::AnddtLe => Execution::EveryScan,
+            Instruction::AnddtNe => Execution::EveryScan,
+            Instruction::AnddtEq => Execution::EveryScan,
+            Instruction::AnddtGt => Execution::EveryScan,
+            Instruction::AnddtGe => Execution::EveryScan,
+            Instruction::LddtLt => Execution::EveryScan,
+            Instruction::LddtLe => Execution::EveryScan,
+            Instruction::LddtNe => Execution::EveryScan,
+            Instruction::LddtEq => Execution::EveryScan,
+            Instruction::LddtGt => Execution::EveryScan,
+            Instruction::LddtGe => Execution::EveryScan,
+            Instruction::OrdtLt => Execution::EveryScan,
+            Instruction::OrdtLe => Execution::EveryScan,
+            Instruction::OrdtNe => Execution::EveryScan,
+            Instruction::OrdtEq => Execution::EveryScan,
+            Instruction::OrdtGt => Execution::EveryScan,
+            Instruction::OrdtGe => Execution::EveryScan,
+            Instruction::Tadd => Execution::EveryScan,
+            Instruction::Taddp => Execution::RisingEdge,
+            Instruction::AndtmLt => Execution::EveryScan,
+            Instruction::AndtmLe => Execution::EveryScan,
+            Instruction::AndtmNe => Execution::EveryScan,
+            Instruction::AndtmEq => Execution::EveryScan,
+            Instruction::AndtmGt => Execution::EveryScan,
+            Instruction::AndtmGe => Execution::EveryScan,
+            Instruction::LdtmLt => Execution::EveryScan,
+            Instruction::LdtmLe => Execution::EveryScan,
+            Instruction::LdtmNe => Execution::EveryScan,
+            Instruction::LdtmEq => Execution::EveryScan,
+            Instruction::LdtmGt => Execution::EveryScan,
+            Instruction::LdtmGe => Execution::EveryScan,
+            Instruction::OrtmLt => Execution::EveryScan,
+            Instruction::OrtmLe => Execution::EveryScan,
+            Instruction::OrtmNe => Execution::EveryScan,
+            Instruction::OrtmEq => Execution::EveryScan,
+            Instruction::OrtmGt => Execution::EveryScan,
+            Instruction::OrtmGe => Execution::EveryScan,
         }
     }
 

@@ -8,10 +8,11 @@
 
 use std::cmp::Ordering;
 
-use super::{read3, rlo_in, word_operand, Condition, Mutant};
+use super::{holds, read3, rlo_in, word_operand, Mutant};
 use crate::choices::Choices;
 use crate::generated::names::{
-    Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eErrorFlags, Cp1eNonBcd, Cp1eOutOfRange,
+    Condition, Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eErrorFlags, Cp1eNonBcd, Cp1eOutOfRange,
+    Form,
 };
 use crate::implementation::Refusal;
 use crate::memory::Memory;
@@ -90,22 +91,17 @@ impl TimeCompare {
 
     pub(super) fn execute(
         &self,
-        instruction: &str,
-        vector: &Vector,
+        form: Form,
+        symbol: Condition,
         step: &crate::vector::Step,
+        vector: &Vector,
         mem: &mut Memory<'_>,
     ) -> Result<bool, Refusal> {
-        // "AND <=DT" -> ("AND", "<=")
-        let (form, symbol) = instruction
-            .split_once(' ')
-            .and_then(|(form, rest)| Some((form, rest.strip_suffix("DT")?)))
-            .ok_or_else(|| Refusal::Error(format!("not a CP1E time comparison: {instruction}")))?;
-        let symbol = Condition::parse(symbol)?;
         // "The time comparison instructions are treated just like the LD, AND, and OR
         // instructions to control the execution of subsequent instructions."
         match form {
-            "LD" => self.evaluate(symbol, vector, mem),
-            "AND" => {
+            Form::Ld => self.evaluate(symbol, vector, mem),
+            Form::And => {
                 let rlo = rlo_in(step)?;
                 if !rlo && matches!(self.and_or, Cp1eAndOrWhenOff::AndSkipped | Cp1eAndOrWhenOff::ShortCircuit) {
                     return Ok(false);
@@ -113,7 +109,7 @@ impl TimeCompare {
                 let contact = self.evaluate(symbol, vector, mem)?;
                 Ok(if self.bug(Mutant::Cp1eAndAsOr) { rlo || contact } else { rlo && contact })
             }
-            "OR" => {
+            Form::Or => {
                 let rlo = rlo_in(step)?;
                 if rlo && self.and_or == Cp1eAndOrWhenOff::ShortCircuit {
                     return Ok(true); // decided already: not executed, the flags left as they were
@@ -121,7 +117,6 @@ impl TimeCompare {
                 let contact = self.evaluate(symbol, vector, mem)?;
                 Ok(rlo || contact)
             }
-            other => Err(Refusal::Error(format!("not a CP1E time comparison form: {other}"))),
         }
     }
 
@@ -185,13 +180,13 @@ impl TimeCompare {
             }
         }
         if !self.bug(Mutant::Cp1eFlagsNotReflected) {
-            for (condition, flag) in Condition::ALL.into_iter().zip(FLAGS) {
-                mem.set_bit(flag, condition.holds(order));
+            for (condition, flag) in Condition::ALL.iter().copied().zip(FLAGS) {
+                mem.set_bit(flag, holds(condition, order));
             }
         }
         if self.er_flag == Cp1eErFlag::ReflectsEachExecution {
             mem.set_bit(ERROR_FLAG, false); // executed without error
         }
-        Ok(condition.holds(order))
+        Ok(holds(condition, order))
     }
 }

@@ -5,7 +5,7 @@
 use super::{device, read3, Mutant};
 use crate::choices::Choices;
 use crate::generated::names::{
-    HourFirstScan, HourInputOff, HourM8004Off, HourOutputOff, HourPresetCheck, HourPresetZero,
+    HourD1OutOfRange, HourFirstScan, HourInputOff, HourM8004Off, HourOutputOff, HourPresetCheck, HourPresetZero,
 };
 use crate::implementation::Refusal;
 use crate::memory::Memory;
@@ -25,6 +25,7 @@ pub(super) struct HourMeter {
     first_scan: HourFirstScan,
     preset_check: HourPresetCheck,
     m8004_off: HourM8004Off,
+    d1_out_of_range: HourD1OutOfRange,
     mutant: Option<Mutant>,
     fraction_ms: u64,
     /// For "recompared": D2 stays on across a wrap.
@@ -46,6 +47,7 @@ impl HourMeter {
             first_scan: choices.get(),
             preset_check: choices.get(),
             m8004_off: choices.get(),
+            d1_out_of_range: choices.get(),
             mutant,
             fraction_ms: 0,
             wrapped: false,
@@ -94,6 +96,14 @@ impl HourMeter {
             if self.preset_check == HourPresetCheck::EveryExecution {
                 self.check_preset(vector, mem, d2)?;
             }
+            return Ok(());
+        }
+        // D1 holding a minute or second above 59 (the page gives D1 no range): counted as
+        // seconds and carried back into range (HOUR-D1-OUT-OF-RANGE=as-seconds), or an error
+        // that stops this execution (error).
+        let held = read3(vector, mem, "D1")?;
+        if (held[1] > 59 || held[2] > 59) && self.d1_out_of_range == HourD1OutOfRange::Error {
+            mem.set_bit(ERROR_FLAG, true);
             return Ok(());
         }
         // The elapsed time since the previous execution is ON time; at the execution at which

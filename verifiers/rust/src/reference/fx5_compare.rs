@@ -6,9 +6,9 @@
 
 use std::cmp::Ordering;
 
-use super::{device, read3, rlo_in, signed, word_operand, Condition, Mutant};
+use super::{device, holds, read3, rlo_in, signed, word_operand, Mutant};
 use crate::choices::Choices;
-use crate::generated::names::{Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5OrOnError, Fx5Sm709Scope};
+use crate::generated::names::{Condition, Form, Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5OrOnError, Fx5Sm709Scope};
 use crate::implementation::Refusal;
 use crate::memory::Memory;
 use crate::vector::{Step, Vector};
@@ -80,19 +80,18 @@ impl Fx5Compare {
     pub(super) fn execute(
         &self,
         kind: Kind,
-        instruction: &str,
+        form: Form,
+        condition: Condition,
         vector: &Vector,
         step: &Step,
         mem: &mut Memory<'_>,
     ) -> Result<bool, Refusal> {
-        let (form, symbol) = parse_mnemonic(instruction, kind)?;
-        let condition = Condition::parse(symbol)?;
         let logic = self.logic;
         // "(Devices are used as a normally open contact.)" NOTES.md (iQ-R processing times): "an
         // AND/OR comparison is not executed while the preceding logic is off".
         match form {
-            "LD" => self.contact(kind, condition, vector, step, mem),
-            "AND" => {
+            Form::Ld => self.contact(kind, condition, vector, step, mem),
+            Form::And => {
                 let rlo = rlo_in(step)?;
                 if !rlo && matches!(logic, Fx5AndOrWhenOff::AndSkipped | Fx5AndOrWhenOff::ShortCircuit) {
                     return Ok(false);
@@ -100,7 +99,7 @@ impl Fx5Compare {
                 let contact = self.contact(kind, condition, vector, step, mem)?; // executed: may set SM709
                 Ok(rlo && contact)
             }
-            _ => {
+            Form::Or => {
                 let rlo = rlo_in(step)?;
                 if rlo && logic == Fx5AndOrWhenOff::ShortCircuit {
                     return Ok(true);
@@ -250,7 +249,7 @@ impl Fx5Compare {
         // Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
         // the data are within the setting range." -> 02/30 is compared as it is.
         let order = self.compare(fields, &s1, &s2, s3);
-        Ok(Contact::Compared(condition.holds(order)))
+        Ok(Contact::Compared(holds(condition, order)))
     }
 
     /// Field by field, the most significant selected field first.
@@ -264,18 +263,4 @@ impl Fx5Compare {
             .find(|o| o.is_ne())
             .unwrap_or(Ordering::Equal)
     }
-}
-
-/// `ANDTM<=` -> (`AND`, `<=`).
-fn parse_mnemonic(instruction: &str, kind: Kind) -> Result<(&'static str, &str), Refusal> {
-    let infix = match kind {
-        Kind::Time => "TM",
-        Kind::Date => "DT",
-    };
-    for form in ["LD", "AND", "OR"] {
-        if let Some(condition) = instruction.strip_prefix(form).and_then(|rest| rest.strip_prefix(infix)) {
-            return Ok((form, condition));
-        }
-    }
-    Err(Refusal::Error(format!("not an FX5 {infix} comparison: {instruction}")))
 }

@@ -4,7 +4,7 @@
 
 use super::{device, read3, signed, Mutant};
 use crate::choices::Choices;
-use crate::generated::names::{TaddErrorOrder, TaddExact24, TaddFlagsOff, TaddOnError};
+use crate::generated::names::{Execution, Instruction, TaddErrorOrder, TaddExact24, TaddFlagsOff, TaddOnError};
 use crate::implementation::Refusal;
 use crate::memory::Memory;
 use crate::value::Value;
@@ -54,17 +54,16 @@ impl TimeAdd {
 
     pub(super) fn execute(
         &mut self,
-        instruction: &str,
+        instruction: Instruction,
         vector: &Vector,
         step: &Step,
         mem: &mut Memory<'_>,
     ) -> Result<(), Refusal> {
         let en = step.en.ok_or_else(|| Refusal::Error(format!("{instruction} needs the step's en")))?;
-        let run = match instruction {
-            "TADD" => en, // every scan while EN is on
-            "TADDP" if self.bug(Mutant::TaddpEveryScan) => en,
-            "TADDP" => en && !self.previous_en, // pulse: the rising edge of EN only
-            other => return Err(Refusal::Error(format!("not TADD/TADDP: {other}"))),
+        let run = match instruction.execution() {
+            Execution::EveryScan => en, // TADD: every scan while EN is on
+            Execution::RisingEdge if self.bug(Mutant::TaddpEveryScan) => en,
+            Execution::RisingEdge => en && !self.previous_en, // TADDP: the rising edge of EN only
         };
         self.previous_en = en;
         if run {

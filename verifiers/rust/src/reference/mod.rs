@@ -24,7 +24,7 @@ use std::cmp::Ordering;
 pub use mutants::Mutant;
 
 use crate::choices::Choices;
-use crate::generated::names::{Family, Instruction};
+use crate::generated::names::{Condition, Family, Form, Instruction};
 use crate::implementation::{Execute, Refusal};
 use crate::memory::Memory;
 use crate::value::Address;
@@ -103,18 +103,26 @@ impl Execute for Reference {
     }
 
     fn execute(&mut self, vector: &Vector, step: &Step, memory: &mut Memory<'_>) -> Result<Option<bool>, Refusal> {
-        // The generated name is a static string: no read of the vector's own copy.
-        let instruction = vector.known_instruction().map_or(vector.instruction(), |i| i.as_str());
+        // What the instruction is comes from the generated names (its form, condition and
+        // execution as values), not from its spelling.
+        let instruction = vector.known_instruction().ok_or_else(|| {
+            Refusal::Error(format!("{}: an instruction this build does not know", vector.instruction()))
+        })?;
         match self.family {
             Some(Family::Fx5TimeCompare) => {
-                self.fx5_compare.execute(fx5_compare::Kind::Time, instruction, vector, step, memory).map(Some)
+                let (form, condition) = contact_of(instruction)?;
+                self.fx5_compare.execute(fx5_compare::Kind::Time, form, condition, vector, step, memory).map(Some)
             }
             Some(Family::Fx5DateCompare) => {
-                self.fx5_compare.execute(fx5_compare::Kind::Date, instruction, vector, step, memory).map(Some)
+                let (form, condition) = contact_of(instruction)?;
+                self.fx5_compare.execute(fx5_compare::Kind::Date, form, condition, vector, step, memory).map(Some)
             }
             Some(Family::Fx5TimeAdd) => self.tadd.execute(instruction, vector, step, memory).map(|()| None),
             Some(Family::Fc6aHourMeter) => self.hour.execute(vector, step, memory).map(|()| None),
-            Some(Family::Cp1eTimeCompare) => self.cp1e.execute(instruction, vector, step, memory).map(Some),
+            Some(Family::Cp1eTimeCompare) => {
+                let (form, condition) = contact_of(instruction)?;
+                self.cp1e.execute(form, condition, step, vector, memory).map(Some)
+            }
             None => Err(Refusal::Error("execute before begin".to_owned())),
         }
     }
@@ -150,45 +158,23 @@ fn signed(word: u16) -> i64 {
     i64::from(word as i16)
 }
 
-/// The six comparison conditions of both vendors' tables.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Condition {
-    Eq,
-    Ne,
-    Lt,
-    Le,
-    Gt,
-    Ge,
+/// Whether `condition` holds for (s1) compared with (s2).
+fn holds(condition: Condition, order: Ordering) -> bool {
+    match condition {
+        Condition::Eq => order == Ordering::Equal,
+        Condition::Ne => order != Ordering::Equal,
+        Condition::Lt => order == Ordering::Less,
+        Condition::Le => order != Ordering::Greater,
+        Condition::Gt => order == Ordering::Greater,
+        Condition::Ge => order != Ordering::Less,
+    }
 }
 
-impl Condition {
-    /// Every condition.
-    const ALL: [Condition; 6] =
-        [Condition::Eq, Condition::Ne, Condition::Lt, Condition::Le, Condition::Gt, Condition::Ge];
-
-    /// The condition of a symbol (`<=`).
-    fn parse(symbol: &str) -> Result<Condition, Refusal> {
-        Ok(match symbol {
-            "=" => Condition::Eq,
-            "<>" => Condition::Ne,
-            "<" => Condition::Lt,
-            "<=" => Condition::Le,
-            ">" => Condition::Gt,
-            ">=" => Condition::Ge,
-            other => return Err(Refusal::Error(format!("no comparison condition {other:?}"))),
-        })
-    }
-
-    /// Whether the condition holds for (s1) compared with (s2).
-    fn holds(self, order: Ordering) -> bool {
-        match self {
-            Condition::Eq => order == Ordering::Equal,
-            Condition::Ne => order != Ordering::Equal,
-            Condition::Lt => order == Ordering::Less,
-            Condition::Le => order != Ordering::Greater,
-            Condition::Gt => order == Ordering::Greater,
-            Condition::Ge => order != Ordering::Less,
-        }
+/// A contact instruction's form and condition, as the generated names give them.
+fn contact_of(instruction: Instruction) -> Result<(Form, Condition), Refusal> {
+    match (instruction.form(), instruction.condition()) {
+        (Some(form), Some(condition)) => Ok((form, condition)),
+        _ => Err(Refusal::Error(format!("{instruction} is no comparison contact"))),
     }
 }
 
