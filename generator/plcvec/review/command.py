@@ -54,7 +54,8 @@ def run(args):
         built = map_families(vectors_and_cells, families, args.jobs, family_cost)
     vectors = {fam.name: fam_vectors for fam, (fam_vectors, _) in zip(families, built)}
     cells = {fam.name: fam_cells for fam, (_, fam_cells) in zip(families, built)}
-    model = build_model(families, vectors, quotes=quotes, audit=run_audit(families), cells=cells)
+    pages = _pages(args.manual_dir, families) if manual is not None else None
+    model = build_model(families, vectors, quotes=quotes, audit=run_audit(families), cells=cells, pages=pages)
     out = Path(args.out)
     if not args.no_write:
         if out.exists() and not out.is_dir():
@@ -71,10 +72,27 @@ def run(args):
     return 0
 
 
+def _pages(manual_dir, families):
+    """{page file name: (path, text)} of every family's page found in the manual folder (one that is
+    missing is already reported by the quote check)."""
+    pages = {}
+    for fam in families:
+        path = Path(manual_dir) / fam.doc["manual"]
+        if path.is_file():
+            try:
+                pages[path.name] = (path, path.read_text(encoding="utf-8"))
+            except (OSError, UnicodeDecodeError) as exc:
+                raise PlcvecError(f"--manual-dir {manual_dir}: cannot read {path.name}: {exc}") from None
+    return pages
+
+
 def _headline(s, spec_dir):
     quotes = "quotes not checked" if s["quotes_checked"] is None else \
         f"{s['quotes_missing']} of {s['quotes_checked']} quotes missing"
     audit = f"{s['audit_unrecorded']} unrecorded audit disagreements" if s["audit_available"] else "audit not available"
+    sentences = "sentences not checked" if s["sentences"] is None else \
+        f"{s['sentences_unaccounted']} of {s['sentences']} sentences and table rows unaccounted for"
     return (f"plcvec review of {spec_dir}: {s['families']} families, {s['clauses']} clauses, {s['vectors']} vectors; {quotes}; "
+            f"{sentences}; {s['derived']} derived claims; "
             f"{s['uncovered']} uncovered clauses; {s['model_missing']} of {s['model_required']} coverage-model "
             f"combinations with no vector; {audit}")

@@ -10,12 +10,13 @@ import re
 
 from plcvec.cases.build import instruction_list
 from plcvec.review import coverage as cov
+from plcvec.review import accounting as acc
 from plcvec.review import provenance as prov
 
 # Spec sections drawn as their own tables, or shown in their own part of the report; every other
 # top-level section is listed parameter by parameter under "Rule parameters".
 _OWN_SECTIONS = {"spec_version", "family", "title", "manual", "kind", "clauses", "interpretations", "errata", "documents",
-                 "assumptions", "examples", "generation", "coverage", "operands", "instructions"}
+                 "assumptions", "examples", "generation", "coverage", "operands", "instructions", "accounting"}
 # Roles of the operands whose words hold the data fields (the others are selectors, bits, work areas).
 _DATA_ROLES = ("data", "addend", "result", "preset", "measured")
 # Audit findings that a reviewer must act on unless an erratum of the spec records them.
@@ -48,6 +49,11 @@ class Problems:
         self.items.append({"kind": kind, "where": where, "file": fam.path.name, "line": line,
                            "message": message, "anchor": target})
 
+    def add_at(self, kind, where, file, line, message, target):
+        """A problem located in another file than a spec file (a page of the manual: `page.txt:12`)."""
+        self.items.append({"kind": kind, "where": where, "file": file, "line": line, "message": message,
+                           "anchor": target})
+
     def lines(self):
         return [f"{p['where']}: {p['message']}" for p in self.items]
 
@@ -59,11 +65,12 @@ def run_audit(families):
     return importlib.import_module("plcvec.audit").audit_families(families)
 
 
-def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=None):
+def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=None, pages=None):
     """The whole review.
 
     quotes: None when no manual folder was given, else (checked quotes, missing quotes) from
     plcvec.review.quotes.check_quotes. audit: an AuditReport, or None when there is no audit.
+    pages: None, or {page file name: (path, text)} of the manual folder, for the sentence accounting.
     """
     missing = {}
     problems = Problems()
@@ -76,7 +83,7 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=N
                      anchor(kind, q.family, ident) if kind in _ANCHOR_PREFIX else anchor("family", q.family))
     manuals = {fam.doc["manual"] for fam in families}
     fams = [_FamilyView(fam, vectors_by_family[fam.name], quotes is not None, missing, problems).build(
-                audit, (cells or {}).get(fam.name), manuals) for fam in families]
+                audit, (cells or {}).get(fam.name), manuals, pages) for fam in families]
     all_vectors = [v for fam in families for v in vectors_by_family[fam.name]]
     audit_rows = [f for fm in fams for f in fm["audit"]]
     coverage_rows = [r for fm in fams for r in fm["coverage"]]
@@ -99,6 +106,9 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=N
         "audit_unrecorded": sum(f["problem"] for f in audit_rows),
         "model_required": sum(fm["model"]["required"] for fm in fams if fm["model"]),
         "model_missing": sum(len(fm["model"]["missing"]) for fm in fams if fm["model"]),
+        "sentences": sum(fm["accounting"]["units"] for fm in fams) if pages is not None else None,
+        "sentences_unaccounted": sum(len(fm["accounting"]["left"]) for fm in fams),
+        "accounting_entries": sum(len(fm["accounting"]["entries"]) for fm in fams),
         "derived": sum(len(fm["provenance"]["derived"]) for fm in fams),
         "citations": sum(len(fm["provenance"]["citations"]) for fm in fams),
         "documents": sum(len(fm["provenance"]["documents"]) for fm in fams),
@@ -140,8 +150,9 @@ class _FamilyView:
         return {"quote": node["quote"], "file": node.get("file") or self.doc["manual"], "section": node.get("section", ""),
                 "line": line, "status": status, "reason": reason, "kind": "quote"}
 
-    def build(self, audit, cells=None, manuals=()):
+    def build(self, audit, cells=None, manuals=(), pages=None):
         fam, doc = self.fam, self.doc
+        page = None if pages is None else pages.get(doc["manual"])
         coverage = cov.family_coverage(fam, self.vectors)
         audit_rows = _audit_rows(fam, audit, self.problems, self.link)
         return {
@@ -165,6 +176,8 @@ class _FamilyView:
             "coverage": self.coverage(coverage),
             "model": cov.model_coverage(fam, cells, self.problems, self.link) if cells is not None else None,
             "provenance": prov.family_provenance(fam, set(manuals) or {doc["manual"]}, self.problems, self.link),
+            "accounting": acc.family_accounting(fam, page[1] if page else None, page[0] if page else None,
+                                                self.problems, self.link),
         }
 
     def clauses(self, coverage):

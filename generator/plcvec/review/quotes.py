@@ -52,6 +52,11 @@ def spec_quotes(fam):
                 walk(v, where + (i,))
 
     walk(fam.doc, ())
+    # The texts of the sentence accounting (plcvec.review.accounting) are quotes of the page too.
+    for i, entry in enumerate(fam.doc.get("accounting", ())):
+        for j, text in enumerate(entry["texts"]):
+            found.append(Quote(fam.name, fam.path, fam.line_of("accounting", i, "texts", j),
+                               f"accounting entry {i + 1} ({entry['as']})", fam.doc["manual"], text))
     return found
 
 

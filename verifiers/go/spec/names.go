@@ -13,7 +13,7 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "d0e233a537304be457d5c474edc7e14880e1402772e5a4de8701fbaad4309da1"
+const SpecSHA256 = "ec478424b64d48589964b1fec60def4c332dec9602bcac97e44be6352a0c1fab"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3696

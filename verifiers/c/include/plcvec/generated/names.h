@@ -8,7 +8,7 @@
 #define PLCVEC_SUITE_VERSION "0.1.0"
 #define PLCVEC_SCHEMA_VERSION "1.0.0"
 #define PLCVEC_SCHEMA_MAJOR 1
-#define PLCVEC_SPEC_SHA256 "d0e233a537304be457d5c474edc7e14880e1402772e5a4de8701fbaad4309da1"
+#define PLCVEC_SPEC_SHA256 "ec478424b64d48589964b1fec60def4c332dec9602bcac97e44be6352a0c1fab"
 #define PLCVEC_TOTAL_VECTORS 3696
 
 /* Instruction families, in the order of the manifest. */
