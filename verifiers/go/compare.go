@@ -74,9 +74,22 @@ func (e *expected) problems(steps []StepResult) []Problem {
 				continue
 			}
 		}
-		problems = append(problems, e.deviceProblems(i, got)...)
+		problems = append(problems, e.deviceProblems(i, got, steps)...)
 	}
 	return problems
+}
+
+// held is what the implementation held of device j before step k: for step 0 what the vector
+// gave it, for a later step its own report of the step before, with this step's `set` over it.
+func (e *expected) held(k, j int, steps []StepResult, prev map[string]Value) string {
+	name := e.names[j]
+	if _, set := e.sets[k][name]; k == 0 || set {
+		return show(e.before(k)[j])
+	}
+	if v, ok := prev[name]; ok {
+		return v.String()
+	}
+	return notReported
 }
 
 // sameCompared reports whether got and want hold the same value wherever compared says so.
@@ -90,8 +103,20 @@ func sameCompared(got, want []Value, compared []bool) bool {
 }
 
 // deviceProblems compares one step's image device by device, in name order.
-func (e *expected) deviceProblems(step int, got []Device) []Problem {
+func (e *expected) deviceProblems(step int, got []Device, steps []StepResult) []Problem {
 	want, before := e.state(step), e.before(step)
+	var prev map[string]Value // the implementation's report of the step before, made on demand
+	line := func(j int, actual string) Problem {
+		if step > 0 && prev == nil {
+			prev = map[string]Value{}
+			for _, d := range steps[step-1].image(e.requested) {
+				prev[d.Name] = d.Value
+			}
+		}
+		w := show(want[j])
+		return Problem{Step: step, Field: e.names[j], Expected: w, Actual: actual,
+			Suffix: suffix(e.held(step, j, steps, prev), w, actual, want[j] == before[j])}
+	}
 	reported := make(map[string]Value, len(got))
 	var problems []Problem
 	for _, d := range got {
@@ -112,9 +137,9 @@ func (e *expected) deviceProblems(step int, got []Device) []Problem {
 		switch {
 		case !ok && w == absent:
 		case !ok:
-			problems = append(problems, Problem{Step: step, Field: name, Expected: show(w), Actual: notReported, Before: showBefore(before[j])})
+			problems = append(problems, line(j, notReported))
 		case have != w:
-			problems = append(problems, Problem{Step: step, Field: name, Expected: show(w), Actual: have.String(), Before: showBefore(before[j])})
+			problems = append(problems, line(j, have.String()))
 		}
 	}
 	var outside []string

@@ -28,6 +28,8 @@ type expected struct {
 	// cpuWrites are the devices the implementation declares its CPU writes on its own account:
 	// written outside the vector, they are not stray writes.
 	cpuWrites map[string]bool
+	sets      []map[string]Value // each step's `set` (the vector's own maps)
+	vector    *Vector
 }
 
 // state is the full state expected after step i; before, the state the step started from.
@@ -41,7 +43,7 @@ func (e *expected) before(i int) []Value {
 	return e.befores[i*n : (i+1)*n : (i+1)*n]
 }
 
-func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request, cpuWrites map[string]bool) (*expected, error) {
+func expectationOf(a *arena, v *Vector, choices map[string]Choice, devices []string, cpuWrites map[string]bool) (*expected, error) {
 	touched := v.Outcome.Interpretations
 	applied := make(map[string]string, len(touched))
 	isDefault := true
@@ -99,11 +101,11 @@ func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request,
 		scratch[s] = true
 	}
 	// The devices: the request's (sorted), then any other a step sets or expects.
-	names := make([]string, len(req.Devices))
-	index := make(map[string]int, len(req.Devices))
-	for i, d := range req.Devices {
-		names[i] = d.Name
-		index[d.Name] = i
+	names := make([]string, len(devices))
+	index := make(map[string]int, len(devices))
+	for i, d := range devices {
+		names[i] = d
+		index[d] = i
 	}
 	requested := a.names.take(len(names), a.chunk)
 	copy(requested, names)
@@ -134,7 +136,10 @@ func expectationOf(a *arena, v *Vector, choices map[string]Choice, req *Request,
 	}
 	e := a.expects.one(a.chunk)
 	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: applied, category: category,
-		requested: requested, cpuWrites: cpuWrites}
+		requested: requested, cpuWrites: cpuWrites, sets: make([]map[string]Value, len(v.Steps)), vector: v}
+	for i := range v.Steps {
+		e.sets[i] = v.Steps[i].Set
+	}
 	n, steps := len(names), len(v.Steps)
 	e.states, e.befores = a.values.take(n*steps, a.chunk), a.befores.take(n*steps, a.chunk)
 	e.results = a.results.take(steps, a.chunk)

@@ -49,6 +49,7 @@ type wire struct {
 	Status   Status    `json:"s"`
 	Problems []Problem `json:"p,omitempty"`
 	Message  string    `json:"m,omitempty"`
+	Passes   []bool    `json:"x,omitempty"` // a failed answer: whether it passes under each offer
 }
 
 // planDigest tells the parent the child built the same plan: the number of cases and a crc32 of
@@ -123,7 +124,7 @@ func childServe(plan *Plan, impl Implementation, setupErr error) {
 		if v.Status == StatusPass {
 			w.WriteString(strconv.Itoa(i))
 		} else {
-			line, _ := json.Marshal(wire{v.Status, v.Problems, v.Message})
+			line, _ := json.Marshal(wire{v.Status, v.Problems, v.Message, v.passes})
 			fmt.Fprintf(w, "%d %s", i, line)
 		}
 		w.WriteByte('\n')

@@ -2,11 +2,13 @@ package plcvec
 
 import (
 	"fmt"
+	"sort"
 	"strings"
 )
 
-// Summary is the report as a person reads it at the end of a run: each failing vector with its
-// diff, then what was run against what, and the totals.
+// Summary is the run's text as every plcvec runner prints it (verifiers/parity/TEXT.md): the
+// failure block of each failing vector, the roll-up by reading, the skips by reason, then what
+// was run against what and the totals.
 func (r *Report) Summary() string {
 	var b strings.Builder
 	for i := range r.Verdicts {
@@ -14,22 +16,33 @@ func (r *Report) Summary() string {
 			b.WriteString(r.Verdicts[i].Text())
 		}
 	}
-	b.WriteString(r.Plan.Header())
-	b.WriteString(r.Totals())
+	b.WriteString(r.Closing())
 	return b.String()
 }
 
-// Totals is the line of counts that ends a run's report.
+// Closing is what follows the failure blocks: the roll-up by reading, the skips by reason, an
+// empty line, the header and the totals. Run logs it at the end of the test, each failure
+// having been reported by its own subtest.
+func (r *Report) Closing() string {
+	return r.RollUp() + r.Skips() + "\n" + r.Plan.Header() + r.Totals()
+}
+
+// Totals is the line of counts that ends a run's report: pass, fail and skip always, the
+// others when not 0, then the run's seconds.
 func (r *Report) Totals() string {
 	c := r.Counts()
 	var b strings.Builder
 	fmt.Fprintf(&b, "%d vectors: %d pass, %d fail", len(r.Verdicts), c[StatusPass], c[StatusFail])
-	for _, s := range []Status{StatusError, StatusSkip, StatusXFail, StatusStale, StatusNotRun} {
+	if c[StatusError] > 0 {
+		fmt.Fprintf(&b, ", %d error", c[StatusError])
+	}
+	fmt.Fprintf(&b, ", %d skip", c[StatusSkip])
+	for _, s := range []Status{StatusXFail, StatusStale, StatusNotRun} {
 		if c[s] > 0 {
 			fmt.Fprintf(&b, ", %d %s", c[s], s)
 		}
 	}
-	b.WriteString("\n")
+	fmt.Fprintf(&b, " in %.2f s\n", r.Seconds)
 	return b.String()
 }
 
@@ -50,7 +63,9 @@ func (p *Plan) Header() string {
 	text := fmt.Sprintf("plcvec: %s against %s (suite %s, schema %s, spec sha256 %s)\ninterpretations: %s\n",
 		name, p.Suite.Source, p.Suite.SuiteVersion, p.Suite.SchemaVersion, hash, p.Interpretations())
 	if len(p.Hello.CPUWrites) > 0 {
-		text += "cpu writes: " + strings.Join(p.Hello.CPUWrites, ", ") + "\n"
+		devices := append([]string(nil), p.Hello.CPUWrites...)
+		sort.Strings(devices)
+		text += "cpu_writes: " + strings.Join(devices, ", ") + "\n"
 	}
 	return text
 }

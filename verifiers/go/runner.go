@@ -3,8 +3,8 @@ package plcvec
 import (
 	"fmt"
 	"runtime/debug"
-	"sort"
 	"strings"
+	"time"
 )
 
 // Options tell a run what to verify.
@@ -46,6 +46,8 @@ type Case struct {
 	// The vector's names as a verdict gives them, beside the rest of the case: a run reads
 	// nothing else of the vector unless it fails.
 	id, family, instruction string
+	plan                    *Plan
+	offered                 []offer // the combinations the vector offers, once worked out
 }
 
 // Prepare builds the plan of a run of impl: handshake, selection, expectations.
@@ -85,9 +87,13 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 	a := runArena()
 	for i, v := range vectors {
 		c := a.cases.one(a.chunk)
-		*c = Case{Vector: v, Request: requestOf(a, v), id: v.ID, family: a.intern(v.Family), instruction: a.intern(v.Instruction)}
+		*c = Case{Vector: v, Request: requestOf(a, v), id: v.ID, family: a.intern(v.Family), instruction: a.intern(v.Instruction), plan: p}
 		if hello.supports(v.Instruction) {
-			if c.expect, err = expectationOf(a, v, choices, c.Request, cpuWrites); err != nil {
+			names := make([]string, len(c.Request.Devices))
+			for i, d := range c.Request.Devices {
+				names[i] = d.Name
+			}
+			if c.expect, err = expectationOf(a, v, choices, names, cpuWrites); err != nil {
 				return nil, fmt.Errorf("%s: %w", suite.Source, err)
 			}
 		}
@@ -110,7 +116,7 @@ func (c *Case) Judge(impl Implementation) Verdict {
 
 // judge writes the verdict in place: a run fills its report's verdicts without copying each.
 func (c *Case) judge(impl Implementation, verdict *Verdict) {
-	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector = c.id, c.family, c.instruction, c.Vector
+	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector, verdict.c = c.id, c.family, c.instruction, c.Vector, c
 	if c.expect == nil {
 		verdict.Status, verdict.Message = StatusSkip, "the implementation does not run "+c.instruction
 		return
@@ -133,7 +139,8 @@ func (c *Case) judge(impl Implementation, verdict *Verdict) {
 		return
 	}
 	if verdict.Problems = c.expect.compare(steps); verdict.Problems != nil {
-		verdict.Status = StatusFail
+		verdict.Status, verdict.failed = StatusFail, true
+		verdict.passes = c.passesUnder(steps)
 	} else {
 		verdict.Status = StatusPass
 	}
@@ -165,6 +172,7 @@ func trimStack(stack []byte) string {
 type Report struct {
 	Plan     *Plan
 	Verdicts []Verdict
+	Seconds  float64 // the run's wall-clock time
 }
 
 // Verify runs the selected vectors through impl outside `go test` (a command, a benchmark, a
@@ -179,7 +187,9 @@ func Verify(impl Implementation, opts Options) (*Report, error) {
 
 // Verify judges every case of the plan with impl, then applies the expectations file.
 func (p *Plan) Verify(impl Implementation) *Report {
+	start := time.Now()
 	r := &Report{Plan: p, Verdicts: make([]Verdict, len(p.Cases))}
+	defer func() { r.Seconds = time.Since(start).Seconds() }()
 	for i, c := range p.Cases {
 		c.judge(impl, &r.Verdicts[i])
 	}
@@ -219,21 +229,31 @@ func (r *Report) OK() bool {
 	return len(r.Failed()) == 0 && c[StatusPass]+c[StatusXFail] > 0
 }
 
-// Interpretations is a line naming the alternative followed for every interpretation, declared
-// or default: a result means nothing without it.
+// Interpretations is a line naming the alternative followed for every interpretation of the
+// families run, declared or default: a result means nothing without it.
 func (p *Plan) Interpretations() string {
-	ids := make([]string, 0, len(p.Choices))
-	for id := range p.Choices {
-		ids = append(ids, id)
+	families := map[string]bool{}
+	for _, c := range p.Cases {
+		families[c.family] = true
 	}
-	sort.Strings(ids)
-	parts := make([]string, len(ids))
-	for i, id := range ids {
-		c := p.Choices[id]
-		parts[i] = id + "=" + c.Alternative
-		if !c.Declared {
-			parts[i] += " (default)"
+	var parts []string
+	for _, i := range p.Suite.Interpretations() {
+		run := false
+		for _, f := range i.Families {
+			run = run || families[f]
 		}
+		if !run {
+			continue
+		}
+		c := p.Choices[i.ID]
+		how := " (default)"
+		if c.Declared {
+			how = " (declared)"
+		}
+		parts = append(parts, i.ID+"="+c.Alternative+how)
+	}
+	if len(parts) == 0 {
+		return "(none)"
 	}
 	return strings.Join(parts, ", ")
 }

@@ -49,7 +49,7 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 	if err != nil {
 		t.Fatalf("plcvec: %v", err)
 	}
-	t.Log(strings.TrimSuffix(plan.Header(), "\n"))
+	start := time.Now()
 	report := &Report{Plan: plan, Verdicts: make([]Verdict, 0, len(plan.Cases))}
 
 	filter, err := testFilter()
@@ -141,7 +141,9 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 			t.Logf("plcvec: %d known failures written to %s", n, env.write)
 		}
 	}
-	t.Log(strings.TrimSuffix(report.Totals(), "\n"))
+	report.Seconds = time.Since(start).Seconds()
+	// Each failure was reported by its own subtest; the roll-up, the skips and the totals close.
+	t.Log("\n" + strings.TrimSuffix(report.Closing(), "\n"))
 	return report
 }
 
@@ -164,7 +166,7 @@ func prepareRun(impl Implementation, opts Options) (*Plan, environment, error) {
 // verdictOf is the verdict of case c from what the judging said.
 func verdictOf(c *Case, w wire) Verdict {
 	v := Verdict{ID: c.id, Family: c.family, Instruction: c.instruction, Vector: c.Vector,
-		Status: w.Status, Problems: w.Problems, Message: w.Message}
+		Status: w.Status, Problems: w.Problems, Message: w.Message, c: c, failed: w.Status == StatusFail, passes: w.Passes}
 	if c.expect != nil {
 		v.Choices = c.expect.choices
 	}
@@ -317,7 +319,7 @@ func (s *inProcess) verdict(i int) (wire, bool) {
 	var v Verdict
 	s.plan.Cases[i].judge(s.impl, &v)
 	s.running.Store(0)
-	return wire{v.Status, v.Problems, v.Message}, false
+	return wire{v.Status, v.Problems, v.Message, v.passes}, false
 }
 
 func (s *inProcess) close() { close(s.stop) }

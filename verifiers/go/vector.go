@@ -120,6 +120,46 @@ func (in *Inputs) prepare(a *arena) {
 type VectorStep struct {
 	Inputs
 	Expect *Expect `json:"expect"`
+	given  uint8   // which of the inputs the step gives (a failure shows those)
+}
+
+// The inputs a step may give, in the order a failure shows them.
+const (
+	givesRLOIn uint8 = 1 << iota
+	givesEN
+	givesInput
+	givesElapsed
+)
+
+// UnmarshalJSON reads a step, refusing keys the schema does not have, and notes which inputs
+// it gives.
+func (s *VectorStep) UnmarshalJSON(b []byte) error {
+	var raw struct {
+		Set       map[string]Value `json:"set"`
+		RLOIn     *bool            `json:"rlo_in"`
+		Clock     map[string]int   `json:"clock"`
+		EN        *bool            `json:"en"`
+		Input     *bool            `json:"input"`
+		ElapsedMS *int64           `json:"elapsed_ms"`
+		Expect    *Expect          `json:"expect"`
+	}
+	if err := decodeStrict(b, &raw); err != nil {
+		return err
+	}
+	*s = VectorStep{Inputs: Inputs{Set: raw.Set, Clock: raw.Clock}, Expect: raw.Expect}
+	if raw.RLOIn != nil {
+		s.RLOIn, s.given = *raw.RLOIn, s.given|givesRLOIn
+	}
+	if raw.EN != nil {
+		s.EN, s.given = *raw.EN, s.given|givesEN
+	}
+	if raw.Input != nil {
+		s.Input, s.given = *raw.Input, s.given|givesInput
+	}
+	if raw.ElapsedMS != nil {
+		s.ElapsedMS, s.given = *raw.ElapsedMS, s.given|givesElapsed
+	}
+	return nil
 }
 
 // Expect is what one step expects: the contact result (LD/AND/OR forms) and the devices whose

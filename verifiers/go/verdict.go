@@ -2,8 +2,6 @@ package plcvec
 
 import (
 	"fmt"
-	"sort"
-	"strings"
 )
 
 // Status is a vector's verdict. Only pass, skip and xfail let a run pass.
@@ -36,6 +34,9 @@ type Verdict struct {
 	Message     string            // for Error, Skip, XFail, Stale: why
 	Choices     map[string]string // interpretation -> alternative the vector was judged by (those it depends on)
 	Vector      *Vector           // nil for an expectations-file id the suite does not have
+	c           *Case             // the case judged, for the text (nil for a stale id)
+	failed      bool              // the answer differed (kept when a known failure makes it xfail)
+	passes      []bool            // a failed answer: whether it passes under each offer of the vector
 }
 
 // Problem is one field that differs: where, what the vector expects, what was reported.
@@ -44,7 +45,9 @@ type Problem struct {
 	Field    string // "result", a device name, or "steps"
 	Expected string // as the vector files write values: 13, true; or <not in the vector>
 	Actual   string // likewise; <not reported> when the implementation left it out
-	Before   string // a device's value before the step ("" when unknown or not a device)
+	// Suffix: for a device the vector lists, the value the implementation held before the step
+	// and whether the step had to leave it unchanged (verifiers/parity/TEXT.md, "A field line").
+	Suffix string
 }
 
 const (
@@ -58,16 +61,20 @@ func (p Problem) String() string {
 	if p.Step >= 0 {
 		where = fmt.Sprintf("step %d ", p.Step)
 	}
-	text := fmt.Sprintf("%s%s: expected %s, got %s", where, p.Field, p.Expected, p.Actual)
+	return fmt.Sprintf("%s%s: expected %s, got %s%s", where, p.Field, p.Expected, p.Actual, p.Suffix)
+}
+
+// suffix is a listed device's suffix: held is the value the implementation held before the
+// step, keep whether the vector's value after the step is its value before it.
+func suffix(held, want, got string, keep bool) string {
+	wrote := got != notReported && got != held
 	switch {
-	case p.Expected == notListed:
-		text += " (a write outside the vector: the instruction must not write it)"
-	case p.Before != "" && p.Before == p.Expected:
-		text += " (the step must leave it unchanged)"
-	case p.Before != "":
-		text += fmt.Sprintf(" (before the step: %s)", p.Before)
+	case keep && wrote && held == want:
+		return " (the step must leave it unchanged)"
+	case keep && wrote:
+		return " (before the step: " + held + "; the step must leave it unchanged)"
 	}
-	return text
+	return " (before the step: " + held + ")"
 }
 
 func show(v Value) string {
@@ -77,45 +84,5 @@ func show(v Value) string {
 	return v.String()
 }
 
-func showBefore(v Value) string {
-	if v == absent {
-		return ""
-	}
-	return v.String()
-}
-
 // maxProblems is the number of field lines shown per failing vector.
 const maxProblems = 12
-
-// Text is the verdict as a person reads it: the id, what the vector is about, the alternatives
-// it was judged by, the field-level diff (step, device, expected, actual) and the spec clauses
-// it exercises.
-func (v *Verdict) Text() string {
-	var b strings.Builder
-	fmt.Fprintf(&b, "%s %s\n", strings.ToUpper(string(v.Status)), v.ID)
-	if v.Vector != nil && v.Vector.Description != "" {
-		fmt.Fprintf(&b, "    %s: %s\n", v.Instruction, v.Vector.Description)
-	}
-	if len(v.Choices) > 0 {
-		keys := make([]string, 0, len(v.Choices))
-		for id, alt := range v.Choices {
-			keys = append(keys, id+"="+alt)
-		}
-		sort.Strings(keys)
-		fmt.Fprintf(&b, "    judged by: %s\n", strings.Join(keys, ", "))
-	}
-	for i, p := range v.Problems {
-		if i == maxProblems {
-			fmt.Fprintf(&b, "    ... and %d more differences\n", len(v.Problems)-maxProblems)
-			break
-		}
-		fmt.Fprintf(&b, "    %s\n", p)
-	}
-	if v.Message != "" {
-		fmt.Fprintf(&b, "    %s\n", strings.ReplaceAll(v.Message, "\n", "\n    "))
-	}
-	if v.Vector != nil && len(v.Vector.Clauses) > 0 {
-		fmt.Fprintf(&b, "    spec clauses: %s\n", strings.Join(v.Vector.Clauses, ", "))
-	}
-	return b.String()
-}
