@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The Java verifier (verifiers/java/): build every module with warnings as errors, run the JUnit
 # tests (the library's own, the reference on every vector under the defaults and under every
-# combination of alternatives, the mutants each rejected by name, and the README's example project
-# examples/minimal), then serve the reference over the stdio protocol to the Python gate and to a
-# seeded differential fuzz run, and check that the gate rejects a mutant. From the repository root.
+# combination of alternatives, the mutants each rejected by name), stage a deployment and check it
+# as Maven Central would, build the README's example from the README's blocks as an outside
+# project, serve the reference over the stdio protocol to the Python gate and to a seeded
+# differential fuzz run, run the table of faults, and check that the gate rejects a mutant. From
+# the repository root.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 
@@ -15,10 +17,26 @@ fi
 started=$SECONDS
 # -B -q: no progress bars or download logs (Debian's Maven still prints bare colour resets: drop
 # them). Dependencies and the pinned plugins come from Maven Central the first time, from ~/.m2
-# after that (the build then also runs with -o).
-(cd verifiers/java && mvn -B -q -Dstyle.color=never verify) 2>&1 | sed -e 's/\x1b\[0m//g' -e '/^$/d'
-echo "java: mvn verify (build, lint, $(cat verifiers/java/*/target/surefire-reports/*.xml \
-    verifiers/java/examples/*/target/surefire-reports/*.xml | grep -c '<testcase') JUnit tests) in $((SECONDS - started)) s"
+# after that (the build then also runs with -o). `install`: the README's example below is an
+# outside project, which finds plcvec-verify in the local repository as a user's project would.
+(cd verifiers/java && mvn -B -q -Dstyle.color=never install) 2>&1 | sed -e 's/\x1b\[0m//g' -e '/^$/d'
+echo "java: mvn install (build, lint, javadoc, $(cat verifiers/java/*/target/surefire-reports/*.xml \
+    | grep -c '<testcase') JUnit tests) in $((SECONDS - started)) s"
+
+# Ready to publish: a deployment staged to a folder (no network but Maven Central, no signing key)
+# and checked as Central checks one; the mutants and the hostile implementations are not in it.
+stage="$(mktemp -d)"
+(cd verifiers/java && mvn -B -q -Dstyle.color=never deploy -DskipTests \
+    -DaltDeploymentRepository="staging::file://$stage") 2>&1 | sed -e 's/\x1b\[0m//g' -e '/^$/d'
+verifiers/java/central-check "$stage"
+rm -rf "$stage"
+
+# Every fenced block of the README is marked; the runnable ones are built and run as an outside
+# project under Maven's default plugins plus exactly the README's blocks.
+python3 .ci/readme_snippets.py check verifiers/java/README.md verifiers/java/mutants/MUTANTS.md
+example="$(mktemp -d)"
+verifiers/java/readme-example "$example" | grep -v '^\[INFO\]'
+rm -rf "$example"
 
 python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
 

@@ -82,7 +82,7 @@ public final class Alternatives {
     public enum Cp1eAllMasked implements Alternative {
         /** C masking all six fields (bits 00 to 05 all 1) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. (the default) */
         ERROR("error", "C masking all six fields (bits 00 to 05 all 1) is an error: P_ER turns on and the instruction creates an OFF execution condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."),
-        /** Nothing is compared, so the data are equal: =, <=, >= on. */
+        /** Nothing is compared, so the data are equal: =, &lt;=, &gt;= on. */
         EQUAL("equal", "Nothing is compared, so the data are equal: =, <=, >= on."),
         /** Nothing is compared, so no comparison condition holds: the execution condition is OFF, the six flags are left as they were, and it is no error (P_ER is written off like any execution without error). */
         NOT_COMPARED("not-compared", "Nothing is compared, so no comparison condition holds: the execution condition is OFF, the six flags are left as they were, and it is no error (P_ER is written off like any execution without error).");
@@ -266,7 +266,7 @@ public final class Alternatives {
     public enum HourOutputOff implements Alternative {
         /** Nothing: once on, D2 stays on until the program resets it or the preset becomes invalid. (the default) */
         LATCHED("latched", "Nothing: once on, D2 stays on until the program resets it or the preset becomes invalid."),
-        /** D2 is recomputed as D1 >= S1 at every execution with the input on, except that it stays on across a wrap. */
+        /** D2 is recomputed as D1 &gt;= S1 at every execution with the input on, except that it stays on across a wrap. */
         RECOMPARED("recompared", "D2 is recomputed as D1 >= S1 at every execution with the input on, except that it stays on across a wrap.");
 
         private final String id;
@@ -338,7 +338,7 @@ public final class Alternatives {
 
     /** HOUR-PRESET-ZERO: Does a preset of 0:00:00 turn D2 on? */
     public enum HourPresetZero implements Alternative {
-        /** D1 >= 0:00:00 always holds, so D2 turns on at the first execution with the input on. (the default) */
+        /** D1 &gt;= 0:00:00 always holds, so D2 turns on at the first execution with the input on. (the default) */
         IMMEDIATE("immediate", "D1 >= 0:00:00 always holds, so D2 turns on at the first execution with the input on."),
         /** A zero preset disables the comparison; D2 never turns on. */
         NEVER("never", "A zero preset disables the comparison; D2 never turns on.");

@@ -5,7 +5,7 @@ import java.util.List;
 
 /** The instruction families of the suite, one vector file each. */
 public enum Family {
-    /** Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT) */
+    /** Omron SYSMAC CP1E time comparison (=DT, &lt;&gt;DT, &lt;DT, &lt;=DT, &gt;DT, &gt;=DT) */
     CP1E_TIME_COMPARE("cp1e-time-compare", "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", "masked_compare"),
     /** IDEC FC6A MICROSmart hour meter (HOUR) */
     FC6A_HOUR_METER("fc6a-hour-meter", "IDEC FC6A MICROSmart hour meter (HOUR)", "hour_meter"),

@@ -7,127 +7,205 @@ import java.util.List;
 
 /** Every instruction of every family, named as the manual writes it ({@link #mnemonic()}). */
 public enum Instruction {
-    /** AND <=DT (cp1e-time-compare) */
-    AND_LE_DT("AND <=DT", Family.CP1E_TIME_COMPARE),
-    /** AND <>DT (cp1e-time-compare) */
-    AND_NE_DT("AND <>DT", Family.CP1E_TIME_COMPARE),
-    /** AND <DT (cp1e-time-compare) */
-    AND_LT_DT("AND <DT", Family.CP1E_TIME_COMPARE),
+    /** AND &lt;=DT (cp1e-time-compare) */
+    AND_LE_DT("AND <=DT", Family.CP1E_TIME_COMPARE, "AND <=DT", Form.AND, Condition.LE, Execution.EVERY_SCAN),
+    /** AND &lt;&gt;DT (cp1e-time-compare) */
+    AND_NE_DT("AND <>DT", Family.CP1E_TIME_COMPARE, "AND <>DT", Form.AND, Condition.NE, Execution.EVERY_SCAN),
+    /** AND &lt;DT (cp1e-time-compare) */
+    AND_LT_DT("AND <DT", Family.CP1E_TIME_COMPARE, "AND <DT", Form.AND, Condition.LT, Execution.EVERY_SCAN),
     /** AND =DT (cp1e-time-compare) */
-    AND_EQ_DT("AND =DT", Family.CP1E_TIME_COMPARE),
-    /** AND >=DT (cp1e-time-compare) */
-    AND_GE_DT("AND >=DT", Family.CP1E_TIME_COMPARE),
-    /** AND >DT (cp1e-time-compare) */
-    AND_GT_DT("AND >DT", Family.CP1E_TIME_COMPARE),
-    /** LD <=DT (cp1e-time-compare) */
-    LD_LE_DT("LD <=DT", Family.CP1E_TIME_COMPARE),
-    /** LD <>DT (cp1e-time-compare) */
-    LD_NE_DT("LD <>DT", Family.CP1E_TIME_COMPARE),
-    /** LD <DT (cp1e-time-compare) */
-    LD_LT_DT("LD <DT", Family.CP1E_TIME_COMPARE),
+    AND_EQ_DT("AND =DT", Family.CP1E_TIME_COMPARE, "AND =DT", Form.AND, Condition.EQ, Execution.EVERY_SCAN),
+    /** AND &gt;=DT (cp1e-time-compare) */
+    AND_GE_DT("AND >=DT", Family.CP1E_TIME_COMPARE, "AND >=DT", Form.AND, Condition.GE, Execution.EVERY_SCAN),
+    /** AND &gt;DT (cp1e-time-compare) */
+    AND_GT_DT("AND >DT", Family.CP1E_TIME_COMPARE, "AND >DT", Form.AND, Condition.GT, Execution.EVERY_SCAN),
+    /** LD &lt;=DT (cp1e-time-compare) */
+    LD_LE_DT("LD <=DT", Family.CP1E_TIME_COMPARE, "LD <=DT", Form.LD, Condition.LE, Execution.EVERY_SCAN),
+    /** LD &lt;&gt;DT (cp1e-time-compare) */
+    LD_NE_DT("LD <>DT", Family.CP1E_TIME_COMPARE, "LD <>DT", Form.LD, Condition.NE, Execution.EVERY_SCAN),
+    /** LD &lt;DT (cp1e-time-compare) */
+    LD_LT_DT("LD <DT", Family.CP1E_TIME_COMPARE, "LD <DT", Form.LD, Condition.LT, Execution.EVERY_SCAN),
     /** LD =DT (cp1e-time-compare) */
-    LD_EQ_DT("LD =DT", Family.CP1E_TIME_COMPARE),
-    /** LD >=DT (cp1e-time-compare) */
-    LD_GE_DT("LD >=DT", Family.CP1E_TIME_COMPARE),
-    /** LD >DT (cp1e-time-compare) */
-    LD_GT_DT("LD >DT", Family.CP1E_TIME_COMPARE),
-    /** OR <=DT (cp1e-time-compare) */
-    OR_LE_DT("OR <=DT", Family.CP1E_TIME_COMPARE),
-    /** OR <>DT (cp1e-time-compare) */
-    OR_NE_DT("OR <>DT", Family.CP1E_TIME_COMPARE),
-    /** OR <DT (cp1e-time-compare) */
-    OR_LT_DT("OR <DT", Family.CP1E_TIME_COMPARE),
+    LD_EQ_DT("LD =DT", Family.CP1E_TIME_COMPARE, "LD =DT", Form.LD, Condition.EQ, Execution.EVERY_SCAN),
+    /** LD &gt;=DT (cp1e-time-compare) */
+    LD_GE_DT("LD >=DT", Family.CP1E_TIME_COMPARE, "LD >=DT", Form.LD, Condition.GE, Execution.EVERY_SCAN),
+    /** LD &gt;DT (cp1e-time-compare) */
+    LD_GT_DT("LD >DT", Family.CP1E_TIME_COMPARE, "LD >DT", Form.LD, Condition.GT, Execution.EVERY_SCAN),
+    /** OR &lt;=DT (cp1e-time-compare) */
+    OR_LE_DT("OR <=DT", Family.CP1E_TIME_COMPARE, "OR <=DT", Form.OR, Condition.LE, Execution.EVERY_SCAN),
+    /** OR &lt;&gt;DT (cp1e-time-compare) */
+    OR_NE_DT("OR <>DT", Family.CP1E_TIME_COMPARE, "OR <>DT", Form.OR, Condition.NE, Execution.EVERY_SCAN),
+    /** OR &lt;DT (cp1e-time-compare) */
+    OR_LT_DT("OR <DT", Family.CP1E_TIME_COMPARE, "OR <DT", Form.OR, Condition.LT, Execution.EVERY_SCAN),
     /** OR =DT (cp1e-time-compare) */
-    OR_EQ_DT("OR =DT", Family.CP1E_TIME_COMPARE),
-    /** OR >=DT (cp1e-time-compare) */
-    OR_GE_DT("OR >=DT", Family.CP1E_TIME_COMPARE),
-    /** OR >DT (cp1e-time-compare) */
-    OR_GT_DT("OR >DT", Family.CP1E_TIME_COMPARE),
+    OR_EQ_DT("OR =DT", Family.CP1E_TIME_COMPARE, "OR =DT", Form.OR, Condition.EQ, Execution.EVERY_SCAN),
+    /** OR &gt;=DT (cp1e-time-compare) */
+    OR_GE_DT("OR >=DT", Family.CP1E_TIME_COMPARE, "OR >=DT", Form.OR, Condition.GE, Execution.EVERY_SCAN),
+    /** OR &gt;DT (cp1e-time-compare) */
+    OR_GT_DT("OR >DT", Family.CP1E_TIME_COMPARE, "OR >DT", Form.OR, Condition.GT, Execution.EVERY_SCAN),
     /** HOUR (fc6a-hour-meter) */
-    HOUR("HOUR", Family.FC6A_HOUR_METER),
-    /** ANDDT< (fx5-date-compare) */
-    ANDDT_LT("ANDDT<", Family.FX5_DATE_COMPARE),
-    /** ANDDT<= (fx5-date-compare) */
-    ANDDT_LE("ANDDT<=", Family.FX5_DATE_COMPARE),
-    /** ANDDT<> (fx5-date-compare) */
-    ANDDT_NE("ANDDT<>", Family.FX5_DATE_COMPARE),
+    HOUR("HOUR", Family.FC6A_HOUR_METER, "", null, null, Execution.EVERY_SCAN),
+    /** ANDDT&lt; (fx5-date-compare) */
+    ANDDT_LT("ANDDT<", Family.FX5_DATE_COMPARE, "ANDDT_LT", Form.AND, Condition.LT, Execution.EVERY_SCAN),
+    /** ANDDT&lt;= (fx5-date-compare) */
+    ANDDT_LE("ANDDT<=", Family.FX5_DATE_COMPARE, "ANDDT_LE", Form.AND, Condition.LE, Execution.EVERY_SCAN),
+    /** ANDDT&lt;&gt; (fx5-date-compare) */
+    ANDDT_NE("ANDDT<>", Family.FX5_DATE_COMPARE, "ANDDT_NE", Form.AND, Condition.NE, Execution.EVERY_SCAN),
     /** ANDDT= (fx5-date-compare) */
-    ANDDT_EQ("ANDDT=", Family.FX5_DATE_COMPARE),
-    /** ANDDT> (fx5-date-compare) */
-    ANDDT_GT("ANDDT>", Family.FX5_DATE_COMPARE),
-    /** ANDDT>= (fx5-date-compare) */
-    ANDDT_GE("ANDDT>=", Family.FX5_DATE_COMPARE),
-    /** LDDT< (fx5-date-compare) */
-    LDDT_LT("LDDT<", Family.FX5_DATE_COMPARE),
-    /** LDDT<= (fx5-date-compare) */
-    LDDT_LE("LDDT<=", Family.FX5_DATE_COMPARE),
-    /** LDDT<> (fx5-date-compare) */
-    LDDT_NE("LDDT<>", Family.FX5_DATE_COMPARE),
+    ANDDT_EQ("ANDDT=", Family.FX5_DATE_COMPARE, "ANDDT_EQ", Form.AND, Condition.EQ, Execution.EVERY_SCAN),
+    /** ANDDT&gt; (fx5-date-compare) */
+    ANDDT_GT("ANDDT>", Family.FX5_DATE_COMPARE, "ANDDT_GT", Form.AND, Condition.GT, Execution.EVERY_SCAN),
+    /** ANDDT&gt;= (fx5-date-compare) */
+    ANDDT_GE("ANDDT>=", Family.FX5_DATE_COMPARE, "ANDDT_GE", Form.AND, Condition.GE, Execution.EVERY_SCAN),
+    /** LDDT&lt; (fx5-date-compare) */
+    LDDT_LT("LDDT<", Family.FX5_DATE_COMPARE, "LDDT_LT", Form.LD, Condition.LT, Execution.EVERY_SCAN),
+    /** LDDT&lt;= (fx5-date-compare) */
+    LDDT_LE("LDDT<=", Family.FX5_DATE_COMPARE, "LDDT_LE", Form.LD, Condition.LE, Execution.EVERY_SCAN),
+    /** LDDT&lt;&gt; (fx5-date-compare) */
+    LDDT_NE("LDDT<>", Family.FX5_DATE_COMPARE, "LDDT_NE", Form.LD, Condition.NE, Execution.EVERY_SCAN),
     /** LDDT= (fx5-date-compare) */
-    LDDT_EQ("LDDT=", Family.FX5_DATE_COMPARE),
-    /** LDDT> (fx5-date-compare) */
-    LDDT_GT("LDDT>", Family.FX5_DATE_COMPARE),
-    /** LDDT>= (fx5-date-compare) */
-    LDDT_GE("LDDT>=", Family.FX5_DATE_COMPARE),
-    /** ORDT< (fx5-date-compare) */
-    ORDT_LT("ORDT<", Family.FX5_DATE_COMPARE),
-    /** ORDT<= (fx5-date-compare) */
-    ORDT_LE("ORDT<=", Family.FX5_DATE_COMPARE),
-    /** ORDT<> (fx5-date-compare) */
-    ORDT_NE("ORDT<>", Family.FX5_DATE_COMPARE),
+    LDDT_EQ("LDDT=", Family.FX5_DATE_COMPARE, "LDDT_EQ", Form.LD, Condition.EQ, Execution.EVERY_SCAN),
+    /** LDDT&gt; (fx5-date-compare) */
+    LDDT_GT("LDDT>", Family.FX5_DATE_COMPARE, "LDDT_GT", Form.LD, Condition.GT, Execution.EVERY_SCAN),
+    /** LDDT&gt;= (fx5-date-compare) */
+    LDDT_GE("LDDT>=", Family.FX5_DATE_COMPARE, "LDDT_GE", Form.LD, Condition.GE, Execution.EVERY_SCAN),
+    /** ORDT&lt; (fx5-date-compare) */
+    ORDT_LT("ORDT<", Family.FX5_DATE_COMPARE, "ORDT_LT", Form.OR, Condition.LT, Execution.EVERY_SCAN),
+    /** ORDT&lt;= (fx5-date-compare) */
+    ORDT_LE("ORDT<=", Family.FX5_DATE_COMPARE, "ORDT_LE", Form.OR, Condition.LE, Execution.EVERY_SCAN),
+    /** ORDT&lt;&gt; (fx5-date-compare) */
+    ORDT_NE("ORDT<>", Family.FX5_DATE_COMPARE, "ORDT_NE", Form.OR, Condition.NE, Execution.EVERY_SCAN),
     /** ORDT= (fx5-date-compare) */
-    ORDT_EQ("ORDT=", Family.FX5_DATE_COMPARE),
-    /** ORDT> (fx5-date-compare) */
-    ORDT_GT("ORDT>", Family.FX5_DATE_COMPARE),
-    /** ORDT>= (fx5-date-compare) */
-    ORDT_GE("ORDT>=", Family.FX5_DATE_COMPARE),
+    ORDT_EQ("ORDT=", Family.FX5_DATE_COMPARE, "ORDT_EQ", Form.OR, Condition.EQ, Execution.EVERY_SCAN),
+    /** ORDT&gt; (fx5-date-compare) */
+    ORDT_GT("ORDT>", Family.FX5_DATE_COMPARE, "ORDT_GT", Form.OR, Condition.GT, Execution.EVERY_SCAN),
+    /** ORDT&gt;= (fx5-date-compare) */
+    ORDT_GE("ORDT>=", Family.FX5_DATE_COMPARE, "ORDT_GE", Form.OR, Condition.GE, Execution.EVERY_SCAN),
     /** TADD (fx5-time-add) */
-    TADD("TADD", Family.FX5_TIME_ADD),
+    TADD("TADD", Family.FX5_TIME_ADD, "TADD", null, null, Execution.EVERY_SCAN),
     /** TADDP (fx5-time-add) */
-    TADDP("TADDP", Family.FX5_TIME_ADD),
-    /** ANDTM< (fx5-time-compare) */
-    ANDTM_LT("ANDTM<", Family.FX5_TIME_COMPARE),
-    /** ANDTM<= (fx5-time-compare) */
-    ANDTM_LE("ANDTM<=", Family.FX5_TIME_COMPARE),
-    /** ANDTM<> (fx5-time-compare) */
-    ANDTM_NE("ANDTM<>", Family.FX5_TIME_COMPARE),
+    TADDP("TADDP", Family.FX5_TIME_ADD, "TADDP", null, null, Execution.RISING_EDGE),
+    /** ANDTM&lt; (fx5-time-compare) */
+    ANDTM_LT("ANDTM<", Family.FX5_TIME_COMPARE, "ANDTM_LT", Form.AND, Condition.LT, Execution.EVERY_SCAN),
+    /** ANDTM&lt;= (fx5-time-compare) */
+    ANDTM_LE("ANDTM<=", Family.FX5_TIME_COMPARE, "ANDTM_LE", Form.AND, Condition.LE, Execution.EVERY_SCAN),
+    /** ANDTM&lt;&gt; (fx5-time-compare) */
+    ANDTM_NE("ANDTM<>", Family.FX5_TIME_COMPARE, "ANDTM_NE", Form.AND, Condition.NE, Execution.EVERY_SCAN),
     /** ANDTM= (fx5-time-compare) */
-    ANDTM_EQ("ANDTM=", Family.FX5_TIME_COMPARE),
-    /** ANDTM> (fx5-time-compare) */
-    ANDTM_GT("ANDTM>", Family.FX5_TIME_COMPARE),
-    /** ANDTM>= (fx5-time-compare) */
-    ANDTM_GE("ANDTM>=", Family.FX5_TIME_COMPARE),
-    /** LDTM< (fx5-time-compare) */
-    LDTM_LT("LDTM<", Family.FX5_TIME_COMPARE),
-    /** LDTM<= (fx5-time-compare) */
-    LDTM_LE("LDTM<=", Family.FX5_TIME_COMPARE),
-    /** LDTM<> (fx5-time-compare) */
-    LDTM_NE("LDTM<>", Family.FX5_TIME_COMPARE),
+    ANDTM_EQ("ANDTM=", Family.FX5_TIME_COMPARE, "ANDTM_EQ", Form.AND, Condition.EQ, Execution.EVERY_SCAN),
+    /** ANDTM&gt; (fx5-time-compare) */
+    ANDTM_GT("ANDTM>", Family.FX5_TIME_COMPARE, "ANDTM_GT", Form.AND, Condition.GT, Execution.EVERY_SCAN),
+    /** ANDTM&gt;= (fx5-time-compare) */
+    ANDTM_GE("ANDTM>=", Family.FX5_TIME_COMPARE, "ANDTM_GE", Form.AND, Condition.GE, Execution.EVERY_SCAN),
+    /** LDTM&lt; (fx5-time-compare) */
+    LDTM_LT("LDTM<", Family.FX5_TIME_COMPARE, "LDTM_LT", Form.LD, Condition.LT, Execution.EVERY_SCAN),
+    /** LDTM&lt;= (fx5-time-compare) */
+    LDTM_LE("LDTM<=", Family.FX5_TIME_COMPARE, "LDTM_LE", Form.LD, Condition.LE, Execution.EVERY_SCAN),
+    /** LDTM&lt;&gt; (fx5-time-compare) */
+    LDTM_NE("LDTM<>", Family.FX5_TIME_COMPARE, "LDTM_NE", Form.LD, Condition.NE, Execution.EVERY_SCAN),
     /** LDTM= (fx5-time-compare) */
-    LDTM_EQ("LDTM=", Family.FX5_TIME_COMPARE),
-    /** LDTM> (fx5-time-compare) */
-    LDTM_GT("LDTM>", Family.FX5_TIME_COMPARE),
-    /** LDTM>= (fx5-time-compare) */
-    LDTM_GE("LDTM>=", Family.FX5_TIME_COMPARE),
-    /** ORTM< (fx5-time-compare) */
-    ORTM_LT("ORTM<", Family.FX5_TIME_COMPARE),
-    /** ORTM<= (fx5-time-compare) */
-    ORTM_LE("ORTM<=", Family.FX5_TIME_COMPARE),
-    /** ORTM<> (fx5-time-compare) */
-    ORTM_NE("ORTM<>", Family.FX5_TIME_COMPARE),
+    LDTM_EQ("LDTM=", Family.FX5_TIME_COMPARE, "LDTM_EQ", Form.LD, Condition.EQ, Execution.EVERY_SCAN),
+    /** LDTM&gt; (fx5-time-compare) */
+    LDTM_GT("LDTM>", Family.FX5_TIME_COMPARE, "LDTM_GT", Form.LD, Condition.GT, Execution.EVERY_SCAN),
+    /** LDTM&gt;= (fx5-time-compare) */
+    LDTM_GE("LDTM>=", Family.FX5_TIME_COMPARE, "LDTM_GE", Form.LD, Condition.GE, Execution.EVERY_SCAN),
+    /** ORTM&lt; (fx5-time-compare) */
+    ORTM_LT("ORTM<", Family.FX5_TIME_COMPARE, "ORTM_LT", Form.OR, Condition.LT, Execution.EVERY_SCAN),
+    /** ORTM&lt;= (fx5-time-compare) */
+    ORTM_LE("ORTM<=", Family.FX5_TIME_COMPARE, "ORTM_LE", Form.OR, Condition.LE, Execution.EVERY_SCAN),
+    /** ORTM&lt;&gt; (fx5-time-compare) */
+    ORTM_NE("ORTM<>", Family.FX5_TIME_COMPARE, "ORTM_NE", Form.OR, Condition.NE, Execution.EVERY_SCAN),
     /** ORTM= (fx5-time-compare) */
-    ORTM_EQ("ORTM=", Family.FX5_TIME_COMPARE),
-    /** ORTM> (fx5-time-compare) */
-    ORTM_GT("ORTM>", Family.FX5_TIME_COMPARE),
-    /** ORTM>= (fx5-time-compare) */
-    ORTM_GE("ORTM>=", Family.FX5_TIME_COMPARE);
+    ORTM_EQ("ORTM=", Family.FX5_TIME_COMPARE, "ORTM_EQ", Form.OR, Condition.EQ, Execution.EVERY_SCAN),
+    /** ORTM&gt; (fx5-time-compare) */
+    ORTM_GT("ORTM>", Family.FX5_TIME_COMPARE, "ORTM_GT", Form.OR, Condition.GT, Execution.EVERY_SCAN),
+    /** ORTM&gt;= (fx5-time-compare) */
+    ORTM_GE("ORTM>=", Family.FX5_TIME_COMPARE, "ORTM_GE", Form.OR, Condition.GE, Execution.EVERY_SCAN);
+
+    /** A contact's form: how its result combines with the preceding logic ({@code rlo_in}). */
+    public enum Form {
+        LD,
+        AND,
+        OR;
+    }
+
+    /** What a comparison contact tests. */
+    public enum Condition {
+        /** = */
+        EQ("="),
+        /** &lt;&gt; */
+        NE("<>"),
+        /** &lt; */
+        LT("<"),
+        /** &lt;= */
+        LE("<="),
+        /** &gt; */
+        GT(">"),
+        /** &gt;= */
+        GE(">=");
+
+        private final String symbol;
+
+        Condition(String symbol) {
+            this.symbol = symbol;
+        }
+
+        /** As the manual writes it ({@code <=}). */
+        public String symbol() {
+            return symbol;
+        }
+    }
+
+    /** When an execution runs: at every scan, or on the rising edge of its input only. */
+    public enum Execution {
+        EVERY_SCAN("every-scan"),
+        RISING_EDGE("rising-edge");
+
+        private final String id;
+
+        Execution(String id) {
+            this.id = id;
+        }
+
+        /** As the spec names it ({@code every-scan}). */
+        public String id() {
+            return id;
+        }
+    }
 
     private final String mnemonic;
     private final Family family;
+    private final String st;
+    private final Form form;
+    private final Condition condition;
+    private final Execution execution;
 
-    Instruction(String mnemonic, Family family) {
+    Instruction(String mnemonic, Family family, String st, Form form, Condition condition, Execution execution) {
         this.mnemonic = mnemonic;
         this.family = family;
+        this.st = st;
+        this.form = form;
+        this.condition = condition;
+        this.execution = execution;
+    }
+
+    /** The structured-text spelling, or "" where the page gives none. */
+    public String st() {
+        return st;
+    }
+
+    /** LD, AND or OR for a contact; null for an instruction that is not one (TADD, HOUR). */
+    public Form form() {
+        return form;
+    }
+
+    /** The condition a contact tests; null for an instruction that compares nothing. */
+    public Condition condition() {
+        return condition;
+    }
+
+    public Execution execution() {
+        return execution;
     }
 
     /** The instruction as the manual and the vectors spell it ({@code LDTM<=}, {@code LD <=DT}). */

@@ -122,41 +122,70 @@ public final class Report {
     }
 
     /**
-     * The end of a run without the failures (a test runner has shown each already): the suite and
-     * the implementation, every alternative followed, the declared CPU writes, the skips by
-     * reason, the totals.
+     * The end of a run without the failure blocks (a test runner has shown each already), as
+     * verifiers/parity/TEXT.md writes it: the skips by reason, an empty line, then the summary
+     * lines (the suite and the implementation, every alternative followed, the declared CPU
+     * writes, the totals).
      */
     public String totals() {
-        List<String> lines = new ArrayList<>();
+        StringBuilder out = new StringBuilder(skipsByReason()).append('\n');
         Suite s = header.suite();
-        lines.add("plcvec verify: " + header.implementation() + (header.version().isEmpty() ? "" : " " + header.version())
-                + " against " + s.source() + " (suite " + (s.suiteVersion().isEmpty() ? "?" : s.suiteVersion())
-                + ", schema " + s.schemaVersion() + ", spec sha256 "
-                + s.specSha256().substring(0, Math.min(12, s.specSha256().length())) + ")");
-        List<String> followed = new ArrayList<>();
-        new java.util.TreeMap<>(header.followed()).forEach((i, f) -> followed.add(i + "=" + f.alternative()
-                + (f.declared() ? "" : " (default)")));
-        lines.add("interpretations: " + (followed.isEmpty() ? "none" : String.join(", ", followed)));
-        if (!header.cpuWrites().isEmpty()) {
-            lines.add("cpu writes: " + String.join(", ", new java.util.TreeSet<>(header.cpuWrites())));
-        }
-        Map<String, Integer> skips = new java.util.TreeMap<>();
+        out.append("plcvec verify: ").append(header.implementation())
+                .append(header.version().isEmpty() ? "" : " " + header.version()).append(" against ").append(s.source())
+                .append(" (suite ").append(s.suiteVersion().isEmpty() ? "?" : s.suiteVersion()).append(", schema ")
+                .append(s.schemaVersion()).append(", spec sha256 ")
+                .append(s.specSha256(), 0, Math.min(12, s.specSha256().length())).append(")\n");
+        out.append(summaryLines());
+        out.append(String.format(java.util.Locale.ROOT, " in %.2f s", seconds)).append('\n');
+        return out.toString();
+    }
+
+    /** {@code SKIPPED s of n vectors (p%):} and a line per reason, most vectors first (TEXT.md); "" without skips. */
+    String skipsByReason() {
+        Map<String, Integer> reasons = new java.util.HashMap<>();
+        int selected = 0;
         for (Verdict r : results) {
+            if (r.vector() != null) {
+                selected++;
+            }
             if (r.status() == Status.SKIP) {
-                skips.merge(r.message(), 1, Integer::sum);
+                reasons.merge(r.message().isEmpty() ? "(no reason given)" : r.message(), 1, Integer::sum);
             }
         }
-        skips.forEach((why, n) -> lines.add("skipped " + n + ": " + why));
+        if (reasons.isEmpty()) {
+            return "";
+        }
+        int skipped = reasons.values().stream().mapToInt(Integer::intValue).sum();
+        long t = (2000L * skipped + selected) / (2L * selected);    // s/n in tenths of a percent, half up
+        StringBuilder out = new StringBuilder("SKIPPED " + skipped + " of " + selected + " vectors (" + t / 10 + "." + t % 10
+                + "%):\n");
+        List<Map.Entry<String, Integer>> sorted = new ArrayList<>(reasons.entrySet());
+        sorted.sort(Map.Entry.<String, Integer>comparingByValue().reversed().thenComparing(Map.Entry.comparingByKey()));
+        for (Map.Entry<String, Integer> e : sorted.subList(0, Math.min(12, sorted.size()))) {
+            out.append(String.format(java.util.Locale.ROOT, "    %6d  %s", e.getValue(), e.getKey())).append('\n');
+        }
+        if (sorted.size() > 12) {
+            out.append("    ... and ").append(sorted.size() - 12).append(" more reasons (--jsonl lists each vector)\n");
+        }
+        return out.toString();
+    }
+
+    /** The summary lines after the header line, the totals without their time (TEXT.md). */
+    String summaryLines() {
+        StringBuilder out = new StringBuilder();
+        List<String> followed = new ArrayList<>();
+        new java.util.TreeMap<>(header.followed()).forEach((i, f) -> followed.add(i + "=" + f.alternative()
+                + (f.declared() ? " (declared)" : " (default)")));
+        out.append("interpretations: ").append(followed.isEmpty() ? "(none)" : String.join(", ", followed)).append('\n');
+        if (!header.cpuWrites().isEmpty()) {
+            out.append("cpu_writes: ").append(String.join(", ", new java.util.TreeSet<>(header.cpuWrites()))).append('\n');
+        }
         StringBuilder counts = new StringBuilder();
         counts().forEach((st, n) -> {
             if (n > 0 || st == Status.PASS || st == Status.FAIL || st == Status.SKIP) {
                 counts.append(counts.length() == 0 ? "" : ", ").append(n).append(' ').append(st.label());
             }
         });
-        lines.add(results.size() + " vectors: " + counts + String.format(java.util.Locale.ROOT, " in %.2f s", seconds));
-        if (!passed() && failing().isEmpty()) {
-            lines.add("nothing tested: " + header.implementation() + " skipped every selected vector");
-        }
-        return String.join("\n", lines) + "\n";
+        return out.append(results.size()).append(" vectors: ").append(counts).toString();
     }
 }

@@ -1,6 +1,8 @@
 package org.plcvec.reference;
 
 import org.plcvec.spec.Alternatives.Cp1eAndOrWhenOff;
+import org.plcvec.spec.Family;
+import org.plcvec.spec.Instruction;
 import org.plcvec.verify.Address;
 import org.plcvec.verify.Emulator;
 import org.plcvec.verify.Memory;
@@ -9,7 +11,7 @@ import org.plcvec.verify.Step;
 import org.plcvec.verify.VectorRequest;
 
 /**
- * Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT, from cp1e-time-compare-DT.txt
+ * Omron SYSMAC CP1E: LD/AND/OR {@code =DT, <>DT, <DT, <=DT, >DT, >=DT}, from cp1e-time-compare-DT.txt
  * (W483 p. 2-93).
  *
  * <p>P_ER is a condition flag: it reflects the result of the instruction just executed, so an
@@ -33,24 +35,23 @@ public class Cp1eTimeCompare implements Emulator.Scan {
     };
 
     static final Address P_ER = Address.of("P_ER");
-    /** The arithmetic flags, in the order of {@link Contact.Condition}: =, <>, <, <=, >, >=. */
-    static final Address[] FLAGS = {
-        Address.of("P_EQ"), Address.of("P_NE"), Address.of("P_LT"), Address.of("P_LE"), Address.of("P_GT"), Address.of("P_GE"),
-    };
-
-    private static final Contact.Condition[] CONDITIONS = Contact.Condition.values();
+    /** The arithmetic flags, one per condition. */
+    static final java.util.Map<Instruction.Condition, Address> FLAGS = java.util.Map.of(
+        Instruction.Condition.EQ, Address.of("P_EQ"), Instruction.Condition.NE, Address.of("P_NE"),
+        Instruction.Condition.LT, Address.of("P_LT"), Instruction.Condition.LE, Address.of("P_LE"),
+        Instruction.Condition.GT, Address.of("P_GT"), Instruction.Condition.GE, Address.of("P_GE"));
 
     protected final Memory mem;
     protected final Settings settings;
-    protected final Contact.Form form;
-    protected final Contact.Condition condition;
+    protected final Instruction.Form form;
+    protected final Instruction.Condition condition;
     protected final Address s1;
     protected final Address s2;
     protected final Operand c;
 
     public Cp1eTimeCompare(VectorRequest vector, Memory memory, Settings settings) {
-        Contact.Mnemonic m = Contact.Mnemonic.of(vector);
-        if (m == null || !m.kind().equals("CP1E")) {
+        Instruction m = vector.instructionName();
+        if (m == null || m.form() == null || m.family() != Family.CP1E_TIME_COMPARE) {
             throw new IllegalArgumentException("not a CP1E time comparison: " + vector.instruction());
         }
         this.mem = memory;
@@ -116,7 +117,7 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         if (!settings.cp1eErHeld) {
             mem.setBit(P_ER, false);      // executed without error
         }
-        return condition.holds(order);
+        return Contact.holds(condition, order);
     }
 
     /** Whether a field's byte is an error under the alternatives followed. */
@@ -136,10 +137,10 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         return ((mask >> f.maskBit()) & 1) != 0;
     }
 
-    /** "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <, <=, >, >=)." */
+    /** "the result of a time comparison instruction is reflected in the arithmetic flags ({@code =, <>, <, <=, >, >=})." */
     protected void reflectFlags(int order) {
-        for (Contact.Condition k : CONDITIONS) {
-            mem.setBit(FLAGS[k.ordinal()], k.holds(order));
+        for (Instruction.Condition k : Instruction.Condition.values()) {
+            mem.setBit(FLAGS.get(k), Contact.holds(k, order));
         }
     }
 
@@ -147,7 +148,7 @@ public class Cp1eTimeCompare implements Emulator.Scan {
     protected boolean error() {
         mem.setBit(P_ER, true);
         if (settings.cp1eErrorFlagsOff) {
-            for (Address flag : FLAGS) {
+            for (Address flag : FLAGS.values()) {
                 mem.setBit(flag, false);
             }
         }

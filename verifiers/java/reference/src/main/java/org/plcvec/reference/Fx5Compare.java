@@ -1,6 +1,8 @@
 package org.plcvec.reference;
 
 import org.plcvec.spec.Alternatives.Fx5AndOrWhenOff;
+import org.plcvec.spec.Family;
+import org.plcvec.spec.Instruction;
 import org.plcvec.verify.Address;
 import org.plcvec.verify.Emulator;
 import org.plcvec.verify.Memory;
@@ -34,15 +36,16 @@ public class Fx5Compare implements Emulator.Scan {
     protected final Memory mem;
     protected final Field[] fields;
     protected final Settings settings;
-    protected final Contact.Form form;
-    protected final Contact.Condition condition;
+    protected final Instruction.Form form;
+    protected final Instruction.Condition condition;
     protected final Operand s1;
     protected final Operand s2;
     protected final Operand s3;
 
     public Fx5Compare(VectorRequest vector, Memory memory, Field[] fields, Settings settings) {
-        Contact.Mnemonic m = Contact.Mnemonic.of(vector);
-        if (m == null || !m.kind().equals(fields == TIME ? "TM" : "DT")) {
+        Instruction m = vector.instructionName();
+        if (m == null || m.form() == null
+                || m.family() != (fields == TIME ? Family.FX5_TIME_COMPARE : Family.FX5_DATE_COMPARE)) {
             throw new IllegalArgumentException("not an FX5 " + (fields == TIME ? "time" : "date") + " comparison: "
                     + vector.instruction());
         }
@@ -67,7 +70,7 @@ public class Fx5Compare implements Emulator.Scan {
                 logic == Fx5AndOrWhenOff.SHORT_CIRCUIT, () -> evaluate(step));
         // An execution that turns SM709 on is a non-conductive contact, ORed like any other; under
         // FX5-OR-ON-ERROR=result-off it turns the OR form's result off too.
-        return erred && form == Contact.Form.OR && settings.fx5OrResultOffOnError ? false : result;
+        return erred && form == Instruction.Form.OR && settings.fx5OrResultOffOnError ? false : result;
     }
 
     /** Whether this execution turned SM709 on. */
@@ -131,7 +134,7 @@ public class Fx5Compare implements Emulator.Scan {
         }
         // Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
         // the data are within the setting range": 02/30 is compared as it is.
-        return condition.holds(compare(a, b, s3word));
+        return Contact.holds(condition, compare(a, b, s3word));
     }
 
     /** SM709 on and non-continuity. "Once SM709 turns on, the on state is held": never cleared here. */

@@ -1,6 +1,7 @@
 package org.plcvec.reference;
 
 import org.plcvec.spec.Family;
+import org.plcvec.spec.Instruction;
 import org.plcvec.verify.Choices;
 import org.plcvec.verify.Emulator;
 import org.plcvec.verify.Memory;
@@ -48,8 +49,7 @@ public class Reference implements Emulator {
 
     @Override
     public boolean supports(String instruction) {
-        return instruction.equals("TADD") || instruction.equals("TADDP") || instruction.equals("HOUR")
-                || Contact.Mnemonic.parse(instruction) != null;
+        return Instruction.byMnemonic(instruction) != null;   // every instruction of the suite this names
     }
 
     @Override
