@@ -49,7 +49,7 @@ python3 -m plcvec fuzz --examples 500 --seed 2 --adapter "verifiers/java/referen
     --choose HOUR-INPUT-OFF=hold-drop-fraction --choose CP1E-NON-BCD=raw-bytes --choose CP1E-ALL-MASKED=not-compared \
     --choose CP1E-ER-FLAG=held --choose CP1E-ERROR-FLAGS=off --choose HOUR-FIRST-SCAN=from-next-scan \
     --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset --choose FX5-OR-ON-ERROR=result-off \
-    --choose TADD-ERROR-ORDER=field-range-first"
+    --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-D1-OUT-OF-RANGE=error"
 
 # The shared table of faults through the README's entry point (the JUnit 5 factory under
 # Surefire), every row; the modules are built by now, so `--build` only compiles the hostile ones.

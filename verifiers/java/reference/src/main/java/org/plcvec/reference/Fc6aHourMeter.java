@@ -60,6 +60,13 @@ public class Fc6aHourMeter implements Emulator.Scan {
             }
             return null;
         }
+        // "Minute and second data can be 0 through 59." A D1 the program set outside that is counted
+        // as seconds and carried back into range (HOUR-D1-OUT-OF-RANGE=as-seconds), or is an error
+        // that stops this execution (error).
+        if (settings.hourD1OutOfRangeError && (mem.word(d1, 1) > 59 || mem.word(d1, 2) > 59)) {
+            mem.setBit(M8004, true);
+            return null;
+        }
         // The elapsed time since the previous execution is ON time; at the execution the input
         // turns on, only under HOUR-FIRST-SCAN=counts.
         if (!(turnedOn && settings.hourFromNextScan)) {

@@ -6,6 +6,7 @@ import static org.plcvec.spec.Alternatives.Cp1eCHighBits;
 import static org.plcvec.spec.Alternatives.Cp1eErFlag;
 import static org.plcvec.spec.Alternatives.Cp1eErrorFlags;
 import static org.plcvec.spec.Alternatives.Fx5OrOnError;
+import static org.plcvec.spec.Alternatives.HourD1OutOfRange;
 import static org.plcvec.spec.Alternatives.HourFirstScan;
 import static org.plcvec.spec.Alternatives.HourM8004Off;
 import static org.plcvec.spec.Alternatives.HourPresetCheck;
@@ -46,6 +47,7 @@ public final class Settings {
     final boolean hourFromNextScan;
     final boolean hourPresetEveryExecution;
     final boolean hourM8004OffWhenValid;
+    final boolean hourD1OutOfRangeError;
     // CP1E
     final boolean cp1eNonBcdError;
     final boolean cp1eOutOfRangeError;
@@ -77,6 +79,7 @@ public final class Settings {
         hourFromNextScan = c.follows(HourFirstScan.FROM_NEXT_SCAN);
         hourPresetEveryExecution = c.follows(HourPresetCheck.EVERY_EXECUTION);
         hourM8004OffWhenValid = c.follows(HourM8004Off.VALID_PRESET);
+        hourD1OutOfRangeError = c.follows(HourD1OutOfRange.ERROR);
     }
 
     private static <A extends org.plcvec.spec.Alternative> A follows(Choices c, A[] alternatives) {
