@@ -336,22 +336,7 @@ static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const p
                 else if (r[k].type != got->type || r[k].value != got->value)
                     again = &r[k];      /* one device, two values: neither can be believed */
             }
-        if (again) {
-            plcvec_problem *p = problem(j, s, state[i].device);
-            if (!p)
-                return;
-            p->has_expected = 1;
-            p->expected_type = state[i].type;
-            p->expected = state[i].value;
-            p->has_actual = 1;
-            p->actual_type = got->type;
-            p->actual = got->value;
-            p->twice = 1;
-            p->second_type = again->type;
-            p->second = again->value;
-            continue;
-        }
-        if (got && got->type == state[i].type && got->value == state[i].value)
+        if (!again && got && got->type == state[i].type && got->value == state[i].value)
             continue;
         plcvec_problem *p = problem(j, s, state[i].device);
         if (!p)
@@ -363,6 +348,12 @@ static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const p
             p->has_actual = 1;
             p->actual_type = got->type;
             p->actual = got->value;
+        }
+        if (again) {
+            p->twice = 1;
+            p->second_type = again->type;
+            p->second = again->value;
+            continue;
         }
         const plcvec_cell *b = cell_of(before, n_before, state[i].device);
         if (b) {

@@ -2,35 +2,115 @@
  * options, its environment variables, its exit statuses and its words. */
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "guard.h"
 #include "table.h"
 
-static void header(FILE *log, const plcvec_impl *impl, plcvec_judge *j, const plcvec_vector **list, size_t selected)
+/* The run's closing text, as verifiers/parity/TEXT.md states it for every runner: the skips by
+ * reason, why a run without failures did not pass, then an empty line and the summary lines. */
+
+typedef struct reason_count {
+    const char *reason;
+    size_t n;
+} reason_count;
+
+static int by_count_then_reason(const void *a, const void *b)
 {
-    uint32_t families = 0;
-    for (size_t i = 0; i < selected; i++)
-        families |= 1u << list[i]->family;
-    fprintf(log, "plcvec %s (schema %s, spec %.12s): %zu of %zu vectors selected for %s\n", PLCVEC_SUITE_VERSION,
-            PLCVEC_SCHEMA_VERSION, PLCVEC_SPEC_SHA256, selected, plcvec_count(), impl->name ? impl->name : "(unnamed)");
-    fprintf(log, "alternatives followed:");
-    for (int i = 0, first = 1; i < PLCVEC_INTERPRETATION_COUNT; i++) {
-        if (!(plcvec_interpretations[i].families & families))
-            continue;
-        int declared = 0;
+    const reason_count *x = a, *y = b;
+    if (x->n != y->n)
+        return x->n > y->n ? -1 : 1;
+    return strcmp(x->reason, y->reason);
+}
+
+#define SHOW_REASONS 12
+
+static void skipped_lines(FILE *log, const char **reasons, size_t n_skipped, size_t selected)
+{
+    if (!n_skipped)
+        return;
+    reason_count *counts = malloc(n_skipped * sizeof *counts);
+    if (!counts)
+        return;
+    size_t n = 0;
+    for (size_t i = 0; i < n_skipped; i++) {
+        size_t k = 0;
+        while (k < n && strcmp(counts[k].reason, reasons[i]) != 0)
+            k++;
+        if (k == n)
+            counts[n++] = (reason_count){reasons[i], 0};
+        counts[k].n++;
+    }
+    qsort(counts, n, sizeof *counts, by_count_then_reason);
+    /* s/n as a percentage to one decimal, rounded half up, in integers (the same in every language). */
+    size_t t = (2000 * n_skipped + selected) / (2 * selected);
+    fprintf(log, "SKIPPED %zu of %zu vectors (%zu.%zu%%):\n", n_skipped, selected, t / 10, t % 10);
+    for (size_t k = 0; k < n && k < SHOW_REASONS; k++)
+        fprintf(log, "    %6zu  %s\n", counts[k].n, counts[k].reason[0] ? counts[k].reason : "(no reason given)");
+    if (n > SHOW_REASONS)
+        fprintf(log, "    ... and %zu more reasons (--jsonl lists each vector)\n", n - SHOW_REASONS);
+    free(counts);
+}
+
+static int by_interpretation_id(const void *a, const void *b)
+{
+    return strcmp(plcvec_interpretations[*(const int *)a].id, plcvec_interpretations[*(const int *)b].id);
+}
+
+static int by_string(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+static void summary_lines(FILE *log, const plcvec_impl *impl, plcvec_judge *j, uint32_t families,
+                          const plcvec_summary *sum, double seconds)
+{
+    fprintf(log, "\nplcvec: %s against the compiled-in vectors (suite %s, schema %s, spec sha256 %.12s)\n",
+            impl->name ? impl->name : "(unnamed)", PLCVEC_SUITE_VERSION, PLCVEC_SCHEMA_VERSION, PLCVEC_SPEC_SHA256);
+    int order[PLCVEC_INTERPRETATION_COUNT], n = 0;
+    for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
+        if (plcvec_interpretations[i].families & families)
+            order[n++] = i;
+    qsort(order, (size_t)n, sizeof *order, by_interpretation_id);
+    fprintf(log, "interpretations:");
+    for (int k = 0; k < n; k++) {
+        int i = order[k], declared = 0;
         for (size_t c = 0; c < impl->n_choices; c++)
             declared |= impl->choices[c].interpretation == i;
-        fprintf(log, "%s %s=%s%s", first ? "" : ",", plcvec_interpretations[i].id,
-                plcvec_interpretations[i].alternatives[plcvec_judge_alternative(j, i)], declared ? "" : " (default)");
-        first = 0;
+        fprintf(log, "%s %s=%s (%s)", k ? "," : "", plcvec_interpretations[i].id,
+                plcvec_interpretations[i].alternatives[plcvec_judge_alternative(j, i)], declared ? "declared" : "default");
     }
-    fprintf(log, "\n");
-    if (impl->cpu_writes && impl->cpu_writes[0]) {
-        fprintf(log, "devices the CPU writes on its own account:");
-        for (const char *const *d = impl->cpu_writes; *d; d++)
-            fprintf(log, "%s %s", d == impl->cpu_writes ? "" : ",", *d);
+    fprintf(log, "%s\n", n ? "" : " (none)");
+    size_t n_cpu = 0;
+    while (impl->cpu_writes && impl->cpu_writes[n_cpu])
+        n_cpu++;
+    const char **cpu = n_cpu ? malloc(n_cpu * sizeof *cpu) : NULL;
+    if (cpu) {
+        memcpy(cpu, impl->cpu_writes, n_cpu * sizeof *cpu);
+        qsort(cpu, n_cpu, sizeof *cpu, by_string);
+        fprintf(log, "cpu_writes:");
+        for (size_t k = 0; k < n_cpu; k++)
+            fprintf(log, "%s %s", k ? "," : "", cpu[k]);
         fprintf(log, "\n");
+        free(cpu);
     }
+    /* The totals: pass, fail and skip always, the others when not 0, in the order of the statuses. */
+    fprintf(log, "%zu vectors: %zu pass, %zu fail", sum->selected + sum->stale_unknown, sum->passed, sum->failed);
+    if (sum->errors)
+        fprintf(log, ", %zu error", sum->errors);
+    fprintf(log, ", %zu skip", sum->skipped);
+    if (sum->xfail)
+        fprintf(log, ", %zu xfail", sum->xfail);
+    if (sum->stale)
+        fprintf(log, ", %zu stale", sum->stale);
+    fprintf(log, " in %.2f s\n", seconds);
+}
+
+static double now_s(void)
+{
+    struct timespec t;
+    timespec_get(&t, TIME_UTC);
+    return (double)t.tv_sec + (double)t.tv_nsec / 1e9;
 }
 
 int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summary *summary)
@@ -48,7 +128,8 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         return PLCVEC_EXIT_USAGE;
     }
     if (n == 0) {
-        fprintf(log, "plcvec: no vector selected: the selection matches nothing (an empty selection never passes)\n");
+        fprintf(log, "NOT PASSED (exit 5): no vector selected: the selection matches nothing (an empty selection never "
+                     "passes)\n");
         free(list);
         return PLCVEC_EXIT_NOTHING_TESTED;
     }
@@ -58,10 +139,23 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         free(list);
         return PLCVEC_EXIT_USAGE;
     }
-    header(log, impl, j, list, (size_t)n);
+    double started = now_s();
+    uint32_t families = 0;
+    for (long i = 0; i < n; i++)
+        families |= 1u << list[i]->family;
     /* Nothing of the run is left in a buffer while an implementation runs: a crash, an exit() or
      * the watchdog inside it ends the process without flushing stdio. */
     fflush(log);
+    const char **skip_reasons = malloc((size_t)n * sizeof *skip_reasons);
+    char *reason_text = malloc((size_t)n * sizeof ((plcvec_verdict *)0)->message);
+    if (!skip_reasons || !reason_text) {
+        free(skip_reasons);
+        free(reason_text);
+        plcvec_judge_free(j);
+        free(list);
+        fprintf(log, "plcvec: out of memory\n");
+        return PLCVEC_EXIT_USAGE;
+    }
     sum.selected = (size_t)n;
     const char **failing = opt->write_expectations ? malloc((size_t)n * sizeof *failing) : NULL;
     size_t n_failing = 0;
@@ -78,7 +172,11 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         case PLCVEC_PASS: sum.passed++; break;
         case PLCVEC_FAIL: sum.failed++; break;
         case PLCVEC_ERROR: sum.errors++; break;
-        case PLCVEC_SKIP: sum.skipped++; break;
+        case PLCVEC_SKIP:
+            /* The reason, kept for the skips by reason (the verdict's text is reused next vector). */
+            skip_reasons[sum.skipped] = memcpy(reason_text + sum.skipped * sizeof vd.message, vd.message, sizeof vd.message);
+            sum.skipped++;
+            break;
         case PLCVEC_XFAIL: sum.xfail++; break;
         case PLCVEC_STALE: sum.stale++; break;
         }
@@ -95,16 +193,24 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
             fprintf(log, "STALE %s\n    listed as a known failure (%s) but the suite has no such vector; remove it\n",
                     opt->known[k].id ? opt->known[k].id : "(null)", opt->known[k].reason ? opt->known[k].reason : "");
             sum.stale++;
+            sum.stale_unknown++;
         }
-    plcvec_judge_free(j);
-    free(list);
     size_t bad = sum.failed + sum.errors + sum.stale;
     int rc = bad ? PLCVEC_EXIT_FAILED : sum.passed == 0 ? PLCVEC_EXIT_NOTHING_TESTED : PLCVEC_EXIT_PASSED;
-    if (rc == PLCVEC_EXIT_NOTHING_TESTED)
-        fprintf(log, "plcvec: nothing passed (%zu skipped, %zu known failures): the run proves nothing\n", sum.skipped,
-                sum.xfail);
-    fprintf(log, "(%zu failed, %zu errors, %zu stale, %zu known failures)\n", sum.failed, sum.errors, sum.stale, sum.xfail);
-    fprintf(log, "plcvec: %zu passed, %zu failed, %zu skipped\n", sum.passed, bad, sum.skipped);
+    skipped_lines(log, skip_reasons, sum.skipped, sum.selected);
+    if (rc == PLCVEC_EXIT_NOTHING_TESTED) {
+        fprintf(log, "NOT PASSED (exit 5): nothing passed (");
+        if (sum.skipped)
+            fprintf(log, "%zu skipped%s", sum.skipped, sum.xfail ? ", " : "");
+        if (sum.xfail)
+            fprintf(log, "%zu known failures", sum.xfail);
+        fprintf(log, "): the run proves nothing\n");
+    }
+    summary_lines(log, impl, j, families, &sum, now_s() - started);
+    free(skip_reasons);
+    free(reason_text);
+    plcvec_judge_free(j);
+    free(list);
     if (opt->write_expectations) {
         if (plcvec_known_write(opt->write_expectations, failing, n_failing, "not yet triaged", err, sizeof err)) {
             fprintf(log, "plcvec: %s\n", err);

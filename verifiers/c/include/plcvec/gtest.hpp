@@ -127,23 +127,28 @@ inline int run_all_tests() {
                         k.reason);
             stale++;
         }
-    std::printf("plcvec: %zu passed, %zu failed, %zu skipped\n", r.passed, r.judged - r.passed - r.skipped - r.known,
-                r.skipped);
+    size_t failed = r.judged - r.passed - r.skipped - r.known;
+    std::printf("%zu vectors: %zu pass, %zu fail, %zu skip", r.judged + stale, r.passed, failed, r.skipped);
+    if (r.known)
+        std::printf(", %zu xfail", r.known);
+    if (stale)
+        std::printf(", %d stale", stale);
+    std::printf("\n");
     if (stale)
         return PLCVEC_EXIT_FAILED;
     // No vector judged: GoogleTest may fail the run itself (a parameterized suite with no values),
     // which is the same fact; either way nothing was tested.
     if (r.judged == 0) {
-        std::printf("plcvec: no vector was run: the test filter or the selection matched none (an empty run never "
-                    "passes). Select vectors with PLCVEC_ID (an id or glob, comma-separated) rather than "
+        std::printf("NOT PASSED (exit 5): no vector selected: the test filter or the selection matched none (an empty "
+                    "run never passes). Select vectors with PLCVEC_ID (an id or glob, comma-separated) rather than "
                     "--gtest_filter, whose names are not the ids\n");
         return PLCVEC_EXIT_NOTHING_TESTED;
     }
     if (rc != 0)
         return PLCVEC_EXIT_FAILED;
     if (r.passed == 0) {
-        std::printf("plcvec: nothing passed (%zu skipped, %zu known failures): the run proves nothing\n", r.skipped,
-                    r.known);
+        std::printf("NOT PASSED (exit 5): nothing passed (%zu skipped, %zu known failures): the run proves nothing\n",
+                    r.skipped, r.known);
         return PLCVEC_EXIT_NOTHING_TESTED;
     }
     return PLCVEC_EXIT_PASSED;

@@ -378,10 +378,12 @@ enum {
 
 typedef struct plcvec_summary {
     size_t selected, passed, failed, errors, skipped, xfail, stale;
+    size_t stale_unknown;       /* of the stale: known failures naming no vector of the suite */
 } plcvec_summary;
 
-/* Print the suite and the alternatives followed, judge every selected vector, print each failure
- * as a field-level diff, then the closing "plcvec: N passed, N failed, N skipped" line. Returns a
+/* Judge every selected vector, print each failure as a field-level diff, then the skips by reason
+ * and the summary (every alternative followed, the declared CPU writes, "N vectors: a pass, b fail,
+ * c skip"), in the words of verifiers/parity/TEXT.md. Returns a
  * PLCVEC_EXIT_*: 1 on any failure, error or stale entry; 5 when nothing was selected or nothing
  * passed; 2 on a usage error (an unknown name, an id glob matching no id, a bad shard, an unknown
  * declared alternative, a bad PLCVEC_TIMEOUT). */
