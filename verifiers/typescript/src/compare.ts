@@ -118,7 +118,9 @@ export function judge(p: Prepared, impl: Implementation): Verdict {
   try {
     outcome = impl.run(request);
   } catch (err) {
-    return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${err instanceof Error ? `${err.name}: ${err.message}` : String(err)}`);
+    if (!(err instanceof Error)) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${String(err)}`);
+    const frame = ownFrame(err);
+    return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${err.name}: ${err.message}${frame === undefined ? "" : ` (${frame})`}`);
   }
   if (typeof outcome !== "object" || outcome === null) {
     return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered ${String(outcome)}, not {steps}, {skip} or {error}`);
@@ -132,6 +134,21 @@ export function judge(p: Prepared, impl: Implementation): Verdict {
   if ("skip" in outcome) return verdict(p, SKIP, NO_PROBLEMS, String(outcome.skip));
   if ("error" in outcome) return verdict(p, ERROR, NO_PROBLEMS, `the implementation reported an error: ${String(outcome.error)}`);
   return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered neither steps, skip nor error`);
+}
+
+const FRAME = /\(?((?:file:\/\/)?[^\s()]+):(\d+):\d+\)?$/;
+
+/**
+ * Where an error was thrown, as `file:line`: the first frame of its stack in the implementation's
+ * own code, past Node's internals and installed packages (a date library's line says nothing).
+ */
+function ownFrame(err: Error): string | undefined {
+  for (const line of (err.stack ?? "").split("\n").slice(1)) {
+    const m = FRAME.exec(line.trim());
+    if (m === null || m[1]!.startsWith("node:") || m[1]!.includes("/node_modules/")) continue;
+    return `${m[1]!.slice(m[1]!.lastIndexOf("/") + 1)}:${m[2]}`;
+  }
+  return undefined;
 }
 
 function verdict(p: Prepared, status: Status, problems: readonly Problem[], message?: string): Verdict {
