@@ -6,11 +6,11 @@ import { resolveChoices, type Followed } from "./choices.js";
 import { judge, prepare } from "./compare.js";
 import { VerifyError } from "./errors.js";
 import type { Implementation } from "./implementation.js";
-import { applyKnown, unknownIds, type KnownFailures } from "./known.js";
-import { select, type Selection } from "./selection.js";
+import { applyKnown, loadKnownFailures, unknownIds, writeExpectations, type KnownFailures } from "./known.js";
+import { selectWithEnvironment, type Selection } from "./selection.js";
 import { interpretationsOf, loadSuite, type Suite } from "./suite.js";
 import { FAILING, type Status, type Verdict } from "./verdict.js";
-import { guarded } from "./watchdog.js";
+import { guarded, timeoutSeconds } from "./watchdog.js";
 
 export interface RunOptions {
   /** Default: the packaged vectors, or the folder PLCVEC_VECTORS names. */
@@ -47,15 +47,24 @@ export interface Report {
   readonly suite: Suite;
 }
 
-/** Select, prepare, run and judge: the whole gate, in process. */
+/**
+ * Select, prepare, run and judge: the whole gate, in process. The environment is read as every
+ * plcvec runner reads it: the PLCVEC_* selection narrows `selection`, PLCVEC_KNOWN_FAILURES is the
+ * default `known`, PLCVEC_WRITE_EXPECTATIONS receives the failures, PLCVEC_TIMEOUT bounds each vector.
+ */
 export function runVectors(impl: Implementation, options: RunOptions = {}): Report {
   const started = performance.now();
+  timeoutSeconds(); // a malformed PLCVEC_TIMEOUT is refused before anything runs
   const suite = options.suite ?? loadSuite();
-  const vectors = select(suite, options.selection);
+  const vectors = selectWithEnvironment(suite, options.selection);
   const followed = resolveChoices(suite, impl.choices);
-  const verdicts = guarded(vectors.map((v) => v.id), (index) => applyKnown(judge(prepare(vectors[index]!, followed), impl), options.known));
+  const knownFile = process.env["PLCVEC_KNOWN_FAILURES"];
+  const known = options.known ?? (knownFile ? loadKnownFailures(knownFile) : undefined);
+  const verdicts = guarded(vectors.map((v) => v.id), (index) => applyKnown(judge(prepare(vectors[index]!, followed), impl), known));
   const selected = verdicts.length;
-  verdicts.push(...unknownIds(options.known, suite));
+  verdicts.push(...unknownIds(known, suite));
+  const write = process.env["PLCVEC_WRITE_EXPECTATIONS"];
+  if (write) writeExpectations(write, verdicts);
   return summarize(impl, verdicts, suite, followed, { ...options, selected, seconds: (performance.now() - started) / 1000 });
 }
 
