@@ -63,7 +63,14 @@ def test_a_text_not_on_the_page_is_a_missing_quote(tmp_path):
     assert f"{path}:{line}: accounting entry 2 (clause): quote not found in fc6a-hour-meter-HOUR.txt" in done.stderr
 
 
-def test_hour_d2_row_is_recorded_as_a_wording_problem(families):
-    entries = families["fc6a-hour-meter"].doc["accounting"]
-    d2 = [e for e in entries if any(t.startswith("D2 (Destination 2)") for t in e["texts"])]
-    assert len(d2) == 1 and d2[0]["as"] == "wording" and "internal relay" in d2[0]["instead"]
+def test_hour_d2_row_is_recorded_as_its_erratum(families):
+    fam = families["fc6a-hour-meter"]
+    d2 = [e for e in fam.doc["accounting"] if any(t.startswith("D2 (Destination 2)") for t in e["texts"])]
+    assert len(d2) == 1 and d2[0]["as"] == "erratum"
+    assert d2[0]["erratum"] in {e["id"] for e in fam.doc["errata"]}
+
+
+def test_cp1e_heading_that_lost_lt_dt_is_a_wording_problem(families):
+    entries = families["cp1e-time-compare"].doc["accounting"]
+    heading = [e for e in entries if "=DT , <>DT , , <=DT , >DT , >=DT" in e["texts"]]
+    assert len(heading) == 1 and heading[0]["as"] == "wording" and "<DT" in heading[0]["instead"]

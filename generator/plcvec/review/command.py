@@ -93,6 +93,6 @@ def _headline(s, spec_dir):
     sentences = "sentences not checked" if s["sentences"] is None else \
         f"{s['sentences_unaccounted']} of {s['sentences']} sentences and table rows unaccounted for"
     return (f"plcvec review of {spec_dir}: {s['families']} families, {s['clauses']} clauses, {s['vectors']} vectors; {quotes}; "
-            f"{sentences}; {s['derived']} derived claims; "
+            f"{sentences}; {s['derived']} derived claims; {s['decisions']} engine decisions; "
             f"{s['uncovered']} uncovered clauses; {s['model_missing']} of {s['model_required']} coverage-model "
             f"combinations with no vector; {audit}")

@@ -84,6 +84,12 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=N
     manuals = {fam.doc["manual"] for fam in families}
     fams = [_FamilyView(fam, vectors_by_family[fam.name], quotes is not None, missing, problems).build(
                 audit, (cells or {}).get(fam.name), manuals, pages) for fam in families]
+    from plcvec.review.decisions import INVENTORY, inventory
+
+    decisions, decision_problems = inventory(families)
+    for line, message in decision_problems:
+        problems.add_at("decision", f"{INVENTORY}:{line}" if line else str(INVENTORY), INVENTORY.name, line,
+                        message, "decisions")
     all_vectors = [v for fam in families for v in vectors_by_family[fam.name]]
     audit_rows = [f for fm in fams for f in fm["audit"]]
     coverage_rows = [r for fm in fams for r in fm["coverage"]]
@@ -109,12 +115,13 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=N
         "sentences": sum(fm["accounting"]["units"] for fm in fams) if pages is not None else None,
         "sentences_unaccounted": sum(len(fm["accounting"]["left"]) for fm in fams),
         "accounting_entries": sum(len(fm["accounting"]["entries"]) for fm in fams),
+        "decisions": len(decisions),
         "derived": sum(len(fm["provenance"]["derived"]) for fm in fams),
         "citations": sum(len(fm["provenance"]["citations"]) for fm in fams),
         "documents": sum(len(fm["provenance"]["documents"]) for fm in fams),
         "problems": len(problems.items),
     }
-    return {"summary": summary, "problems": problems.items, "problem_lines": problems.lines(),
+    return {"summary": summary, "problems": problems.items, "problem_lines": problems.lines(), "decisions": decisions,
             "coverage_definitions": cov.DEFINITIONS, "coverage_columns": list(cov.COLUMNS),
             "families": fams}
 

@@ -13,7 +13,7 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "ec478424b64d48589964b1fec60def4c332dec9602bcac97e44be6352a0c1fab"
+const SpecSHA256 = "4e4938e55b846c49e16b2c5562d7597f81e3916fa101a21c90ebe8531ffc2db0"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3696
