@@ -124,7 +124,7 @@ func childServe(plan *Plan, impl Implementation, setupErr error) {
 		if v.Status == StatusPass {
 			w.WriteString(strconv.Itoa(i))
 		} else {
-			line, _ := json.Marshal(wire{v.Status, v.Problems, v.Message, v.passes})
+			line, _ := json.Marshal(wire{v.Status, v.Problems, v.Message, v.passes()})
 			fmt.Fprintf(w, "%d %s", i, line)
 		}
 		w.WriteByte('\n')

@@ -36,6 +36,9 @@ type Plan struct {
 	Choices map[string]Choice // every interpretation of the suite
 	Cases   []*Case
 	Known   *KnownFailures // nil without an expectations file
+	// offered: the combinations each case's vector offers, worked out for the text on demand
+	offered map[*Case][]offer
+	byID    map[string]*Case // the cases by id, made on demand
 }
 
 // Case is one selected vector with its request and expectation.
@@ -47,7 +50,6 @@ type Case struct {
 	// nothing else of the vector unless it fails.
 	id, family, instruction string
 	plan                    *Plan
-	offered                 []offer // the combinations the vector offers, once worked out
 }
 
 // Prepare builds the plan of a run of impl: handshake, selection, expectations.
@@ -111,26 +113,30 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 func (c *Case) Judge(impl Implementation) Verdict {
 	var verdict Verdict
 	c.judge(impl, &verdict)
+	verdict.c = c
 	return verdict
 }
 
 // judge writes the verdict in place: a run fills its report's verdicts without copying each.
+// Every verdict but a pass keeps its case, for the text (a pass needs none, and a pointer more
+// written per vector is measurable in a pass over the whole set; Report.caseOf finds it).
 func (c *Case) judge(impl Implementation, verdict *Verdict) {
-	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector, verdict.c = c.id, c.family, c.instruction, c.Vector, c
+	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector = c.id, c.family, c.instruction, c.Vector
 	if c.expect == nil {
-		verdict.Status, verdict.Message = StatusSkip, "the implementation does not run "+c.instruction
+		verdict.Status, verdict.Message, verdict.c = StatusSkip, "the implementation does not run "+c.instruction, c
 		return
 	}
 	verdict.Choices = c.expect.choices
 	defer func() {
 		// An implementation that panics on one vector fails that vector, not the run.
 		if r := recover(); r != nil {
-			verdict.Status = StatusError
+			verdict.Status, verdict.c = StatusError, c
 			verdict.Message = fmt.Sprintf("the implementation panicked: %v\n%s", r, trimStack(debug.Stack()))
 		}
 	}()
 	steps, err := impl.Run(c.Request)
 	if err != nil {
+		verdict.c = c
 		if reason, ok := IsSkip(err); ok {
 			verdict.Status, verdict.Message = StatusSkip, reason
 		} else {
@@ -139,8 +145,7 @@ func (c *Case) judge(impl Implementation, verdict *Verdict) {
 		return
 	}
 	if verdict.Problems = c.expect.compare(steps); verdict.Problems != nil {
-		verdict.Status, verdict.failed = StatusFail, true
-		verdict.passes = c.passesUnder(steps)
+		verdict.Status, verdict.failed, verdict.c = StatusFail, &failure{c.passesUnder(steps)}, c
 	} else {
 		verdict.Status = StatusPass
 	}

@@ -166,7 +166,10 @@ func prepareRun(impl Implementation, opts Options) (*Plan, environment, error) {
 // verdictOf is the verdict of case c from what the judging said.
 func verdictOf(c *Case, w wire) Verdict {
 	v := Verdict{ID: c.id, Family: c.family, Instruction: c.instruction, Vector: c.Vector,
-		Status: w.Status, Problems: w.Problems, Message: w.Message, c: c, failed: w.Status == StatusFail, passes: w.Passes}
+		Status: w.Status, Problems: w.Problems, Message: w.Message, c: c}
+	if w.Status == StatusFail {
+		v.failed = &failure{w.Passes}
+	}
 	if c.expect != nil {
 		v.Choices = c.expect.choices
 	}
@@ -319,7 +322,7 @@ func (s *inProcess) verdict(i int) (wire, bool) {
 	var v Verdict
 	s.plan.Cases[i].judge(s.impl, &v)
 	s.running.Store(0)
-	return wire{v.Status, v.Problems, v.Message, v.passes}, false
+	return wire{v.Status, v.Problems, v.Message, v.passes()}, false
 }
 
 func (s *inProcess) close() { close(s.stop) }

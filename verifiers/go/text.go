@@ -23,8 +23,11 @@ type offer struct {
 // offers are the combinations case c offers, worked out once, on demand (a failing vector, or
 // the inference over a run).
 func (c *Case) offers() []offer {
-	if c.offered != nil || c.plan == nil {
-		return c.offered
+	if c.plan == nil {
+		return nil
+	}
+	if o, ok := c.plan.offered[c]; ok {
+		return o
 	}
 	v := c.Vector
 	touched := v.Outcome.Interpretations
@@ -56,7 +59,10 @@ func (c *Case) offers() []offer {
 			out = append(out, offer{choices, build(choices)})
 		}
 	}
-	c.offered = out
+	if c.plan.offered == nil {
+		c.plan.offered = map[*Case][]offer{}
+	}
+	c.plan.offered[c] = out
 	return out
 }
 
@@ -385,18 +391,19 @@ func (r *Report) infer() readings {
 	for i := range r.Verdicts {
 		v := &r.Verdicts[i]
 		if v.c == nil {
+			v.c = r.caseOf(v.ID)
+		}
+		if v.c == nil {
 			continue
 		}
-		switch {
-		case v.Status == StatusFail || v.Status == StatusError || v.Status == StatusNotRun:
+		if v.Status == StatusFail || v.Status == StatusError || v.Status == StatusNotRun {
 			failing = append(failing, i)
-		case v.Status == StatusXFail && v.failed:
 		}
-		failed := v.Status == StatusFail || v.Status == StatusXFail && v.failed
+		failed := v.Status == StatusFail || v.Status == StatusXFail && v.failed != nil
 		if v.Status != StatusPass && !failed {
 			continue
 		}
-		js = append(js, judged{v.c, v.Status == StatusPass, v.passes})
+		js = append(js, judged{v.c, v.Status == StatusPass, v.passes()})
 		for _, id := range v.c.Vector.Outcome.Interpretations {
 			touched[id] = true
 		}
@@ -472,6 +479,20 @@ func (r *Report) infer() readings {
 		out.explained[i] = smallestChange(j.c, choice, func(m map[string]string) bool { return passUnder(j, m) })
 	}
 	return out
+}
+
+// caseOf is the case of a vector id in the report's plan (nil for a stale id).
+func (r *Report) caseOf(id string) *Case {
+	if r.Plan == nil {
+		return nil
+	}
+	if r.Plan.byID == nil {
+		r.Plan.byID = make(map[string]*Case, len(r.Plan.Cases))
+		for _, c := range r.Plan.Cases {
+			r.Plan.byID[c.id] = c
+		}
+	}
+	return r.Plan.byID[id]
 }
 
 // smallestChange is the first set of changes, by size then in order, under which the vector

@@ -35,8 +35,20 @@ type Verdict struct {
 	Choices     map[string]string // interpretation -> alternative the vector was judged by (those it depends on)
 	Vector      *Vector           // nil for an expectations-file id the suite does not have
 	c           *Case             // the case judged, for the text (nil for a stale id)
-	failed      bool              // the answer differed (kept when a known failure makes it xfail)
-	passes      []bool            // a failed answer: whether it passes under each offer of the vector
+	// failed: the answer differed (kept when a known failure makes it xfail), with whether it
+	// passes under each combination the vector offers. A pointer, nil for the usual pass: a
+	// run's verdicts stay small.
+	failed *failure
+}
+
+type failure struct{ passes []bool }
+
+// passes is what a failed answer passes under (nil for any other verdict).
+func (v *Verdict) passes() []bool {
+	if v.failed == nil {
+		return nil
+	}
+	return v.failed.passes
 }
 
 // Problem is one field that differs: where, what the vector expects, what was reported.
