@@ -96,6 +96,102 @@ final class Expected {
         return new Expected(v, results, states, befores, Collections.unmodifiableMap(applied), e.category());
     }
 
+    /**
+     * {@code step k inputs: ...} of TEXT.md: the clock, rlo_in, en, input, elapsed_ms, then the
+     * step's {@code set}, or {@code (none)}.
+     */
+    String inputs(int s) {
+        Step step = vector.steps().get(s);
+        List<String> parts = new ArrayList<>();
+        Map<String, Integer> clock = step.clock();
+        if (clock != null) {
+            List<String> date = new ArrayList<>();
+            for (String f : new String[] {"year", "month", "day"}) {
+                if (clock.containsKey(f)) {
+                    date.add(String.valueOf(clock.get(f)));
+                }
+            }
+            StringBuilder time = new StringBuilder();
+            for (String f : new String[] {"hour", "minute", "second"}) {
+                if (clock.containsKey(f)) {
+                    int v = clock.get(f);
+                    time.append(time.length() == 0 ? String.valueOf(v) : String.format(java.util.Locale.ROOT, ":%02d", v));
+                }
+            }
+            StringBuilder shown = new StringBuilder(String.join("/", date));
+            if (time.length() > 0) {
+                shown.append(shown.length() > 0 ? " " : "").append(time);
+            }
+            new TreeMap<>(clock).forEach((k, v) -> {
+                if (!List.of("year", "month", "day", "hour", "minute", "second").contains(k)) {
+                    shown.append(' ').append(k).append('=').append(v);
+                }
+            });
+            parts.add("clock=" + shown);
+        }
+        Map<String, Object> inputs = step.toMap();
+        for (String k : new String[] {"rlo_in", "en", "input", "elapsed_ms"}) {
+            if (inputs.containsKey(k)) {
+                parts.add(k + "=" + inputs.get(k));
+            }
+        }
+        StringBuilder out = new StringBuilder(String.join(", ", parts));
+        Map<String, Object> set = new TreeMap<>(step.set());
+        if (!set.isEmpty()) {
+            StringBuilder sets = new StringBuilder("set");
+            set.forEach((k, v) -> sets.append(' ').append(k).append('=').append(v));
+            out.append(out.length() > 0 ? ", " : "").append(sets);
+        }
+        return out.length() == 0 ? "(none)" : out.toString();
+    }
+
+    /**
+     * {@code step k operands: ...} of TEXT.md: each operand, sorted by name, with the words its
+     * device and the next listed addresses hold in the vector's state before the step.
+     */
+    String operands(int s) {
+        int[] before = befores[s].clone();
+        Address[] slots = vector.slots;
+        java.util.Set<Long> operandKeys = new java.util.HashSet<>();
+        for (Operand o : vector.operands().values()) {
+            if (!o.isConstant()) {
+                operandKeys.add(o.device().key());
+            }
+        }
+        java.util.Set<String> scratch = vector.scratch();
+        List<String> parts = new ArrayList<>();
+        for (Map.Entry<String, Operand> e : new TreeMap<>(vector.operands()).entrySet()) {
+            Operand o = e.getValue();
+            if (o.isConstant()) {
+                parts.add(e.getKey() + " constant " + o.constant());
+                continue;
+            }
+            Address a = o.device();
+            if (scratch.contains(a.name())) {
+                parts.add(e.getKey() + " " + a.name() + " (scratch)");
+                continue;
+            }
+            int j = find(slots, a);
+            if (j < 0 || before[j] == Values.ABSENT) {
+                parts.add(e.getKey() + " " + a.name() + " (not in the vector)");
+                continue;
+            }
+            StringBuilder words = new StringBuilder(Values.show(before[j]));
+            if (Values.isWord(before[j]) && a.number() >= 0) {
+                for (Address next = a.plus(1);; next = next.plus(1)) {
+                    int k = find(slots, next);
+                    if (k < 0 || before[k] == Values.ABSENT || !Values.isWord(before[k])
+                            || operandKeys.contains(next.key()) || scratch.contains(next.name())) {
+                        break;
+                    }
+                    words.append(' ').append(Values.show(before[k]));
+                }
+            }
+            parts.add(e.getKey() + " " + a.name() + "=" + words);
+        }
+        return String.join(", ", parts);
+    }
+
     /** The devices the implementation's CPU writes on its own: not a write outside the vector. */
     Expected cpuWrites(long[] keys) {
         this.cpuWrites = keys;

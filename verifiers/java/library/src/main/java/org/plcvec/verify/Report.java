@@ -17,7 +17,7 @@ import java.util.Map;
  */
 public final class Report {
     /** What a run was: the suite, the implementation, the alternatives it followed. */
-    public record Header(Suite suite, String implementation, String version, Map<String, Verifier.Followed> followed,
+    public record Header(Suite suite, String implementation, String version, Map<String, Followed> followed,
                          java.util.Set<String> cpuWrites) {
         public Header {
             followed = Map.copyOf(new java.util.TreeMap<>(followed));

@@ -33,6 +33,7 @@ final class VectorParser {
     private static final Set<String> VECTOR_KEYS = Set.of("id", "family", "instruction", "st", "printed",
             "description", "tags", "clauses", "assumes", "initial", "steps", "final", "outcome", "alternatives");
     private static final Set<String> INITIAL_KEYS = Set.of("devices", "operands", "scratch");
+    private static final Set<String> OPERAND_KEYS = Set.of("device", "constant");
     private static final Set<String> STEP_KEYS = Set.of("set", "rlo_in", "clock", "en", "input", "elapsed_ms", "expect");
     private static final Set<String> EXPECT_KEYS = Set.of("devices", "result");
     private static final Set<String> FINAL_KEYS = Set.of("devices");
@@ -81,6 +82,9 @@ final class VectorParser {
         known(v, VECTOR_KEYS, "");
         known(v.path("assumes"), ASSUMES_KEYS, "assumes");
         known(v.get("initial"), INITIAL_KEYS, "initial");
+        for (java.util.Map.Entry<String, JsonNode> operand : v.get("initial").path("operands").properties()) {
+            known(operand.getValue(), OPERAND_KEYS, "initial/operands/" + operand.getKey());
+        }
         int i = 0;
         for (JsonNode st : v.get("steps")) {
             known(st, STEP_KEYS, "steps/" + i);

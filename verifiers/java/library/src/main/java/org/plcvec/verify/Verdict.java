@@ -16,6 +16,7 @@ public final class Verdict {
     private String message;
     private final Map<String, String> judgedBy;
     private Throwable cause;              // what the implementation threw (ERROR), or null
+    private Map<Integer, String[]> steps = Map.of();   // step -> its inputs and operands lines, for a FAIL
 
     Verdict(String id, Vector vector, Status status, List<Problem> problems, String message, Map<String, String> judgedBy) {
         this.id = id;
@@ -63,6 +64,12 @@ public final class Verdict {
         return cause;
     }
 
+    /** The inputs and operands lines of each step with a problem (TEXT.md's failure block). */
+    Verdict steps(Map<Integer, String[]> lines) {
+        this.steps = lines;
+        return this;
+    }
+
     Verdict causedBy(Throwable t) {
         this.cause = t;
         return this;
@@ -94,7 +101,14 @@ public final class Verdict {
             judgedBy.forEach((k, v) -> sb.append(sb.length() == 0 ? "" : ", ").append(k).append('=').append(v));
             lines.add("    judged by: " + sb);
         }
+        int shownStep = Integer.MIN_VALUE;
         for (Problem p : problems.subList(0, Math.min(problems.size(), SHOW_PROBLEMS))) {
+            String[] context = steps.get(p.step());
+            if (p.step() != shownStep && context != null) {
+                lines.add("    step " + p.step() + " inputs: " + context[0]);
+                lines.add("    step " + p.step() + " operands: " + context[1]);
+            }
+            shownStep = p.step();
             lines.add("    " + p.line());
         }
         if (problems.size() > SHOW_PROBLEMS) {

@@ -22,10 +22,6 @@ import java.util.TreeMap;
  * alternatives) is built once, on first use.
  */
 public final class Verifier {
-    /** One interpretation as a run follows it. */
-    public record Followed(String alternative, boolean declared, List<String> families) {
-    }
-
     private final Suite suite;
     private final Implementation implementation;
     private final Selection selection;
@@ -245,7 +241,16 @@ public final class Verifier {
             List<Problem> problems = implementation instanceof Emulator
                     ? runEmulator((Emulator) implementation, v, e, reuse)
                     : runContract(v, e);
-            return new Verdict(v.id(), v, problems.isEmpty() ? Status.PASS : Status.FAIL, problems, null, e.judgedBy);
+            if (problems.isEmpty()) {
+                return new Verdict(v.id(), v, Status.PASS, problems, null, e.judgedBy);
+            }
+            Map<Integer, String[]> steps = new java.util.HashMap<>();
+            for (Problem p : problems) {
+                if (p.step() != Problem.WHOLE) {
+                    steps.computeIfAbsent(p.step(), s -> new String[] {e.inputs(s), e.operands(s)});
+                }
+            }
+            return new Verdict(v.id(), v, Status.FAIL, problems, null, e.judgedBy).steps(steps);
         } catch (SkipVector s) {
             return new Verdict(v.id(), v, Status.SKIP, NONE, s.getMessage(), e.judgedBy);
         } catch (VirtualMachineError fatal) {

@@ -18,8 +18,10 @@ import tools.jackson.databind.JsonNode;
 /**
  * The one text (verifiers/parity/TEXT.md) against the shared cases in verifiers/parity/text/: the
  * cases' vectors loaded by this library, the cases' answers judged by its own run, and the text
- * compared byte for byte with the expected one. Today the skips by reason and the summary lines;
- * the failure blocks and the roll-up by reading are not yet this runner's text.
+ * compared byte for byte with the expected one. Today the skips by reason, the summary lines and
+ * each failure block's step inputs and operand words; the rest of the failure block (the value the
+ * implementation held, the interpretations that decide a field) and the roll-up by reading are not
+ * yet this runner's text.
  */
 class TextTest {
     static final Path CASES = Path.of("../../parity/text");
@@ -83,5 +85,37 @@ class TextTest {
         // From the skips to the end; the machine-dependent header line is not in the expected text.
         String tail = expected.substring(expected.indexOf("SKIPPED "));
         assertEquals(tail, report.skipsByReason() + "\n" + report.summaryLines() + "\n");
+    }
+
+    /** Each failing vector's {@code step k inputs:} and {@code step k operands:} lines, by id. */
+    private static Map<String, List<String>> stepLines(List<String> lines) {
+        Map<String, List<String>> out = new java.util.TreeMap<>();
+        String id = null;
+        for (String line : lines) {
+            if (line.startsWith("FAIL ")) {
+                id = line.substring("FAIL ".length());
+                out.put(id, new ArrayList<>());
+            } else if (!line.startsWith("    ")) {
+                id = null;
+            } else if (id != null && line.matches("    step \\d+ (inputs|operands): .*")) {
+                out.get(id).add(line);
+            }
+        }
+        return out;
+    }
+
+    @Test
+    void theStepInputsAndOperandWordsAreTheOneText() throws IOException {
+        Report report = Verifier.of(fromCases()).suite(Suite.load(CASES.resolve("vectors"))).run();
+        String expected = Files.readString(CASES.resolve("expected.txt"), StandardCharsets.UTF_8);
+        List<String> ours = new ArrayList<>();
+        for (Verdict v : report.verdicts()) {
+            if (v.status() == Status.FAIL) {
+                ours.addAll(List.of(v.report().split("\n")));
+            }
+        }
+        Map<String, List<String>> want = stepLines(List.of(expected.split("\n")));
+        assertEquals(want, stepLines(ours));
+        assertEquals(11, want.values().stream().filter(l -> !l.isEmpty()).count());   // the cases hold them
     }
 }
