@@ -62,6 +62,8 @@ static int forward(hostile *h, const plcvec_vector *v, plcvec_out *out, int targ
                 else if (is(h, "out-of-range"))
                     value = 70000, changed = 1;
             }
+            if (target && is(h, "cpu-writes") && c->device >= 0 && strcmp(plcvec_device(c->device)->name, "SD0") == 0)
+                continue;       /* written below, as the CPU's own value */
             if (target && !changed && compared && type == PLCVEC_BIT && is(h, "wrong-type"))
                 type = PLCVEC_WORD, value = 1, changed = 1;
             if (c->device >= 0)

@@ -310,6 +310,30 @@ static int cpu_writes(const plcvec_judge *j, const char *name)
     return 0;
 }
 
+/* What the implementation held of p's device before step s: the vector's value for step 0; after,
+ * its own report of step s-1 with step s's `set` written over it. */
+static void held_before(const plcvec_judge *j, const plcvec_vector *v, int s, const plcvec_cell *vector_before,
+                        plcvec_problem *p)
+{
+    if (s == 0) {
+        if (vector_before)
+            p->has_held = 1, p->held_type = vector_before->type, p->held = vector_before->value;
+        return;
+    }
+    const plcvec_step *st = &v->steps[s];
+    for (size_t i = 0; i < st->n_set; i++)
+        if (st->set[i].device == p->device) {
+            p->has_held = 1, p->held_type = st->set[i].type, p->held = st->set[i].value;
+            return;
+        }
+    const reported *r = j->out.cells;
+    for (size_t k = j->out.first[s - 1]; k < j->out.first[s]; k++)
+        if (r[k].device == p->device) {
+            p->has_held = 1, p->held_type = r[k].type, p->held = r[k].value;
+            return;
+        }
+}
+
 /* Compare step `s`: what was reported (cells [lo, hi)) with the expected state. */
 static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const plcvec_cell *state, size_t n_state,
                          const plcvec_cell *before, size_t n_before)
@@ -360,7 +384,9 @@ static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const p
             p->has_before = 1;
             p->before_type = b->type;
             p->before = b->value;
+            p->keep = b->type == state[i].type && b->value == state[i].value;
         }
+        held_before(j, v, s, b, p);
     }
     for (k = lo; k < hi; k++) {     /* a write outside the vector */
         if (r[k].device >= 0 && (is_scratch(v, r[k].device) || cell_of(state, n_state, r[k].device)))
@@ -377,14 +403,110 @@ static void compare_step(plcvec_judge *j, const plcvec_vector *v, int s, const p
     }
 }
 
-static void judged_by(plcvec_judge *j, const plcvec_vector *v)
+/* ---- judged by: the interpretations that decide a differing field (TEXT.md) ----------------- */
+
+/* The expected value of `device` (or the result, device -1) after step k under one offered
+ * expectation (NULL: the vector's own): 1 and the cell when listed. */
+static int expected_at(const plcvec_vector *v, const plcvec_alternative *alt, size_t k, int device, plcvec_cell *cell)
+{
+    const plcvec_expect *x = alt ? &alt->expect[k] : &v->steps[k].expect;
+    if (device == -1) {
+        cell->type = PLCVEC_BIT;
+        cell->value = (uint16_t)(x->result == 1);
+        return x->result != PLCVEC_NONE;
+    }
+    int found = 0;
+    for (size_t i = 0; i < v->n_devices; i++)
+        if (v->devices[i].device == device)
+            *cell = v->devices[i], found = 1;
+    for (size_t s = 0; s <= k; s++) {
+        const plcvec_expect *e = alt ? &alt->expect[s] : &v->steps[s].expect;
+        for (size_t i = 0; i < v->steps[s].n_set; i++)
+            if (v->steps[s].set[i].device == device)
+                *cell = v->steps[s].set[i], found = 1;
+        for (size_t i = 0; i < e->n_devices; i++)
+            if (e->devices[i].device == device)
+                *cell = e->devices[i], found = 1;
+    }
+    return found;
+}
+
+/* The alternative an offered expectation gives interpretation `interp`; -1 when it gives none. */
+static int offered_alternative(const plcvec_alternative *alt, int interp)
+{
+    if (!alt)
+        return plcvec_interpretations[interp].default_alternative;
+    for (size_t c = 0; c < alt->n_choices; c++)
+        if (alt->choices[c].interpretation == interp)
+            return alt->choices[c].alternative;
+    return -1;
+}
+
+/* The interpretations I for which the vector offers an expectation that differs from the followed
+ * combination in I alone and differs from the followed expectation at (step, device). */
+static uint64_t deciders(const plcvec_judge *j, const plcvec_vector *v, const plcvec_alternative *followed, int step,
+                         int device)
+{
+    if (step < 0 || !v->n_interpretations)
+        return 0;
+    plcvec_cell here = {0, 0, 0};
+    int listed = expected_at(v, followed, (size_t)step, device, &here);
+    uint64_t found = 0;
+    for (size_t o = 0; o <= v->n_alternatives; o++) {
+        const plcvec_alternative *alt = o == 0 ? NULL : &v->alternatives[o - 1];
+        if (alt == followed || (alt && alt->n_expect != v->n_steps))
+            continue;
+        int differing = -1, count = 0, complete = 1;
+        for (size_t i = 0; i < v->n_interpretations; i++) {
+            int interp = v->interpretations[i], a = offered_alternative(alt, interp);
+            if (a < 0)
+                complete = 0;
+            else if (a != j->alternative[interp])
+                differing = interp, count++;
+        }
+        if (!complete || count != 1 || (found >> differing & 1))
+            continue;
+        plcvec_cell there = {0, 0, 0};
+        int listed_there = expected_at(v, alt, (size_t)step, device, &there);
+        if (listed != listed_there || (listed && (here.type != there.type || here.value != there.value)))
+            found |= UINT64_C(1) << differing;
+    }
+    return found;
+}
+
+static void judged_by(plcvec_judge *j, uint64_t which)
 {
     plcvec_verdict *vd = &j->verdict;
     vd->n_choices = 0;
-    for (size_t i = 0; i < v->n_interpretations && vd->n_choices < PLCVEC_INTERPRETATION_COUNT; i++) {
-        vd->choices[vd->n_choices].interpretation = v->interpretations[i];
-        vd->choices[vd->n_choices++].alternative = j->alternative[v->interpretations[i]];
+    /* Sorted by id. */
+    for (;;) {
+        int next = -1;
+        for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT && i < 64; i++)
+            if ((which >> i & 1) && (next < 0 || strcmp(plcvec_interpretations[i].id, plcvec_interpretations[next].id) < 0))
+                next = i;
+        if (next < 0)
+            break;
+        which &= ~(UINT64_C(1) << next);
+        vd->choices[vd->n_choices].interpretation = (uint8_t)next;
+        vd->choices[vd->n_choices++].alternative = j->alternative[next];
     }
+}
+
+static const char *problem_name(const plcvec_problem *p)
+{
+    return p->name[0] ? p->name : p->device >= 0 ? plcvec_device(p->device)->name : "";
+}
+
+/* Within a step, the result first, then the devices by name. */
+static int problem_order(const void *a, const void *b)
+{
+    const plcvec_problem *x = a, *y = b;
+    if (x->step != y->step)
+        return x->step < y->step ? -1 : 1;
+    int x_result = x->device == -1 && !x->name[0], y_result = y->device == -1 && !y->name[0];
+    if (x_result != y_result)
+        return x_result ? -1 : 1;
+    return strcmp(problem_name(x), problem_name(y));
 }
 
 const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *v)
@@ -396,7 +518,8 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
     vd->problems = NULL;
     vd->n_problems = 0;
     j->n_problems = 0;
-    judged_by(j, v);
+    vd->n_choices = 0;
+    vd->applied = NULL;
     plcvec_guard_enter(v->id);      /* supports() is the implementation's code too */
     int supported = !j->impl.supports || j->impl.supports(j->impl.ctx, v->instruction);
     plcvec_guard_leave();
@@ -477,6 +600,16 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
             compare_step(j, v, (int)s, j->state, n, j->before, n_before);
         }
     }
+    qsort(j->problems, j->n_problems, sizeof *j->problems, problem_order);
+    uint64_t which = 0;
+    for (size_t i = 0; i < j->n_problems; i++) {
+        plcvec_problem *p = &j->problems[i];
+        if (p->device != -2 && !(p->device == -1 && p->name[0]))
+            p->deciders = deciders(j, v, alt, p->step, p->device);
+        which |= p->deciders;
+    }
+    judged_by(j, which);
+    vd->applied = alt;
     vd->problems = j->problems;
     vd->n_problems = j->n_problems;
     vd->status = j->n_problems ? PLCVEC_FAIL : PLCVEC_PASS;
@@ -534,6 +667,143 @@ static void value(text *t, int has, uint8_t type, uint32_t v, const char *absent
 
 #define SHOW_PROBLEMS 12    /* field lines shown per failing vector, as the Python runner */
 
+/* The vector's state before step k under the expectations judged against (scratch left out): the
+ * initial devices, each earlier step's `set` and changes, then step k's `set`. */
+static size_t state_before(const plcvec_vector *v, const plcvec_alternative *alt, size_t k, plcvec_cell *state)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < v->n_devices; i++)
+        if (!is_scratch(v, v->devices[i].device))
+            state[n++] = v->devices[i];
+    for (size_t s = 0; s <= k && s < v->n_steps; s++) {
+        for (size_t i = 0; i < v->steps[s].n_set; i++)
+            if (!is_scratch(v, v->steps[s].set[i].device))
+                put(state, &n, &v->steps[s].set[i]);
+        if (s == k)
+            break;
+        const plcvec_expect *x = alt ? &alt->expect[s] : &v->steps[s].expect;
+        for (size_t i = 0; i < x->n_devices; i++)
+            if (!is_scratch(v, x->devices[i].device))
+                put(state, &n, &x->devices[i]);
+    }
+    return n;
+}
+
+static size_t state_capacity(const plcvec_vector *v, const plcvec_alternative *alt)
+{
+    size_t need = (size_t)v->n_devices + 1;
+    for (size_t s = 0; s < v->n_steps; s++)
+        need += v->steps[s].n_set + (alt ? alt->expect[s].n_devices : v->steps[s].expect.n_devices);
+    return need;
+}
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(plcvec_device(((const plcvec_cell *)a)->device)->name, plcvec_device(((const plcvec_cell *)b)->device)->name);
+}
+
+/* `step k inputs: clock=..., rlo_in=..., en=..., input=..., elapsed_ms=..., set DEV=value ...` */
+static void inputs_line(text *t, const plcvec_step *st, int k)
+{
+    add(t, "    step %d inputs:", k);
+    const char *sep = " ";
+    const plcvec_clock *c = st->clock;
+    if (c) {
+        add(t, "%sclock=", sep);
+        const int date[3] = {c->year, c->month, c->day}, time[3] = {c->hour, c->minute, c->second};
+        const unsigned date_bits[3] = {PLCVEC_CLOCK_YEAR, PLCVEC_CLOCK_MONTH, PLCVEC_CLOCK_DAY};
+        const unsigned time_bits[3] = {PLCVEC_CLOCK_HOUR, PLCVEC_CLOCK_MINUTE, PLCVEC_CLOCK_SECOND};
+        int any_date = 0, any_time = 0;
+        for (int i = 0; i < 3; i++)
+            if (c->fields & date_bits[i])
+                add(t, any_date++ ? "/%d" : "%d", date[i]);
+        for (int i = 0; i < 3; i++)
+            if (c->fields & time_bits[i]) {
+                if (!any_time && any_date)
+                    add(t, " ");
+                add(t, any_time++ ? ":%02d" : "%d", time[i]);
+            }
+        sep = ", ";
+    }
+    static const char *const names[3] = {"rlo_in", "en", "input"};
+    const int8_t values[3] = {st->rlo_in, st->en, st->input};
+    for (int i = 0; i < 3; i++)
+        if (values[i] != PLCVEC_NONE) {
+            add(t, "%s%s=%s", sep, names[i], values[i] ? "true" : "false");
+            sep = ", ";
+        }
+    if (st->elapsed_ms != PLCVEC_NONE) {
+        add(t, "%selapsed_ms=%lld", sep, (long long)st->elapsed_ms);
+        sep = ", ";
+    }
+    if (st->n_set) {
+        plcvec_cell sorted[64];
+        size_t n = st->n_set < 64 ? st->n_set : 64;
+        memcpy(sorted, st->set, n * sizeof *sorted);
+        qsort(sorted, n, sizeof *sorted, by_name);
+        add(t, "%sset", sep);
+        for (size_t i = 0; i < n; i++) {
+            add(t, " %s=", plcvec_device(sorted[i].device)->name);
+            value(t, 1, sorted[i].type, sorted[i].value, "");
+        }
+        sep = ", ";
+    }
+    add(t, "%s\n", sep[0] == ' ' ? " (none)" : "");
+}
+
+static int by_operand_name(const void *a, const void *b)
+{
+    return strcmp((*(const plcvec_operand *const *)a)->name, (*(const plcvec_operand *const *)b)->name);
+}
+
+/* `step k operands: name DEV=words, name constant K, name DEV (scratch), ...`, sorted by name. */
+static void operands_line(text *t, const plcvec_vector *v, const plcvec_cell *state, size_t n_state, int k)
+{
+    const plcvec_operand *ops[16];
+    size_t n = v->n_operands < 16 ? v->n_operands : 16;
+    for (size_t i = 0; i < n; i++)
+        ops[i] = &v->operands[i];
+    qsort(ops, n, sizeof *ops, by_operand_name);
+    add(t, "    step %d operands:", k);
+    for (size_t i = 0; i < n; i++) {
+        const plcvec_operand *op = ops[i];
+        add(t, "%s %s ", i ? "," : "", op->name);
+        if (op->is_constant) {
+            add(t, "constant %ld", (long)op->constant);
+            continue;
+        }
+        const char *dev = plcvec_device(op->device)->name;
+        if (is_scratch(v, op->device)) {
+            add(t, "%s (scratch)", dev);
+            continue;
+        }
+        const plcvec_cell *c = cell_of(state, n_state, op->device);
+        if (!c) {
+            add(t, "%s (not in the vector)", dev);
+            continue;
+        }
+        add(t, "%s=", dev);
+        value(t, 1, c->type, c->value, "");
+        /* The words that follow, while each next address is a listed word of no other operand. */
+        for (int id = op->device; c->type == PLCVEC_WORD;) {
+            const plcvec_device_info *d = plcvec_device(id);
+            if (d->number < 0)
+                break;
+            char next[32];
+            snprintf(next, sizeof next, "%s%ld", d->kind, (long)d->number + 1);
+            id = plcvec_device_named(next);
+            c = id >= 0 && !is_scratch(v, id) ? cell_of(state, n_state, id) : NULL;
+            for (size_t o = 0; c && o < v->n_operands; o++)
+                if (!v->operands[o].is_constant && v->operands[o].device == id)
+                    c = NULL;
+            if (!c || c->type != PLCVEC_WORD)
+                break;
+            add(t, " %u", (unsigned)c->value);
+        }
+    }
+    add(t, "\n");
+}
+
 size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *vd)
 {
     text t = {buf, size, 0};
@@ -552,18 +822,22 @@ size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *vd)
         }
         add(&t, "\n");
     }
+    plcvec_cell *state = v && vd->n_problems ? malloc(state_capacity(v, vd->applied) * sizeof *state) : NULL;
+    int shown_step = -1;
     for (size_t i = 0; i < vd->n_problems && i < SHOW_PROBLEMS; i++) {
         const plcvec_problem *p = &vd->problems[i];
-        add(&t, "    ");
-        if (p->step >= 0)
-            add(&t, "step %d ", p->step);
         if (p->device == -2) {
-            add(&t, "steps: expected %u steps, got %u steps\n", (unsigned)p->expected, (unsigned)p->actual);
+            add(&t, "    steps: expected %u steps, got %u steps\n", (unsigned)p->expected, (unsigned)p->actual);
             continue;
         }
-        add(&t, "%s: expected ", p->name[0] ? p->name : p->device == -1 ? "result" : plcvec_device(p->device)->name);
+        if (p->step != shown_step && state && p->step >= 0 && (size_t)p->step < v->n_steps) {
+            shown_step = p->step;
+            inputs_line(&t, &v->steps[p->step], p->step);
+            operands_line(&t, v, state, state_before(v, vd->applied, (size_t)p->step, state), p->step);
+        }
+        add(&t, "    step %d %s: expected ", p->step, p->name[0] ? p->name : p->device == -1 ? "result" : plcvec_device(p->device)->name);
+        value(&t, p->has_expected, p->expected_type, p->expected, "<not in the vector>");
         if (p->twice) {
-            value(&t, 1, p->expected_type, p->expected, "");
             add(&t, ", got two values: ");
             value(&t, 1, p->actual_type, p->actual, "");
             add(&t, " and ");
@@ -571,20 +845,24 @@ size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *vd)
             add(&t, " (the device was reported twice)\n");
             continue;
         }
-        value(&t, p->has_expected, p->expected_type, p->expected, "<not in the vector>");
         add(&t, ", got ");
         value(&t, p->has_actual, p->actual_type, p->actual, "<not reported>");
-        if (!p->has_expected)
-            add(&t, " (a write outside the vector)");
-        else if (p->has_before && p->before_type == p->expected_type && p->before == p->expected)
-            add(&t, " (the step must leave it unchanged)");
-        else if (p->has_before) {
-            add(&t, " (before the step: ");
-            value(&t, 1, p->before_type, p->before, "");
-            add(&t, ")");
+        int is_device = p->device >= 0 || p->name[0];
+        if (is_device && p->has_expected) {
+            /* "must leave it unchanged" only where the implementation wrote the device in this step. */
+            int wrote = p->has_actual && (!p->has_held || p->held_type != p->actual_type || p->held != p->actual);
+            int held_expected = p->has_held && p->held_type == p->expected_type && p->held == p->expected;
+            if (p->keep && wrote && held_expected)
+                add(&t, " (the step must leave it unchanged)");
+            else {
+                add(&t, " (before the step: ");
+                value(&t, p->has_held, p->held_type, p->held, "<not reported>");
+                add(&t, p->keep && wrote ? "; the step must leave it unchanged)" : ")");
+            }
         }
         add(&t, "\n");
     }
+    free(state);
     if (vd->n_problems > SHOW_PROBLEMS)
         add(&t, "    ... and %zu more differences\n", vd->n_problems - SHOW_PROBLEMS);
     if (vd->message[0])

@@ -308,6 +308,11 @@ typedef struct plcvec_problem {
     uint32_t expected, actual, before;
     uint8_t twice, second_type; /* reported twice with two values: actual, then second */
     uint32_t second;
+    /* What the implementation held before the step (its own report of the step before, with this
+     * step's `set` over it; the vector's for step 0), and whether the step must keep the device. */
+    uint8_t has_held, held_type, keep;
+    uint32_t held;
+    uint64_t deciders;          /* bit (1 << plcvec_interpretation) of those that decide this field */
 } plcvec_problem;
 
 /* A known failure: listed vectors that fail are XFAIL; listed vectors that pass are STALE (a
@@ -331,8 +336,9 @@ typedef struct plcvec_verdict {
     char message[512];          /* skip/error/xfail/stale reason */
     const plcvec_problem *problems;
     size_t n_problems;
-    plcvec_choice choices[PLCVEC_INTERPRETATION_COUNT];   /* the alternatives it was judged by (those it depends on) */
+    plcvec_choice choices[PLCVEC_INTERPRETATION_COUNT];   /* judged by: the interpretations that decide a differing field */
     size_t n_choices;
+    const plcvec_alternative *applied;  /* the expectations judged against; NULL: the vector's own */
 } plcvec_verdict;
 
 /* A judge: an implementation and its resolved alternatives, with the buffers a run needs. */
