@@ -600,7 +600,8 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
             compare_step(j, v, (int)s, j->state, n, j->before, n_before);
         }
     }
-    qsort(j->problems, j->n_problems, sizeof *j->problems, problem_order);
+    if (j->n_problems > 1)
+        qsort(j->problems, j->n_problems, sizeof *j->problems, problem_order);
     uint64_t which = 0;
     for (size_t i = 0; i < j->n_problems; i++) {
         plcvec_problem *p = &j->problems[i];

@@ -362,7 +362,8 @@ int plcvec_known_write(const char *path, const char **ids, size_t n, const char 
         free(tmp);
         return -1;
     }
-    qsort(ids, n, sizeof *ids, by_id);
+    if (n > 1)
+        qsort(ids, n, sizeof *ids, by_id);
     fputs("# Known failures: each passing entry fails the run as stale, so fix and delete.\n", f);
     for (size_t i = 0; i < n; i++) {
         fputs("\n[[" SECTION "]]\nid = ", f);
