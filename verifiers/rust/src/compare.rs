@@ -19,8 +19,18 @@ pub struct ReportedStep {
 }
 
 enum Mode<'a> {
-    Judge { expected: &'a Expected, cpu_writes: &'a [String], problems: Vec<Problem> },
-    Record { steps: Vec<ReportedStep> },
+    Judge {
+        expected: &'a Expected,
+        cpu_writes: &'a [String],
+        problems: Vec<Problem>,
+        /// The implementation's own report of the previous step (listed devices; `None` where it
+        /// reported nothing), kept only for a vector of more than one step: what it held before
+        /// the next step, shown beside a difference.
+        previous: Option<Small<Option<Value>, INLINE_SLOTS>>,
+    },
+    Record {
+        steps: Vec<ReportedStep>,
+    },
 }
 
 /// Where an implementation reports its steps. While judging, each step is compared as soon as
@@ -32,11 +42,35 @@ pub struct Steps<'a> {
     count: usize,
 }
 
+/// One listed device that differs: the problem with what the implementation held before the
+/// step and whether the vector expects the step to leave it unchanged.
+fn device_problem(
+    vector: &Vector,
+    expected: &Expected,
+    previous: Option<&Small<Option<Value>, INLINE_SLOTS>>,
+    step: usize,
+    slot: usize,
+    actual: Field,
+) -> Problem {
+    let before = expected.before(vector, step, slot);
+    let want = expected.state(step).map_or(before, |s| s[slot]);
+    let set = vector.steps().get(step).and_then(|s| s.set().iter().find(|(i, _)| *i == slot));
+    let held = match (set, previous) {
+        (Some(&(_, v)), _) => Field::Value(v),
+        (None, Some(p)) if step > 0 => p[slot].map_or(Field::Missing, Field::Value),
+        _ => Field::Value(before),
+    };
+    let mut p = Problem::new(Some(step), vector.devices()[slot].name(), Field::Value(want), actual, Some(held));
+    p.keep = want == before;
+    p
+}
+
 impl<'a> Steps<'a> {
     /// Steps judged against `expected`; a write outside the vector to one of `cpu_writes` (the
     /// devices the implementation's CPU writes on its own account) is not a stray write.
     pub(crate) fn judge(vector: &'a Vector, expected: &'a Expected, cpu_writes: &'a [String]) -> Steps<'a> {
-        Steps { vector, mode: Mode::Judge { expected, cpu_writes, problems: Vec::new() }, count: 0 }
+        let previous = (vector.steps().len() > 1).then(|| Small::filled(None, vector.devices().len()));
+        Steps { vector, mode: Mode::Judge { expected, cpu_writes, problems: Vec::new(), previous }, count: 0 }
     }
 
     pub(crate) fn record(vector: &'a Vector) -> Steps<'a> {
@@ -48,7 +82,7 @@ impl<'a> Steps<'a> {
         let step = self.count;
         self.count += 1;
         match &mut self.mode {
-            Mode::Judge { expected, cpu_writes, problems } => {
+            Mode::Judge { expected, cpu_writes, problems, previous } => {
                 let Some(want) = expected.state(step) else { return };
                 check_result(step, expected.results()[step], result, problems);
                 let got = memory.values();
@@ -66,20 +100,19 @@ impl<'a> Steps<'a> {
                     let scratch = self.vector.scratch();
                     for (i, (g, w)) in got.iter().zip(want).enumerate() {
                         if g != w && !scratch[i] {
-                            let before = expected.before(self.vector, step, i);
-                            problems.push(Problem::new(
-                                Some(step),
-                                self.vector.devices()[i].name(),
-                                Field::Value(*w),
-                                Field::Value(*g),
-                                Some(before),
-                            ));
+                            let p = device_problem(self.vector, expected, previous.as_ref(), step, i, Field::Value(*g));
+                            problems.push(p);
                         }
                     }
                 }
                 for (name, v) in memory.outside() {
                     if !cpu_writes.contains(name) {
                         problems.push(Problem::new(Some(step), name, Field::Unlisted, Field::Value(*v), None));
+                    }
+                }
+                if let Some(previous) = previous {
+                    for (p, g) in previous.iter_mut().zip(got) {
+                        *p = Some(*g);
                     }
                 }
             }
@@ -103,7 +136,7 @@ impl<'a> Steps<'a> {
         let step = self.count;
         self.count += 1;
         match &mut self.mode {
-            Mode::Judge { expected, cpu_writes, problems } => {
+            Mode::Judge { expected, cpu_writes, problems, previous } => {
                 let Some(want) = expected.state(step) else { return };
                 check_result(step, expected.results()[step], result, problems);
                 let mut got: Small<Option<Value>, INLINE_SLOTS> = Small::filled(None, want.len());
@@ -135,15 +168,11 @@ impl<'a> Steps<'a> {
                         continue;
                     }
                     let actual = g.map_or(Field::Missing, Field::Value);
-                    problems.push(Problem::new(
-                        Some(step),
-                        self.vector.devices()[i].name(),
-                        Field::Value(*w),
-                        actual,
-                        Some(expected.before(self.vector, step, i)),
-                    ));
+                    problems.push(device_problem(self.vector, expected, previous.as_ref(), step, i, actual));
                 }
-                problems.sort_by(|a, b| (a.step, &a.field).cmp(&(b.step, &b.field)));
+                if let Some(previous) = previous {
+                    *previous = got;
+                }
             }
             Mode::Record { steps } => {
                 steps.push(ReportedStep {
@@ -154,22 +183,23 @@ impl<'a> Steps<'a> {
         }
     }
 
-    /// The judged problems (with a step-count check), once the implementation is done.
+    /// The judged problems, once the implementation is done: per step the result first, then
+    /// the devices by name; a report with another number of steps is that one problem alone.
     pub(crate) fn into_problems(self) -> Vec<Problem> {
         match self.mode {
             Mode::Judge { expected, mut problems, .. } => {
                 if self.count != expected.steps() {
-                    problems.insert(
-                        0,
-                        Problem::new(
-                            None,
-                            "steps",
-                            Field::Text(format!("{} steps", expected.steps())),
-                            Field::Text(format!("{} steps", self.count)),
-                            None,
-                        ),
-                    );
+                    return vec![Problem::new(
+                        None,
+                        "steps",
+                        Field::Text(format!("{} steps", expected.steps())),
+                        Field::Text(format!("{} steps", self.count)),
+                        None,
+                    )];
                 }
+                problems.sort_by(|a, b| {
+                    (a.step, a.field != "result", &a.field).cmp(&(b.step, b.field != "result", &b.field))
+                });
                 problems
             }
             Mode::Record { .. } => Vec::new(),
@@ -182,6 +212,20 @@ impl<'a> Steps<'a> {
             Mode::Judge { .. } => Vec::new(),
         }
     }
+}
+
+/// The problems of a recorded answer against `expected` (the same comparison as a run's).
+pub(crate) fn compare(
+    vector: &Vector,
+    expected: &Expected,
+    cpu_writes: &[String],
+    answer: &[ReportedStep],
+) -> Vec<Problem> {
+    let mut steps = Steps::judge(vector, expected, cpu_writes);
+    for step in answer {
+        steps.devices(step.result, step.devices.iter().map(|(n, v)| (n.as_str(), *v)));
+    }
+    steps.into_problems()
 }
 
 fn check_result(step: usize, want: Option<bool>, got: Option<bool>, problems: &mut Vec<Problem>) {

@@ -29,6 +29,8 @@ pub struct Expected {
     slots: usize,
     /// The interpretations the vector depends on, with the alternative it is judged by.
     pub choices: Vec<(String, String)>,
+    /// The default alternative of each interpretation the vector depends on.
+    pub(crate) defaults: Vec<(String, String)>,
     /// The outcome category under these alternatives (`value`, `error`, `implementation-defined`).
     pub category: String,
 }
@@ -40,12 +42,14 @@ impl Expected {
             Error::new(format!("vector {}: has no expectations (a request, not a suite vector)", vector.id()))
         })?;
         let mut applied = Vec::with_capacity(e.touched.len());
+        let mut touched_defaults = Vec::with_capacity(e.touched.len());
         let mut all_default = true;
         for i in &e.touched {
             let default = defaults.get(i.as_str()).copied().unwrap_or("");
             let alt = choices.declared(i).unwrap_or(default);
             all_default &= alt == default;
             applied.push((i.clone(), alt.to_owned()));
+            touched_defaults.push((i.clone(), default.to_owned()));
         }
         let chosen: &Expectation = if all_default {
             &e.own
@@ -91,6 +95,7 @@ impl Expected {
             states: Small::from_slice(&states),
             slots: state.len(),
             choices: applied,
+            defaults: touched_defaults,
             category: chosen.category.clone(),
         })
     }
@@ -145,4 +150,34 @@ pub fn check_choices(suite: &Suite, choices: &Choices) -> Result<()> {
         }
     }
     Ok(())
+}
+
+impl Expected {
+    /// Whether `other` expects the same of every step (each result and the full state).
+    pub(crate) fn same_outcome(&self, other: &Expected) -> bool {
+        self.results == other.results && self.states == other.states
+    }
+
+    /// The combinations of alternatives the vector offers an expectation for: its own (every
+    /// default), then each of its alternatives in file order (each as (interpretation,
+    /// alternative) for the interpretations the vector depends on).
+    pub(crate) fn offered(&self, vector: &Vector) -> Vec<Vec<(String, String)>> {
+        let mut out = vec![self.defaults.clone()];
+        if let Some(e) = &vector.expectations {
+            for alt in &e.alternatives {
+                let combination: Option<Vec<(String, String)>> =
+                    self.defaults.iter().map(|(i, _)| alt.choices.iter().find(|(ci, _)| ci == i).cloned()).collect();
+                out.extend(combination);
+            }
+        }
+        out
+    }
+
+    /// The expectation of `vector` under `combination` (interpretation -> alternative for those
+    /// the vector depends on), if the vector offers one.
+    pub(crate) fn under(&self, vector: &Vector, combination: &[(String, String)]) -> Option<Expected> {
+        let choices: Choices = combination.iter().map(|(i, a)| (i.as_str(), a.as_str())).collect();
+        let defaults: BTreeMap<&str, &str> = self.defaults.iter().map(|(i, a)| (i.as_str(), a.as_str())).collect();
+        Expected::of(vector, &choices, &defaults).ok()
+    }
 }

@@ -48,11 +48,15 @@ pub use libtest_mimic::{Arguments, Conclusion, FormatSetting};
 use libtest_mimic::{Completion, Failed, Trial};
 
 use crate::error::{Error, Result};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+
+use crate::choices::Choices;
+use crate::compare::{ReportedStep, Steps};
 use crate::implementation::Implementation;
 use crate::known::{write_expectations, KnownFailures};
 use crate::runner::{judge, Plan};
 use crate::select::{known_names, Kind, Selection};
-use crate::verdict::{describe, Status};
+use crate::verdict::{describe, Status, Verdict};
 use crate::Suite;
 
 /// Exit status of a usage error: a bad environment, vector file or known-failures file.
@@ -306,6 +310,7 @@ where
                 probe.name()
             )));
         }
+        let (name, choices, cpu_writes) = (probe.name(), probe.interpretations(), probe.cpu_writes());
         drop(probe);
         let mut trials = Vec::new();
         if let Some(k) = &known {
@@ -316,20 +321,28 @@ where
         }
         let shared = Arc::new(Shared {
             factory: self.factory,
+            suite,
             plan,
             known,
             write,
             watch: Watch { running: Mutex::new(Vec::new()), timeout, progress },
             failing: Mutex::new(Vec::new()),
             skips: Mutex::new(BTreeMap::new()),
+            results: Mutex::new(Vec::new()),
+            name,
+            choices,
+            cpu_writes,
         });
+        *shared.results.lock().unwrap_or_else(|e| e.into_inner()) = vec![None; shared.plan.len()];
         for (index, v) in shared.plan.vectors().iter().enumerate() {
             let trial = if supported[index] {
                 let shared = Arc::clone(&shared);
                 Trial::ignorable_test(v.id(), move || shared.judge_one(index))
             } else {
                 let why = format!("the implementation does not support {}", v.instruction());
-                *shared.skips.lock().unwrap_or_else(|e| e.into_inner()).entry(why).or_default() += 1;
+                *shared.skips.lock().unwrap_or_else(|e| e.into_inner()).entry(why.clone()).or_default() += 1;
+                let skip = Verdict { status: Status::Skip, problems: Vec::new(), message: why };
+                shared.results.lock().unwrap_or_else(|e| e.into_inner())[index] = Some((skip, None));
                 Trial::test(v.id(), || Ok(())).with_ignored_flag(true)
             };
             trials.push(trial);
@@ -384,9 +397,16 @@ where
         if !args.list {
             Watch::start(Arc::clone(&shared));
         }
+        let started = Instant::now();
         let conclusion = libtest_mimic::run(&args, trials);
         if args.list {
             return 0;
+        }
+        // After libtest's own report (which shows each failure once, with its test): the
+        // roll-up by reading, skips by reason and the summary lines of the one text.
+        match shared.report() {
+            Ok(report) => print!("\n{}", report.text_after_blocks(true, Some(started.elapsed().as_secs_f64()))),
+            Err(e) => eprintln!("plcvec: {e}"),
         }
         let mut code = if conclusion.has_failed() { EXIT_FAILED } else { 0 };
         if code == 0 && conclusion.num_passed == 0 {
@@ -421,8 +441,12 @@ pub fn judged_nothing(conclusion: &Conclusion) -> bool {
     conclusion.num_passed == 0 && conclusion.num_failed == 0 && conclusion.num_ignored > 0
 }
 
+/// A vector's verdict and, when it failed, the implementation's answer.
+type Judged = (Verdict, Option<Vec<ReportedStep>>);
+
 struct Shared<F> {
     factory: F,
+    suite: &'static Suite,
     plan: Plan<'static>,
     known: Option<KnownFailures>,
     write: Option<PathBuf>,
@@ -431,6 +455,12 @@ struct Shared<F> {
     failing: Mutex<Vec<String>>,
     /// Skip reason -> how many.
     skips: Mutex<BTreeMap<String, usize>>,
+    /// Per vector of the plan: its verdict and, when it failed, the answer (for the roll-up).
+    results: Mutex<Vec<Option<Judged>>>,
+    /// The implementation's name, declared alternatives and CPU-wide devices.
+    name: String,
+    choices: Choices,
+    cpu_writes: Vec<String>,
 }
 
 impl<I, F> Shared<F>
@@ -444,6 +474,18 @@ where
         let mut implementation = (self.factory)();
         let mut verdict = judge(&mut implementation, vector, expected);
         self.watch.end(index, vector.id());
+        // The failing answer, once more from a new implementation: what the roll-up judges
+        // under the other alternatives.
+        let answer = (verdict.status == Status::Fail).then(|| {
+            let mut steps = Steps::record(vector);
+            let mut again = (self.factory)();
+            let ran = catch_unwind(AssertUnwindSafe(|| again.run(vector, &mut steps).is_ok()));
+            if ran.unwrap_or(false) {
+                steps.into_recorded()
+            } else {
+                Vec::new()
+            }
+        });
         if matches!(verdict.status, Status::Fail | Status::Error) {
             self.failing.lock().unwrap_or_else(|e| e.into_inner()).push(vector.id().to_owned());
         }
@@ -453,19 +495,39 @@ where
                 self.failing.lock().unwrap_or_else(|e| e.into_inner()).push(vector.id().to_owned());
             }
         }
-        match verdict.status {
+        let outcome = match verdict.status {
             Status::Pass => Ok(Completion::Completed),
             Status::Skip => {
                 *self.skips.lock().unwrap_or_else(|e| e.into_inner()).entry(verdict.message.clone()).or_default() += 1;
-                Ok(Completion::ignored_with(verdict.message))
+                Ok(Completion::ignored_with(verdict.message.clone()))
             }
-            Status::XFail => Ok(Completion::ignored_with(verdict.message)),
+            Status::XFail => Ok(Completion::ignored_with(verdict.message.clone())),
             _ => Err(Failed::from(describe(vector, Some(expected), &verdict))),
+        };
+        if let Some(slot) = self.results.lock().unwrap_or_else(|e| e.into_inner()).get_mut(index) {
+            *slot = Some((verdict, answer));
         }
+        outcome
     }
 }
 
 impl<F> Shared<F> {
+    /// The report of the vectors this run judged (those cargo's filter left out are not in it).
+    fn report(&self) -> Result<crate::runner::Report<'static>> {
+        let suite = self.suite;
+        let results = self.results.lock().unwrap_or_else(|e| e.into_inner());
+        let ran: Vec<usize> = (0..results.len()).filter(|&i| results[i].is_some()).collect();
+        let (verdicts, answers) = ran.iter().filter_map(|&i| results[i].clone()).unzip();
+        self.plan.subset(&ran).report(
+            suite,
+            self.name.clone(),
+            &self.choices,
+            self.cpu_writes.clone(),
+            verdicts,
+            answers,
+        )
+    }
+
     /// Why a run with no failure and no pass judged nothing, and what to do.
     fn nothing_judged(&self, args: &Arguments, conclusion: &Conclusion) -> String {
         let filtered = conclusion.num_filtered_out > 0;

@@ -29,6 +29,7 @@ mod generated {
 }
 pub mod harness;
 mod implementation;
+mod infer;
 mod keys;
 mod known;
 mod memory;

@@ -2,10 +2,11 @@
 //! reads at the end: each failing vector with its field diff, then the totals, with the suite
 //! version, the spec hash, and the alternative followed for every interpretation.
 
+use std::collections::BTreeMap;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use crate::choices::Choices;
-use crate::compare::Steps;
+use crate::compare::{ReportedStep, Steps};
 use crate::error::Result;
 use crate::expect::{check_choices, Expected};
 use crate::generated::names::Instruction;
@@ -25,6 +26,36 @@ pub struct Plan<'s> {
 }
 
 impl<'s> Plan<'s> {
+    /// The plan of some of its vectors (by index, in the order given).
+    pub(crate) fn subset(&self, indexes: &[usize]) -> Plan<'s> {
+        Plan {
+            vectors: indexes.iter().map(|&i| self.vectors[i]).collect(),
+            expected: indexes.iter().map(|&i| self.expected[i].clone()).collect(),
+        }
+    }
+
+    /// A report of this plan's vectors with their verdicts and failing answers.
+    pub(crate) fn report(
+        self,
+        suite: &'s Suite,
+        implementation: String,
+        choices: &Choices,
+        cpu_writes: Vec<String>,
+        verdicts: Vec<Verdict>,
+        answers: Vec<Option<Vec<ReportedStep>>>,
+    ) -> Result<Report<'s>> {
+        Ok(Report {
+            suite,
+            implementation,
+            interpretations: followed(suite, &self, choices)?,
+            plan: self,
+            verdicts,
+            unknown_known: Vec::new(),
+            answers,
+            cpu_writes,
+        })
+    }
+
     /// The expectations of `vectors` (from `suite`) under `choices`, checked against the suite's
     /// interpretations first: an unknown interpretation or alternative is refused.
     pub fn new(suite: &'s Suite, vectors: Vec<&'s Vector>, choices: &Choices) -> Result<Plan<'s>> {
@@ -131,6 +162,10 @@ pub struct Report<'s> {
     pub verdicts: Vec<Verdict>,
     /// Listed known failures the suite has no vector for (each fails the run).
     pub unknown_known: Vec<String>,
+    /// The implementation's answer to each vector that failed (for the roll-up by reading).
+    pub answers: Vec<Option<Vec<ReportedStep>>>,
+    /// The devices the implementation's CPU writes on its own account.
+    pub cpu_writes: Vec<String>,
 }
 
 /// Run the vectors `selection` keeps through `implementation`; `known` is the expectations file.
@@ -148,6 +183,23 @@ pub fn run<'s, I: Implementation + ?Sized>(
     let choices = implementation.interpretations();
     let plan = Plan::new(suite, vectors, &choices)?;
     let verdicts = judge_plan(&plan, implementation);
+    // A failing vector's answer, recorded by running it once more (nothing carries over between
+    // vectors): what the roll-up judges under the other alternatives.
+    let answers = plan
+        .iter()
+        .zip(&verdicts)
+        .map(|((v, _), verdict)| {
+            (verdict.status == Status::Fail).then(|| {
+                let mut steps = Steps::record(v);
+                let ran = catch_unwind(AssertUnwindSafe(|| implementation.run(v, &mut steps).is_ok()));
+                if ran.unwrap_or(false) {
+                    steps.into_recorded()
+                } else {
+                    Vec::new()
+                }
+            })
+        })
+        .collect();
     let mut report = Report {
         suite,
         implementation: implementation.name(),
@@ -155,6 +207,8 @@ pub fn run<'s, I: Implementation + ?Sized>(
         plan,
         verdicts,
         unknown_known: Vec::new(),
+        answers,
+        cpu_writes: implementation.cpu_writes(),
     };
     if let Some(known) = known {
         for (verdict, v) in report.verdicts.iter_mut().zip(report.plan.vectors()) {
@@ -241,8 +295,16 @@ impl Report<'_> {
         judged > 0 && self.unknown_known.is_empty() && !self.verdicts.iter().any(|v| v.status.is_failing())
     }
 
-    /// The summary a person reads.
+    /// The summary a person reads: the run's text with its header line, without the time.
     pub fn summary(&self) -> String {
+        self.text(true, None)
+    }
+
+    /// The run's text as every plcvec runner prints it (verifiers/parity/TEXT.md): each failing
+    /// vector's block, the roll-up by reading, skips by reason, then the summary lines; the
+    /// header line (which names the machine's paths) only with `header`, and the totals with
+    /// ` in <t> s` only given the seconds.
+    pub fn text(&self, header: bool, seconds: Option<f64>) -> String {
         let mut out = String::new();
         for ((v, e), verdict) in self.plan.iter().zip(&self.verdicts) {
             if verdict.status.is_failing() {
@@ -251,37 +313,78 @@ impl Report<'_> {
             }
         }
         for line in &self.unknown_known {
-            out.push_str(&format!("STALE {line}\n"));
+            let (id, message) = line.split_once(": ").unwrap_or((line, ""));
+            out.push_str(&format!("STALE {id}\n    {message}\n"));
         }
-        let s = self.suite;
-        out.push_str(&format!(
-            "\nplcvec: {} against {} (suite {}, schema {}, spec sha256 {})\n",
-            self.implementation,
-            s.source(),
-            if s.suite_version().is_empty() { "?" } else { s.suite_version() },
-            s.schema_version(),
-            s.spec_sha256().get(..12).unwrap_or("?"),
-        ));
-        let declared: Vec<String> = self
+        out.push_str(&self.text_after_blocks(header, seconds));
+        out
+    }
+
+    /// The run's text after the failure blocks: the roll-up by reading, skips by reason and the
+    /// summary lines (for a test harness that printed each block with its test).
+    pub fn text_after_blocks(&self, header: bool, seconds: Option<f64>) -> String {
+        let mut out = String::new();
+        let followed: BTreeMap<String, String> =
+            self.interpretations.iter().map(|f| (f.interpretation.clone(), f.alternative.clone())).collect();
+        let alternatives: crate::infer::Alternatives = self
+            .suite
+            .interpretations()
+            .map(|all| all.into_iter().map(|(id, (info, _))| (id.to_owned(), info.alternatives.clone())).collect())
+            .unwrap_or_default();
+        let cases: Vec<crate::infer::Case<'_>> = self
+            .plan
+            .iter()
+            .zip(&self.verdicts)
+            .zip(&self.answers)
+            .map(|(((vector, expected), verdict), answer)| crate::infer::Case {
+                vector,
+                expected,
+                status: verdict.status,
+                answer: answer.as_deref(),
+            })
+            .collect();
+        let inference = crate::infer::infer(&cases, &followed, &alternatives, &self.cpu_writes);
+        out.push_str(&crate::infer::rollup(&cases, &inference, &followed));
+        let skipped: Vec<&str> =
+            self.verdicts.iter().filter(|v| v.status == Status::Skip).map(|v| v.message.as_str()).collect();
+        out.push_str(&crate::infer::skips(&skipped, self.verdicts.len()));
+        out.push('\n');
+        if header {
+            let s = self.suite;
+            out.push_str(&format!(
+                "plcvec: {} against {} (suite {}, schema {}, spec sha256 {})\n",
+                self.implementation,
+                s.source(),
+                if s.suite_version().is_empty() { "?" } else { s.suite_version() },
+                s.schema_version(),
+                s.spec_sha256().get(..12).unwrap_or("?"),
+            ));
+        }
+        let interpretations: Vec<String> = self
             .interpretations
             .iter()
-            .filter(|f| f.declared)
-            .map(|f| format!("{}={}", f.interpretation, f.alternative))
+            .map(|f| {
+                format!("{}={} ({})", f.interpretation, f.alternative, if f.declared { "declared" } else { "default" })
+            })
             .collect();
-        out.push_str(&format!(
-            "interpretations: {}others default\n",
-            if declared.is_empty() { String::new() } else { format!("{}; ", declared.join(", ")) }
-        ));
+        let interpretations = if interpretations.is_empty() { "(none)".to_owned() } else { interpretations.join(", ") };
+        out.push_str(&format!("interpretations: {interpretations}\n"));
+        if !self.cpu_writes.is_empty() {
+            let mut devices = self.cpu_writes.clone();
+            devices.sort();
+            out.push_str(&format!("cpu_writes: {}\n", devices.join(", ")));
+        }
         let counts: Vec<String> =
             [Status::Pass, Status::Fail, Status::Error, Status::Skip, Status::XFail, Status::Stale]
                 .iter()
-                .filter(|&&st| self.count(st) > 0 || matches!(st, Status::Pass | Status::Fail))
+                .filter(|&&st| self.count(st) > 0 || matches!(st, Status::Pass | Status::Fail | Status::Skip))
                 .map(|&st| format!("{} {}", self.count(st), st.as_str()))
                 .collect();
-        out.push_str(&format!("{} vectors: {}\n", self.verdicts.len() + self.unknown_known.len(), counts.join(", ")));
-        if !self.passed() && !self.verdicts.iter().any(|v| v.status.is_failing()) && self.unknown_known.is_empty() {
-            out.push_str("nothing was judged: the implementation skipped every selected vector\n");
+        out.push_str(&format!("{} vectors: {}", self.verdicts.len() + self.unknown_known.len(), counts.join(", ")));
+        if let Some(t) = seconds {
+            out.push_str(&format!(" in {t:.2} s"));
         }
+        out.push('\n');
         out
     }
 }

@@ -1,0 +1,76 @@
+//! The one failure text (verifiers/parity/TEXT.md): the shared cases of verifiers/parity/text/
+//! judged by this crate's own loading, comparison and text, byte for byte against the expected
+//! text every plcvec runner must print.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use plcvec::{Choices, Implementation, Refusal, Selection, Steps, Suite, Value, Vector};
+
+/// Answers each vector as `answers.json` says, declaring what its `hello` declares.
+struct Answers {
+    hello: serde_json::Value,
+    answers: BTreeMap<String, serde_json::Value>,
+}
+
+impl Implementation for Answers {
+    fn name(&self) -> String {
+        self.hello["adapter"]["name"].as_str().unwrap_or("").to_owned()
+    }
+    fn interpretations(&self) -> Choices {
+        let declared = self.hello["interpretations"].as_object().cloned().unwrap_or_default();
+        declared.iter().map(|(i, a)| (i.as_str(), a.as_str().unwrap_or(""))).collect()
+    }
+    fn supports(&self, instruction: &str) -> bool {
+        self.hello["instructions"].as_array().is_some_and(|list| list.iter().any(|i| i == instruction))
+    }
+    fn cpu_writes(&self) -> Vec<String> {
+        let list = self.hello["cpu_writes"].as_array().cloned().unwrap_or_default();
+        list.iter().filter_map(|d| d.as_str().map(str::to_owned)).collect()
+    }
+    fn run(&mut self, vector: &Vector, steps: &mut Steps<'_>) -> Result<(), Refusal> {
+        let answer = &self.answers[vector.id()];
+        if let Some(why) = answer.get("skip").and_then(|w| w.as_str()) {
+            return Err(Refusal::Skip(why.to_owned()));
+        }
+        if let Some(why) = answer.get("error").and_then(|w| w.as_str()) {
+            return Err(Refusal::Error(why.to_owned()));
+        }
+        for step in answer["steps"].as_array().expect("steps") {
+            let devices = step["devices"].as_object().expect("devices");
+            let values: Vec<(&str, Value)> = devices
+                .iter()
+                .map(|(n, v)| (n.as_str(), Value::from_json(v).expect("a bit or a word in the shared cases")))
+                .collect();
+            steps.devices(step.get("result").and_then(|r| r.as_bool()), values);
+        }
+        Ok(())
+    }
+}
+
+#[test]
+fn the_shared_cases_read_byte_for_byte_as_the_expected_text() {
+    let text = Path::new(env!("CARGO_MANIFEST_DIR")).join("../parity/text");
+    if !text.is_dir() {
+        eprintln!("not in the plcvec repository: the shared cases are not there");
+        return;
+    }
+    let suite = Suite::load(text.join("vectors")).unwrap();
+    let answers: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(text.join("answers.json")).unwrap()).unwrap();
+    let mut implementation = Answers {
+        hello: answers["hello"].clone(),
+        answers: answers["answers"].as_object().unwrap().clone().into_iter().collect(),
+    };
+    let report = plcvec::run(&suite, &mut implementation, &Selection::all(), None).unwrap();
+    let expected = std::fs::read_to_string(text.join("expected.txt")).unwrap();
+    let got = report.text(false, None);
+    assert!(got.len() > 1000 && got.contains("READINGS: 3 of 13"), "{got}");
+    if got != expected {
+        let first = got.lines().zip(expected.lines()).position(|(g, e)| g != e);
+        panic!(
+            "the text differs from expected.txt (first at line {:?}):\n--- got\n{got}\n--- expected\n{expected}",
+            first.map(|n| n + 1)
+        );
+    }
+}
