@@ -16,8 +16,10 @@ export interface Execution {
   readonly state: Record<string, unknown>;
 }
 
-export interface MemoryImplementation {
+/** An emulator that executes one instruction on its own memory, one scan at a time. */
+export interface Emulator {
   readonly name: string;
+  readonly version?: string;
   readonly instructions?: readonly string[];
   readonly choices?: Readonly<Record<string, string>>;
   /** Devices the CPU writes on its own account (Implementation.cpuWrites). */
@@ -27,12 +29,13 @@ export interface MemoryImplementation {
 }
 
 /** An Implementation from an `execute` on a device image. */
-export function executeOnMemory(impl: MemoryImplementation): Implementation {
+export function emulate(emulator: Emulator): Implementation {
   return {
-    name: impl.name,
-    ...(impl.instructions !== undefined ? { instructions: impl.instructions } : {}),
-    ...(impl.choices !== undefined ? { choices: impl.choices } : {}),
-    ...(impl.cpuWrites !== undefined ? { cpuWrites: impl.cpuWrites } : {}),
+    name: emulator.name,
+    ...(emulator.version !== undefined ? { version: emulator.version } : {}),
+    ...(emulator.instructions !== undefined ? { instructions: emulator.instructions } : {}),
+    ...(emulator.choices !== undefined ? { choices: emulator.choices } : {}),
+    ...(emulator.cpuWrites !== undefined ? { cpuWrites: emulator.cpuWrites } : {}),
     run(request: VectorRequest): RunOutcome {
       const memory = Memory.forRequest(request);
       const state: Record<string, unknown> = {};
@@ -40,7 +43,7 @@ export function executeOnMemory(impl: MemoryImplementation): Implementation {
       for (let i = 0; i < steps.length; i++) {
         const step = request.steps[i]!;
         memory.set(step.set);
-        steps[i] = memory.report(impl.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state }));
+        steps[i] = memory.report(emulator.execute({ instruction: request.instruction, operands: request.initial.operands, memory, step, state }));
       }
       return { steps };
     },

@@ -1,6 +1,6 @@
 /**
  * The implementation interface (CONTRACT.md): one vector's initial state in, the state after each
- * step out. `executeOnMemory` (emulator.ts) builds one from an `execute` on a device image.
+ * step out. `emulate` (emulator.ts) builds one from an `execute` on a device image.
  */
 import type { Devices, VectorRequest } from "./vector.js";
 

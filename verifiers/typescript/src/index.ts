@@ -13,7 +13,7 @@ export * from "./generated/names.js";
 export { checkRun, cases, runReport, VectorFailure, type Case, type CaseOptions } from "./cases.js";
 export { resolveChoices, type Followed } from "./choices.js";
 export { compare, cpuWritesOf, judge, prepare, type Prepared } from "./compare.js";
-export { executeOnMemory, type Execution, type MemoryImplementation } from "./emulator.js";
+export { emulate, type Execution, type Emulator } from "./emulator.js";
 export { VerifyError } from "./errors.js";
 export { expectedOf, type Expected } from "./expect.js";
 export type { Implementation, RunOutcome, StepResult } from "./implementation.js";
