@@ -240,7 +240,7 @@ final class Expected {
     }
 
     /** The field-level differences after step {@code s}, memory form. */
-    List<Problem> problems(int s, Memory m, Boolean result) {
+    List<Problem> problems(int s, Memory m, Boolean result, int[] held) {
         int n = m.size();
         Address[] a = new Address[n];
         String[] shown = new String[n];
@@ -250,11 +250,11 @@ final class Expected {
             values[j] = m.valueAt(j);
             shown[j] = Values.show(values[j]);
         }
-        return problems(s, a, values, shown, result, true);
+        return problems(s, a, values, shown, result, held);
     }
 
     /** The field-level differences after step {@code s}, as a contract-level implementation reported it. */
-    List<Problem> problems(int s, DeviceImage image, Boolean result) {
+    List<Problem> problems(int s, DeviceImage image, Boolean result, DeviceImage previous) {
         int n = image.size();
         Address[] a = new Address[n];
         String[] shown = new String[n];
@@ -264,11 +264,37 @@ final class Expected {
             values[j] = image.value(j);
             shown[j] = image.show(j);
         }
-        return problems(s, a, values, shown, result, false);
+        return problems(s, a, values, shown, result, held(s, previous));
+    }
+
+    /**
+     * What a contract-level implementation held before step {@code s}, per slot: the vector's own
+     * state for step 0, else its report of the step before with step {@code s}'s {@code set} over it.
+     */
+    private int[] held(int s, DeviceImage previous) {
+        if (s == 0 || previous == null) {
+            return befores[s];
+        }
+        Address[] slots = vector.slots;
+        int[] held = new int[slots.length];
+        java.util.Arrays.fill(held, Values.ABSENT);
+        for (int r = 0; r < previous.size(); r++) {
+            int j = find(slots, previous.address(r));
+            if (j >= 0) {
+                held[j] = previous.value(r);
+            }
+        }
+        vector.steps().get(s).set().forEach((name, value) -> {
+            int j = find(slots, Address.of(name));
+            if (j >= 0) {
+                held[j] = Values.encode(value);
+            }
+        });
+        return held;
     }
 
     private List<Problem> problems(int s, Address[] reported, int[] values, String[] shown, Boolean result,
-                                   boolean memory) {
+                                   int[] held) {
         List<Problem> out = new ArrayList<>();
         Boolean want = results[s];
         if (want != null && !want.equals(result)) {
@@ -294,8 +320,7 @@ final class Expected {
                 actual[j] = values[r];
                 actualShown[j] = shown[r];
             } else if (values[r] != Values.ABSENT && !cpuWrite(reported[r])) {
-                outside.add(new Problem(s, reported[r].name(), Problem.NOT_IN_VECTOR, shown[r]
-                        + (memory ? " (written, but the instruction must not write outside the vector)" : ""), null));
+                outside.add(new Problem(s, reported[r].name(), Problem.NOT_IN_VECTOR, shown[r], null));
             }
         }
         int[] expect = states[s];
@@ -307,8 +332,13 @@ final class Expected {
             }
             String want2 = expect[j] == Values.ABSENT ? Problem.NOT_IN_VECTOR : Values.show(expect[j]);
             String got = actual[j] == Values.ABSENT ? Problem.NOT_REPORTED : actualShown[j];
-            String was = before[j] == Values.ABSENT ? null : Values.show(before[j]);
-            fields.add(new Problem(s, slots[j].name(), want2, got, was));
+            // TEXT.md: the value the implementation held before the step, and "must leave it
+            // unchanged" only where the vector keeps the device and the implementation wrote it.
+            int had = held == null ? before[j] : held[j];
+            String was = had == Values.ABSENT ? Problem.NOT_REPORTED : Values.show(had);
+            boolean keep = expect[j] == before[j];
+            boolean wrote = actual[j] != Values.ABSENT && actual[j] != had;
+            fields.add(new Problem(s, slots[j].name(), want2, got, was, keep && wrote));
         }
         fields.addAll(outside);
         fields.sort((x, y) -> x.field().compareTo(y.field()));

@@ -269,17 +269,37 @@ public final class Verifier {
             m.reset(v.slots.length, v.initial);
         }
         Emulator.Scan scan = emulator.load(v, m);
-        List<Problem> problems = NONE;
         List<Step> steps = v.steps();
         for (int s = 0, n = steps.size(); s < n; s++) {
             Step step = steps.get(s);
             step.applySet(m);
+            if (!e.matches(s, m, scan.execute(step))) {
+                return replay(emulator, v, e);
+            }
+        }
+        return NONE;
+    }
+
+    /**
+     * The problems of a vector the emulator failed, found by running it again from the start on a
+     * fresh CPU and memory, keeping what it held before each step (the fast path keeps nothing).
+     */
+    private static List<Problem> replay(Emulator emulator, Vector v, Expected e) throws Exception {
+        Memory m = v.newMemory();
+        Emulator.Scan scan = emulator.load(v, m);
+        List<Problem> problems = new ArrayList<>();
+        List<Step> steps = v.steps();
+        int listed = v.slots.length;
+        for (int s = 0, n = steps.size(); s < n; s++) {
+            Step step = steps.get(s);
+            step.applySet(m);
+            int[] held = new int[listed];
+            for (int j = 0; j < listed; j++) {
+                held[j] = m.valueAt(j);
+            }
             Boolean result = scan.execute(step);
             if (!e.matches(s, m, result)) {
-                if (problems == NONE) {
-                    problems = new ArrayList<>();
-                }
-                problems.addAll(e.problems(s, m, result));
+                problems.addAll(e.problems(s, m, result, held));
             }
         }
         return problems;
@@ -297,7 +317,7 @@ public final class Verifier {
             if (st == null || st.devices() == null) {
                 throw new IllegalStateException("step " + s + ": the implementation reported no devices");
             }
-            List<Problem> p = e.problems(s, st.devices(), st.result());
+            List<Problem> p = e.problems(s, st.devices(), st.result(), s == 0 ? null : states.get(s - 1).devices());
             if (!p.isEmpty()) {
                 if (problems == NONE) {
                     problems = new ArrayList<>();

@@ -59,8 +59,8 @@ class CompareTest {
     @Test
     void aMissingDeviceIsNotReported() {
         Verdict r = judge(Fakes.echo((s, d) -> d.remove("SD0")));
-        assertEquals("step 0 SD0: expected 0, got <not reported> (the step must leave it unchanged)",
-                r.problems().get(0).line());
+        // Not reported is not written: the value it held is shown, not "must leave it unchanged".
+        assertEquals("step 0 SD0: expected 0, got <not reported> (before the step: 0)", r.problems().get(0).line());
     }
 
     @Test
