@@ -169,6 +169,10 @@ def toy_language(tmp_path, monkeypatch):
         "// {{ note }}\n{% for i in suite.instructions %}{{ i | upper_snake }} = {{ i.text | c_str }}\n{% endfor %}")
     (lang / "family.j2").write_text("{{ family.name | pascal }} {{ family.vectors | length }}\n")
     monkeypatch.setattr(targets, "TEMPLATES", templates)
+    # The contract every export writes its reference tables into, between their markers.
+    contract = tmp_path / "out" / "verifiers" / "CONTRACT.md"
+    contract.parent.mkdir(parents=True)
+    contract.write_text("# Contract\n\n<!-- plcvec:reference-tables -->\n<!-- /plcvec:reference-tables -->\nEnd.\n")
     return tmp_path / "out"
 
 
@@ -260,7 +264,9 @@ def test_export_refuses_a_damaged_folder_and_writes_nothing(repo, tmp_path, toy_
     assert main(["export", "--lang", "toy", "--vectors", str(folder), "--root", str(toy_language)]) == 2
     captured = capsys.readouterr()
     assert says in captured.err and "Traceback" not in captured.err
-    assert not toy_language.exists()                         # nothing half-written
+    # Nothing half-written: the root holds only the contract the fixture put there, unchanged.
+    assert [p for p in toy_language.rglob("*") if p.is_file()] == [toy_language / "verifiers" / "CONTRACT.md"]
+    assert (toy_language / "verifiers" / "CONTRACT.md").read_text().endswith("-->\n<!-- /plcvec:reference-tables -->\nEnd.\n")
 
 
 def test_device_types_problem_names_both_places():

@@ -4,6 +4,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from plcvec.errors import PlcvecError
+from plcvec.export import reference
 from plcvec.export.model import load_model
 from plcvec.export.targets import languages, render
 from plcvec.export.validate import check_vectors
@@ -75,6 +76,28 @@ def run(args):
             else:
                 stale.unlink()
                 print(f"plcvec export: removed stale {stale}")
+    # The reference tables between the markers of the contract and of each language's README.
+    tables = reference.render_tables(model)
+    for rel in reference.targets(chosen):
+        path = root / rel
+        total += 1
+        try:
+            current = path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise PlcvecError(f"{path}: cannot read ({exc.strerror or exc}); it carries the reference tables") from None
+        try:
+            text = reference.replace_section(path, current, tables)
+        except PlcvecError as exc:
+            if not args.check:
+                raise
+            differ.append(str(exc))
+            continue
+        if text != current:
+            if args.check:
+                differ.append(f"{path}: the reference tables differ from what the spec gives")
+            else:
+                write_atomic(path, text)
+                written += 1
     if args.check:
         if report_drift("plcvec export --check", "the exported files are not what the vectors give", differ,
                         "plcvec export --all"):

@@ -70,6 +70,8 @@ class FamilyModel:
     vectors: list[dict]
     jsonl: str
     clauses: list[Name] = field(default_factory=list)   # every clause its vectors exercise, sorted
+    # Operands, clock fields, flags and interpretations as the reference tables show them (export/reference.py).
+    reference: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -159,6 +161,7 @@ def load_model(vectors_dir, spec_dir=None) -> SuiteModel:
                               f"{spec.path if spec else f'the spec folder (no family {fam_name})'}; "
                               "run `plcvec generate` first")
         metadata = instruction_metadata(spec)
+        from plcvec.export.reference import family_reference
         fam_interps = []
         for i in data["interpretations"]:
             interp = interpretations.get(i["id"])
@@ -176,7 +179,8 @@ def load_model(vectors_dir, spec_dir=None) -> SuiteModel:
             spec_sha256=data["spec_sha256"], instructions=[_instruction(i, metadata) for i in data["instructions"]],
             tags=[tags[t] for t in data["tags"]], interpretations=fam_interps,
             header=header, vectors=data["vectors"], jsonl=family_jsonl(data),
-            clauses=[_name(c) for c in sorted({c for v in data["vectors"] for c in v.get("clauses", ())})]))
+            clauses=[_name(c) for c in sorted({c for v in data["vectors"] for c in v.get("clauses", ())})],
+            reference=family_reference(spec)))
     return SuiteModel(
         suite_version=str(manifest.get("generator_version", "")),
         schema_version=str(manifest.get("schema_version", "")),
