@@ -11,17 +11,7 @@ does not hold) is a problem for `plcvec review --check`.
 from __future__ import annotations
 
 from plcvec.review.quotes import owner_of as _owner
-
-
-def _walk(node, where=()):
-    """(path, mapping) of every mapping in a spec document, in document order."""
-    if isinstance(node, dict):
-        yield where, node
-        for k, v in node.items():
-            yield from _walk(v, where + (k,))
-    elif isinstance(node, list):
-        for i, v in enumerate(node):
-            yield from _walk(v, where + (i,))
+from plcvec.spec.checks import _walk   # (path, mapping) of every mapping of a spec document
 
 
 def document_label(document):
