@@ -192,6 +192,19 @@ final class Expected {
         return String.join(", ", parts);
     }
 
+    /** Whether {@code other} expects something else than this at {@code problem}'s step and field. */
+    boolean differs(Expected other, Problem problem) {
+        int k = problem.step();
+        if (k == Problem.WHOLE) {
+            return false;
+        }
+        if (problem.field().equals("result")) {
+            return !java.util.Objects.equals(results[k], other.results[k]);
+        }
+        int j = find(vector.slots, Address.of(problem.field()));
+        return j >= 0 && states[k][j] != other.states[k][j];
+    }
+
     /** The devices the implementation's CPU writes on its own: not a write outside the vector. */
     Expected cpuWrites(long[] keys) {
         this.cpuWrites = keys;

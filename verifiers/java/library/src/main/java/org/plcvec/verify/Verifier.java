@@ -81,6 +81,8 @@ public final class Verifier {
         final Expected[] expectedInOrder;   // expected, in the order of `vectors`
         final boolean[] supported;          // implementation.supports(instruction), asked once
         final Memory[] memories;            // one per vector, reused by run()
+        final Map<String, String> all;      // interpretation -> the alternative followed (declared or default)
+        final Map<String, String> defaults;
 
         Plan(Suite suite, Implementation impl, Selection selection) {
             this.vectors = selection.apply(suite);
@@ -104,6 +106,8 @@ public final class Verifier {
                 }
             }
             this.followed = Collections.unmodifiableMap(followed);
+            this.all = all;
+            this.defaults = defaults;
             long[] cpuWrites = impl.cpuWrites().stream().mapToLong(d -> Address.of(d).key()).toArray();
             for (Vector v : vectors) {
                 expected.put(v.id(), Expected.of(v, all, defaults).cpuWrites(cpuWrites));
@@ -250,7 +254,7 @@ public final class Verifier {
                     steps.computeIfAbsent(p.step(), s -> new String[] {e.inputs(s), e.operands(s)});
                 }
             }
-            return new Verdict(v.id(), v, Status.FAIL, problems, null, e.judgedBy).steps(steps);
+            return new Verdict(v.id(), v, Status.FAIL, problems, null, deciding(v, e, problems)).steps(steps);
         } catch (SkipVector s) {
             return new Verdict(v.id(), v, Status.SKIP, NONE, s.getMessage(), e.judgedBy);
         } catch (VirtualMachineError fatal) {
@@ -278,6 +282,48 @@ public final class Verifier {
             }
         }
         return NONE;
+    }
+
+    /**
+     * The interpretations that decide a differing field (TEXT.md, "judged by"): I decides when the
+     * vector offers an expectation that differs from the followed one in I only and differs at a
+     * problem's field; each with the alternative followed.
+     */
+    private Map<String, String> deciding(Vector v, Expected e, List<Problem> problems) {
+        List<String> touched = v.interpretations();
+        if (touched.isEmpty()) {
+            return Map.of();
+        }
+        Plan p = plan();
+        List<Map<String, String>> offered = new ArrayList<>();
+        Map<String, String> defaults = new TreeMap<>();
+        touched.forEach(i -> defaults.put(i, p.defaults.get(i)));
+        offered.add(defaults);
+        for (Vector.Variant variant : v.variants()) {
+            if (variant.choices().keySet().containsAll(touched)) {
+                Map<String, String> c = new TreeMap<>();
+                touched.forEach(i -> c.put(i, variant.choices().get(i)));
+                offered.add(c);
+            }
+        }
+        Map<String, String> out = new TreeMap<>();
+        for (String i : touched) {
+            for (Map<String, String> c : offered) {
+                boolean onlyI = !c.get(i).equals(e.judgedBy.get(i)) && touched.stream()
+                        .allMatch(x -> x.equals(i) || c.get(x).equals(e.judgedBy.get(x)));
+                if (!onlyI) {
+                    continue;
+                }
+                Map<String, String> all = new TreeMap<>(p.all);
+                all.putAll(c);
+                Expected other = Expected.of(v, all, p.defaults);
+                if (problems.stream().anyMatch(problem -> e.differs(other, problem))) {
+                    out.put(i, e.judgedBy.get(i));
+                    break;
+                }
+            }
+        }
+        return out;
     }
 
     /**

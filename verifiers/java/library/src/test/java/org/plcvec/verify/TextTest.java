@@ -19,9 +19,9 @@ import tools.jackson.databind.JsonNode;
  * The one text (verifiers/parity/TEXT.md) against the shared cases in verifiers/parity/text/: the
  * cases' vectors loaded by this library, the cases' answers judged by its own run, and the text
  * compared byte for byte with the expected one. Today the skips by reason, the summary lines and
- * each failure block's step inputs, operand words and field lines (with the value the
- * implementation held before the step); the {@code judged by:} line (the interpretations that
- * decide a field) and the roll-up by reading are not yet this runner's text.
+ * each failure block's {@code judged by:} line (the interpretations that decide a field), step
+ * inputs, operand words and field lines (with the value the implementation held before the step);
+ * the roll-up by reading is not yet this runner's text.
  */
 class TextTest {
     static final Path CASES = Path.of("../../parity/text");
@@ -87,7 +87,7 @@ class TextTest {
         assertEquals(tail, report.skipsByReason() + "\n" + report.summaryLines() + "\n");
     }
 
-    /** Each failing vector's {@code step k inputs:}, {@code step k operands:} and field lines, by id. */
+    /** Each failing vector's {@code judged by:}, {@code step k inputs:}, {@code step k operands:} and field lines, by id. */
     private static Map<String, List<String>> stepLines(List<String> lines) {
         Map<String, List<String>> out = new java.util.TreeMap<>();
         String id = null;
@@ -97,7 +97,7 @@ class TextTest {
                 out.put(id, new ArrayList<>());
             } else if (!line.startsWith("    ")) {
                 id = null;
-            } else if (id != null && line.matches("    (step \\d+ (inputs|operands): |step \\d+ \\S+: expected |steps: expected ).*")) {
+            } else if (id != null && line.matches("    (judged by: |step \\d+ (inputs|operands): |step \\d+ \\S+: expected |steps: expected ).*")) {
                 out.get(id).add(line);
             }
         }
