@@ -49,6 +49,9 @@ set -e
 [ "$rc_known" = 1 ] && grep -q "but it passes" "$out/known.txt" || { cat "$out/known.txt"; echo "c: known failures gave $rc_known"; exit 1; }
 [ "$rc" = 5 ] && grep -q PLCVEC_ID "$out/filter.txt" || { cat "$out/filter.txt"; echo "c: a filter of nothing gave $rc"; exit 1; }
 [ "$rc_empty" = 5 ] || { cat "$out/empty.txt"; echo "c: an empty selection gave $rc_empty"; exit 1; }
+# PLCVEC_WRITE_EXPECTATIONS under GoogleTest: a run without failures writes a list without entries.
+PLCVEC_WRITE_EXPECTATIONS="$out/written.toml" "$out/snippets/consumer/build/my_emulator_tests" >/dev/null
+[ "$(cat "$out/written.toml")" = "# Known failures: each passing entry fails the run as stale, so fix and delete." ]
 (cd "$out/snippets/consumer" && PKG_CONFIG_PATH="$prefix/lib/pkgconfig" bash pkgconfig.sh && ./my_emulator_tests >/dev/null)
 # The version file: 0.1 is found (the project above), 0.2 is not.
 mkdir -p "$out/version"

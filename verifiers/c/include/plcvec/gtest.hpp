@@ -13,7 +13,7 @@
 // vectors() selects as plcvec_main does, from the PLCVEC_* variables. check() judges one vector:
 // a failure is a test failure with the field-level text, a skip is a skipped test, a vector listed
 // in PLCVEC_KNOWN_FAILURES that fails is skipped as a known failure and one that passes fails as
-// stale. run_all_tests() is RUN_ALL_TESTS() followed by the checks GoogleTest does not make: exit 5
+// stale; PLCVEC_WRITE_EXPECTATIONS writes the run's failures as a known-failures file. run_all_tests() is RUN_ALL_TESTS() followed by the checks GoogleTest does not make: exit 5
 // when no vector was judged (a --gtest_filter that matches nothing, an empty selection) or none
 // passed (an implementation that skips everything), 1 when a listed known failure names no vector.
 #ifndef PLCVEC_GTEST_HPP
@@ -34,6 +34,7 @@ namespace plcvec::gtest {
 namespace detail {
 struct Run {
     size_t judged = 0, passed = 0, skipped = 0, known = 0;
+    std::vector<const char *> failing;      // for PLCVEC_WRITE_EXPECTATIONS: failures and known failures
     std::vector<plcvec_known_failure> known_failures;
     bool known_loaded = false;
 };
@@ -110,8 +111,11 @@ inline void check(plcvec_judge *judge, const plcvec_vector *v) {
         GTEST_SKIP() << v->id << ": " << vd.message;
     case PLCVEC_XFAIL:
         r.known++;
+        r.failing.push_back(v->id);
         GTEST_SKIP() << v->id << ": " << vd.message;
     default:
+        if (vd.status != PLCVEC_STALE)
+            r.failing.push_back(v->id);
         ADD_FAILURE() << describe(&vd);
     }
 }
@@ -119,7 +123,16 @@ inline void check(plcvec_judge *judge, const plcvec_vector *v) {
 // RUN_ALL_TESTS(), then what makes a run of nothing a failure. Use it as main's return value.
 inline int run_all_tests() {
     int rc = RUN_ALL_TESTS();
-    const detail::Run &r = detail::run();
+    detail::Run &r = detail::run();
+    // PLCVEC_WRITE_EXPECTATIONS: this run's failures as a known-failures file, as plcvec verify writes it.
+    if (const char *path = std::getenv("PLCVEC_WRITE_EXPECTATIONS")) {
+        char err[1024];
+        if (plcvec_known_write(path, r.failing.data(), r.failing.size(), "not yet triaged", err, sizeof err) != 0) {
+            std::printf("plcvec: %s\n", err);
+            return PLCVEC_EXIT_USAGE;
+        }
+        std::printf("plcvec: %zu known failures written to %s\n", r.failing.size(), path);
+    }
     int stale = 0;
     for (const plcvec_known_failure &k : detail::known_failures())
         if (!plcvec_find(k.id)) {
