@@ -226,8 +226,8 @@ def test_missing_vector_folder_is_named(tmp_path, toy_language, capsys):
 # -- the vector folder is refused as `plcvec verify` refuses it -------------------------------------
 
 def _damaged_copy(repo, tmp_path, damage):
-    """A copy of the golden folder with one damage to fx5-time-add.json (resealed in manifest.json
-    unless the damage is the seal itself)."""
+    """A copy of the golden folder with one damage to fx5-time-add.json (resealed in manifest.json,
+    its sha256 and count, unless the damage is the seal itself)."""
     import hashlib
 
     folder = tmp_path / "vectors"
@@ -246,8 +246,10 @@ def _damaged_copy(repo, tmp_path, damage):
         data["schema_version"] = "2.0.0"
     path.write_text(json.dumps(data, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
     manifest = json.loads((folder / "manifest.json").read_text())
-    manifest["families"]["fx5-time-add"]["sha256"] = (
-        "0" * 64 if damage == "sha-mismatch" else hashlib.sha256(path.read_bytes()).hexdigest())
+    entry = manifest["families"]["fx5-time-add"]
+    entry["sha256"] = "0" * 64 if damage == "sha-mismatch" else hashlib.sha256(path.read_bytes()).hexdigest()
+    if "count" in entry:
+        entry["count"] = len(data["vectors"])
     (folder / "manifest.json").write_text(json.dumps(manifest, indent=1))
     return folder
 
@@ -257,7 +259,7 @@ def _damaged_copy(repo, tmp_path, damage):
     ("unknown-key", "'surprise' was unexpected"),
     ("bit-holds-2", "vector fx5-time-add/TADD/manual-example/program: SM"),
     ("major-version", "fx5-time-add.json: schema_version 2.0.0 is not 1.x"),
-    ("sha-mismatch", "fx5-time-add.json: sha256"),
+    ("sha-mismatch", "fx5-time-add.json: its sha256 is not the one manifest.json records"),
 ])
 def test_export_refuses_a_damaged_folder_and_writes_nothing(repo, tmp_path, toy_language, damage, says, capsys):
     folder = _damaged_copy(repo, tmp_path, damage)
