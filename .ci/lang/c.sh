@@ -102,6 +102,15 @@ python3 -m plcvec verify -q --adapter "verifiers/c/reference-adapter --choose FX
     --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset \
     --choose HOUR-D1-OUT-OF-RANGE=error"
 gate_rejects c "verifiers/c/reference-adapter --mutant cp1e-and-as-or"
+# The whole run's text (the failure blocks, the roll-up by reading, the skips, the summary) is
+# plcvec verify's: each mutant judged in process by the C library, and served to plcvec verify by
+# the stdio adapter (the header line, the time and the adapter's build notes left out).
+for mutant in fx5-and-executed-when-off hour-drops-fraction cp1e-flags-not-reflected; do
+    diff <("$C/build/tests/test_mutant" "$mutant" --run | grep -v '^plcvec: ' | sed -E 's/ in [0-9]+\.[0-9]{2} s$//') \
+         <(python3 -m plcvec verify --adapter "verifiers/c/reference-adapter --mutant $mutant" 2>/dev/null |
+           grep -v '^plcvec verify: \|^NOTE adapter: ' | sed -E 's/ in [0-9]+\.[0-9]{2} s$//')
+done
+echo "c: the run's text of three mutants is plcvec verify's, byte for byte"
 
 # The shared table of faults through plcvec_main and the GoogleTest pattern: every row gives
 # plcvec verify's verdict (verifiers/parity/README.md).

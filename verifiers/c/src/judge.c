@@ -509,6 +509,59 @@ static int problem_order(const void *a, const void *b)
     return strcmp(problem_name(x), problem_name(y));
 }
 
+/* Compare the answer in j->out with the expectations `alt` (NULL: the vector's own), adding the
+ * differences to j->problems. -1 when out of memory. */
+static int compare_answer(plcvec_judge *j, const plcvec_vector *v, const plcvec_alternative *alt)
+{
+    plcvec_out *out = &j->out;
+    if (out->n_steps != v->n_steps) {
+        plcvec_problem *p = problem(j, -1, -2);
+        if (p) {
+            p->has_expected = p->has_actual = 1;
+            p->expected = v->n_steps;
+            p->actual = (uint32_t)out->n_steps;
+        }
+    } else {
+        size_t need = (size_t)v->n_devices + 1;
+        for (size_t s = 0; s < v->n_steps; s++)
+            need += v->steps[s].n_set + (alt ? alt->expect[s].n_devices : v->steps[s].expect.n_devices);
+        size_t cap = j->cap_state;
+        if (!grow((void **)&j->state, &cap, need, sizeof *j->state) ||
+            !grow((void **)&j->before, &j->cap_state, need, sizeof *j->before)) {
+            return -1;
+        }
+        size_t n = 0;
+        for (size_t i = 0; i < v->n_devices; i++)
+            if (!is_scratch(v, v->devices[i].device))
+                j->state[n++] = v->devices[i];
+        for (size_t s = 0; s < v->n_steps; s++) {
+            const plcvec_step *st = &v->steps[s];
+            const plcvec_expect *x = alt ? &alt->expect[s] : &st->expect;
+            for (size_t i = 0; i < st->n_set; i++)
+                if (!is_scratch(v, st->set[i].device))
+                    put(j->state, &n, &st->set[i]);
+            memcpy(j->before, j->state, n * sizeof *j->state);
+            size_t n_before = n;
+            for (size_t i = 0; i < x->n_devices; i++)
+                if (!is_scratch(v, x->devices[i].device))
+                    put(j->state, &n, &x->devices[i]);
+            if (x->result != PLCVEC_NONE && out->results[s] != x->result) {
+                plcvec_problem *p = problem(j, (int)s, -1);
+                if (p) {
+                    p->has_expected = 1;
+                    p->expected_type = PLCVEC_BIT;
+                    p->expected = (uint32_t)x->result;
+                    p->has_actual = out->results[s] != PLCVEC_NONE;
+                    p->actual_type = PLCVEC_BIT;
+                    p->actual = (uint32_t)(out->results[s] == 1);
+                }
+            }
+            compare_step(j, v, (int)s, j->state, n, j->before, n_before);
+        }
+    }
+    return 0;
+}
+
 const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *v)
 {
     plcvec_verdict *vd = &j->verdict;
@@ -520,6 +573,7 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
     j->n_problems = 0;
     vd->n_choices = 0;
     vd->applied = NULL;
+    vd->offered_passes = 0;
     plcvec_guard_enter(v->id);      /* supports() is the implementation's code too */
     int supported = !j->impl.supports || j->impl.supports(j->impl.ctx, v->instruction);
     plcvec_guard_leave();
@@ -553,52 +607,21 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
                                  : "run() returned nonzero");
         return vd;
     }
-    if (out->n_steps != v->n_steps) {
-        plcvec_problem *p = problem(j, -1, -2);
-        if (p) {
-            p->has_expected = p->has_actual = 1;
-            p->expected = v->n_steps;
-            p->actual = (uint32_t)out->n_steps;
-        }
-    } else {
-        size_t need = (size_t)v->n_devices + 1;
-        for (size_t s = 0; s < v->n_steps; s++)
-            need += v->steps[s].n_set + (alt ? alt->expect[s].n_devices : v->steps[s].expect.n_devices);
-        size_t cap = j->cap_state;
-        if (!grow((void **)&j->state, &cap, need, sizeof *j->state) ||
-            !grow((void **)&j->before, &j->cap_state, need, sizeof *j->before)) {
-            vd->status = PLCVEC_ERROR;
-            snprintf(vd->message, sizeof vd->message, "out of memory");
-            return vd;
-        }
-        size_t n = 0;
-        for (size_t i = 0; i < v->n_devices; i++)
-            if (!is_scratch(v, v->devices[i].device))
-                j->state[n++] = v->devices[i];
-        for (size_t s = 0; s < v->n_steps; s++) {
-            const plcvec_step *st = &v->steps[s];
-            const plcvec_expect *x = alt ? &alt->expect[s] : &st->expect;
-            for (size_t i = 0; i < st->n_set; i++)
-                if (!is_scratch(v, st->set[i].device))
-                    put(j->state, &n, &st->set[i]);
-            memcpy(j->before, j->state, n * sizeof *j->state);
-            size_t n_before = n;
-            for (size_t i = 0; i < x->n_devices; i++)
-                if (!is_scratch(v, x->devices[i].device))
-                    put(j->state, &n, &x->devices[i]);
-            if (x->result != PLCVEC_NONE && out->results[s] != x->result) {
-                plcvec_problem *p = problem(j, (int)s, -1);
-                if (p) {
-                    p->has_expected = 1;
-                    p->expected_type = PLCVEC_BIT;
-                    p->expected = (uint32_t)x->result;
-                    p->has_actual = out->results[s] != PLCVEC_NONE;
-                    p->actual_type = PLCVEC_BIT;
-                    p->actual = (uint32_t)(out->results[s] == 1);
-                }
-            }
-            compare_step(j, v, (int)s, j->state, n, j->before, n_before);
-        }
+    if (compare_answer(j, v, alt) != 0) {
+        vd->status = PLCVEC_ERROR;
+        snprintf(vd->message, sizeof vd->message, "out of memory");
+        return vd;
+    }
+    /* For the roll-up by reading: under which offered expectations the same answer passes. */
+    vd->offered_passes = 0;
+    size_t kept = j->n_problems;
+    for (size_t o = 0; o <= v->n_alternatives && o < 64 && kept; o++) {
+        const plcvec_alternative *other = o == 0 ? NULL : &v->alternatives[o - 1];
+        if (other && other->n_expect != v->n_steps)
+            continue;
+        if (compare_answer(j, v, other) == 0 && j->n_problems == kept)
+            vd->offered_passes |= UINT64_C(1) << o;
+        j->n_problems = kept;
     }
     if (j->n_problems > 1)
         qsort(j->problems, j->n_problems, sizeof *j->problems, problem_order);

@@ -106,6 +106,319 @@ static void summary_lines(FILE *log, const plcvec_impl *impl, plcvec_judge *j, u
     fprintf(log, " in %.2f s\n", seconds);
 }
 
+/* ---- the roll-up by reading (TEXT.md "The roll-up by reading", "The inference") ------------- */
+
+typedef struct record {
+    const plcvec_vector *v;
+    uint8_t status;             /* the verdict's, known failures applied */
+    uint8_t judged;             /* 1 pass, 2 fail (an xfail that failed counts as fail), 0 not judged */
+    uint64_t passes;            /* a failing answer: the offered expectations it passes under */
+} record;
+
+/* The alternative offered expectation o gives interpretation i (-1: none). */
+static int offered(const plcvec_vector *v, size_t o, int i)
+{
+    if (o == 0)
+        return plcvec_interpretations[i].default_alternative;
+    const plcvec_alternative *a = &v->alternatives[o - 1];
+    for (size_t c = 0; c < a->n_choices; c++)
+        if (a->choices[c].interpretation == i)
+            return a->choices[c].alternative;
+    return -1;
+}
+
+/* The offered expectation whose alternatives for the vector's interpretations are `choice`'s; -1 if none. */
+static long offered_for(const plcvec_vector *v, const uint8_t *choice)
+{
+    for (size_t o = 0; o <= v->n_alternatives; o++) {
+        if (o && v->alternatives[o - 1].n_expect != v->n_steps)
+            continue;
+        size_t i = 0;
+        while (i < v->n_interpretations && offered(v, o, v->interpretations[i]) == choice[v->interpretations[i]])
+            i++;
+        if (i == v->n_interpretations)
+            return (long)o;
+    }
+    return -1;
+}
+
+static const plcvec_expect *expect_of(const plcvec_vector *v, size_t o, size_t s)
+{
+    return o == 0 ? &v->steps[s].expect : &v->alternatives[o - 1].expect[s];
+}
+
+static void put_cell(plcvec_cell *state, size_t *n, const plcvec_cell *c)
+{
+    for (size_t i = 0; i < *n; i++)
+        if (state[i].device == c->device) {
+            state[i] = *c;
+            return;
+        }
+    state[(*n)++] = *c;
+}
+
+/* Whether two offered expectations expect the same: every step's result and full state. */
+static int same_expectation(const plcvec_vector *v, size_t a, size_t b)
+{
+    if (a == b)
+        return 1;
+    size_t cap = (size_t)v->n_devices + 1;
+    for (size_t s = 0; s < v->n_steps; s++)
+        cap += v->steps[s].n_set + expect_of(v, a, s)->n_devices + expect_of(v, b, s)->n_devices;
+    plcvec_cell *x = malloc(2 * cap * sizeof *x), *y = x ? x + cap : NULL;
+    if (!x)
+        return 0;
+    size_t nx = 0, ny = 0;
+    int same = 1;
+    for (size_t i = 0; i < v->n_devices; i++)
+        x[nx++] = y[ny++] = v->devices[i];
+    for (size_t s = 0; s < v->n_steps && same; s++) {
+        const plcvec_expect *ea = expect_of(v, a, s), *eb = expect_of(v, b, s);
+        for (size_t i = 0; i < v->steps[s].n_set; i++)
+            put_cell(x, &nx, &v->steps[s].set[i]), put_cell(y, &ny, &v->steps[s].set[i]);
+        for (size_t i = 0; i < ea->n_devices; i++)
+            put_cell(x, &nx, &ea->devices[i]);
+        for (size_t i = 0; i < eb->n_devices; i++)
+            put_cell(y, &ny, &eb->devices[i]);
+        same = ea->result == eb->result && nx == ny;
+        for (size_t i = 0; i < nx && same; i++) {
+            size_t k = 0;
+            while (k < ny && y[k].device != x[i].device)
+                k++;
+            same = k < ny && y[k].type == x[i].type && y[k].value == x[i].value;
+        }
+    }
+    free(x);
+    return same;
+}
+
+/* Whether a judged vector passes under `choice` (its interpretations read from it). */
+static int passes_under(const record *r, const uint8_t *choice, const uint8_t *followed)
+{
+    long o = offered_for(r->v, choice);
+    if (o < 0)
+        return 0;
+    if (r->judged == 2)
+        return o < 64 && (r->passes >> o & 1);
+    long f = offered_for(r->v, followed);
+    return f >= 0 && same_expectation(r->v, (size_t)o, (size_t)f);
+}
+
+static size_t score(const record *recs, size_t n, const uint8_t *choice, const uint8_t *followed)
+{
+    size_t total = 0;
+    for (size_t i = 0; i < n; i++)
+        total += recs[i].judged && passes_under(&recs[i], choice, followed);
+    return total;
+}
+
+typedef struct group {
+    char key[1024];
+    size_t n;
+    const char **ids;
+} group;
+
+static int group_order(const void *a, const void *b)
+{
+    const group *x = a, *y = b;
+    if (x->n != y->n)
+        return x->n > y->n ? -1 : 1;
+    return strcmp(x->key, y->key);
+}
+
+static int id_order(const void *a, const void *b)
+{
+    return strcmp(*(const char *const *)a, *(const char *const *)b);
+}
+
+static void rollup_lines(FILE *log, const record *recs, size_t n, const plcvec_judge *j)
+{
+    size_t failing = 0;
+    for (size_t i = 0; i < n; i++)
+        failing += recs[i].status == PLCVEC_FAIL || recs[i].status == PLCVEC_ERROR;
+    if (!failing)
+        return;
+    uint8_t followed[PLCVEC_INTERPRETATION_COUNT], choice[PLCVEC_INTERPRETATION_COUNT];
+    int touched[PLCVEC_INTERPRETATION_COUNT] = {0}, order[PLCVEC_INTERPRETATION_COUNT], n_order = 0;
+    for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
+        followed[i] = choice[i] = (uint8_t)plcvec_judge_alternative(j, i);
+    for (size_t r = 0; r < n; r++)
+        for (size_t k = 0; recs[r].judged && k < recs[r].v->n_interpretations; k++)
+            touched[recs[r].v->interpretations[k]] = 1;
+    for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
+        if (touched[i])
+            order[n_order++] = i;
+    qsort(order, (size_t)n_order, sizeof *order, by_interpretation_id);
+    /* The choice: one interpretation at a time, in id order, to the first best alternative when it
+     * is strictly better, until a round changes nothing. */
+    size_t current = score(recs, n, choice, followed);
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int k = 0; k < n_order; k++) {
+            int i = order[k], keep = choice[i], best_alt = -1;
+            size_t best = 0;
+            for (int a = 0; a < plcvec_interpretations[i].n_alternatives; a++) {
+                if (a == keep)
+                    continue;
+                choice[i] = (uint8_t)a;
+                size_t sc = score(recs, n, choice, followed);
+                if (best_alt < 0 || sc > best)
+                    best = sc, best_alt = a;
+            }
+            choice[i] = (uint8_t)keep;
+            if (best_alt >= 0 && best > current) {
+                choice[i] = (uint8_t)best_alt;
+                current = best;
+                changed = 1;
+            }
+        }
+    }
+    group *groups = calloc(n + 1, sizeof *groups);
+    const char **ids = malloc((n + 1) * sizeof *ids);
+    if (!groups || !ids) {
+        free(groups);
+        free(ids);
+        return;
+    }
+    size_t explained = 0, broken = 0, n_groups = 0, used = 0;
+    /* Explained: the failing vectors that pass under the choice, each in the group of its smallest change. */
+    for (size_t r = 0; r < n; r++) {
+        const record *rec = &recs[r];
+        if (rec->judged == 1 && !passes_under(rec, choice, followed))
+            broken++;
+        if (rec->status != PLCVEC_FAIL || rec->judged != 2 || !passes_under(rec, choice, followed))
+            continue;
+        int differ[64], nd = 0;
+        for (size_t k = 0; k < rec->v->n_interpretations; k++) {
+            int i = rec->v->interpretations[k];
+            if (choice[i] != followed[i] && nd < 64)
+                differ[nd++] = i;
+        }
+        qsort(differ, (size_t)nd, sizeof *differ, by_interpretation_id);
+        /* Subsets by size, each size in lexicographic order of positions (itertools.combinations). */
+        unsigned long best = 0;
+        int found = 0;
+        for (int size = 1; size <= nd && !found && nd < 20; size++) {
+            int pick[20];
+            for (int q = 0; q < size; q++)
+                pick[q] = q;
+            for (;;) {
+                uint8_t trial[PLCVEC_INTERPRETATION_COUNT];
+                memcpy(trial, followed, sizeof trial);
+                unsigned long mask = 0;
+                for (int q = 0; q < size; q++)
+                    trial[differ[pick[q]]] = choice[differ[pick[q]]], mask |= 1ul << pick[q];
+                if (passes_under(rec, trial, followed)) {
+                    best = mask, found = 1;
+                    break;
+                }
+                int q = size - 1;
+                while (q >= 0 && pick[q] == nd - size + q)
+                    q--;
+                if (q < 0)
+                    break;
+                pick[q]++;
+                for (int w = q + 1; w < size; w++)
+                    pick[w] = pick[w - 1] + 1;
+            }
+        }
+        char key[1024] = "";
+        size_t len = 0;
+        for (int q = 0; q < nd; q++)
+            if (best >> q & 1)
+                len += (size_t)snprintf(key + len, len < sizeof key ? sizeof key - len : 0, "%s%s=%s", len ? ", " : "",
+                                        plcvec_interpretations[differ[q]].id,
+                                        plcvec_interpretations[differ[q]].alternatives[choice[differ[q]]]);
+        size_t g = 0;
+        while (g < n_groups && strcmp(groups[g].key, key) != 0)
+            g++;
+        if (g == n_groups) {
+            snprintf(groups[g].key, sizeof groups[g].key, "%s", key);
+            n_groups++;
+        }
+        groups[g].n++;
+        explained++;
+    }
+    if (explained) {
+        qsort(groups, n_groups, sizeof *groups, group_order);
+        fprintf(log, "READINGS: %zu of %zu failing vectors pass under other alternatives:\n", explained, failing);
+        for (size_t g = 0; g < n_groups; g++)
+            fprintf(log, "    %6zu  %s\n", groups[g].n, groups[g].key);
+        fprintf(log, "    declare:");
+        for (int k = 0; k < n_order; k++)
+            if (choice[order[k]] != followed[order[k]])
+                fprintf(log, " --choose %s=%s", plcvec_interpretations[order[k]].id,
+                        plcvec_interpretations[order[k]].alternatives[choice[order[k]]]);
+        fprintf(log, "\n");
+        if (broken)
+            fprintf(log, "    (so declared, %zu vectors that pass now would fail)\n", broken);
+    }
+    /* The rest, grouped by the clauses they cite. */
+    if (explained < failing) {
+        memset(groups, 0, (n + 1) * sizeof *groups);
+        n_groups = 0;
+        for (size_t r = 0; r < n; r++) {
+            const record *rec = &recs[r];
+            if (rec->status != PLCVEC_FAIL && rec->status != PLCVEC_ERROR)
+                continue;
+            if (rec->status == PLCVEC_FAIL && rec->judged == 2 && passes_under(rec, choice, followed))
+                continue;
+            char key[1024] = "";
+            size_t len = 0;
+            for (size_t c = 0; c < rec->v->n_clauses; c++)
+                len += (size_t)snprintf(key + len, len < sizeof key ? sizeof key - len : 0, "%s%s", c ? ", " : "",
+                                        plcvec_clause(rec->v, c));
+            if (!rec->v->n_clauses)
+                snprintf(key, sizeof key, "(no clauses)");
+            size_t g = 0;
+            while (g < n_groups && strcmp(groups[g].key, key) != 0)
+                g++;
+            if (g == n_groups) {
+                snprintf(groups[g].key, sizeof groups[g].key, "%s", key);
+                n_groups++;
+            }
+            groups[g].n++;      /* counted first; the ids go in each group's own slice below */
+        }
+        /* Second pass: fill the ids, each group in its own slice. */
+        used = 0;
+        for (size_t g = 0; g < n_groups; g++) {
+            groups[g].ids = ids + used;
+            used += groups[g].n;
+            groups[g].n = 0;
+        }
+        for (size_t r = 0; r < n; r++) {
+            const record *rec = &recs[r];
+            if (rec->status != PLCVEC_FAIL && rec->status != PLCVEC_ERROR)
+                continue;
+            if (rec->status == PLCVEC_FAIL && rec->judged == 2 && passes_under(rec, choice, followed))
+                continue;
+            char key[1024] = "";
+            size_t len = 0;
+            for (size_t c = 0; c < rec->v->n_clauses; c++)
+                len += (size_t)snprintf(key + len, len < sizeof key ? sizeof key - len : 0, "%s%s", c ? ", " : "",
+                                        plcvec_clause(rec->v, c));
+            if (!rec->v->n_clauses)
+                snprintf(key, sizeof key, "(no clauses)");
+            size_t g = 0;
+            while (strcmp(groups[g].key, key) != 0)
+                g++;
+            groups[g].ids[groups[g].n++] = rec->v->id;
+        }
+        qsort(groups, n_groups, sizeof *groups, group_order);
+        fprintf(log, "NOT EXPLAINED by any reading: %zu failing vectors, by the clauses they cite:\n", failing - explained);
+        for (size_t g = 0; g < n_groups; g++) {
+            fprintf(log, "    %6zu  %s\n", groups[g].n, groups[g].key);
+            qsort(groups[g].ids, groups[g].n, sizeof *groups[g].ids, id_order);
+            for (size_t k = 0; k < groups[g].n && k < 5; k++)
+                fprintf(log, "            %s\n", groups[g].ids[k]);
+            if (groups[g].n > 5)
+                fprintf(log, "            ... and %zu more\n", groups[g].n - 5);
+        }
+    }
+    free(groups);
+    free(ids);
+}
+
 static double now_s(void)
 {
     struct timespec t;
@@ -146,9 +459,11 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
     /* Nothing of the run is left in a buffer while an implementation runs: a crash, an exit() or
      * the watchdog inside it ends the process without flushing stdio. */
     fflush(log);
+    record *recs = calloc((size_t)n, sizeof *recs);
     const char **skip_reasons = malloc((size_t)n * sizeof *skip_reasons);
     char *reason_text = malloc((size_t)n * sizeof ((plcvec_verdict *)0)->message);
-    if (!skip_reasons || !reason_text) {
+    if (!skip_reasons || !reason_text || !recs) {
+        free(recs);
         free(skip_reasons);
         free(reason_text);
         plcvec_judge_free(j);
@@ -167,7 +482,11 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
     }
     for (long i = 0; i < n; i++) {
         plcvec_verdict vd = *plcvec_judge_vector(j, list[i]);
+        recs[i].v = list[i];
+        recs[i].judged = vd.status == PLCVEC_PASS ? 1 : vd.status == PLCVEC_FAIL ? 2 : 0;
+        recs[i].passes = vd.offered_passes;
         plcvec_apply_known(&vd, opt->known, opt->n_known);
+        recs[i].status = (uint8_t)vd.status;
         switch (vd.status) {
         case PLCVEC_PASS: sum.passed++; break;
         case PLCVEC_FAIL: sum.failed++; break;
@@ -197,6 +516,7 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         }
     size_t bad = sum.failed + sum.errors + sum.stale;
     int rc = bad ? PLCVEC_EXIT_FAILED : sum.passed == 0 ? PLCVEC_EXIT_NOTHING_TESTED : PLCVEC_EXIT_PASSED;
+    rollup_lines(log, recs, (size_t)n, j);
     skipped_lines(log, skip_reasons, sum.skipped, sum.selected);
     if (rc == PLCVEC_EXIT_NOTHING_TESTED) {
         fprintf(log, "NOT PASSED (exit 5): nothing passed (");
@@ -207,6 +527,7 @@ int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summar
         fprintf(log, "): the run proves nothing\n");
     }
     summary_lines(log, impl, j, families, &sum, now_s() - started);
+    free(recs);
     free(skip_reasons);
     free(reason_text);
     plcvec_judge_free(j);

@@ -1,6 +1,8 @@
 /* A mutant is rejected: judged by the library's runner under its declared alternatives, some
  * vector of each family its bug is in fails. Prints the first vectors that catch it.
- * `test_mutant --list` prints the mutants' names (checked against the tests CMake registers). */
+ * `test_mutant --list` prints the mutants' names (checked against the tests CMake registers);
+ * `test_mutant NAME --run` runs the whole suite through plcvec_run, whose text CI compares with
+ * plcvec verify's over the stdio adapter serving the same mutant. */
 #include <stdio.h>
 #include <string.h>
 
@@ -13,15 +15,18 @@ int main(int argc, char **argv)
             printf("%s\n", plcvec_mutants[i].name);
         return 0;
     }
-    const plcvec_mutant *mutant = argc == 2 ? plcvec_mutant_named(argv[1]) : NULL;
+    int whole_run = argc == 3 && strcmp(argv[2], "--run") == 0;
+    const plcvec_mutant *mutant = argc == 2 || whole_run ? plcvec_mutant_named(argv[1]) : NULL;
     if (!mutant) {
-        fprintf(stderr, "usage: test_mutant NAME | --list\n");
+        fprintf(stderr, "usage: test_mutant NAME [--run] | --list\n");
         return 2;
     }
-    plcvec_reference ref;
+    static plcvec_reference ref;
     plcvec_reference_init(&ref);
     mutant->apply(&ref);
     plcvec_impl impl = plcvec_reference_impl(&ref);
+    if (whole_run)
+        return plcvec_run(&impl, NULL, NULL);
     char err[256];
     plcvec_judge *j = plcvec_judge_new(&impl, err, sizeof err);
     if (!j)

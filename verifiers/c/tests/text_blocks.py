@@ -74,11 +74,39 @@ def program(ids: list[str], answers: dict) -> str:
               "    impl.run = run, impl.choices = choices, impl.n_choices = n, impl.cpu_writes = cpu;",
               "    char err[256];", "    plcvec_judge *j = plcvec_judge_new(&impl, err, sizeof err);",
               "    if (!j) {", '        fprintf(stderr, "%s\\n", err);', "        return 2;", "    }"]
-    for vid in ids:
-        lines.append(f"    {{ const plcvec_verdict *vd = plcvec_judge_vector(j, plcvec_find({c_str(vid)}));")
-        lines.append("      if (vd->status != PLCVEC_PASS && vd->status != PLCVEC_SKIP) plcvec_print_verdict(stdout, vd); }")
-    lines += ["    plcvec_judge_free(j);", "    return 0;", "}"]
+    lines.append("    plcvec_judge_free(j);")
+    lines.append("    static const char *const ids[] = {" + "".join(f"{c_str(i)}, " for i in ids) + "};")
+    lines += ["    plcvec_options opt = {0};", f"    opt.selection.ids = ids, opt.selection.n_ids = {len(ids)};",
+              "    plcvec_run(&impl, &opt, NULL);", "    return 0;", "}"]
     return "\n".join(lines) + "\n"
+
+
+def python_text(ids: list[str], answers: dict) -> str:
+    """plcvec verify's text for the same cases (the rule), without the header line and the time."""
+    import re
+
+    from plcvec_verify.adapters import InProcess
+    from plcvec_verify.reports import summary_text
+    from plcvec_verify.runner import run
+    from plcvec_verify.suite import Selection, Suite
+
+    class Replay:
+        def hello(self, request):
+            return json.loads(json.dumps(answers["hello"]))
+
+        def run(self, request):
+            return json.loads(json.dumps(answers["answers"][request["id"]]))
+
+    report = run(Suite.load(REPO / "vectors"), InProcess(Replay(), answers["hello"]["adapter"]["name"]),
+                 Selection(ids=tuple(ids)))
+    return machine_free(summary_text(report), "plcvec verify: ")
+
+
+def machine_free(text: str, header: str) -> str:
+    import re
+
+    lines = [line for line in text.split("\n") if not line.startswith(header)]
+    return "\n".join(re.sub(r" in [0-9]+\.[0-9]{2} s$", "", line) for line in lines)
 
 
 def expected_blocks(ids: list[str]) -> str:
@@ -109,12 +137,22 @@ def main() -> int:
         subprocess.run(["cc", "-std=c11", "-Wall", "-Werror", f"-I{REPO / 'verifiers/c/include'}", str(source),
                         str(build / "libplcvec.a"), "-pthread", "-o", str(exe)], check=True)
         got = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout
+    # 1. The failure blocks against the shared expected text itself.
     want = expected_blocks(ids)
-    if got != want:
-        sys.stdout.writelines(difflib.unified_diff(want.splitlines(True), got.splitlines(True), "expected.txt", "C"))
+    blocks = got[:len(want)]
+    if blocks != want:
+        sys.stdout.writelines(difflib.unified_diff(want.splitlines(True), blocks.splitlines(True), "expected.txt", "C"))
+        return 1
+    # 2. The whole run's text (blocks, roll-up by reading, skips, summary) against plcvec verify's
+    #    for the same cases, the header line and the time left out.
+    want_all = python_text(ids, answers)
+    got_all = machine_free(got, "plcvec: ")
+    if got_all != want_all:
+        sys.stdout.writelines(difflib.unified_diff(want_all.splitlines(True), got_all.splitlines(True),
+                                                   "plcvec verify", "C"))
         return 1
     print(f"text_blocks: the C failure blocks of {len(ids)} shared cases are byte for byte expected.txt's "
-          f"({want.count(chr(10))} lines)")
+          f"({want.count(chr(10))} lines), and the whole run's text is plcvec verify's ({got_all.count(chr(10))} lines)")
     return 0
 
 

@@ -339,6 +339,9 @@ typedef struct plcvec_verdict {
     plcvec_choice choices[PLCVEC_INTERPRETATION_COUNT];   /* judged by: the interpretations that decide a differing field */
     size_t n_choices;
     const plcvec_alternative *applied;  /* the expectations judged against; NULL: the vector's own */
+    /* A failing answer: bit o when it passes under offered expectation o (0: the vector's own, o:
+     * alternatives[o - 1]); what the roll-up by reading is built on. */
+    uint64_t offered_passes;
 } plcvec_verdict;
 
 /* A judge: an implementation and its resolved alternatives, with the buffers a run needs. */
