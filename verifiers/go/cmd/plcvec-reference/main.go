@@ -153,8 +153,9 @@ func serve(impl plcvec.Implementation, in io.Reader, out io.Writer) int {
 	}
 }
 
-// hello answers with the instructions of the runner's families that the reference runs, and the
-// alternative it follows for each of their interpretations.
+// hello answers with the instructions of the runner's families that the reference runs, the
+// alternative it follows for each of their interpretations, and any devices its CPU writes on
+// its own account.
 func hello(impl plcvec.Implementation, families map[string]family) map[string]any {
 	h := impl.Hello()
 	instructions := []string{}
@@ -172,9 +173,13 @@ func hello(impl plcvec.Implementation, families map[string]family) map[string]an
 		}
 	}
 	sort.Strings(instructions)
-	return map[string]any{"type": "hello", "protocol": protocol,
+	answer := map[string]any{"type": "hello", "protocol": protocol,
 		"adapter":      map[string]string{"name": h.Name, "version": h.Version},
 		"instructions": instructions, "interpretations": interps}
+	if len(h.CPUWrites) > 0 { // PROTOCOL.md: the devices the CPU writes on its own account
+		answer["cpu_writes"] = h.CPUWrites
+	}
+	return answer
 }
 
 func contains(list []string, s string) bool {
