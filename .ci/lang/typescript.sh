@@ -21,6 +21,25 @@ trap 'rm -rf "$work"' EXIT
     cmp LICENSE "$root/LICENSE"
 )
 
+# The package's metadata names the project's one home (pyproject.toml [tool.plcvec] home), its
+# licence and version as every plcvec package does.
+python3 - <<'PY'
+import json, sys, tomllib
+home = tomllib.load(open("pyproject.toml", "rb"))["tool"]["plcvec"]["home"]
+pkg = json.load(open("verifiers/typescript/package.json"))
+want = {
+    "repository.url": ("git+" + home + ".git", pkg["repository"]["url"]),
+    "homepage": (home + "/tree/main/verifiers/typescript#readme", pkg["homepage"]),
+    "bugs.url": (home + "/issues", pkg["bugs"]["url"]),
+    "license": ("MIT", pkg["license"]),
+    "author": ("plcvec contributors", pkg["author"]),
+    "version": (json.load(open("vectors/manifest.json"))["generator_version"], pkg["version"]),
+}
+bad = [f"package.json {k}: {got!r}, not {exp!r}" for k, (exp, got) in want.items() if exp != got]
+if bad:
+    sys.exit("\n".join(bad))
+PY
+
 # Publishing, from a clean copy of the tracked files (no dist/, no node_modules/): `prepack` builds,
 # and `npm publish --dry-run` must pass without a warning (a `bin` npm would rewrite, a missing field).
 clean="$work/clean"
