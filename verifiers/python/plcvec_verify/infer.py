@@ -75,6 +75,12 @@ def judge_all(report: RunReport, cpu_writes=frozenset()) -> list[Judged]:
     for i, d in known.items():
         followed.setdefault(i, d["default"])
     expectations = suite.expectations
+    # An interpretation no failing vector touches can gain nothing, so the inference never moves it:
+    # a passing vector that touches only such ones needs no expectation under other alternatives.
+    movable = set()
+    for r in report.results:
+        if r.status in (FAIL, XFAIL) and r.answer is not None and r.id in suite.by_id:
+            movable.update(suite.by_id[r.id]["outcome"].get("interpretations", ()))
     out = []
     for r in report.results:
         answered = r.status == PASS or (r.status in (FAIL, XFAIL) and r.answer is not None)
@@ -84,6 +90,9 @@ def judge_all(report: RunReport, cpu_writes=frozenset()) -> list[Judged]:
         touched = tuple(sorted(vector["outcome"].get("interpretations", ())))
         if not touched:
             out.append(Judged(r.id, (), frozenset([()]) if r.status == PASS else frozenset(), r.status != PASS))
+            continue
+        if r.status == PASS and movable.isdisjoint(touched):
+            out.append(Judged(r.id, touched, frozenset([tuple(followed[i] for i in touched)]), False))
             continue
         mine = expectations.expected(vector, followed, defaults)
         passing = set()
