@@ -343,8 +343,11 @@ impl Report<'_> {
                 answer: answer.as_deref(),
             })
             .collect();
-        let inference = crate::infer::infer(&cases, &followed, &alternatives, &self.cpu_writes);
-        out.push_str(&crate::infer::rollup(&cases, &inference, &followed));
+        // The inference only has something to explain when a vector failed.
+        if cases.iter().any(|c| matches!(c.status, Status::Fail | Status::Error)) {
+            let inference = crate::infer::infer(&cases, &followed, &alternatives, &self.cpu_writes);
+            out.push_str(&crate::infer::rollup(&cases, &inference, &followed));
+        }
         let skipped: Vec<&str> =
             self.verdicts.iter().filter(|v| v.status == Status::Skip).map(|v| v.message.as_str()).collect();
         out.push_str(&crate::infer::skips(&skipped, self.verdicts.len()));
