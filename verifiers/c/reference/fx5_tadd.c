@@ -32,18 +32,24 @@ static void flag(memory *m, const char *name, int on, int set_only)
     memory_write_named(m, device, PLCVEC_BIT, (uint16_t)on);
 }
 
-/* An operand whose three words exist and hold a field out of range (hour 0 to 23; minute,
- * second 0 to 59): the 3405H condition. */
+/* Hour 0 to 23; minute, second 0 to 59: a field out of range is the 3405H condition. */
+static int out_of_range(const tadd_rules *r, const int *hms)
+{
+    for (int i = 0; i < 3; i++)
+        if (hms[i] < 0 || hms[i] > (i == 0 ? r->hour_max : 59))
+            return 1;
+    return 0;
+}
+
+/* An operand whose three words exist and hold a field out of range. */
 static int fields_bad(const tadd_rules *r, const memory *m, address base)
 {
     if (!r->in_range(m, base, 3))
         return 0;
-    for (int i = 0; i < 3; i++) {
-        int x = to_signed16(memory_read(m, memory_offset(base, i)));
-        if (x < 0 || x > (i == 0 ? r->hour_max : 59))
-            return 1;
-    }
-    return 0;
+    int hms[3];
+    for (int i = 0; i < 3; i++)
+        hms[i] = to_signed16(memory_read(m, memory_offset(base, i)));
+    return out_of_range(r, hms);
 }
 
 static void add(plcvec_reference *ref, const plcvec_vector *v)
@@ -68,7 +74,7 @@ static void add(plcvec_reference *ref, const plcvec_vector *v)
         a[i] = to_signed16(memory_read(m, memory_offset(s1, i)));
         b[i] = to_signed16(memory_read(m, memory_offset(s2, i)));
     }
-    if (fields_bad(r, m, s1) || fields_bad(r, m, s2)) {
+    if (out_of_range(r, a) || out_of_range(r, b)) {
         error_code(m, ERR_VALUE_RANGE);
         if (ref->follows[PLCVEC_INTERP_TADD_ON_ERROR] == PLCVEC_TADD_ON_ERROR_NOT_EXECUTED)
             return;

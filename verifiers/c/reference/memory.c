@@ -69,13 +69,6 @@ void memory_write(memory *m, address a, plcvec_type type, uint16_t value)
     c->value = value;
 }
 
-int memory_device_named(const char *name, int *cache)
-{
-    if (*cache < 0)
-        *cache = plcvec_device_intern(name);
-    return *cache;
-}
-
 void memory_write_named(memory *m, int device, plcvec_type type, uint16_t value)
 {
     memory_write(m, memory_device(device), type, value);

@@ -41,7 +41,12 @@ void memory_write_named(memory *m, int device, plcvec_type type, uint16_t value)
 /* A device by name ("SD0"), looked up once into *cache (start it at -1). By name rather than as a
  * generated PLCVEC_DEV_ constant: the table of names holds the devices the exported vectors name,
  * and a vector set without TADD vectors names no SD0. */
-int memory_device_named(const char *name, int *cache);
+static inline int memory_device_named(const char *name, int *cache)
+{
+    if (*cache < 0)
+        *cache = plcvec_device_intern(name);
+    return *cache;
+}
 int16_t to_signed16(uint16_t word);     /* a word read as "16-bit signed binary" */
 /* Report every device (scratch included: never compared) after a step. */
 void memory_report(const memory *m, plcvec_out *out, int result);
