@@ -92,7 +92,7 @@ def test_known_failures_and_alternatives_are_passed_on(tmp_path):
     known.write_text("".join(f'[[known-failure]]\nid = "{vid}"\nreason = "the mutant\'s bug"\n\n' for vid in failed),
                      encoding="utf-8")
     proc = gate(tmp_path, adapter=f"{REFERENCE} --mutant {MUTANT}", selection=f"--family {FAMILY}",
-                expectations=str(known), alternatives="TADD-FLAGS-OFF=written-each-execution")
+                known_failures=str(known), alternatives="TADD-FLAGS-OFF=written-each-execution")
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "--choose TADD-FLAGS-OFF=written-each-execution" in proc.stdout
     counts = read_jsonl(tmp_path / "reports" / "results.jsonl")[-1]["counts"]
@@ -123,7 +123,7 @@ def test_the_action_runs_the_gate_with_every_input():
 
 def test_the_gitlab_template_runs_the_gate_and_keeps_the_reports():
     job = yaml.safe_load(GITLAB.read_text(encoding="utf-8"))[".plcvec-gate"]
-    assert {"PLCVEC_ADAPTER", "PLCVEC_SELECTION", "PLCVEC_EXPECTATIONS", "PLCVEC_ALTERNATIVES"} <= set(job["variables"])
+    assert {"PLCVEC_ADAPTER", "PLCVEC_SELECTION", "PLCVEC_KNOWN_FAILURES", "PLCVEC_ALTERNATIVES"} <= set(job["variables"])
     assert any("plcvec-gate.sh" in line for line in job["script"])
     assert job["artifacts"]["when"] == "always"
     assert job["artifacts"]["reports"]["junit"] == "plcvec-reports/junit.xml"
@@ -200,3 +200,11 @@ def test_the_gitlab_default_gate_script_is_fetched_not_copied_from_a_checkout():
     assert url.startswith("https://") and url.endswith(f"/v{__version__}/verifiers/ci/gate.sh")
     # The image can build an implementation (the slim image has no make).
     assert "slim" not in job["image"]
+
+
+def test_settings_left_empty_as_the_templates_default_them_mean_not_given(tmp_path):
+    """The GitLab template gives every setting an empty default; plcvec verify refuses an empty
+    PLCVEC_* variable, so the gate must pass on none of them."""
+    proc = gate(tmp_path, adapter=REFERENCE, selection=f"--family {FAMILY}", known_failures="", alternatives="",
+                timeout="", id="")
+    assert proc.returncode == 0, proc.stdout + proc.stderr

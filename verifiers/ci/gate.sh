@@ -6,7 +6,8 @@
 #
 #   PLCVEC_ADAPTER       the adapter command (verifiers/PROTOCOL.md), required
 #   PLCVEC_SELECTION     extra `plcvec verify` options choosing vectors, e.g. "--family fx5-time-add --tag boundary"
-#   PLCVEC_EXPECTATIONS  a known-failures file (TOML, verifiers/CONTRACT.md), optional
+#   PLCVEC_KNOWN_FAILURES  the expectations file: known failures (TOML, verifiers/CONTRACT.md), optional;
+#                        the variable every plcvec runner reads for it
 #   PLCVEC_ALTERNATIVES  the interpretation alternatives followed, "ID=ALT ID=ALT", for adapters that
 #                        do not declare them, optional
 #   PLCVEC_PACKAGE       what to `pip install` (a requirement, a wheel or a source folder), installed into
@@ -46,7 +47,13 @@ if [ -n "${PLCVEC_SELECTION:-}" ]; then
     read -r -a selection <<<"$PLCVEC_SELECTION"
     args+=("${selection[@]}")
 fi
-[ -z "${PLCVEC_EXPECTATIONS:-}" ] || args+=(--expectations "$PLCVEC_EXPECTATIONS")
+[ -z "${PLCVEC_KNOWN_FAILURES:-}" ] || args+=(--expectations "$PLCVEC_KNOWN_FAILURES")
+# plcvec verify reads the PLCVEC_* selection variables as defaults and refuses one that is set but
+# empty; the recipes give every setting an empty default, so an empty one here means "not given".
+for name in PLCVEC_ID PLCVEC_FAMILY PLCVEC_INSTRUCTION PLCVEC_TAG PLCVEC_INTERPRETATION PLCVEC_SHARD \
+            PLCVEC_KNOWN_FAILURES PLCVEC_WRITE_EXPECTATIONS PLCVEC_TIMEOUT; do
+    [ -n "${!name:-}" ] || unset "$name"
+done
 for choice in ${PLCVEC_ALTERNATIVES:-}; do
     args+=(--choose "$choice")
 done
