@@ -74,7 +74,11 @@ def test_cmake_package():
     cmake = (REPO / "verifiers" / "c" / "CMakeLists.txt").read_text(encoding="utf-8")
     m = re.search(r"project\(\s*plcvec\b([^)]*)\)", cmake, re.S)
     assert m, "project(plcvec ...) in verifiers/c/CMakeLists.txt"
-    assert re.search(r"VERSION\s+" + re.escape(__version__) + r"\b", m.group(1))
+    version = re.search(r"VERSION\s+(\S+)", m.group(1)).group(1)
+    if version == "${PLCVEC_SUITE_VERSION}":   # rendered by `plcvec export` from the vectors' suite version
+        generated = (REPO / "verifiers" / "c" / "src" / "generated" / "families.cmake").read_text(encoding="utf-8")
+        version = re.search(r"set\(PLCVEC_SUITE_VERSION\s+\"?([\w.]+)", generated).group(1)
+    assert version == __version__
     assert HOME in m.group(1)
 
 
@@ -84,7 +88,7 @@ def test_no_placeholder_for_the_home_anywhere():
     found = []
     for name in files:
         path = REPO / name
-        if path.suffix in (".json", ".jsonl", ".csv") or not path.is_file():
+        if path.suffix in (".json", ".jsonl", ".csv") or not path.is_file() or name == "tests/test_home.py":
             continue
         try:
             text = path.read_text(encoding="utf-8")
