@@ -35,7 +35,7 @@ rm -rf "$stage"
 # project under Maven's default plugins plus exactly the README's blocks.
 python3 .ci/readme_snippets.py check verifiers/java/README.md verifiers/java/mutants/MUTANTS.md
 example="$(mktemp -d)"
-verifiers/java/readme-example "$example" | grep -v '^\[INFO\]'
+verifiers/java/readme-example "$example" | sed -e 's/\x1b\[[0-9;]*m//g' | grep -v '^\[INFO\]'
 rm -rf "$example"
 
 python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
