@@ -101,3 +101,15 @@ def test_no_placeholder_for_the_home_anywhere():
 @pytest.mark.parametrize("lang", ["rust", "typescript", "go"])
 def test_each_package_folder_licence_is_the_repository_licence(lang):
     assert (REPO / "verifiers" / lang / "LICENSE").read_bytes() == LICENSE
+
+
+def test_one_licence_statement():
+    """The copyright holder the LICENSE names is the author every package's metadata names."""
+    holder = re.search(r"^Copyright \(c\) \d{4} (.+)$", LICENSE.decode(), re.M).group(1)
+    assert [a["name"] for a in PYPROJECT["project"]["authors"]] == [holder]
+    cargo = tomllib.loads((REPO / "verifiers" / "rust" / "Cargo.toml").read_text(encoding="utf-8"))["package"]
+    assert cargo["authors"] == [holder]
+    pkg = json.loads((REPO / "verifiers" / "typescript" / "package.json").read_text(encoding="utf-8"))
+    assert pkg["author"] == holder
+    root = ET.parse(REPO / "verifiers" / "java" / "pom.xml").getroot()
+    assert root.findtext(f"{POM}developers/{POM}developer/{POM}name") == holder
