@@ -124,9 +124,23 @@ def test_bundle_carries_its_licence_readme_index_and_outer_sums(runs):
     assert index["spec_sha256"] == manifest["spec_sha256"]
     # SHA256SUMS beside the archives: both archives, checkable before unpacking.
     outer = dict(reversed(line.split("  ", 1)) for line in (runs[0] / "SHA256SUMS").read_text().splitlines())
-    assert set(outer) == {f"{NAME}.tar.gz", f"{NAME}.zip"}
+    assert set(outer) == {f"{NAME}.tar.gz", f"{NAME}.zip", f"plcvec-c-{__version__}.tar.gz"}
     for name, digest in outer.items():
         assert hashlib.sha256((runs[0] / name).read_bytes()).hexdigest() == digest
+
+
+def test_the_c_source_archive_is_the_tracked_c_folder_and_the_licence(runs):
+    """What the C README's FetchContent downloads: every tracked file of verifiers/c, the LICENSE, no more."""
+    name = f"plcvec-c-{__version__}"
+    a, b = ((out / f"{name}.tar.gz").read_bytes() for out in runs)
+    assert a == b
+    with tarfile.open(runs[0] / f"{name}.tar.gz") as tar:
+        files = {m.name: tar.extractfile(m).read() for m in tar.getmembers()}
+    tracked = subprocess.run(["git", "ls-files", "--", "verifiers/c"], cwd=REPO, capture_output=True, text=True,
+                             check=True).stdout.split()
+    assert set(files) == {f"{name}/{t[len('verifiers/c/'):]}" for t in tracked} | {f"{name}/LICENSE"}
+    assert files[f"{name}/CMakeLists.txt"] == (REPO / "verifiers" / "c" / "CMakeLists.txt").read_bytes()
+    assert files[f"{name}/LICENSE"] == (REPO / "LICENSE").read_bytes()
 
 
 def test_jsonl_is_the_header_then_one_canonical_vector_per_line(runs):

@@ -125,3 +125,32 @@ Every runner takes either folder as it is:
 
 Licence: MIT (LICENSE).
 """
+
+
+C_FOLDER = "verifiers/c"
+
+
+def c_root_name(version):
+    return f"plcvec-c-{version}"
+
+
+def c_source(version, checkout):
+    """{archive path: bytes} of the C library's source archive: every tracked file of verifiers/c
+    and the LICENSE, under plcvec-c-<version>/. What CMake's FetchContent downloads (the C README's
+    URL) instead of cloning the whole repository. Only a git checkout knows which files are tracked:
+    None elsewhere (an installed plcvec), and the release says so."""
+    import subprocess
+
+    try:
+        listed = subprocess.run(["git", "ls-files", "-z", "--", C_FOLDER], cwd=checkout, capture_output=True,
+                                check=True, timeout=60).stdout
+    except (OSError, subprocess.SubprocessError):
+        return None
+    names = [n.decode("utf-8") for n in listed.split(b"\0") if n]
+    if not names:
+        return None
+    root = c_root_name(version) + "/"
+    out = {root + name[len(C_FOLDER) + 1:]: (checkout / name).read_bytes() for name in names
+           if (checkout / name).is_file()}
+    out[root + "LICENSE"] = (checkout / "LICENSE").read_bytes()
+    return out

@@ -70,6 +70,17 @@ def run(args):
         target = out / f"{name}{suffix}"
         write_atomic(target, make(files))
         written.append(str(target))
+    # The C library's source, for CMake's FetchContent (verifiers/c/README.md): from a checkout only.
+    from plcvec_verify.locate import checkout
+
+    root = checkout()
+    c_files = bundle.c_source(__version__, root) if root is not None else None
+    if c_files is None:
+        print("plcvec release: no git checkout here, so no C source archive (plcvec-c-<version>.tar.gz)")
+    else:
+        target = out / f"{bundle.c_root_name(__version__)}.tar.gz"
+        write_atomic(target, archive.tar_gz(c_files))
+        written.append(str(target))
     # SHA256SUMS beside the archives too, so a download can be checked before it is unpacked; lines
     # for other files already listed there (an earlier release in the same folder) are kept.
     sums = out / "SHA256SUMS"
