@@ -13,7 +13,7 @@ const SuiteVersion = "0.1.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "4e4938e55b846c49e16b2c5562d7597f81e3916fa101a21c90ebe8531ffc2db0"
+const SpecSHA256 = "f5b44f0b594d28e3406f056a62a4beae273226bf908d084ae6e32f64b2b7ef95"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3696
