@@ -1,5 +1,6 @@
 """Cases for `masked_compare` families: examples, orderings, forms, selector classes, boundaries,
 nonexistent dates, device range, current clock, latching, and random draws."""
+import calendar
 import itertools
 
 from plcvec.cases.common import Operands, hexw, signed_boundaries, top_head
@@ -75,10 +76,20 @@ class CompareCases:
         if steps is None:
             step = self.step_for(form, rlo_in=rlo_in)
             if clock is not None:
-                step["clock"] = clock
+                step["clock"] = self.on_the_calendar(clock)
             steps = [step]
         return self.b.vector(self.instr[(form, symbol)], key, tags=tags, description=description,
                              operands=operands, devices=devices, steps=steps, clauses=clauses, printed=printed)
+
+    def on_the_calendar(self, clock):
+        """The clock as a clock can hold it: a date past the end of its month (which a device may hold,
+        but no calendar) moved to the month's last day. Only a family whose spec names its calendar
+        (nonexistent_dates.calendar) has dates; every in-range time of day is real."""
+        cal = self.doc.get("nonexistent_dates", {}).get("calendar")
+        if not cal:
+            return clock
+        last = calendar.monthrange(clock[cal["year"]], clock[cal["month"]])[1]
+        return clock if clock[cal["day"]] <= last else dict(clock, **{cal["day"]: last})
 
     def pair_with(self, decider, ordering):
         """s1, s2 values that differ first at field `decider` in the given ordering, and differently below it."""
