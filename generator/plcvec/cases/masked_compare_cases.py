@@ -443,7 +443,9 @@ class CompareCases:
 def masked_compare_cases(fam, builder):
     c = CompareCases(fam, builder)
     vectors = []
-    for family in (c.manual_examples, c.orderings, c.forms_and_logic, c.selector_classes, c.boundaries,
+    # The forms and their logic before the orderings: of a test both build (an AND or OR form whose logic
+    # lets its own comparison decide), the vector kept is the one named for its form and logic.
+    for family in (c.manual_examples, c.forms_and_logic, c.orderings, c.selector_classes, c.boundaries,
                    c.nonexistent_dates, c.device_range, c.current_clock, c.latching, c.clock_area, c.random):
         vectors += family()
     return vectors + model_cases(builder, vectors, c.from_row, ("forms", "conditions"))

@@ -14,6 +14,10 @@ Each vector present on both sides is classed by the most telling thing that chan
 - `inputs`: what the vector sets up (`initial`, `assumes`, the steps' inputs, the instruction);
 - `metadata`: only what describes it (`description`, `tags`, `clauses`, `printed`, ...).
 File headers (spec hash, interpretations, tags) are compared too and reported apart.
+
+A folder's merged.json (written by `plcvec generate`) names the ids the generator merged into another
+vector because they were the same test; an id removed on the new side that the new side merged is
+reported with the vector it went into.
 """
 import json
 import os
@@ -28,6 +32,7 @@ CLASSES = ("expectation", "inputs", "metadata")
 EXPECTATION_KEYS = ("final", "outcome", "alternatives")
 INPUT_KEYS = ("initial", "assumes", "instruction", "st", "family")
 MANIFEST = "manifest.json"
+MERGED = "merged.json"
 CHECKOUT_FOLDER = "vectors"
 ABSENT = object()
 
@@ -83,6 +88,7 @@ class VectorSet:
     single: bool                       # one family file rather than a folder
     families: dict = field(default_factory=dict)   # name -> {"header": {...}, "vectors": {id: vector}}
     manifest: dict = field(default_factory=dict)   # the folder's manifest.json (empty for a single file)
+    merged: dict = field(default_factory=dict)     # family -> {id merged away: the id it went into}
 
     def count(self):
         return sum(len(f["vectors"]) for f in self.families.values())
@@ -142,7 +148,7 @@ def _folder(source, label):
     families = manifest.get("families") if isinstance(manifest, dict) else None
     if not isinstance(families, dict) or not all(isinstance(e, dict) and isinstance(e.get("file"), str) for e in families.values()):
         raise DiffInputError(f"{source.label(MANIFEST)}: not a vector manifest (no \"families\" with a \"file\" for each)")
-    out = VectorSet(label, single=False, manifest=manifest)
+    out = VectorSet(label, single=False, manifest=manifest, merged=_merged(source))
     for name in sorted(families):
         doc = _family(source, families[name]["file"])
         if doc["header"]["family"] != name:
@@ -150,6 +156,19 @@ def _folder(source, label):
                                  f"but {MANIFEST} lists it as {name!r}")
         out.families[name] = doc
     return out
+
+
+def _merged(source):
+    """{family: {dropped id: kept id}} from the folder's merged.json; {} for a folder without one."""
+    if source.read(MERGED) is None:
+        return {}
+    doc = _json(source, MERGED)
+    families = doc.get("families") if isinstance(doc, dict) else None
+    if not isinstance(families, dict) or not all(
+            isinstance(m, dict) and all(isinstance(k, str) and isinstance(v, str) for k, v in m.items())
+            for m in families.values()):
+        raise DiffInputError(f"{source.label(MERGED)}: not a list of merged ids (\"families\": {{family: {{id: id}}}})")
+    return families
 
 
 def load_source(source, label):
@@ -234,12 +253,15 @@ def compare(old, new, only=None):
                "present": [side for side, s in (("old", old), ("new", new)) if name in s.families],
                "added": sorted(set(b["vectors"]) - set(a["vectors"])),
                "removed": sorted(set(a["vectors"]) - set(b["vectors"])),
+               "merged": {},
                "changed": [], "header": [_entry(c) for c in changes(a["header"], b["header"])]}
         for vid in sorted(set(a["vectors"]) & set(b["vectors"])):
             found = changes(a["vectors"][vid], b["vectors"][vid])
             if found:
                 cls = min((change_class(p) for p, _, _ in found), key=CLASSES.index)
                 fam["changed"].append({"id": vid, "class": cls, "changes": [_entry(c) for c in found]})
+        went = new.merged.get(name, {})
+        fam["merged"] = {vid: went[vid] for vid in fam["removed"] if vid in went}
         fam["counts"] = {"added": len(fam["added"]), "removed": len(fam["removed"]),
                          **{c: sum(1 for v in fam["changed"] if v["class"] == c) for c in CLASSES}}
         for k, v in fam["counts"].items():
@@ -313,7 +335,8 @@ def render_text(report, brief=False):
             continue
         lines.append(f"{name}: {counts_text(fam)}")
         lines += [f"  + {vid}" for vid in fam["added"]]
-        lines += [f"  - {vid}" for vid in fam["removed"]]
+        lines += [f"  - {vid}" + (f" (the same test as {fam['merged'][vid]}, which now carries its tags and reasons)"
+                                  if vid in fam.get("merged", {}) else "") for vid in fam["removed"]]
         for v in fam["changed"]:
             lines.append(f"  ~ {v['id']} ({v['class']})")
             if not brief:

@@ -6,7 +6,7 @@ export const SUITE = {
   suiteVersion: "0.1.0",
   schemaVersion: "1.0.0",
   specSha256: "f5b44f0b594d28e3406f056a62a4beae273226bf908d084ae6e32f64b2b7ef95",
-  total: 3696,
+  total: 3526,
 } as const;
 
 /** Instruction families, one vector file each. */

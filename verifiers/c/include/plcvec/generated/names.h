@@ -9,7 +9,7 @@
 #define PLCVEC_SCHEMA_VERSION "1.0.0"
 #define PLCVEC_SCHEMA_MAJOR 1
 #define PLCVEC_SPEC_SHA256 "f5b44f0b594d28e3406f056a62a4beae273226bf908d084ae6e32f64b2b7ef95"
-#define PLCVEC_TOTAL_VECTORS 3696
+#define PLCVEC_TOTAL_VECTORS 3526
 
 /* Instruction families, in the order of the manifest. */
 typedef enum plcvec_family {
