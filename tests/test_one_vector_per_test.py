@@ -1,6 +1,7 @@
 """One vector per test: no two golden vectors have the same instruction, initial state and steps; the
-vector kept carries every tag, clause and description of the ids merged into it, and vectors/merged.json
-names each merged id so that `plcvec diff` (and so a release's CHANGES) says where it went."""
+vector kept carries every tag, clause and description of the ids merged into it, and
+vectors/manifest.json names (under "merged") each merged id so that `plcvec diff` (and so a release's
+CHANGES) says where it went."""
 import json
 
 import pytest
@@ -30,7 +31,7 @@ def duplicates(vectors):
 
 @pytest.fixture(scope="module")
 def merged():
-    return json.loads((REPO / "vectors" / "merged.json").read_text())["families"]
+    return json.loads((REPO / "vectors" / "manifest.json").read_text())["merged"]
 
 
 def test_no_two_golden_vectors_are_the_same_test(all_vectors):

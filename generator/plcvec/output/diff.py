@@ -15,9 +15,9 @@ Each vector present on both sides is classed by the most telling thing that chan
 - `metadata`: only what describes it (`description`, `tags`, `clauses`, `printed`, ...).
 File headers (spec hash, interpretations, tags) are compared too and reported apart.
 
-A folder's merged.json (written by `plcvec generate`) names the ids the generator merged into another
-vector because they were the same test; an id removed on the new side that the new side merged is
-reported with the vector it went into.
+A folder's manifest.json names (under "merged") the ids the generator merged into another vector
+because they were the same test; an id removed on the new side that the new side merged is reported
+with the vector it went into.
 """
 import json
 import os
@@ -32,7 +32,6 @@ CLASSES = ("expectation", "inputs", "metadata")
 EXPECTATION_KEYS = ("final", "outcome", "alternatives")
 INPUT_KEYS = ("initial", "assumes", "instruction", "st", "family")
 MANIFEST = "manifest.json"
-MERGED = "merged.json"
 CHECKOUT_FOLDER = "vectors"
 ABSENT = object()
 
@@ -148,7 +147,7 @@ def _folder(source, label):
     families = manifest.get("families") if isinstance(manifest, dict) else None
     if not isinstance(families, dict) or not all(isinstance(e, dict) and isinstance(e.get("file"), str) for e in families.values()):
         raise DiffInputError(f"{source.label(MANIFEST)}: not a vector manifest (no \"families\" with a \"file\" for each)")
-    out = VectorSet(label, single=False, manifest=manifest, merged=_merged(source))
+    out = VectorSet(label, single=False, manifest=manifest, merged=_merged(source, manifest))
     for name in sorted(families):
         doc = _family(source, families[name]["file"])
         if doc["header"]["family"] != name:
@@ -158,17 +157,14 @@ def _folder(source, label):
     return out
 
 
-def _merged(source):
-    """{family: {dropped id: kept id}} from the folder's merged.json; {} for a folder without one."""
-    if source.read(MERGED) is None:
-        return {}
-    doc = _json(source, MERGED)
-    families = doc.get("families") if isinstance(doc, dict) else None
-    if not isinstance(families, dict) or not all(
+def _merged(source, manifest):
+    """{family: {dropped id: kept id}} from the manifest's "merged"; {} for a manifest without it."""
+    merged = manifest.get("merged", {})
+    if not isinstance(merged, dict) or not all(
             isinstance(m, dict) and all(isinstance(k, str) and isinstance(v, str) for k, v in m.items())
-            for m in families.values()):
-        raise DiffInputError(f"{source.label(MERGED)}: not a list of merged ids (\"families\": {{family: {{id: id}}}})")
-    return families
+            for m in merged.values()):
+        raise DiffInputError(f"{source.label(MANIFEST)}: \"merged\" is not {{family: {{merged id: kept id}}}}")
+    return merged
 
 
 def load_source(source, label):
