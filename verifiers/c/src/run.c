@@ -204,6 +204,27 @@ static int passes_under(const record *r, const uint8_t *choice, const uint8_t *f
     return f >= 0 && same_expectation(r->v, (size_t)o, (size_t)f);
 }
 
+/* A failure no offered reading explains: an error, or a failure that does not pass under the
+ * inferred choice. Both passes over the records below ask the same question. */
+static int unexplained(const record *rec, const uint8_t *choice, const uint8_t *followed)
+{
+    if (rec->status != PLCVEC_FAIL && rec->status != PLCVEC_ERROR)
+        return 0;
+    return !(rec->status == PLCVEC_FAIL && rec->judged == 2 && passes_under(rec, choice, followed));
+}
+
+/* The group key of an unexplained failure: the clauses it cites, ", "-joined (cut at `size`). */
+static void clause_key(const record *rec, char *key, size_t size)
+{
+    size_t len = 0;
+    key[0] = '\0';
+    for (size_t c = 0; c < rec->v->n_clauses && len < size; c++)
+        len += (size_t)snprintf(key + len, size - len, "%s%s", c ? ", " : "", plcvec_clause(rec->v, c));
+    if (!rec->v->n_clauses)
+        snprintf(key, size, "(no clauses)");
+}
+
+
 static size_t score(const record *recs, size_t n, const uint8_t *choice, const uint8_t *followed)
 {
     size_t total = 0;
@@ -359,17 +380,10 @@ static void rollup_lines(FILE *log, const record *recs, size_t n, const plcvec_j
         n_groups = 0;
         for (size_t r = 0; r < n; r++) {
             const record *rec = &recs[r];
-            if (rec->status != PLCVEC_FAIL && rec->status != PLCVEC_ERROR)
+            if (!unexplained(rec, choice, followed))
                 continue;
-            if (rec->status == PLCVEC_FAIL && rec->judged == 2 && passes_under(rec, choice, followed))
-                continue;
-            char key[1024] = "";
-            size_t len = 0;
-            for (size_t c = 0; c < rec->v->n_clauses; c++)
-                len += (size_t)snprintf(key + len, len < sizeof key ? sizeof key - len : 0, "%s%s", c ? ", " : "",
-                                        plcvec_clause(rec->v, c));
-            if (!rec->v->n_clauses)
-                snprintf(key, sizeof key, "(no clauses)");
+            char key[1024];
+            clause_key(rec, key, sizeof key);
             size_t g = 0;
             while (g < n_groups && strcmp(groups[g].key, key) != 0)
                 g++;
@@ -388,17 +402,10 @@ static void rollup_lines(FILE *log, const record *recs, size_t n, const plcvec_j
         }
         for (size_t r = 0; r < n; r++) {
             const record *rec = &recs[r];
-            if (rec->status != PLCVEC_FAIL && rec->status != PLCVEC_ERROR)
+            if (!unexplained(rec, choice, followed))
                 continue;
-            if (rec->status == PLCVEC_FAIL && rec->judged == 2 && passes_under(rec, choice, followed))
-                continue;
-            char key[1024] = "";
-            size_t len = 0;
-            for (size_t c = 0; c < rec->v->n_clauses; c++)
-                len += (size_t)snprintf(key + len, len < sizeof key ? sizeof key - len : 0, "%s%s", c ? ", " : "",
-                                        plcvec_clause(rec->v, c));
-            if (!rec->v->n_clauses)
-                snprintf(key, sizeof key, "(no clauses)");
+            char key[1024];
+            clause_key(rec, key, sizeof key);
             size_t g = 0;
             while (strcmp(groups[g].key, key) != 0)
                 g++;
