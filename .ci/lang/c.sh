@@ -76,7 +76,7 @@ cmake -S "$C" -B "$C/build" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$C/build" -j 2
 ctest --test-dir "$C/build" -j 2 --output-on-failure --timeout 300
 echo "c: release build and tests in $((SECONDS - start)) s"
-# The failure blocks, byte for byte the shared text of every runner (verifiers/parity/TEXT.md).
+# The run's text of the shared cases, byte for byte the expected text of every runner (verifiers/parity/TEXT.md).
 python3 "$C/tests/text_blocks.py" "$C/build"
 
 start=$SECONDS
