@@ -63,6 +63,26 @@ def test_expectations_file_turns_a_failure_into_xfail(tmp_path):
     assert rc == 0 and "1 xfailed" in out, out
 
 
+
+def test_write_expectations_from_the_environment_is_read_back_as_known_failures(tmp_path):
+    """PLCVEC_WRITE_EXPECTATIONS (or --plcvec-write-expectations) writes the run's one failure; the
+    file, given back as PLCVEC_KNOWN_FAILURES, turns that failure into xfail and the session passes."""
+    import os
+
+    vid = "fx5-time-add/TADD/manual-example/program"
+    faulty = f"{sys.executable} {REPO / 'tests' / 'adapters' / 'faulty.py'} wrong-shape {vid}"
+    env = {**os.environ, "PLCVEC_WRITE_EXPECTATIONS": str(tmp_path / "written.toml")}
+    args = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q", "--plcvec-adapter", faulty,
+            "-k", "manual-example and TADD"]
+    proc = subprocess.run(args, cwd=tmp_path, capture_output=True, text=True, timeout=300, env=env)
+    out = proc.stdout + proc.stderr
+    assert proc.returncode == 1 and "1 known failures written to" in out, out
+    written = (tmp_path / "written.toml").read_text()
+    assert written.count("[[known-failure]]") == 1 and f'id = "{vid}"' in written, written
+    env = {**os.environ, "PLCVEC_KNOWN_FAILURES": str(tmp_path / "written.toml")}
+    proc = subprocess.run(args, cwd=tmp_path, capture_output=True, text=True, timeout=300, env=env)
+    assert proc.returncode == 0 and "1 xfailed" in proc.stdout, proc.stdout + proc.stderr
+
 # -- the gate holds under pytest as under `plcvec verify` ------------------------------------
 
 LAZY = REPO / "tests" / "adapters" / "lazy.py"

@@ -32,6 +32,9 @@ def pytest_addoption(parser):
     g.addoption("--plcvec-python", metavar="MODULE:CLASS", help="adapter object to verify in process")
     g.addoption("--plcvec-vectors", metavar="PATH", help="vector folder or file (default: the checkout's vectors/, else those installed with plcvec)")
     g.addoption("--plcvec-expectations", metavar="FILE", help="known failures (TOML)")
+    g.addoption("--plcvec-write-expectations", metavar="FILE",
+                help="write the failing vectors of the run as a known-failures file (adopting the suite); "
+                     "PLCVEC_WRITE_EXPECTATIONS")
     g.addoption("--plcvec-choose", action="append", default=[], metavar="ID=ALT",
                 help="interpretation alternative the implementation follows, if its adapter does not declare it")
     g.addoption("--plcvec-timeout", type=float, default=None,
@@ -121,8 +124,8 @@ def pytest_configure(config):
     try:
         # The PLCVEC_* variables are the options' defaults, as for plcvec verify.
         options = SimpleNamespace(**{k: config.getoption(f"plcvec_{k}") for k in (*_LISTS, "vectors", "shard",
-                                                                                    "expectations", "timeout")},
-                                  write_expectations=None)
+                                                                                    "expectations", "timeout",
+                                                                                    "write_expectations")})
         came = apply_environment(options)
         config._plcvec_options = options
         config._plcvec_suite = Suite.load(options.vectors or default_vectors().path)
@@ -200,6 +203,11 @@ def _run(session):
     except VerifyError as exc:
         return _Everywhere(f"plcvec: {exc}")
     config._plcvec_report = report
+    if options.write_expectations:
+        # As plcvec verify does: written before anything is reported, an aborted run's failures so far included.
+        from .known import write_expectations
+
+        config._plcvec_written = write_expectations(options.write_expectations, report.results, "not yet triaged")
     if report.stopped:
         raise KeyboardInterrupt(report.aborted)
     results = {r.id: r for r in report.results}
@@ -306,3 +314,6 @@ def pytest_terminal_summary(terminalreporter, config):
         terminalreporter.write_line(line, yellow=True)
     if shortfall:
         terminalreporter.write_line(f"NOT PASSED (exit 5): {shortfall}", red=True)
+    written = getattr(config, "_plcvec_written", None)
+    if written is not None:
+        terminalreporter.write_line(f"{written} known failures written to {config._plcvec_options.write_expectations}")
