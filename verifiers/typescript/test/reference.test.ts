@@ -3,6 +3,9 @@
  * of its family's interpretations: the evidence that the suite, this runner and the reference agree.
  */
 import assert from "node:assert/strict";
+import { readdirSync, readFileSync } from "node:fs";
+import { dirname, join } from "node:path";
+import { fileURLToPath } from "node:url";
 import { describe, test } from "node:test";
 
 import { summaryText, interpretationsOf, loadSuite, runVectors } from "../src/index.js";
@@ -31,6 +34,27 @@ describe("the reference under every combination of alternatives", () => {
         runs++;
       }
       assert.equal(runs, interps.reduce((n, [, alts]) => n * alts.length, 1));
+    });
+  }
+});
+
+describe("the reference is an outside user", () => {
+  // What an emulator author can import is what the package's entry point exports (and the README
+  // documents); the reference and the mutants import nothing else of the library, so a field the
+  // public API gets wrong fails their tests as it would fail the author's.
+  const src = join(dirname(fileURLToPath(import.meta.url)), "../../src");
+  for (const folder of ["reference", "mutants"]) {
+    test(`src/${folder} imports the library only through its entry point`, () => {
+      for (const file of readdirSync(join(src, folder)).filter((f) => f.endsWith(".ts"))) {
+        const text = readFileSync(join(src, folder, file), "utf8");
+        const from = [...text.matchAll(/^import [^;]*? from "([^"]+)";$/gms)].map((m) => m[1] ?? "");
+        assert.ok(from.length > 0, `${folder}/${file}: no imports found`);
+        for (const source of from) {
+          const allowed = source === "../index.js" || source.startsWith("./") || source.startsWith("node:")
+            || (folder === "mutants" && source.startsWith("../reference/"));
+          assert.ok(allowed, `${folder}/${file} imports ${source}: only "../index.js" (the package's entry point) may be used`);
+        }
+      }
     });
   }
 });

@@ -3,15 +3,13 @@
  * author could make; the suite and this runner must reject every one (test/mutants.test.ts), or
  * the verifier could not fail and would prove nothing. Each names the comparison aspect it breaks.
  */
-import { Memory } from "../memory.js";
+import { type Implementation, Memory, type StepInputs } from "../index.js";
 import { machineImplementation, MACHINES, type MachineFactory } from "../reference/index.js";
 import { Cp1eTimeCompare, FIELDS } from "../reference/cp1e-dt.js";
 import { HourMeter } from "../reference/fc6a-hour.js";
 import { Fx5CompareMachine, type Field, DATE_FIELDS } from "../reference/fx5-compare.js";
 import { TaddMachine } from "../reference/fx5-tadd.js";
 import type { Operands } from "../reference/machine.js";
-import type { Implementation } from "../implementation.js";
-import type { StepInputs } from "../vector.js";
 
 export type Aspect =
   | "contact result"

@@ -1,6 +1,5 @@
 /** Omron SYSMAC CP1E: LD/AND/OR =DT, <>DT, <DT, <=DT, >DT, >=DT, from cp1e-time-compare-DT.txt. */
-import type { StepInputs } from "../vector.js";
-import { INSTRUCTION_INFO, type InstructionInfo } from "../generated/names.js";
+import { INSTRUCTION_INFO, type InstructionInfo, type StepInputs } from "../index.js";
 import { BaseMachine, conditionHolds, deviceOf, type Operands } from "./machine.js";
 
 const ERROR_FLAG = "P_ER";

@@ -1,5 +1,5 @@
 /** IDEC FC6A MICROSmart: HOUR (hour meter), from fc6a-hour-meter-HOUR.txt. */
-import type { Operand, StepInputs } from "../vector.js";
+import type { Operand, StepInputs } from "../index.js";
 import { BaseMachine, deviceOf, type Operands } from "./machine.js";
 
 const ERROR_FLAG = "M8004";

@@ -3,8 +3,7 @@
  * from the manual pages fx5-time-compare-LDTM.txt and fx5-date-compare-LDDT.txt. The two pages are
  * the same text with hour/minute/second replaced by year/month/day, so one class serves both.
  */
-import type { StepInputs } from "../vector.js";
-import { INSTRUCTION_INFO, type InstructionInfo } from "../generated/names.js";
+import { INSTRUCTION_INFO, type InstructionInfo, type StepInputs } from "../index.js";
 import { BaseMachine, conditionHolds, deviceOf, signed16, type Operands } from "./machine.js";
 
 export interface Field {

@@ -1,5 +1,5 @@
 /** Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data), from fx5-time-add-TADD.txt. */
-import type { StepInputs } from "../vector.js";
+import type { StepInputs } from "../index.js";
 import { BaseMachine, deviceOf, signed16, type Operands } from "./machine.js";
 
 const DAY = 24 * 3600;

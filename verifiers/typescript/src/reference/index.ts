@@ -3,11 +3,7 @@
  * manual pages the way an emulator author would, that must pass every vector under every
  * combination of alternatives. It is also what the mutants break, one bug each.
  */
-import { FAMILIES, INTERPRETATIONS, type InterpretationId } from "../generated/names.js";
-import { Memory } from "../memory.js";
-import type { Implementation } from "../implementation.js";
-import type { RunOutcome, StepResult } from "../implementation.js";
-import type { VectorRequest } from "../vector.js";
+import { FAMILIES, type Implementation, type InterpretationId, INTERPRETATIONS, Memory, type RunOutcome, type StepResult, type VectorRequest } from "../index.js";
 import { Cp1eTimeCompare } from "./cp1e-dt.js";
 import { HourMeter } from "./fc6a-hour.js";
 import { Fx5CompareMachine } from "./fx5-compare.js";

@@ -3,9 +3,7 @@
  * (each interpretation's default from the generated names, unless declared), and the words
  * read as "16-bit signed binary".
  */
-import { INTERPRETATIONS, type Alternative, type InterpretationId } from "../generated/names.js";
-import type { Memory } from "../memory.js";
-import type { Operand, StepInputs } from "../vector.js";
+import { type Alternative, type InterpretationId, INTERPRETATIONS, type Memory, type Operand, type StepInputs } from "../index.js";
 
 export type Operands = Readonly<Record<string, Operand>>;
 
