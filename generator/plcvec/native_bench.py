@@ -10,74 +10,442 @@ loading, and prints as its last line one JSON object:
 (`seconds` is one pass). The Python figure is the same measurement with the Python reference
 (plcvec_verify.bench.in_process_rate), taken in this run, so each ratio compares like with like
 on the same machine at the same moment.
+
+`--baseline REV` compares each language's bench with the same bench of git revision REV instead:
+REV is checked out in a temporary `git worktree` (removed at the end, on an error or Ctrl-C too),
+each side's bench is run once to build it (that run's figure is not counted), then the two are run
+in turn, baseline then this tree, for `--rounds` rounds, so that both sides meet the same moments
+of a shared machine. Each side judges its own vectors: their counts may differ between revisions,
+so vectors/s is the figure compared, and the table says how many vectors each side ran.
 """
 from __future__ import annotations
 
 import json
 import os
+import re
+import shutil
+import signal
+import statistics
 import subprocess
 import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass, field
 from pathlib import Path
 
 from plcvec.errors import PlcvecError
 
-TIMEOUT_S = 900      # one language's build and benchmark; a hung one is reported, not waited on
+TIMEOUT_S = 900          # one language's benchmark; a hung one is reported, not waited on
+BUILD_TIMEOUT_S = 1800   # its first run, which builds it from nothing in a fresh worktree
+DEFAULT_ROUNDS = 3
+SAMPLE_S = 0.1           # how often the benchmark process's peak memory is read
 
 
 def register(sub, spec_parent):
-    b = sub.add_parser("bench-native", help="vectors/s of each native verifier (verifiers/<lang>/bench) beside Python's")
-    b.add_argument("--lang", action="append", metavar="L", help="only this language (repeatable)")
+    b = sub.add_parser("bench-native", help="vectors/s of each native verifier (verifiers/<lang>/bench) beside Python's, "
+                                            "or beside the same bench at git revision REV (--baseline)")
+    b.add_argument("--lang", action="append", metavar="L",
+                   help="only this language (repeatable, or comma-separated: --lang go,rust)")
     from plcvec_verify.locate import checkout
 
     root = checkout()   # the checkout in use (plcvec_verify/locate.py): the native verifiers live only there
     b.add_argument("--vectors", default=str(root / "vectors") if root else None, help="the vector folder for the Python figure")
     b.add_argument("--root", default=str(root) if root else None,
                    help="the repository holding verifiers/ (default: %(default)s)")
+    b.add_argument("--baseline", metavar="REV",
+                   help="compare each bench with the same bench of git revision REV (a temporary git worktree), "
+                        "run in turn with this tree's in the same run; prints vectors/s of each (median and spread), "
+                        "the ratio this tree / REV, seconds per pass, loading seconds and peak memory")
+    b.add_argument("--rounds", type=_positive_int, metavar="N",
+                   help=f"with --baseline: how many times each side is measured, in turn (default: {DEFAULT_ROUNDS}), "
+                        "after one run of each that builds it and is not counted")
     b.set_defaults(func=run)
 
 
-def _native(script: Path) -> dict:
+def _positive_int(text):
+    import argparse
+
     try:
-        proc = subprocess.run([str(script)], cwd=script.parent, capture_output=True, text=True,
-                              timeout=TIMEOUT_S, stdin=subprocess.DEVNULL)
-    except subprocess.TimeoutExpired:
-        return {"error": f"no result within {TIMEOUT_S} s"}
-    except OSError as exc:
-        return {"error": f"cannot run {script}: {exc.strerror or exc}"}
-    lines = [line for line in proc.stdout.splitlines() if line.strip()]
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be 1 or more, got {value}")
+    return value
+
+
+# ---------------------------------------------------------------------------------------------------
+# Running one bench
+
+
+def _child_env():
+    """This environment without the PLCVEC_* variables: each bench judges its own tree's golden set,
+    which a PLCVEC_VECTORS or selection left in the shell would change (and change alike for both
+    sides of a comparison, hiding the difference between their vector sets)."""
+    return {k: v for k, v in os.environ.items() if not k.startswith("PLCVEC_")}
+
+
+def _children(pid):
+    try:
+        text = Path(f"/proc/{pid}/task/{pid}/children").read_text()
+    except OSError:
+        return []
+    return [int(p) for p in text.split()]
+
+
+def _status(pid):
+    """(executable, VmHWM in KiB or None, command line) of a live process, or None. The executable,
+    not the name: a script's process is named after the script until it execs."""
+    try:
+        exe = os.readlink(f"/proc/{pid}/exe")
+        status = Path(f"/proc/{pid}/status").read_text()
+        cmdline = Path(f"/proc/{pid}/cmdline").read_bytes().split(b"\0")
+    except OSError:
+        return None
+    hwm = re.search(r"^VmHWM:\s*(\d+) kB", status, re.M)
+    return (exe, int(hwm.group(1)) if hwm else None, [part.decode(errors="replace") for part in cmdline if part])
+
+
+_SHELLS = {"bash", "sh", "dash", "zsh"}
+
+
+def _sample_peak(root_pid, peak):
+    """The benchmark program's peak resident memory so far, in KiB, in `peak` (a dict, kept between
+    samples). The program measured is the bench script's own process once it has exec'd into
+    something other than a shell (C, Java, Rust, TypeScript), or a Go test binary it runs
+    (`-test.bench` among its arguments) -- not the compilers and build tools the script runs first,
+    whose memory is no part of judging vectors. VmHWM is the high-water mark since the exec, so
+    sampling misses at most what the last SAMPLE_S before exit added."""
+    todo, seen = [root_pid], set()
+    while todo:
+        pid = todo.pop()
+        if pid in seen:
+            continue
+        seen.add(pid)
+        todo += _children(pid)
+        status = _status(pid)
+        if status is None:
+            continue
+        exe, hwm, cmdline = status
+        measured = (pid == root_pid and Path(exe).name not in _SHELLS) or any(arg.startswith("-test.bench") for arg in cmdline)
+        if measured and hwm is not None:
+            peak[pid, exe] = max(hwm, peak.get((pid, exe), 0))
+
+
+def _kill_group(proc):
+    try:
+        os.killpg(proc.pid, signal.SIGKILL)
+    except (ProcessLookupError, PermissionError):
+        pass
+    proc.wait()
+
+
+def invoke(script: Path, timeout=TIMEOUT_S) -> dict:
+    """Run one bench script; its JSON figure, with `wall_seconds` (the whole run) and `peak_mib` (the
+    benchmark program's, where it could be told apart) added, or {"error": message}. The script and
+    everything it starts form a process group of their own, killed whole on a timeout, an error or
+    Ctrl-C, so that no compiler goes on writing into a folder about to be removed."""
+    with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
+        start = time.monotonic()
+        try:
+            proc = subprocess.Popen([str(script)], cwd=script.parent, stdout=out, stderr=err, text=True,
+                                    stdin=subprocess.DEVNULL, env=_child_env(), start_new_session=True)
+        except OSError as exc:
+            return {"error": f"cannot run {script}: {exc.strerror or exc}"}
+        peak = {}
+        try:
+            while True:
+                _sample_peak(proc.pid, peak)
+                try:
+                    proc.wait(timeout=SAMPLE_S)
+                    break
+                except subprocess.TimeoutExpired:
+                    if time.monotonic() - start > timeout:
+                        _kill_group(proc)
+                        return {"error": f"{script}: no result within {timeout} s (stopped)"}
+        except BaseException:
+            _kill_group(proc)
+            raise
+        wall = time.monotonic() - start
+        out.seek(0)
+        err.seek(0)
+        stdout, stderr = out.read(), err.read()
+    lines = [line for line in stdout.splitlines() if line.strip()]
     if proc.returncode != 0 or not lines:
-        tail = (proc.stderr.strip().splitlines() or ["(no output)"])[-1]
-        return {"error": f"{script} exited {proc.returncode}: {tail}"}
+        tail = (stderr.strip().splitlines() or stdout.strip().splitlines() or ["(no output)"])[-1]
+        return {"error": f"{script} exited {proc.returncode}: {tail[:300]}"}
     try:
         figure = json.loads(lines[-1])
         float(figure["vectors_per_s"])
     except (ValueError, KeyError, TypeError):
         return {"error": f"{script}: the last line is not the benchmark's JSON object: {lines[-1][:200]!r}"}
+    figure["wall_seconds"] = wall
+    if peak:
+        figure["peak_mib"] = max(peak.values()) / 1024
     return figure
 
 
+# ---------------------------------------------------------------------------------------------------
+# Selecting languages
+
+
+def _scripts(root: Path) -> dict:
+    return {p.parent.name: p for p in sorted((root / "verifiers").glob("*/bench")) if os.access(p, os.X_OK)}
+
+
+def _select(requested, known) -> list:
+    """The languages asked for (all known ones when none), in the order of `known`; an unknown or
+    empty name is a usage error listing the known ones."""
+    if not requested:
+        return list(known)
+    names = [name.strip() for item in requested for name in item.split(",")]
+    unknown = sorted({name for name in names if name not in known})
+    if unknown:
+        shown = ", ".join(repr(name) if not name else name for name in unknown)
+        raise PlcvecError(f"bench-native --lang {shown}: no verifiers/<lang>/bench of that name "
+                          f"(known: {', '.join(known) or 'none'})")
+    return [lang for lang in known if lang in names]
+
+
+# ---------------------------------------------------------------------------------------------------
+# The comparison: interleaving and arithmetic (the runner is a parameter, so that tests can give one)
+
+
+@dataclass
+class Comparison:
+    lang: str
+    baseline: list = field(default_factory=list)   # figures, one per round
+    current: list = field(default_factory=list)
+    error: str | None = None                       # why it could not be compared
+    current_failed: bool = False                   # the error is this tree's (not the baseline's)
+
+
+def compare(langs, baseline_runners, current_runners, rounds, progress=lambda message: None):
+    """Each language measured on both sides: one run of each that builds it (not counted), then
+    `rounds` rounds of baseline then current. `baseline_runners[lang](build=...)` and
+    `current_runners[lang](build=...)` return a bench's figure or {"error": ...}; a language whose
+    baseline bench is absent has None.
+    A failure on either side ends that language's comparison (its other rounds are not run)."""
+    results = []
+    for lang in langs:
+        result = Comparison(lang)
+        results.append(result)
+        if baseline_runners.get(lang) is None:
+            result.error = f"the baseline revision has no executable verifiers/{lang}/bench"
+            continue
+        sides = (("baseline", baseline_runners[lang], result.baseline),
+                 ("current", current_runners[lang], result.current))
+        stages = [("building and a first run", "", True)] + [
+            (f"round {i} of {rounds}", f", round {i}", False) for i in range(1, rounds + 1)]
+        for stage, where, build in stages:
+            for side, runner, figures in sides:
+                progress(f"{lang}: {stage} ({side})")
+                figure = runner(build=build)
+                if "error" in figure:
+                    result.error, result.current_failed = f"{side}{where}: {figure['error']}", side == "current"
+                    break
+                if not build:
+                    figures.append(figure)
+            if result.error:
+                break
+    return results
+
+
+def spread(values):
+    """(max - min) / median: how far apart the rounds of one side are, as a fraction of their median."""
+    return (max(values) - min(values)) / statistics.median(values)
+
+
+def summary(result: Comparison) -> dict:
+    """The figures of one compared language: per side the median vectors/s and its spread, the vector
+    counts, the medians of seconds per pass, loading seconds and peak memory where given; the ratio
+    current / baseline of the medians, the range of the round-by-round ratios, and the same ratio by
+    CPU time where both benches give cpu_vectors_per_s in every round."""
+    out = {"lang": result.lang}
+    for side in ("baseline", "current"):
+        figures = getattr(result, side)
+        rates = [float(f["vectors_per_s"]) for f in figures]
+        one = {"vectors": sorted({int(f.get("vectors", 0)) for f in figures}),
+               "vectors_per_s": statistics.median(rates), "spread": spread(rates), "rounds": rates}
+        for key in ("seconds", "load_seconds", "peak_mib", "cpu_vectors_per_s"):
+            values = [float(f[key]) for f in figures if key in f]
+            one[key] = statistics.median(values) if len(values) == len(figures) else None
+        out[side] = one
+    base, cur = out["baseline"], out["current"]
+    out["ratio"] = cur["vectors_per_s"] / base["vectors_per_s"]
+    per_round = [c / b for b, c in zip(base["rounds"], cur["rounds"])]
+    out["round_ratios"] = (min(per_round), max(per_round))
+    out["cpu_ratio"] = (cur["cpu_vectors_per_s"] / base["cpu_vectors_per_s"]
+                        if cur["cpu_vectors_per_s"] and base["cpu_vectors_per_s"] else None)
+    return out
+
+
+def _num(value, fmt, width):
+    return f"{'-' if value is None else format(value, fmt):>{width}}"
+
+
+def print_comparison(results, base_label, rounds, file=None):
+    file = file or sys.stdout
+    print(f"bench-native: this tree against {base_label}, {rounds} round(s) of baseline then this tree, after one "
+          "run of each that builds it (not counted); vectors/s is the median of the rounds, spread (max - min) / median",
+          file=file)
+    head = (f"{'language':10} {'side':16} {'vectors':>8} {'vectors/s':>12} {'spread':>7} {'s/pass':>10} "
+            f"{'load s':>7} {'peak MiB':>8} {'CPU vectors/s':>13}")
+    print(head, file=file)
+    summaries = []
+    for result in results:
+        if result.error:
+            print(f"{result.lang:10} not compared: {result.error}", file=file)
+            continue
+        s = summary(result)
+        summaries.append(s)
+        for side, label in (("baseline", base_label), ("current", "this tree")):
+            one = s[side]
+            print(f"{result.lang if side == 'baseline' else '':10} {label[:16]:16} "
+                  f"{'/'.join(f'{n:,}' for n in one['vectors']):>8} {one['vectors_per_s']:>12,.0f} "
+                  f"{one['spread'] * 100:>6.1f}% {_num(one['seconds'], '.6f', 10)} {_num(one['load_seconds'], '.3f', 7)} "
+                  f"{_num(one['peak_mib'], '.1f', 8)} {_num(one['cpu_vectors_per_s'], ',.0f', 13)}", file=file)
+        low, high = s["round_ratios"]
+        print(f"{'':10} {'this / baseline':16} {s['ratio']:>20.3f}x by the clock (rounds {low:.3f}x to {high:.3f}x)"
+              + (f", {s['cpu_ratio']:.3f}x by CPU time" if s["cpu_ratio"] else ""), file=file)
+    print("peak MiB: the benchmark program's own peak resident memory (not its build's); "
+          "CPU vectors/s: where the bench reports it", file=file)
+    print(json.dumps({"baseline": base_label, "rounds": rounds,
+                      "compared": {s["lang"]: {"ratio": round(s["ratio"], 4),
+                                               "cpu_ratio": round(s["cpu_ratio"], 4) if s["cpu_ratio"] else None,
+                                               "baseline_vectors_per_s": round(s["baseline"]["vectors_per_s"]),
+                                               "current_vectors_per_s": round(s["current"]["vectors_per_s"]),
+                                               "baseline_vectors": s["baseline"]["vectors"],
+                                               "current_vectors": s["current"]["vectors"]} for s in summaries},
+                      "not_compared": {r.lang: r.error for r in results if r.error}}), file=file)
+    return summaries
+
+
+# ---------------------------------------------------------------------------------------------------
+# The baseline's worktree
+
+
+def _git(root, *args, timeout=300):
+    try:
+        return subprocess.run(["git", "-C", str(root), *args], capture_output=True, text=True, timeout=timeout,
+                              stdin=subprocess.DEVNULL)
+    except (OSError, subprocess.TimeoutExpired) as exc:
+        raise PlcvecError(f"bench-native --baseline: git {args[0]} failed: {exc}") from None
+
+
+def resolve_revision(root, rev) -> str:
+    found = _git(root, "rev-parse", "--verify", "--quiet", "--end-of-options", f"{rev}^{{commit}}", timeout=60)
+    if found.returncode:
+        raise PlcvecError(f"bench-native --baseline: {rev!r} is not a commit of the git repository at {root}")
+    return found.stdout.strip()
+
+
+class BaselineWorktree:
+    """Revision `commit` checked out (detached) in a temporary `git worktree` of the repository at
+    `root`; on leaving, the worktree is removed (and git's record of it), whatever ended the block."""
+
+    def __init__(self, root, commit):
+        self.root, self.commit = Path(root), commit
+        self.tmp = self.path = None
+
+    def __enter__(self):
+        self.tmp = Path(tempfile.mkdtemp(prefix="plcvec-bench-native-"))
+        self.path = self.tmp / "baseline"
+        try:
+            added = _git(self.root, "worktree", "add", "--detach", str(self.path), self.commit)
+            if added.returncode:
+                raise PlcvecError(f"bench-native --baseline: git worktree add {self.commit[:12]} failed: "
+                                  f"{added.stderr.strip()}")
+        except BaseException:
+            self.remove()
+            raise
+        return self
+
+    def __exit__(self, *exc):
+        self.remove()
+        return False
+
+    def remove(self):
+        if self.path is not None:
+            try:
+                removed = _git(self.root, "worktree", "remove", "--force", "--force", str(self.path)).returncode == 0
+            except PlcvecError:
+                removed = False
+            if not removed:
+                shutil.rmtree(self.path, ignore_errors=True)
+                # Git's record of the worktree whose folder is now gone (or of an `add` that failed
+                # half way); prune touches no worktree whose folder is still there.
+                try:
+                    _git(self.root, "worktree", "prune")
+                except PlcvecError as exc:
+                    print(f"plcvec: {exc}; `git worktree prune` removes the record of {self.path}", file=sys.stderr)
+        if self.tmp is not None:
+            shutil.rmtree(self.tmp, ignore_errors=True)
+
+
+def _terminate_as_interrupt(signum, frame):
+    raise KeyboardInterrupt
+
+
+def run_baseline(args, root: Path, progress=None, invoke_bench=invoke):
+    rounds = args.rounds or DEFAULT_ROUNDS
+    here = _scripts(root)
+    langs = _select(args.lang, list(here))
+    if not langs:
+        raise PlcvecError(f"{root / 'verifiers'}: no native verifier has a `bench` script")
+    commit = resolve_revision(root, args.baseline)
+    label = args.baseline if commit.startswith(args.baseline) else f"{args.baseline} ({commit[:7]})"
+    progress = progress or (lambda message: print(f"bench-native: {message}", file=sys.stderr, flush=True))
+    # A run ended by SIGTERM removes its worktree too (only the main thread may set a handler).
+    main_thread = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGTERM, _terminate_as_interrupt) if main_thread else None
+    try:
+        with BaselineWorktree(root, commit) as tree:
+            there = _scripts(tree.path)
+
+            def runner(script):
+                return lambda build: invoke_bench(script, timeout=BUILD_TIMEOUT_S if build else TIMEOUT_S)
+
+            results = compare(langs, {lang: runner(there[lang]) if lang in there else None for lang in langs},
+                              {lang: runner(here[lang]) for lang in langs}, rounds, progress)
+    finally:
+        if main_thread:
+            signal.signal(signal.SIGTERM, previous)
+    summaries = print_comparison(results, label, rounds)
+    sys.stdout.flush()
+    if not summaries:
+        print("plcvec: bench-native --baseline: no language could be compared", file=sys.stderr)
+        return 1
+    return 1 if any(r.current_failed for r in results) else 0
+
+
+# ---------------------------------------------------------------------------------------------------
+
+
 def run(args):
+    if not args.root:
+        raise PlcvecError("bench-native: not in a plcvec checkout; name the repository with --root"
+                          + ("" if args.baseline else " and the vectors with --vectors"))
+    root = Path(args.root)
+    if args.baseline:
+        return run_baseline(args, root)
+    if args.rounds is not None:
+        raise PlcvecError("bench-native: --rounds is for --baseline (without it each bench runs once)")
+    if not args.vectors:
+        raise PlcvecError("bench-native: not in a plcvec checkout; name the repository with --root and the vectors with --vectors")
     from plcvec_verify.bench import in_process_rate
 
-    if not args.root or not args.vectors:
-        raise PlcvecError("bench-native: not in a plcvec checkout; name the repository with --root and the vectors with --vectors")
-    root = Path(args.root)
-    scripts = sorted(p for p in (root / "verifiers").glob("*/bench") if os.access(p, os.X_OK))
-    if args.lang:
-        known = {p.parent.name for p in scripts}
-        unknown = sorted(set(args.lang) - known)
-        if unknown:
-            raise PlcvecError(f"--lang {', '.join(unknown)}: no verifiers/<lang>/bench (have: {', '.join(sorted(known)) or 'none'})")
-        scripts = [p for p in scripts if p.parent.name in args.lang]
-    if not scripts:
+    scripts = _scripts(root)
+    langs = _select(args.lang, list(scripts))
+    if not langs:
         raise PlcvecError(f"{root / 'verifiers'}: no native verifier has a `bench` script")
     n, python_rate = in_process_rate(args.vectors)
     print(f"{'judging the golden set in process, after loading':50} {'vectors':>8} {'vectors/s':>12} {'x Python':>9}")
     print(f"{'python (reference)':50} {n:>8,} {python_rate:>12,.0f} {1:>9.1f}")
     failed = False
-    for script in scripts:
-        lang = script.parent.name
-        figure = _native(script)
+    for lang in langs:
+        figure = invoke(scripts[lang])
         if "error" in figure:
             print(f"{lang:50} {'':>8} {'failed':>12}   {figure['error']}")
             failed = True
