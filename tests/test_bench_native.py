@@ -256,6 +256,38 @@ def test_peak_memory_is_the_benchmark_programs_not_the_build_steps(tmp_path):
     assert 60 <= figure["peak_mib"] < 300
 
 
+def test_the_peak_of_a_go_test_binary_started_from_another_thread_of_its_parent(tmp_path):
+    # `go test` starts the test binary from any of its threads; /proc lists a child under the
+    # thread that started it. Here the parent (60 MiB at most with the interpreter) starts, from a
+    # second thread, a program that holds 150 MiB and has `-test.bench` among its arguments.
+    program = tmp_path / "go_like.py"
+    program.write_text(textwrap.dedent(f"""\
+        import subprocess, sys, threading
+        child = "import time; x = bytearray(150 * 2**20); x[::4096] = b'1' * len(x[::4096]); time.sleep(0.5)"
+        thread = threading.Thread(target=subprocess.run, args=([sys.executable, "-c", child, "-test.bench=."],))
+        thread.start()
+        thread.join()
+        print({_figure(1, 1)!r})
+        """))
+    script = tmp_path / "lang" / "bench"
+    script.parent.mkdir()
+    script.write_text(f"#!/bin/sh\nexec python3 {program}\n")
+    script.chmod(0o755)
+    figure = native_bench.invoke(script)
+    assert figure["vectors_per_s"] == 1 and figure["peak_mib"] >= 150
+
+
+def test_no_peak_memory_when_the_script_runs_no_program_of_its_own(tmp_path):
+    # A script that never execs into a program (env and the shell are launchers, and a child it
+    # waits for is a build step) gives no figure rather than the launcher's or the child's.
+    script = tmp_path / "lang" / "bench"
+    script.parent.mkdir()
+    script.write_text(f"#!/usr/bin/env sh\nsleep 0.3\necho '{_figure(1, 1)}'\n")
+    script.chmod(0o755)
+    figure = native_bench.invoke(script)
+    assert figure["vectors_per_s"] == 1 and "peak_mib" not in figure
+
+
 def test_a_bench_that_outlives_its_bound_is_stopped_and_reported(tmp_path):
     script = tmp_path / "lang" / "bench"
     script.parent.mkdir()

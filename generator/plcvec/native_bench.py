@@ -87,11 +87,15 @@ def _child_env():
 
 
 def _children(pid):
-    try:
-        text = Path(f"/proc/{pid}/task/{pid}/children").read_text()
-    except OSError:
-        return []
-    return [int(p) for p in text.split()]
+    """The child processes of every thread of `pid` (a multi-threaded parent such as the go command
+    starts its children from any of its threads, and each thread lists only its own)."""
+    found = []
+    for task in Path(f"/proc/{pid}/task").glob("*"):
+        try:
+            found += [int(p) for p in (task / "children").read_text().split()]
+        except OSError:
+            pass
+    return found
 
 
 def _status(pid):
@@ -107,13 +111,14 @@ def _status(pid):
     return (exe, int(hwm.group(1)) if hwm else None, [part.decode(errors="replace") for part in cmdline if part])
 
 
-_SHELLS = {"bash", "sh", "dash", "zsh"}
+# What a bench script runs as before its `exec`: `#!/usr/bin/env bash` is env, then bash.
+_LAUNCHERS = {"env", "bash", "sh", "dash", "zsh"}
 
 
 def _sample_peak(root_pid, peak):
     """The benchmark program's peak resident memory so far, in KiB, in `peak` (a dict, kept between
     samples). The program measured is the bench script's own process once it has exec'd into
-    something other than a shell (C, Java, Rust, TypeScript), or a Go test binary it runs
+    something other than env or a shell (C, Java, Rust, TypeScript), or a Go test binary it runs
     (`-test.bench` among its arguments) -- not the compilers and build tools the script runs first,
     whose memory is no part of judging vectors. VmHWM is the high-water mark since the exec, so
     sampling misses at most what the last SAMPLE_S before exit added."""
@@ -128,7 +133,7 @@ def _sample_peak(root_pid, peak):
         if status is None:
             continue
         exe, hwm, cmdline = status
-        measured = (pid == root_pid and Path(exe).name not in _SHELLS) or any(arg.startswith("-test.bench") for arg in cmdline)
+        measured = (pid == root_pid and Path(exe).name not in _LAUNCHERS) or any(arg.startswith("-test.bench") for arg in cmdline)
         if measured and hwm is not None:
             peak[pid, exe] = max(hwm, peak.get((pid, exe), 0))
 
