@@ -31,7 +31,7 @@ step "cargo clippy --all-targets -D warnings"
 cargo clippy --locked --manifest-path "$crate/Cargo.toml" --workspace --all-targets -- -D warnings
 
 # Release: the reference adapter below and the benchmark reuse the same build.
-step "cargo test (one test per vector, mutants, loading, the harness)"
+step "cargo test (one test per vector under the reference, mutants, loading, the harness)"
 cargo test --locked --release --manifest-path "$crate/Cargo.toml" --workspace
 
 step "the crate's LICENSE is the repository's (MIT asks for the notice in every copy)"
@@ -44,6 +44,16 @@ python3 .ci/readme_snippets.py extract "$crate/README.md" --out "$readme" >/dev/
 # The README depends on plcvec = "0.1" from crates.io: this checkout's crate stands in for it.
 printf '\n[workspace]\n\n[patch.crates-io]\nplcvec = { path = "%s" }\n' "$PWD/$crate" >> "$readme/emulator/Cargo.toml"
 (cd "$readme/emulator" && CARGO_TARGET_DIR="$OLDPWD/$crate/target/readme" bash -euo pipefail run.sh >/dev/null)
+
+step "the published crate holds neither the reference implementation nor its mutants"
+# They are the unpublished plcvec-reference crate (verifiers/rust/reference), an outside user of
+# this crate's public API: the build fails if it reaches a private item.
+packaged=$(cargo package --list --locked --manifest-path "$crate/Cargo.toml" -p plcvec) || {
+    echo "$packaged"; exit 1; }
+if echo "$packaged" | grep -v '^vectors/' | grep -Ei 'reference|mutant'; then
+    echo "rust.sh: the plcvec crate's package lists the files above; they belong to plcvec-reference" >&2
+    exit 1
+fi
 
 step "cargo publish --dry-run: packaged and built as crates.io would, no warning"
 # The one warning a dry run always gives is that it does not upload.

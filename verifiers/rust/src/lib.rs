@@ -7,8 +7,13 @@
 //!
 //! ```no_run
 //! // tests/plcvec.rs, with `[[test]] name = "plcvec"`, `harness = false` in Cargo.toml
+//! # struct MyEmulator;
+//! # impl plcvec::Execute for MyEmulator {
+//! #     fn execute(&mut self, _: &plcvec::Vector, _: &plcvec::Step, _: &mut plcvec::Memory<'_>)
+//! #         -> Result<Option<bool>, plcvec::Refusal> { Ok(None) }
+//! # }
 //! fn main() -> std::process::ExitCode {
-//!     plcvec::harness::run(|| plcvec::OnMemory(plcvec::reference::Reference::new()))
+//!     plcvec::harness::run(|| plcvec::OnMemory(MyEmulator))
 //! }
 //! ```
 //!
@@ -33,7 +38,6 @@ mod infer;
 mod keys;
 mod known;
 mod memory;
-pub mod reference;
 mod runner;
 mod select;
 pub mod serve;

@@ -1,6 +1,7 @@
 //! Serving an [`Implementation`] over the stdio protocol (PROTOCOL.md), so that
 //! `plcvec verify --adapter CMD` drives it as one long-lived process. Any implementation gets an
-//! adapter binary in a few lines; the crate's reference adapter is one.
+//! adapter binary in a few lines; the repository's reference adapter (`plcvec-reference-adapter`,
+//! in the `plcvec-reference` crate) is one.
 //!
 //! Malformed input never crashes the loop: a line that is not a protocol message is answered
 //! with `fatal` (the runner stops with exit 2), a vector that cannot be read with an `error`

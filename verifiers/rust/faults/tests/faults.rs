@@ -3,8 +3,8 @@
 //! vector, for the names that act on all). Only plcvec's public API, as an outside emulator.
 use std::process::ExitCode;
 
-use plcvec::reference::Reference;
 use plcvec::{Choices, Execute, Implementation, Memory, Refusal, Steps, Value, Vector};
+use plcvec_reference::Reference;
 
 const NAMES: &[&str] = &[
     "reference",

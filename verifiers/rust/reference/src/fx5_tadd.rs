@@ -2,13 +2,10 @@
 //!
 //! Written from the manual page fx5-time-add-TADD.txt.
 
+use plcvec::names::{Execution, Instruction, TaddErrorOrder, TaddExact24, TaddFlagsOff, TaddOnError};
+use plcvec::{Choices, Memory, Refusal, Step, Value, Vector};
+
 use super::{device, read3, signed, Mutant};
-use crate::choices::Choices;
-use crate::generated::names::{Execution, Instruction, TaddErrorOrder, TaddExact24, TaddFlagsOff, TaddOnError};
-use crate::implementation::Refusal;
-use crate::memory::Memory;
-use crate::value::Value;
-use crate::vector::{Step, Vector};
 
 const DAY: i64 = 24 * 3600;
 // "SM700 Carry ... SM8020 Zero ... SM8022 Carry"

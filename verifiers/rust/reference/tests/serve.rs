@@ -1,9 +1,9 @@
 //! The stdio protocol loop (PROTOCOL.md): the handshake, a batch, and malformed input answered
 //! with `fatal` or an `error` result instead of a crash.
 
-use plcvec::reference::Reference;
 use plcvec::serve::{serve, AdapterInfo};
 use plcvec::{OnMemory, Suite};
+use plcvec_reference::Reference;
 use serde_json::{json, Value as Json};
 
 fn talk(input: &str) -> (i32, Vec<Json>) {

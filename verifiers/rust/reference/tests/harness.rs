@@ -4,8 +4,8 @@
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 use plcvec::harness::{judged_nothing, Arguments, Conclusion, Harness};
-use plcvec::reference::{Mutant, Reference};
 use plcvec::{Choices, Implementation, KnownFailures, OnMemory, Selection, Suite};
+use plcvec_reference::{Mutant, Reference};
 
 /// Run a harness; its report goes to a log file (removed after), so that the nested runs'
 /// deliberate failures do not read as this test's in the output.

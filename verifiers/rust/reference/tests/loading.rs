@@ -5,13 +5,14 @@
 use std::path::{Path, PathBuf};
 
 use plcvec::names::{Family, TaddOnError, TOTAL};
-use plcvec::reference::Reference;
 use plcvec::{Choices, KnownFailures, OnMemory, Selection, Status, Suite};
+use plcvec_reference::Reference;
 
 const MANUAL_EXAMPLE: &str = "fx5-time-add/TADD/manual-example/program";
 
-fn crate_dir() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
+/// The `plcvec` crate's folder (this crate's parent), which holds the exported vectors.
+fn crate_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("..")
 }
 
 /// A scratch folder, removed when dropped.
@@ -275,7 +276,7 @@ fn known_failures_turn_into_xfail_and_stale() {
         "[[known-failure]]\nid = \"fx5-time-add/TADD/carry/below-wrap/flags-on-before\"\nreason = \"SM8022 not modelled\"\n",
     )
     .unwrap();
-    let mut mutant = OnMemory(Reference::mutant(plcvec::reference::Mutant::TaddSm8022NotWritten, Choices::new()));
+    let mut mutant = OnMemory(Reference::mutant(plcvec_reference::Mutant::TaddSm8022NotWritten, Choices::new()));
     let report = plcvec::run(&suite, &mut mutant, &selection, Some(&known)).unwrap();
     assert_eq!(report.verdict("fx5-time-add/TADD/carry/below-wrap/flags-on-before").unwrap().status, Status::XFail);
 

@@ -8,9 +8,9 @@
 use std::io::{stdin, stdout, BufWriter};
 use std::process::ExitCode;
 
-use plcvec::reference::{Mutant, Reference};
 use plcvec::serve::{serve, AdapterInfo};
 use plcvec::{Choices, OnMemory};
+use plcvec_reference::{Mutant, Reference};
 
 const USAGE: &str = "usage: plcvec-reference-adapter [--mutant NAME] [--choose INTERPRETATION=ALTERNATIVE]...";
 

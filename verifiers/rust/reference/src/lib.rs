@@ -2,8 +2,10 @@
 //! the contract: the Rust oracle. It passes every vector under every combination of
 //! interpretation alternatives, through `cargo test` and over the stdio protocol.
 //!
-//! It is an [`Execute`]: it executes one instruction on a vector's [`Memory`], the way an
-//! emulator would. One module per family:
+//! It is an emulator like any other: a crate of its own that reaches `plcvec` only through the
+//! public API the crate documents, so that a field of that API which is wrong (or missing) fails
+//! its tests as it would fail an outside emulator. It is an [`Execute`]: it executes one
+//! instruction on a vector's [`Memory`]. One module per family:
 //!
 //! - `fx5_compare`: FX5 LDTM□/ANDTM□/ORTM□ and LDDT□/ANDDT□/ORDT□
 //! - `fx5_tadd`: FX5 TADD/TADDP
@@ -23,12 +25,8 @@ use std::cmp::Ordering;
 
 pub use mutants::Mutant;
 
-use crate::choices::Choices;
-use crate::generated::names::{Condition, Family, Form, Instruction};
-use crate::implementation::{Execute, Refusal};
-use crate::memory::Memory;
-use crate::value::Address;
-use crate::vector::{Step, Vector};
+use plcvec::names::{Condition, Family, Form, Instruction};
+use plcvec::{Address, Choices, Execute, Memory, Operand, Refusal, Step, Vector};
 
 /// The reference implementation, following the declared alternatives (default: every default).
 #[derive(Clone, Debug)]
@@ -140,10 +138,8 @@ fn not_a_device(vector: &Vector, operand: &str) -> Refusal {
 /// A one-word operand: a K/H constant or the word in a device.
 fn word_operand(vector: &Vector, memory: &Memory<'_>, operand: &str) -> Result<u16, Refusal> {
     match vector.operand(operand) {
-        Some(crate::vector::Operand::Constant(c)) => Ok(*c as u16), // the low 16 bits, as the CPU stores K/H
-        Some(crate::vector::Operand::Device(_)) => {
-            memory.operand_word(operand, 0).ok_or_else(|| not_a_device(vector, operand))
-        }
+        Some(Operand::Constant(c)) => Ok(*c as u16), // the low 16 bits, as the CPU stores K/H
+        Some(Operand::Device(_)) => memory.operand_word(operand, 0).ok_or_else(|| not_a_device(vector, operand)),
         None => Err(Refusal::Error(format!("{}: no operand {operand}", vector.instruction()))),
     }
 }

@@ -10,8 +10,8 @@
 
 use std::time::Instant;
 
-use plcvec::reference::Reference;
 use plcvec::{Choices, OnMemory, Plan, Status, Suite};
+use plcvec_reference::Reference;
 
 const WARM_UP: usize = 3;
 const PASSES: usize = 20;

@@ -8,15 +8,13 @@
 
 use std::cmp::Ordering;
 
-use super::{holds, read3, rlo_in, word_operand, Mutant};
-use crate::choices::Choices;
-use crate::generated::names::{
+use plcvec::names::{
     Condition, Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eErrorFlags, Cp1eNonBcd, Cp1eOutOfRange,
     Form,
 };
-use crate::implementation::Refusal;
-use crate::memory::Memory;
-use crate::vector::Vector;
+use plcvec::{Choices, Memory, Refusal, Vector};
+
+use super::{holds, read3, rlo_in, word_operand, Mutant};
 
 const ERROR_FLAG: &str = "P_ER";
 // "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <,
@@ -93,7 +91,7 @@ impl TimeCompare {
         &self,
         form: Form,
         symbol: Condition,
-        step: &crate::vector::Step,
+        step: &plcvec::Step,
         vector: &Vector,
         mem: &mut Memory<'_>,
     ) -> Result<bool, Refusal> {

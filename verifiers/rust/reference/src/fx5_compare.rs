@@ -6,12 +6,10 @@
 
 use std::cmp::Ordering;
 
+use plcvec::names::{Condition, Form, Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5OrOnError, Fx5Sm709Scope};
+use plcvec::{Choices, Memory, Refusal, Step, Vector};
+
 use super::{device, holds, read3, rlo_in, signed, word_operand, Mutant};
-use crate::choices::Choices;
-use crate::generated::names::{Condition, Form, Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5OrOnError, Fx5Sm709Scope};
-use crate::implementation::Refusal;
-use crate::memory::Memory;
-use crate::vector::{Step, Vector};
 
 const SM709: &str = "SM709";
 

@@ -2,14 +2,12 @@
 //!
 //! Written from the manual page fc6a-hour-meter-HOUR.txt.
 
-use super::{device, read3, Mutant};
-use crate::choices::Choices;
-use crate::generated::names::{
+use plcvec::names::{
     HourD1OutOfRange, HourFirstScan, HourInputOff, HourM8004Off, HourOutputOff, HourPresetCheck, HourPresetZero,
 };
-use crate::implementation::Refusal;
-use crate::memory::Memory;
-use crate::vector::{Operand, Step, Vector};
+use plcvec::{Choices, Memory, Operand, Refusal, Step, Vector};
+
+use super::{device, read3, Mutant};
 
 const ERROR_FLAG: &str = "M8004";
 // "the value returns to 0 hours 0 minutes 0 seconds" after "65,535 hours 59 minutes 59 seconds"
@@ -161,7 +159,7 @@ impl HourMeter {
         &self,
         vector: &Vector,
         mem: &mut Memory<'_>,
-        d2: &crate::value::Address,
+        d2: &plcvec::Address,
     ) -> Result<Option<[u16; 3]>, Refusal> {
         // "When source device S1 is designated by a constant, the preset value can be 0 through
         // 65,535 in hours, then minutes and seconds are set to 0." A data register: "3

@@ -1,8 +1,8 @@
 //! The reference passes every vector under every combination of interpretation alternatives,
 //! family by family, the combinations taken from the vector files (never a hard-coded list).
 
-use plcvec::reference::Reference;
 use plcvec::{Choices, OnMemory, Selection, Status, Suite};
+use plcvec_reference::Reference;
 
 #[test]
 fn the_reference_passes_under_every_combination_of_alternatives() {

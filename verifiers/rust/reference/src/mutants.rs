@@ -2,7 +2,7 @@
 //! emulator could have. The suite must reject every one of them, by name (tests/mutants.rs);
 //! a mutant no vector catches means the vectors miss a case.
 
-use crate::generated::names::Family;
+use plcvec::names::Family;
 
 /// A mutant of the reference implementation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

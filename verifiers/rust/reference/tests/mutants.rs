@@ -6,8 +6,8 @@
 
 use std::sync::OnceLock;
 
-use plcvec::reference::{Mutant, Reference};
 use plcvec::{Choices, OnMemory, Selection, Status, Suite};
+use plcvec_reference::{Mutant, Reference};
 
 fn suite() -> &'static Suite {
     static SUITE: OnceLock<Suite> = OnceLock::new();

@@ -3,5 +3,5 @@
 fn main() -> std::process::ExitCode {
     let choices: plcvec::Choices =
         std::env::var("PLCVEC_CHOOSE").unwrap_or_default().split(',').filter_map(|c| c.split_once('=')).collect();
-    plcvec::harness::run(move || plcvec::OnMemory(plcvec::reference::Reference::with_choices(choices.clone())))
+    plcvec::harness::run(move || plcvec::OnMemory(plcvec_reference::Reference::with_choices(choices.clone())))
 }
