@@ -249,7 +249,10 @@ def compare(langs, baseline_runners, current_runners, rounds, progress=lambda me
                 figure = runner(build=build)
                 if "error" in figure:
                     result.error, result.current_failed = f"{side}{where}: {figure['error']}", side == "current"
+                    progress(f"{lang}: {side}{where} failed")
                     break
+                progress(f"{lang}: {stage} ({side}): {float(figure['vectors_per_s']):,.0f} vectors/s"
+                         + (f" in {figure['wall_seconds']:.0f} s" if "wall_seconds" in figure else ""))
                 if not build:
                     figures.append(figure)
             if result.error:
