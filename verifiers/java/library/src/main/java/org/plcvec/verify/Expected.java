@@ -97,6 +97,50 @@ final class Expected {
     }
 
     /**
+     * The combinations of alternatives {@code v} offers an expectation for (TEXT.md, "The
+     * inference", 1): the defaults of the interpretations it touches (its own steps), then each
+     * {@code alternatives} entry in file order that names all of them, restricted to them.
+     */
+    static List<Map<String, String>> offered(Vector v, Map<String, String> defaults) {
+        List<String> touched = v.interpretations();
+        List<Map<String, String>> out = new ArrayList<>();
+        Map<String, String> own = new TreeMap<>();
+        touched.forEach(i -> own.put(i, defaults.get(i)));
+        out.add(own);
+        for (Vector.Variant variant : v.variants()) {
+            if (variant.choices().keySet().containsAll(touched)) {
+                Map<String, String> c = new TreeMap<>();
+                touched.forEach(i -> c.put(i, variant.choices().get(i)));
+                out.add(c);
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Whether {@code answer} (the state after each step) has no problem against this expectation:
+     * the comparison of a run, with the same declared CPU writes.
+     */
+    boolean accepts(List<StepState> answer) {
+        if (answer.size() != results.length) {
+            return false;
+        }
+        for (int s = 0; s < answer.size(); s++) {
+            StepState st = answer.get(s);
+            if (st == null || st.devices() == null
+                    || !problems(s, st.devices(), st.result(), s == 0 ? null : answer.get(s - 1).devices()).isEmpty()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** Whether {@code other} expects the same as this: every step's result and full state, value and type. */
+    boolean sameOutcome(Expected other) {
+        return java.util.Arrays.equals(results, other.results) && java.util.Arrays.deepEquals(states, other.states);
+    }
+
+    /**
      * {@code step k inputs: ...} of TEXT.md: the clock, rlo_in, en, input, elapsed_ms, then the
      * step's {@code set}, or {@code (none)}.
      */

@@ -28,6 +28,7 @@ public final class Report {
     private final Header header;
     private final List<Verdict> results;
     private final double seconds;
+    private Inference inference;
 
     public Report(Header header, List<Verdict> verdicts, double seconds) {
         this.header = header;
@@ -110,7 +111,10 @@ public final class Report {
         return sb.append('"').toString();
     }
 
-    /** What {@code plcvec verify} prints at the end of a run: each failure, then {@link #totals()}. */
+    /**
+     * What {@code plcvec verify} prints at the end of a run (verifiers/parity/TEXT.md, "The run's
+     * text"): each failure's block, then {@link #totals()}.
+     */
     public String summary() {
         StringBuilder sb = new StringBuilder();
         for (Verdict r : results) {
@@ -118,17 +122,18 @@ public final class Report {
                 sb.append(r.report()).append('\n');
             }
         }
-        return sb.append('\n').append(totals()).toString();
+        return sb.append(totals()).toString();
     }
 
     /**
      * The end of a run without the failure blocks (a test runner has shown each already), as
-     * verifiers/parity/TEXT.md writes it: the skips by reason, an empty line, then the summary
-     * lines (the suite and the implementation, every alternative followed, the declared CPU
-     * writes, the totals).
+     * verifiers/parity/TEXT.md writes it: the roll-up by reading (the failures another
+     * alternative explains, and the declaration that gives it; those no reading explains, by the
+     * clauses they cite), the skips by reason, an empty line, then the summary lines (the suite
+     * and the implementation, every alternative followed, the declared CPU writes, the totals).
      */
     public String totals() {
-        StringBuilder out = new StringBuilder(skipsByReason()).append('\n');
+        StringBuilder out = new StringBuilder(rollup()).append(skipsByReason()).append('\n');
         Suite s = header.suite();
         out.append("plcvec verify: ").append(header.implementation())
                 .append(header.version().isEmpty() ? "" : " " + header.version()).append(" against ").append(s.source())
@@ -138,6 +143,20 @@ public final class Report {
         out.append(summaryLines());
         out.append(String.format(java.util.Locale.ROOT, " in %.2f s", seconds)).append('\n');
         return out.toString();
+    }
+
+    /** The inference over this run's answers (computed once, and only when something failed). */
+    Inference inference() {
+        Inference i = inference;
+        if (i == null) {
+            i = inference = Inference.of(header, results);
+        }
+        return i;
+    }
+
+    /** The roll-up by reading (TEXT.md); "" when no vector failed or errored. */
+    String rollup() {
+        return results.stream().anyMatch(Inference::failing) ? Rollup.text(results, inference()) : "";
     }
 
     /** {@code SKIPPED s of n vectors (p%):} and a line per reason, most vectors first (TEXT.md); "" without skips. */
@@ -162,7 +181,7 @@ public final class Report {
         List<Map.Entry<String, Integer>> sorted = new ArrayList<>(reasons.entrySet());
         sorted.sort(Map.Entry.<String, Integer>comparingByValue().reversed().thenComparing(Map.Entry.comparingByKey()));
         for (Map.Entry<String, Integer> e : sorted.subList(0, Math.min(12, sorted.size()))) {
-            out.append(String.format(java.util.Locale.ROOT, "    %6d  %s", e.getValue(), e.getKey())).append('\n');
+            out.append(Rollup.countLine(e.getValue(), e.getKey()));
         }
         if (sorted.size() > 12) {
             out.append("    ... and ").append(sorted.size() - 12).append(" more reasons (--jsonl lists each vector)\n");

@@ -159,6 +159,8 @@ public final class StdioServer {
             result.put("steps", steps);
         } catch (SkipVector s) {
             result.put("skip", s.getMessage());
+        } catch (VectorError e) {   // the implementation's own words, as plcvec verify shows them
+            result.put("error", e.getMessage());
         } catch (VirtualMachineError fatal) {
             throw fatal;
         } catch (Throwable t) {   // the implementation's failure on this vector, not the loop's

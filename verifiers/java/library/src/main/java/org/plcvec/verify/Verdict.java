@@ -17,6 +17,10 @@ public final class Verdict {
     private final Map<String, String> judgedBy;
     private Throwable cause;              // what the implementation threw (ERROR), or null
     private Map<Integer, String[]> steps = Map.of();   // step -> its inputs and operands lines, for a FAIL
+    // For the roll-up by reading (Inference): what a PASS or FAIL was judged against, and a FAIL's
+    // answer (the state after each step as reported, or as the emulator's memory held it).
+    private Expected expected;
+    private List<StepState> answer;
 
     Verdict(String id, Vector vector, Status status, List<Problem> problems, String message, Map<String, String> judgedBy) {
         this.id = id;
@@ -68,6 +72,22 @@ public final class Verdict {
     Verdict steps(Map<Integer, String[]> lines) {
         this.steps = lines;
         return this;
+    }
+
+    /** What the vector was judged against and, for a failure, the answer judged. */
+    Verdict judged(Expected e, List<StepState> answer) {
+        this.expected = e;
+        this.answer = answer;
+        return this;
+    }
+
+    Expected expected() {
+        return expected;
+    }
+
+    /** The answer of a vector that failed (also once a known failure marked it XFAIL), else null. */
+    List<StepState> answer() {
+        return answer;
     }
 
     Verdict causedBy(Throwable t) {

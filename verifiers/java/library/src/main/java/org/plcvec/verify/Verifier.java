@@ -242,11 +242,12 @@ public final class Verifier {
                     + v.instruction(), e.judgedBy);
         }
         try {
-            List<Problem> problems = implementation instanceof Emulator
+            Answer answer = implementation instanceof Emulator
                     ? runEmulator((Emulator) implementation, v, e, reuse)
                     : runContract(v, e);
+            List<Problem> problems = answer.problems();
             if (problems.isEmpty()) {
-                return new Verdict(v.id(), v, Status.PASS, problems, null, e.judgedBy);
+                return new Verdict(v.id(), v, Status.PASS, problems, null, e.judgedBy).judged(e, null);
             }
             Map<Integer, String[]> steps = new java.util.HashMap<>();
             for (Problem p : problems) {
@@ -254,9 +255,13 @@ public final class Verifier {
                     steps.computeIfAbsent(p.step(), s -> new String[] {e.inputs(s), e.operands(s)});
                 }
             }
-            return new Verdict(v.id(), v, Status.FAIL, problems, null, deciding(v, e, problems)).steps(steps);
+            return new Verdict(v.id(), v, Status.FAIL, problems, null, deciding(v, e, problems)).steps(steps)
+                    .judged(e, answer.steps());
         } catch (SkipVector s) {
             return new Verdict(v.id(), v, Status.SKIP, NONE, s.getMessage(), e.judgedBy);
+        } catch (VectorError r) {   // the implementation's own report, in its own words
+            return new Verdict(v.id(), v, Status.ERROR, NONE, "the implementation reported an error: " + r.getMessage(),
+                    e.judgedBy).causedBy(r);
         } catch (VirtualMachineError fatal) {
             throw fatal;
         } catch (Throwable t) {   // the implementation's failure on this vector, not the run's
@@ -264,8 +269,18 @@ public final class Verifier {
         }
     }
 
+    /**
+     * What an implementation gave on one vector: the problems found and, when there are some, its
+     * answer (the state after each step), which the roll-up by reading judges under other
+     * alternatives.
+     */
+    private record Answer(List<Problem> problems, List<StepState> steps) {
+    }
+
+    private static final Answer PASSED = new Answer(NONE, null);
+
     /** The memory path: compare in place after each step; build problems only on a mismatch. */
-    private static List<Problem> runEmulator(Emulator emulator, Vector v, Expected e, Memory reuse) throws Exception {
+    private static Answer runEmulator(Emulator emulator, Vector v, Expected e, Memory reuse) throws Exception {
         Memory m = reuse;
         if (m == null) {
             m = v.newMemory();
@@ -281,7 +296,7 @@ public final class Verifier {
                 return replay(emulator, v, e);
             }
         }
-        return NONE;
+        return PASSED;
     }
 
     /**
@@ -295,17 +310,7 @@ public final class Verifier {
             return Map.of();
         }
         Plan p = plan();
-        List<Map<String, String>> offered = new ArrayList<>();
-        Map<String, String> defaults = new TreeMap<>();
-        touched.forEach(i -> defaults.put(i, p.defaults.get(i)));
-        offered.add(defaults);
-        for (Vector.Variant variant : v.variants()) {
-            if (variant.choices().keySet().containsAll(touched)) {
-                Map<String, String> c = new TreeMap<>();
-                touched.forEach(i -> c.put(i, variant.choices().get(i)));
-                offered.add(c);
-            }
-        }
+        List<Map<String, String>> offered = Expected.offered(v, p.defaults);
         Map<String, String> out = new TreeMap<>();
         for (String i : touched) {
             for (Map<String, String> c : offered) {
@@ -330,10 +335,11 @@ public final class Verifier {
      * The problems of a vector the emulator failed, found by running it again from the start on a
      * fresh CPU and memory, keeping what it held before each step (the fast path keeps nothing).
      */
-    private static List<Problem> replay(Emulator emulator, Vector v, Expected e) throws Exception {
+    private static Answer replay(Emulator emulator, Vector v, Expected e) throws Exception {
         Memory m = v.newMemory();
         Emulator.Scan scan = emulator.load(v, m);
         List<Problem> problems = new ArrayList<>();
+        List<StepState> answer = new ArrayList<>();
         List<Step> steps = v.steps();
         int listed = v.slots.length;
         for (int s = 0, n = steps.size(); s < n; s++) {
@@ -347,15 +353,16 @@ public final class Verifier {
             if (!e.matches(s, m, result)) {
                 problems.addAll(e.problems(s, m, result, held));
             }
+            answer.add(new StepState(result, m.snapshot()));
         }
-        return problems;
+        return new Answer(problems, answer);
     }
 
-    private List<Problem> runContract(Vector v, Expected e) throws Exception {
+    private Answer runContract(Vector v, Expected e) throws Exception {
         List<StepState> states = implementation.run(v);
         if (states == null || states.size() != v.steps().size()) {
-            return List.of(new Problem(Problem.WHOLE, "steps", v.steps().size() + " steps",
-                    (states == null ? 0 : states.size()) + " steps", null));
+            return new Answer(List.of(new Problem(Problem.WHOLE, "steps", v.steps().size() + " steps",
+                    (states == null ? 0 : states.size()) + " steps", null)), states);
         }
         List<Problem> problems = NONE;
         for (int s = 0; s < states.size(); s++) {
@@ -371,7 +378,7 @@ public final class Verifier {
                 problems.addAll(p);
             }
         }
-        return problems;
+        return problems == NONE ? PASSED : new Answer(problems, states);
     }
 
     /**
