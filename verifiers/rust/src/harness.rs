@@ -29,7 +29,9 @@
 //!   more), so an implementation that ends the process half way (`exit(0)`, an abort) fails
 //!   the run, naming the vector it was running. `main` therefore runs twice: keep it to the call
 //!   of [`run`]. [`Harness::in_process`] gives that guard up.
-//! - A vector that takes longer than `PLCVEC_TIMEOUT` ends the run, naming the vector.
+//! - A vector that takes longer than `PLCVEC_TIMEOUT` ends the run, naming the vector: an
+//!   error, the vectors not yet judged not run, the run's text with `ABORTED: <why>`, and the
+//!   expectations file written with the failures so far, as `plcvec verify` reports an aborted run.
 //! - A run that judges nothing (every vector skipped, an implementation that supports none of
 //!   the selected instructions, cargo's own filter matching no vector) fails.
 //!
@@ -41,7 +43,7 @@ use std::fs::{File, OpenOptions};
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::sync::{Arc, Mutex};
+use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Duration, Instant};
 
 pub use libtest_mimic::{Arguments, Conclusion, FormatSetting};
@@ -329,6 +331,7 @@ where
             failing: Mutex::new(Vec::new()),
             skips: Mutex::new(BTreeMap::new()),
             results: Mutex::new(Vec::new()),
+            chosen: OnceLock::new(),
             name,
             choices,
             cpu_writes,
@@ -394,6 +397,12 @@ where
                 return EXIT_EMPTY;
             }
         };
+        // The vectors cargo's own filter leaves to run: those a run cut short reports as not run.
+        let chosen = trials.iter().filter(|t| !args.is_filtered_out(t)).map(|t| t.name().to_owned()).collect();
+        let chosen: std::collections::BTreeSet<String> = chosen;
+        let _ = shared
+            .chosen
+            .set((Instant::now(), shared.plan.vectors().iter().map(|v| chosen.contains(v.id())).collect()));
         if !args.list {
             Watch::start(Arc::clone(&shared));
         }
@@ -457,6 +466,9 @@ struct Shared<F> {
     skips: Mutex<BTreeMap<String, usize>>,
     /// Per vector of the plan: its verdict and, when it failed, the answer (for the roll-up).
     results: Mutex<Vec<Option<Judged>>>,
+    /// When the tests started, and per vector of the plan whether cargo's filter lets it run
+    /// (unset: every vector does).
+    chosen: OnceLock<(Instant, Vec<bool>)>,
     /// The implementation's name, declared alternatives and CPU-wide devices.
     name: String,
     choices: Choices,
@@ -514,8 +526,11 @@ where
 impl<F> Shared<F> {
     /// The report of the vectors this run judged (those cargo's filter left out are not in it).
     fn report(&self) -> Result<crate::runner::Report<'static>> {
+        self.report_of(&self.results.lock().unwrap_or_else(|e| e.into_inner()))
+    }
+
+    fn report_of(&self, results: &[Option<Judged>]) -> Result<crate::runner::Report<'static>> {
         let suite = self.suite;
-        let results = self.results.lock().unwrap_or_else(|e| e.into_inner());
         let ran: Vec<usize> = (0..results.len()).filter(|&i| results[i].is_some()).collect();
         let (verdicts, answers) = ran.iter().filter_map(|&i| results[i].clone()).unzip();
         self.plan.subset(&ran).report(
@@ -526,6 +541,68 @@ impl<F> Shared<F> {
             verdicts,
             answers,
         )
+    }
+
+    /// The end of a run cut short by the watchdog, as `plcvec verify` ends an aborted run: the
+    /// expectations file first (written whole or not at all), then the run's text with every
+    /// failing vector's block (libtest will not print its own: the process ends here), the late
+    /// vector an error, the vectors not yet judged not run, and `ABORTED: <why>` before the
+    /// summary lines. Exit 101, as for a failure.
+    fn end_on_timeout(&self, late: usize) -> ! {
+        let id = self.plan.vectors()[late].id();
+        let seconds = self.watch.timeout.as_secs_f64();
+        let why = format!("{id}: no answer within {seconds} s (PLCVEC_TIMEOUT): the run ends");
+        // Held to the end: a test thread that finishes meanwhile adds nothing to what is reported.
+        let mut results = self.results.lock().unwrap_or_else(|e| e.into_inner());
+        let mut failing = self.failing.lock().unwrap_or_else(|e| e.into_inner()).clone();
+        let mut verdict = Verdict {
+            status: Status::Error,
+            problems: Vec::new(),
+            message: format!(
+                "the implementation did not return within {seconds} s (PLCVEC_TIMEOUT); the run ends here, \
+                 the vectors not yet judged are not run"
+            ),
+        };
+        failing.push(id.to_owned());
+        if let Some(k) = &self.known {
+            verdict = k.apply(id, verdict);
+        }
+        results[late] = Some((verdict, None));
+        let chosen = self.chosen.get();
+        for (index, slot) in results.iter_mut().enumerate() {
+            if slot.is_none() && chosen.is_none_or(|(_, c)| c[index]) {
+                let message = "not run: the run ended before it".to_owned();
+                *slot = Some((Verdict { status: Status::NotRun, problems: Vec::new(), message }, None));
+            }
+        }
+        let mut lines = Vec::new();
+        if let Some(path) = &self.write {
+            match write_expectations(path, failing.iter().map(String::as_str), "not yet triaged") {
+                Ok(n) => lines.push(format!("plcvec: {n} known failures written to {}", path.display())),
+                Err(e) => lines.push(format!("plcvec: {e}")),
+            }
+        }
+        let text = self.report_of(&results).map(|mut report| {
+            if let Some(k) = &self.known {
+                report.unknown_known = crate::runner::unknown_known(k, self.suite);
+            }
+            report.aborted = Some(why.clone());
+            report.text(true, chosen.map(|(started, _)| started.elapsed().as_secs_f64()))
+        });
+        let _ = std::io::stdout().flush();
+        match text {
+            Ok(text) => print!("\n\n{text}"),
+            Err(e) => lines.push(format!("plcvec: {e}")),
+        }
+        let _ = std::io::stdout().flush();
+        for line in lines {
+            eprintln!("{line}");
+        }
+        eprintln!("plcvec: {why}");
+        if let Some(mut f) = self.watch.progress.as_ref() {
+            let _ = f.write_all(format!("!{id}\n=done\n").as_bytes());
+        }
+        std::process::exit(i32::from(EXIT_FAILED));
     }
 
     /// Why a run with no failure and no pass judged nothing, and what to do.
@@ -585,18 +662,7 @@ impl Watch {
                 running.iter().find(|(_, at)| at.elapsed() > shared.watch.timeout).map(|&(i, _)| i)
             };
             if let Some(index) = late {
-                let id = shared.plan.vectors()[index].id();
-                let seconds = shared.watch.timeout.as_secs_f64();
-                let _ = std::io::stdout().flush();
-                println!(
-                    "\n\nFAIL {id}\n    the implementation did not return within {seconds} s (PLCVEC_TIMEOUT); \
-                     the run ends here, the vectors not yet judged are not run\n"
-                );
-                eprintln!("plcvec: {id}: no answer within {seconds} s (PLCVEC_TIMEOUT): the run ends");
-                if let Some(mut f) = shared.watch.progress.as_ref() {
-                    let _ = f.write_all(format!("!{id}\n=done\n").as_bytes());
-                }
-                std::process::exit(i32::from(EXIT_FAILED));
+                shared.end_on_timeout(index);
             }
         });
         if let Err(e) = spawned {

@@ -73,7 +73,7 @@ pub(crate) struct Inference {
 }
 
 fn failing(status: Status) -> bool {
-    matches!(status, Status::Fail | Status::Error)
+    matches!(status, Status::Fail | Status::Error | Status::NotRun)
 }
 
 /// Run the inference over the cases, from the followed alternatives.

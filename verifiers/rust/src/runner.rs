@@ -53,6 +53,7 @@ impl<'s> Plan<'s> {
             unknown_known: Vec::new(),
             answers,
             cpu_writes,
+            aborted: None,
         })
     }
 
@@ -166,6 +167,8 @@ pub struct Report<'s> {
     pub answers: Vec<Option<Vec<ReportedStep>>>,
     /// The devices the implementation's CPU writes on its own account.
     pub cpu_writes: Vec<String>,
+    /// Why the run ended before it judged every vector, if it did: printed as `ABORTED: <why>`.
+    pub aborted: Option<String>,
 }
 
 /// Run the vectors `selection` keeps through `implementation`; `known` is the expectations file.
@@ -209,6 +212,7 @@ pub fn run<'s, I: Implementation + ?Sized>(
         unknown_known: Vec::new(),
         answers,
         cpu_writes: implementation.cpu_writes(),
+        aborted: None,
     };
     if let Some(known) = known {
         for (verdict, v) in report.verdicts.iter_mut().zip(report.plan.vectors()) {
@@ -220,12 +224,14 @@ pub fn run<'s, I: Implementation + ?Sized>(
                 ),
             );
         }
-        report.unknown_known = known
-            .unknown_ids(|id| suite.get(id).is_some())
-            .map(|e| format!("{}: {}", e.id, known.unknown_message(e)))
-            .collect();
+        report.unknown_known = unknown_known(known, suite);
     }
     Ok(report)
+}
+
+/// `<id>: <message>` of each listed known failure the suite has no vector for.
+pub(crate) fn unknown_known(known: &KnownFailures, suite: &Suite) -> Vec<String> {
+    known.unknown_ids(|id| suite.get(id).is_some()).map(|e| format!("{}: {}", e.id, known.unknown_message(e))).collect()
 }
 
 /// Judge every vector of a plan (the benchmark's loop): unsupported instructions are skipped.
@@ -344,13 +350,16 @@ impl Report<'_> {
             })
             .collect();
         // The inference only has something to explain when a vector failed.
-        if cases.iter().any(|c| matches!(c.status, Status::Fail | Status::Error)) {
+        if cases.iter().any(|c| matches!(c.status, Status::Fail | Status::Error | Status::NotRun)) {
             let inference = crate::infer::infer(&cases, &followed, &alternatives, &self.cpu_writes);
             out.push_str(&crate::infer::rollup(&cases, &inference, &followed));
         }
         let skipped: Vec<&str> =
             self.verdicts.iter().filter(|v| v.status == Status::Skip).map(|v| v.message.as_str()).collect();
         out.push_str(&crate::infer::skips(&skipped, self.verdicts.len()));
+        if let Some(why) = &self.aborted {
+            out.push_str(&format!("ABORTED: {why}\n"));
+        }
         out.push('\n');
         if header {
             let s = self.suite;
@@ -378,7 +387,7 @@ impl Report<'_> {
             out.push_str(&format!("cpu_writes: {}\n", devices.join(", ")));
         }
         let counts: Vec<String> =
-            [Status::Pass, Status::Fail, Status::Error, Status::Skip, Status::XFail, Status::Stale]
+            [Status::Pass, Status::Fail, Status::Error, Status::Skip, Status::XFail, Status::Stale, Status::NotRun]
                 .iter()
                 .filter(|&&st| self.count(st) > 0 || matches!(st, Status::Pass | Status::Fail | Status::Skip))
                 .map(|&st| format!("{} {}", self.count(st), st.as_str()))

@@ -94,15 +94,18 @@ pub enum Status {
     XFail,
     /// A known failure that passes, or a listed id the suite lacks: fails the run.
     Stale,
+    /// Selected but never judged: the run ended before it (a vector took longer than
+    /// `PLCVEC_TIMEOUT`). Fails the run; never written as a known failure.
+    NotRun,
 }
 
 impl Status {
     /// Whether this status fails a run.
     pub fn is_failing(self) -> bool {
-        matches!(self, Status::Fail | Status::Error | Status::Stale)
+        matches!(self, Status::Fail | Status::Error | Status::Stale | Status::NotRun)
     }
 
-    /// The lower-case name (`pass`, `xfail`).
+    /// The lower-case name (`pass`, `xfail`, `not-run`).
     pub fn as_str(self) -> &'static str {
         match self {
             Status::Pass => "pass",
@@ -111,6 +114,7 @@ impl Status {
             Status::Skip => "skip",
             Status::XFail => "xfail",
             Status::Stale => "stale",
+            Status::NotRun => "not-run",
         }
     }
 }

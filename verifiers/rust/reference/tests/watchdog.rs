@@ -1,0 +1,138 @@
+//! A run cut short by the per-vector bound (`PLCVEC_TIMEOUT`) ends as `plcvec verify` ends an
+//! aborted run: the expectations file is written (whole), and the run's text has every failing
+//! vector's block, the late vector as an error, the vectors not yet judged as not run,
+//! `ABORTED: <why>` and the summary lines; the exit status is a failure's.
+//!
+//! The run to cut is this test binary once more (the watchdog ends the process it runs in): an
+//! implementation that writes nothing for the manual's TADD example (so D30..D32 do not become
+//! 13:40:15 and it fails) and never returns on the vector after it, one test thread, in order.
+
+use std::path::PathBuf;
+use std::process::Command;
+use std::time::Duration;
+
+use plcvec::harness::{Arguments, Harness};
+use plcvec::{Execute, Memory, Refusal, Selection, Step, Suite, Vector};
+use plcvec_reference::Reference;
+
+/// Set for the child run: the expectations file it writes.
+const CHILD: &str = "PLCVEC_TEST_CUT_RUN";
+const TEST: &str = "a_run_cut_by_the_watchdog_reports_what_it_judged_and_writes_the_expectations";
+const WRONG: &str = "fx5-time-add/TADD/manual-example/program";
+
+fn tadd() -> Selection {
+    Selection::all().family("fx5-time-add")
+}
+
+/// The selected ids in the order the harness runs them (the vector files' order).
+fn ids() -> Vec<String> {
+    tadd().apply(Suite::embedded().unwrap().vectors()).iter().map(|v| v.id().to_owned()).collect()
+}
+
+/// The vector the implementation never returns on: the one after the manual example.
+fn late(ids: &[String]) -> String {
+    let wrong = ids.iter().position(|id| id == WRONG).expect("the manual example is a vector");
+    ids.get(wrong + 1).expect("a vector after the manual example").clone()
+}
+
+struct CutShort {
+    reference: Reference,
+    late: String,
+}
+
+impl Execute for CutShort {
+    fn supports(&self, instruction: &str) -> bool {
+        self.reference.supports(instruction)
+    }
+
+    fn begin(&mut self, vector: &Vector) -> Result<(), Refusal> {
+        self.reference.begin(vector)
+    }
+
+    fn execute(&mut self, vector: &Vector, step: &Step, memory: &mut Memory<'_>) -> Result<Option<bool>, Refusal> {
+        if vector.id() == self.late {
+            loop {
+                std::thread::sleep(Duration::from_secs(1));
+            }
+        }
+        if vector.id() == WRONG {
+            return Ok(None);
+        }
+        self.reference.execute(vector, step, memory)
+    }
+}
+
+/// The child: the run the watchdog cuts (it never returns from `run`).
+fn cut_run(expectations: PathBuf) -> ! {
+    let late = late(&ids());
+    let harness = Harness::new(move || plcvec::OnMemory(CutShort { reference: Reference::new(), late: late.clone() }))
+        .suite(Suite::embedded().unwrap())
+        .select(tadd())
+        .timeout(Duration::from_millis(500))
+        .write_expectations(expectations)
+        .arguments(Arguments { test_threads: Some(1), ..Arguments::default() })
+        .in_process();
+    let _ = harness.run();
+    eprintln!("the run came to its end: the watchdog did not cut it");
+    std::process::exit(3)
+}
+
+#[test]
+fn a_run_cut_by_the_watchdog_reports_what_it_judged_and_writes_the_expectations() {
+    if let Some(path) = std::env::var_os(CHILD) {
+        cut_run(path.into());
+    }
+    let scratch = std::env::temp_dir().join(format!("plcvec-rust-watchdog-{}", std::process::id()));
+    std::fs::create_dir_all(&scratch).unwrap();
+    let expectations = scratch.join("known.toml");
+    let exe = std::env::current_exe().unwrap();
+    let out = Command::new(exe)
+        .args([TEST, "--exact", "--nocapture", "--test-threads=1"])
+        .env(CHILD, &expectations)
+        .env_remove("PLCVEC_KNOWN_FAILURES")
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let context = format!("stdout:\n{stdout}\nstderr:\n{stderr}");
+
+    let ids = ids();
+    let late = late(&ids);
+    let at = ids.iter().position(|id| *id == late).unwrap();
+    let (n, not_run) = (ids.len(), ids.len() - at - 1);
+    assert!(not_run > 0, "no vector after {late}: the test needs one not run");
+    assert_eq!(out.status.code(), Some(101), "{context}");
+
+    // The failure judged before the cut, once (libtest does not get to print it), the late
+    // vector as an error, and every vector after it as not run, in the order they were run.
+    assert_eq!(stdout.matches(&format!("\nFAIL {WRONG}\n")).count(), 1, "{context}");
+    assert!(stdout.contains(&format!("\nERROR {late}\n")), "{context}");
+    assert!(stdout.contains("the implementation did not return within 0.5 s (PLCVEC_TIMEOUT)"), "{context}");
+    let blocks: Vec<&str> = stdout.lines().filter_map(|l| l.strip_prefix("NOT-RUN ")).collect();
+    let expected: Vec<&str> = ids[at + 1..].iter().map(String::as_str).collect();
+    assert_eq!(blocks, expected, "{context}");
+    // The roll-up counts the not-run vectors among those no reading explains (TEXT.md).
+    assert!(stdout.contains(&format!("NOT EXPLAINED by any reading: {} failing vectors", not_run + 2)), "{context}");
+
+    // ABORTED: <why> after the roll-up and the skips, then an empty line and the summary lines.
+    let why = format!("ABORTED: {late}: no answer within 0.5 s (PLCVEC_TIMEOUT): the run ends\n\nplcvec: ");
+    let aborted = stdout.find(&why).unwrap_or_else(|| panic!("no ABORTED line before the summary\n{context}"));
+    assert!(stdout.find("NOT EXPLAINED").is_some_and(|r| r < aborted), "{context}");
+    let totals = format!("{n} vectors: {} pass, 1 fail, 1 error, 0 skip, {not_run} not-run in ", at - 1);
+    let last = stdout.lines().last().unwrap_or("");
+    assert!(last.starts_with(&totals) && last.ends_with(" s"), "{totals:?} is not the last line\n{context}");
+
+    // The expectations file, whole: the failure and the late vector (the vectors not run are no
+    // known failures), sorted by id, and no partial file left beside it.
+    let written = std::fs::read_to_string(&expectations).unwrap_or_else(|e| panic!("{e}\n{context}"));
+    let mut listed = [WRONG.to_owned(), late.clone()];
+    listed.sort();
+    let entries: Vec<String> =
+        listed.iter().map(|id| format!("[[known-failure]]\nid = \"{id}\"\nreason = \"not yet triaged\"\n")).collect();
+    let header = "# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n";
+    assert_eq!(written, format!("{header}{}", entries.join("\n")), "{context}");
+    let left: Vec<_> = std::fs::read_dir(&scratch).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert_eq!(left, [std::ffi::OsString::from("known.toml")]);
+    assert!(stderr.contains(&format!("plcvec: 2 known failures written to {}", expectations.display())), "{context}");
+    std::fs::remove_dir_all(&scratch).unwrap();
+}
