@@ -77,14 +77,27 @@ impl<'a> Steps<'a> {
         Steps { vector, mode: Mode::Record { steps: Vec::with_capacity(vector.steps().len()) }, count: 0 }
     }
 
-    /// Report a step from a [`Memory`] of this vector (the fast path).
-    pub fn memory(&mut self, result: Option<bool>, memory: &Memory<'_>) {
+    /// Count the next step and, while judging, check its result: the step's index and its
+    /// expected image (`None` for a step past the vector's, found by the count at the end).
+    /// Both ways of reporting a step begin here.
+    fn next_step(&mut self, result: Option<bool>) -> (usize, Option<&'a [Value]>) {
         let step = self.count;
         self.count += 1;
+        let Mode::Judge { expected, problems, .. } = &mut self.mode else { return (step, None) };
+        let expected: &'a Expected = expected;
+        let want = expected.state(step);
+        if want.is_some() {
+            check_result(step, expected.results()[step], result, problems);
+        }
+        (step, want)
+    }
+
+    /// Report a step from a [`Memory`] of this vector (the fast path).
+    pub fn memory(&mut self, result: Option<bool>, memory: &Memory<'_>) {
+        let (step, want) = self.next_step(result);
         match &mut self.mode {
             Mode::Judge { expected, cpu_writes, problems, previous } => {
-                let Some(want) = expected.state(step) else { return };
-                check_result(step, expected.results()[step], result, problems);
+                let Some(want) = want else { return };
                 let got = memory.values();
                 if got.len() != want.len() {
                     problems.push(Problem::new(
@@ -117,14 +130,7 @@ impl<'a> Steps<'a> {
                 }
             }
             Mode::Record { steps } => {
-                let devices = self
-                    .vector
-                    .devices()
-                    .iter()
-                    .zip(memory.values())
-                    .map(|(a, v)| (a.name().to_owned(), *v))
-                    .chain(memory.outside().iter().cloned())
-                    .collect();
+                let devices = memory.image().map(|(name, v)| (name.to_owned(), v)).collect();
                 steps.push(ReportedStep { result, devices });
             }
         }
@@ -133,12 +139,10 @@ impl<'a> Steps<'a> {
     /// Report a step as `(device, value)` pairs: every device the vector lists (scratch may be
     /// left out), plus any other device the step wrote.
     pub fn devices<'d>(&mut self, result: Option<bool>, devices: impl IntoIterator<Item = (&'d str, Value)>) {
-        let step = self.count;
-        self.count += 1;
+        let (step, want) = self.next_step(result);
         match &mut self.mode {
             Mode::Judge { expected, cpu_writes, problems, previous } => {
-                let Some(want) = expected.state(step) else { return };
-                check_result(step, expected.results()[step], result, problems);
+                let Some(want) = want else { return };
                 let mut got: Small<Option<Value>, INLINE_SLOTS> = Small::filled(None, want.len());
                 let mut twice: Vec<usize> = Vec::new();
                 for (name, v) in devices {

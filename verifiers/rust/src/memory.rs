@@ -43,6 +43,13 @@ impl<'v> Memory<'v> {
         &self.outside
     }
 
+    /// Every device of the image by name: the listed ones in the vector's order, then those
+    /// written outside it. What [`Steps::devices`](crate::Steps::devices) takes as a step's report.
+    pub fn image(&self) -> impl Iterator<Item = (&str, Value)> {
+        let listed = self.vector.devices().iter().zip(self.values()).map(|(a, v)| (a.name(), *v));
+        listed.chain(self.outside.iter().map(|(name, v)| (name.as_str(), *v)))
+    }
+
     /// Apply a step's `set` (values written by the outside world before the execution).
     #[inline]
     pub fn apply_set(&mut self, step: &Step) {

@@ -103,13 +103,7 @@ impl Implementation for Hostile {
             let scratch = vector.scratch();
             let word = (0..vector.devices().len()).find(|&i| !scratch[i] && memory.values()[i].word().is_some());
             let bit = (0..vector.devices().len()).find(|&i| memory.values()[i].bit().is_some());
-            let mut image: Vec<(String, Value)> = vector
-                .devices()
-                .iter()
-                .zip(memory.values())
-                .map(|(a, v)| (a.name().to_owned(), *v))
-                .chain(memory.outside().iter().cloned())
-                .collect();
+            let mut image: Vec<(String, Value)> = memory.image().map(|(name, v)| (name.to_owned(), v)).collect();
             match self.hostile {
                 "wrong-result" => match result {
                     Some(r) => result = Some(!r),
