@@ -3,7 +3,7 @@
 # tests (the library's own, the reference on every vector under the defaults and under every
 # combination of alternatives, the mutants each rejected by name), stage a deployment and check it
 # as Maven Central would, build the README's example from the README's blocks as an outside
-# project, serve the reference over the stdio protocol to the Python gate and to a seeded
+# project (every vector run; each failure block printed once in a failing run), serve the reference over the stdio protocol to the Python gate and to a seeded
 # differential fuzz run, run the table of faults, and check that the gate rejects a mutant. From
 # the repository root.
 set -euo pipefail
