@@ -47,9 +47,9 @@ final class Inference {
         this.judged = judged;
     }
 
-    /** A failing vector of the roll-up: a failure or an error (this runner has no not-run status). */
+    /** A failing vector of the roll-up: a failure, an error, or a vector not run. */
     static boolean failing(Verdict v) {
-        return v.status() == Status.FAIL || v.status() == Status.ERROR;
+        return v.status() == Status.FAIL || v.status() == Status.ERROR || v.status() == Status.NOT_RUN;
     }
 
     /** The inference over one run's verdicts. */

@@ -29,11 +29,18 @@ public final class Report {
     private final List<Verdict> results;
     private final double seconds;
     private Inference inference;
+    private final String aborted;
 
     public Report(Header header, List<Verdict> verdicts, double seconds) {
+        this(header, verdicts, seconds, null);
+    }
+
+    /** {@code aborted}: why the run was stopped before its end (its text's {@code ABORTED:} line), or null. */
+    Report(Header header, List<Verdict> verdicts, double seconds, String aborted) {
         this.header = header;
         this.results = List.copyOf(verdicts);
         this.seconds = seconds;
+        this.aborted = aborted;
     }
 
     public Header header() {
@@ -129,11 +136,16 @@ public final class Report {
      * The end of a run without the failure blocks (a test runner has shown each already), as
      * verifiers/parity/TEXT.md writes it: the roll-up by reading (the failures another
      * alternative explains, and the declaration that gives it; those no reading explains, by the
-     * clauses they cite), the skips by reason, an empty line, then the summary lines (the suite
+     * clauses they cite), the skips by reason, {@code ABORTED: <why>} when the run was stopped, an
+     * empty line, then the summary lines (the suite
      * and the implementation, every alternative followed, the declared CPU writes, the totals).
      */
     public String totals() {
-        StringBuilder out = new StringBuilder(rollup()).append(skipsByReason()).append('\n');
+        StringBuilder out = new StringBuilder(rollup()).append(skipsByReason());
+        if (aborted != null) {
+            out.append("ABORTED: ").append(aborted).append('\n');
+        }
+        out.append('\n');
         Suite s = header.suite();
         out.append("plcvec verify: ").append(header.implementation())
                 .append(header.version().isEmpty() ? "" : " " + header.version()).append(" against ").append(s.source())

@@ -13,13 +13,16 @@ public enum Status {
     /** Failed, and listed as a known failure. */
     XFAIL,
     /** Listed as a known failure but passes (or the suite has no such vector): remove the entry. */
-    STALE;
+    STALE,
+    /** Never run: the run ended before it (a vector before it gave no answer in time). Never a known failure. */
+    NOT_RUN;
 
     public boolean failing() {
-        return this == FAIL || this == ERROR || this == STALE;
+        return this == FAIL || this == ERROR || this == STALE || this == NOT_RUN;
     }
 
+    /** As the text of every plcvec runner spells it: {@code pass}, ..., {@code not-run}. */
     public String label() {
-        return name().toLowerCase(java.util.Locale.ROOT);
+        return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
     }
 }

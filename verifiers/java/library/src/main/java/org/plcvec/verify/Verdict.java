@@ -112,7 +112,7 @@ public final class Verdict {
      */
     public String report() {
         List<String> lines = new ArrayList<>();
-        lines.add(status.name() + " " + id);
+        lines.add(status.label().toUpperCase(java.util.Locale.ROOT) + " " + id);
         if (vector != null && !vector.description().isEmpty()) {
             lines.add("    " + vector.instruction() + ": " + vector.description());
         }

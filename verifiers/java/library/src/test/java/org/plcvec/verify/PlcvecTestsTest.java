@@ -128,11 +128,35 @@ class PlcvecTestsTest {
         PlcvecTests.ImplementationError e = assertThrows(PlcvecTests.ImplementationError.class,
                 () -> ((DynamicTest) n.get(at)).getExecutable().execute());
         assertTrue(e.getMessage().contains("no answer within 0.3 s (PLCVEC_TIMEOUT)"), e.getMessage());
-        assertThrows(TestAbortedException.class, () -> ((DynamicTest) n.get(indexOf(n, CompareTest.PROGRAM) + 1))
-                .getExecutable().execute());
-        AssertionFailedError end = assertThrows(AssertionFailedError.class,
-                () -> ((DynamicTest) n.get(n.size() - 1)).getExecutable().execute());
-        assertTrue(end.getMessage().contains("the run ended at " + CompareTest.PROGRAM), end.getMessage());
+        // Every vector after it is not run: an error of its test with its NOT-RUN block (TEXT.md).
+        for (int i = at + 1; i < n.size() - 1; i++) {
+            DynamicTest t = (DynamicTest) n.get(i);
+            PlcvecTests.ImplementationError notRun = assertThrows(PlcvecTests.ImplementationError.class,
+                    () -> t.getExecutable().execute());
+            assertTrue(notRun.getMessage().startsWith("NOT-RUN " + t.getDisplayName() + "\n"), notRun.getMessage());
+            assertTrue(notRun.getMessage().contains("\n    not run: the run ended before it\n"), notRun.getMessage());
+        }
+        int notRun = n.size() - 1 - (at + 1);
+        assertTrue(notRun > 0);
+        java.io.ByteArrayOutputStream printed = new java.io.ByteArrayOutputStream();
+        java.io.PrintStream out = System.out;
+        AssertionFailedError end;
+        System.setOut(new java.io.PrintStream(printed, true, java.nio.charset.StandardCharsets.UTF_8));
+        try {
+            end = assertThrows(AssertionFailedError.class, () -> ((DynamicTest) n.get(n.size() - 1)).getExecutable().execute());
+        } finally {
+            System.setOut(out);
+        }
+        assertTrue(end.getMessage().contains("the run ended at " + CompareTest.PROGRAM + ", which gave no answer within "
+                + "0.3 s (PLCVEC_TIMEOUT); " + notRun + " vectors were not run"), end.getMessage());
+        // The end of the run's text: the late vector and those not run are failing vectors no reading
+        // explains, then why the run was stopped, then the totals with the vectors not run.
+        String text = printed.toString(java.nio.charset.StandardCharsets.UTF_8);
+        assertTrue(text.startsWith("NOT EXPLAINED by any reading: " + (notRun + 1) + " failing vectors, by the clauses"), text);
+        assertTrue(text.contains("\nABORTED: " + CompareTest.PROGRAM + ": no answer within 0.3 s (PLCVEC_TIMEOUT); the run "
+                + "ended there\n\nplcvec verify: "), text);
+        assertTrue(text.contains("\n" + (n.size() - 1) + " vectors: " + at + " pass, 0 fail, 1 error, 0 skip, " + notRun
+                + " not-run in "), text);
     }
 
     private static int indexOf(List<DynamicNode> n, String id) {
