@@ -397,13 +397,8 @@ where
                 return EXIT_EMPTY;
             }
         };
-        // The vectors cargo's own filter leaves to run: those a run cut short reports as not run.
-        let chosen = trials.iter().filter(|t| !args.is_filtered_out(t)).map(|t| t.name().to_owned()).collect();
-        let chosen: std::collections::BTreeSet<String> = chosen;
-        let _ = shared
-            .chosen
-            .set((Instant::now(), shared.plan.vectors().iter().map(|v| chosen.contains(v.id())).collect()));
         if !args.list {
+            shared.choose(&args, &trials);
             Watch::start(Arc::clone(&shared));
         }
         let started = Instant::now();
@@ -440,6 +435,7 @@ where
     pub fn conclude(self) -> Result<Conclusion> {
         let args = self.args.clone().unwrap_or_else(Arguments::from_args);
         let (trials, shared) = self.prepare(None).map_err(Stop::into_error)?;
+        shared.choose(&args, &trials);
         Watch::start(Arc::clone(&shared));
         Ok(libtest_mimic::run(&args, trials))
     }
@@ -524,6 +520,15 @@ where
 }
 
 impl<F> Shared<F> {
+    /// Note when the tests start and which vectors cargo's own filter leaves to run: those a run
+    /// cut short reports as not run.
+    fn choose(&self, args: &Arguments, trials: &[Trial]) {
+        let chosen: std::collections::BTreeSet<&str> =
+            trials.iter().filter(|t| !args.is_filtered_out(t)).map(Trial::name).collect();
+        let chosen = self.plan.vectors().iter().map(|v| chosen.contains(v.id())).collect();
+        let _ = self.chosen.set((Instant::now(), chosen));
+    }
+
     /// The report of the vectors this run judged (those cargo's filter left out are not in it).
     fn report(&self) -> Result<crate::runner::Report<'static>> {
         self.report_of(&self.results.lock().unwrap_or_else(|e| e.into_inner()))

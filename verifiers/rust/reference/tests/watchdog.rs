@@ -17,6 +17,8 @@ use plcvec_reference::Reference;
 
 /// Set for the child run: the expectations file it writes.
 const CHILD: &str = "PLCVEC_TEST_CUT_RUN";
+/// Set for the child run: cargo's name filter, if it has one.
+const CHILD_FILTER: &str = "PLCVEC_TEST_CUT_RUN_FILTER";
 const TEST: &str = "a_run_cut_by_the_watchdog_reports_what_it_judged_and_writes_the_expectations";
 const WRONG: &str = "fx5-time-add/TADD/manual-example/program";
 
@@ -64,17 +66,52 @@ impl Execute for CutShort {
 
 /// The child: the run the watchdog cuts (it never returns from `run`).
 fn cut_run(expectations: PathBuf) -> ! {
+    let filter = std::env::var(CHILD_FILTER).ok();
     let late = late(&ids());
     let harness = Harness::new(move || plcvec::OnMemory(CutShort { reference: Reference::new(), late: late.clone() }))
         .suite(Suite::embedded().unwrap())
         .select(tadd())
         .timeout(Duration::from_millis(500))
         .write_expectations(expectations)
-        .arguments(Arguments { test_threads: Some(1), ..Arguments::default() })
+        .arguments(Arguments { test_threads: Some(1), filter, ..Arguments::default() })
         .in_process();
     let _ = harness.run();
     eprintln!("the run came to its end: the watchdog did not cut it");
     std::process::exit(3)
+}
+
+/// Run the cut run in a child (this binary, in the test below), with cargo's name filter
+/// `filter`; its exit status, stdout and stderr, and the expectations file it wrote.
+fn cut(filter: Option<&str>) -> (Option<i32>, String, String, Option<String>) {
+    static RUN: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = RUN.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let scratch = std::env::temp_dir().join(format!("plcvec-rust-watchdog-{}-{n}", std::process::id()));
+    std::fs::create_dir_all(&scratch).unwrap();
+    let expectations = scratch.join("known.toml");
+    let mut child = Command::new(std::env::current_exe().unwrap());
+    child.args([TEST, "--exact", "--nocapture", "--test-threads=1"]).env(CHILD, &expectations);
+    match filter {
+        Some(f) => child.env(CHILD_FILTER, f),
+        None => child.env_remove(CHILD_FILTER),
+    };
+    let out = child.env_remove("PLCVEC_KNOWN_FAILURES").output().unwrap();
+    let written = std::fs::read_to_string(&expectations).ok();
+    // Written whole or not at all: nothing but the file is left beside it.
+    let left: Vec<_> = std::fs::read_dir(&scratch).unwrap().map(|e| e.unwrap().file_name()).collect();
+    assert!(left.iter().all(|name| name == "known.toml"), "left beside the expectations file: {left:?}");
+    std::fs::remove_dir_all(&scratch).unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out.status.code(), stdout, stderr, written)
+}
+
+/// A known-failures file as every plcvec runner writes it, of `ids`.
+fn expectations_of(ids: &[&str]) -> String {
+    let mut ids = ids.to_vec();
+    ids.sort();
+    let entries: Vec<String> =
+        ids.iter().map(|id| format!("[[known-failure]]\nid = \"{id}\"\nreason = \"not yet triaged\"\n")).collect();
+    format!("# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n{}", entries.join("\n"))
 }
 
 #[test]
@@ -82,18 +119,7 @@ fn a_run_cut_by_the_watchdog_reports_what_it_judged_and_writes_the_expectations(
     if let Some(path) = std::env::var_os(CHILD) {
         cut_run(path.into());
     }
-    let scratch = std::env::temp_dir().join(format!("plcvec-rust-watchdog-{}", std::process::id()));
-    std::fs::create_dir_all(&scratch).unwrap();
-    let expectations = scratch.join("known.toml");
-    let exe = std::env::current_exe().unwrap();
-    let out = Command::new(exe)
-        .args([TEST, "--exact", "--nocapture", "--test-threads=1"])
-        .env(CHILD, &expectations)
-        .env_remove("PLCVEC_KNOWN_FAILURES")
-        .output()
-        .unwrap();
-    let stdout = String::from_utf8_lossy(&out.stdout);
-    let stderr = String::from_utf8_lossy(&out.stderr);
+    let (code, stdout, stderr, written) = cut(None);
     let context = format!("stdout:\n{stdout}\nstderr:\n{stderr}");
 
     let ids = ids();
@@ -101,7 +127,7 @@ fn a_run_cut_by_the_watchdog_reports_what_it_judged_and_writes_the_expectations(
     let at = ids.iter().position(|id| *id == late).unwrap();
     let (n, not_run) = (ids.len(), ids.len() - at - 1);
     assert!(not_run > 0, "no vector after {late}: the test needs one not run");
-    assert_eq!(out.status.code(), Some(101), "{context}");
+    assert_eq!(code, Some(101), "{context}");
 
     // The failure judged before the cut, once (libtest does not get to print it), the late
     // vector as an error, and every vector after it as not run, in the order they were run.
@@ -122,17 +148,34 @@ fn a_run_cut_by_the_watchdog_reports_what_it_judged_and_writes_the_expectations(
     let last = stdout.lines().last().unwrap_or("");
     assert!(last.starts_with(&totals) && last.ends_with(" s"), "{totals:?} is not the last line\n{context}");
 
-    // The expectations file, whole: the failure and the late vector (the vectors not run are no
-    // known failures), sorted by id, and no partial file left beside it.
-    let written = std::fs::read_to_string(&expectations).unwrap_or_else(|e| panic!("{e}\n{context}"));
-    let mut listed = [WRONG.to_owned(), late.clone()];
-    listed.sort();
-    let entries: Vec<String> =
-        listed.iter().map(|id| format!("[[known-failure]]\nid = \"{id}\"\nreason = \"not yet triaged\"\n")).collect();
-    let header = "# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n";
-    assert_eq!(written, format!("{header}{}", entries.join("\n")), "{context}");
-    let left: Vec<_> = std::fs::read_dir(&scratch).unwrap().map(|e| e.unwrap().file_name()).collect();
-    assert_eq!(left, [std::ffi::OsString::from("known.toml")]);
-    assert!(stderr.contains(&format!("plcvec: 2 known failures written to {}", expectations.display())), "{context}");
-    std::fs::remove_dir_all(&scratch).unwrap();
+    // The expectations file: the failure and the late vector (a vector not run is no known
+    // failure), sorted by id.
+    assert_eq!(written.as_deref(), Some(expectations_of(&[WRONG, &late]).as_str()), "{context}");
+    assert!(stderr.contains("plcvec: 2 known failures written to "), "{context}");
+}
+
+#[test]
+fn a_run_cut_by_the_watchdog_under_a_name_filter_reports_only_the_vectors_it_selects() {
+    // TADD's ids sort before TADDP's ('/' before 'P'): the filter keeps every vector up to the
+    // late one and leaves out the TADDP vectors after it, which are then not "not run".
+    let filter = "fx5-time-add/TADD/";
+    let (code, stdout, stderr, written) = cut(Some(filter));
+    let context = format!("stdout:\n{stdout}\nstderr:\n{stderr}");
+    let ids = ids();
+    let late = late(&ids);
+    let at = ids.iter().position(|id| *id == late).unwrap();
+    assert!(ids[..=at].iter().all(|id| id.contains(filter)), "the filter leaves out a vector before {late}");
+    let kept: Vec<&str> = ids[at + 1..].iter().map(String::as_str).filter(|id| id.contains(filter)).collect();
+    assert!(kept.len() < ids.len() - at - 1, "the filter leaves out no vector after {late}");
+    assert_eq!(code, Some(101), "{context}");
+    let blocks: Vec<&str> = stdout.lines().filter_map(|l| l.strip_prefix("NOT-RUN ")).collect();
+    assert_eq!(blocks, kept, "{context}");
+    let totals = format!(
+        "{} vectors: {} pass, 1 fail, 1 error, 0 skip, {} not-run in ",
+        at + 1 + kept.len(),
+        at - 1,
+        kept.len()
+    );
+    assert!(stdout.lines().last().unwrap_or("").starts_with(&totals), "{totals:?} is not the last line\n{context}");
+    assert_eq!(written.as_deref(), Some(expectations_of(&[WRONG, &late]).as_str()), "{context}");
 }
