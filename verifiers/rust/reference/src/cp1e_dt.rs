@@ -46,7 +46,7 @@ const FIELDS: [Field; 6] = [
 ];
 
 #[derive(Clone, Debug)]
-pub(super) struct TimeCompare {
+pub(super) struct Cp1eTimeCompare {
     non_bcd: Cp1eNonBcd,
     out_of_range: Cp1eOutOfRange,
     all_masked: Cp1eAllMasked,
@@ -65,13 +65,13 @@ fn bcd_value(b: u8) -> u8 {
     (b >> 4) * 10 + (b & 0xF)
 }
 
-impl TimeCompare {
-    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> TimeCompare {
+impl Cp1eTimeCompare {
+    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> Cp1eTimeCompare {
         let mut er_flag = choices.get::<Cp1eErFlag>();
         if mutant == Some(Mutant::Cp1eErFlagHeld) {
             er_flag = Cp1eErFlag::Held; // declared as it is, implemented otherwise
         }
-        TimeCompare {
+        Cp1eTimeCompare {
             non_bcd: choices.get(),
             out_of_range: choices.get(),
             all_masked: choices.get(),

@@ -16,7 +16,7 @@ const CYCLE: u64 = 65536 * 3600;
 /// The fraction of a second already measured lives here; on the CPU it is in the system work
 /// area (D3, D3+1), whose contents vectors never compare.
 #[derive(Clone, Debug)]
-pub(super) struct HourMeter {
+pub(super) struct Fc6aHourMeter {
     output_off: HourOutputOff,
     input_off: HourInputOff,
     preset_zero: HourPresetZero,
@@ -36,9 +36,9 @@ fn seconds(hms: [u16; 3]) -> u64 {
     u64::from(hms[0]) * 3600 + u64::from(hms[1]) * 60 + u64::from(hms[2])
 }
 
-impl HourMeter {
-    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> HourMeter {
-        HourMeter {
+impl Fc6aHourMeter {
+    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> Fc6aHourMeter {
+        Fc6aHourMeter {
             output_off: choices.get(),
             input_off: choices.get(),
             preset_zero: choices.get(),

@@ -19,7 +19,7 @@ const ERR_DEVICE_RANGE: u16 = 0x2820;
 const ERR_VALUE_RANGE: u16 = 0x3405;
 
 #[derive(Clone, Debug)]
-pub(super) struct TimeAdd {
+pub(super) struct Fx5TimeAdd {
     flags_off: TaddFlagsOff,
     exact_24: TaddExact24,
     on_error: TaddOnError,
@@ -29,9 +29,9 @@ pub(super) struct TimeAdd {
     previous_en: bool,
 }
 
-impl TimeAdd {
-    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> TimeAdd {
-        TimeAdd {
+impl Fx5TimeAdd {
+    pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> Fx5TimeAdd {
+        Fx5TimeAdd {
             flags_off: choices.get(),
             exact_24: choices.get(),
             on_error: choices.get(),

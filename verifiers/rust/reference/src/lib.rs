@@ -35,9 +35,9 @@ pub struct Reference {
     mutant: Option<Mutant>,
     family: Option<Family>,
     fx5_compare: fx5_compare::Fx5Compare,
-    tadd: fx5_tadd::TimeAdd,
-    hour: fc6a_hour::HourMeter,
-    cp1e: cp1e_dt::TimeCompare,
+    tadd: fx5_tadd::Fx5TimeAdd,
+    hour: fc6a_hour::Fc6aHourMeter,
+    cp1e: cp1e_dt::Cp1eTimeCompare,
 }
 
 impl Reference {
@@ -59,9 +59,9 @@ impl Reference {
     fn build(choices: Choices, mutant: Option<Mutant>) -> Reference {
         Reference {
             fx5_compare: fx5_compare::Fx5Compare::new(&choices, mutant),
-            tadd: fx5_tadd::TimeAdd::new(&choices, mutant),
-            hour: fc6a_hour::HourMeter::new(&choices, mutant),
-            cp1e: cp1e_dt::TimeCompare::new(&choices, mutant),
+            tadd: fx5_tadd::Fx5TimeAdd::new(&choices, mutant),
+            hour: fc6a_hour::Fc6aHourMeter::new(&choices, mutant),
+            cp1e: cp1e_dt::Cp1eTimeCompare::new(&choices, mutant),
             family: None,
             choices,
             mutant,
