@@ -13,10 +13,21 @@ import java.util.Set;
  * {@link Emulator} instead, which does the bookkeeping.
  */
 public interface Implementation {
-    /** The name reports show. */
+    /**
+     * The name reports show: by default the class's simple name; for a lambda (an {@link Emulator}
+     * written as one), the class it is written in, since the lambda's own class name is made up
+     * by the JVM anew in each run ({@code ClockTest$$Lambda$500/0x00007f45a00d8c88}).
+     */
     default String name() {
-        String simple = getClass().getSimpleName();
-        return simple.isEmpty() ? getClass().getName() : simple;   // an anonymous class has no simple name
+        Class<?> c = getClass();
+        if (c.isHidden() || c.isSynthetic()) {
+            String name = c.getName();
+            int lambda = name.indexOf("$$Lambda");
+            String outer = lambda > 0 ? name.substring(0, lambda) : name;
+            return outer.substring(outer.lastIndexOf('.') + 1);
+        }
+        String simple = c.getSimpleName();
+        return simple.isEmpty() ? c.getName() : simple;   // an anonymous class has no simple name
     }
 
     default String version() {

@@ -159,6 +159,14 @@ class PlcvecTestsTest {
                 + " not-run in "), text);
     }
 
+    @Test
+    void aLambdaIsNamedByTheClassItIsWrittenIn() {
+        Emulator lambda = (vector, memory) -> step -> null;
+        // Not the JVM's made-up PlcvecTestsTest$$Lambda$123/0x...: the same name in every run.
+        assertEquals("PlcvecTestsTest", lambda.name());
+        assertEquals("PlcvecTestsTest", Verifier.of(lambda).header().implementation());
+    }
+
     private static int indexOf(List<DynamicNode> n, String id) {
         for (int i = 0; i < n.size(); i++) {
             if (n.get(i).getDisplayName().equals(id)) {
