@@ -84,5 +84,10 @@ class StdioServerTest {
                 + "\"initial\":{\"devices\":{},\"operands\":{}},\"steps\":[{\"en\":true}]}]}\n";
         JsonNode r = serve(boom, run).lines().get(0);
         assertTrue(r.get("error").stringValue().startsWith("IllegalStateException: nope"), r.toString());
+        // A VectorError is the implementation's own report: its words alone, as the error answer.
+        Implementation reports = request -> {
+            throw new VectorError("comparator fault at s2");
+        };
+        assertEquals("comparator fault at s2", serve(reports, run).lines().get(0).get("error").stringValue());
     }
 }
