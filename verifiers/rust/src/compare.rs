@@ -80,6 +80,7 @@ impl<'a> Steps<'a> {
     /// Count the next step and, while judging, check its result: the step's index and its
     /// expected image (`None` for a step past the vector's, found by the count at the end).
     /// Both ways of reporting a step begin here.
+    #[inline]
     fn next_step(&mut self, result: Option<bool>) -> (usize, Option<&'a [Value]>) {
         let step = self.count;
         self.count += 1;
