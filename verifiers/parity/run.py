@@ -395,6 +395,15 @@ def build(lang: str) -> str | None:
     return None
 
 
+def excerpt(o: Outcome, keep: int = 60) -> str:
+    """A row's exit status and output, indented; a long output as its first and last `keep` lines (a
+    build tool's report around the runner's own lines)."""
+    lines = o.output.splitlines()
+    if len(lines) > 2 * keep:
+        lines = [*lines[:keep], f"... {len(lines) - 2 * keep} lines left out ...", *lines[-keep:]]
+    return "\n".join([f"     | (exit status {o.status})", *("     | " + line for line in lines)])
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
@@ -404,7 +413,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--list", action="store_true", help="list the rows and exit")
     parser.add_argument("--no-build", action="store_true", help="do not call `faults-entry --build`")
     parser.add_argument("--bound", type=float, default=ROW_BOUND_S, help="seconds a row may take")
-    parser.add_argument("-v", "--verbose", action="store_true", help="print the output of rows that fail")
+    parser.add_argument("-v", "--verbose", action="store_true", help="print the output of every row (that of a row that fails is always printed)")
     parser.add_argument("--keep", action="store_true", help="keep the damaged folders")
     args = parser.parse_args(argv)
     try:
@@ -460,8 +469,10 @@ def main(argv: list[str] | None = None) -> int:
                 print(f"{mark} {lang:10} {row.id:34} {o.seconds:5.1f} s  {o.why}", flush=True)
                 if not o.ok:
                     failures += 1
-                    if args.verbose:
-                        print("\n".join("     | " + line for line in o.output.splitlines()[-40:]))
+                # A failing row always shows what the runner printed: a CI log must explain its own
+                # failure, which may not come back on a second run.
+                if not o.ok or args.verbose:
+                    print(excerpt(o), flush=True)
     finally:
         if args.keep:
             print(f"damaged folders kept in {base}")
