@@ -68,6 +68,7 @@ fn device_problem(
 impl<'a> Steps<'a> {
     /// Steps judged against `expected`; a write outside the vector to one of `cpu_writes` (the
     /// devices the implementation's CPU writes on its own account) is not a stray write.
+    #[inline]
     pub(crate) fn judge(vector: &'a Vector, expected: &'a Expected, cpu_writes: &'a [String]) -> Steps<'a> {
         let previous = (vector.steps().len() > 1).then(|| Small::filled(None, vector.devices().len()));
         Steps { vector, mode: Mode::Judge { expected, cpu_writes, problems: Vec::new(), previous }, count: 0 }
@@ -190,9 +191,11 @@ impl<'a> Steps<'a> {
 
     /// The judged problems, once the implementation is done: per step the result first, then
     /// the devices by name; a report with another number of steps is that one problem alone.
-    pub(crate) fn into_problems(self) -> Vec<Problem> {
-        match self.mode {
-            Mode::Judge { expected, mut problems, .. } => {
+    /// Taken out by reference: the judging state is not moved (a copy of it per vector).
+    #[inline]
+    pub(crate) fn take_problems(&mut self) -> Vec<Problem> {
+        match &mut self.mode {
+            Mode::Judge { expected, problems, .. } => {
                 if self.count != expected.steps() {
                     return vec![Problem::new(
                         None,
@@ -202,6 +205,7 @@ impl<'a> Steps<'a> {
                         None,
                     )];
                 }
+                let mut problems = std::mem::take(problems);
                 problems.sort_by(|a, b| {
                     (a.step, a.field != "result", &a.field).cmp(&(b.step, b.field != "result", &b.field))
                 });
@@ -230,7 +234,7 @@ pub(crate) fn compare(
     for step in answer {
         steps.devices(step.result, step.devices.iter().map(|(n, v)| (n.as_str(), *v)));
     }
-    steps.into_problems()
+    steps.take_problems()
 }
 
 fn check_result(step: usize, want: Option<bool>, got: Option<bool>, problems: &mut Vec<Problem>) {

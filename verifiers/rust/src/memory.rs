@@ -22,12 +22,14 @@ pub struct Memory<'v> {
 
 impl<'v> Memory<'v> {
     /// The vector's initial devices.
+    #[inline]
     pub fn new(vector: &'v Vector) -> Memory<'v> {
         // A copy of the whole inline table: a fixed size, no loop over the slots.
         Memory { vector, values: vector.initial_image().clone(), outside: Vec::new() }
     }
 
     /// The vector this image belongs to.
+    #[inline]
     pub fn vector(&self) -> &'v Vector {
         self.vector
     }
@@ -39,6 +41,7 @@ impl<'v> Memory<'v> {
     }
 
     /// Devices written that the vector does not list (empty for a conforming implementation).
+    #[inline]
     pub fn outside(&self) -> &[(String, Value)] {
         &self.outside
     }
@@ -137,15 +140,29 @@ impl<'v> Memory<'v> {
     #[inline]
     pub fn operand_words<const N: usize>(&self, operand: &str) -> Option<[u16; N]> {
         let (base, slots) = self.vector.operand_device(operand)?;
-        Some(std::array::from_fn(|k| self.word_with(base, slots, k)))
+        // A plain loop, not `array::from_fn`: its closure, instantiated in the emulator's crate,
+        // was left as a call per word there.
+        let mut words = [0; N];
+        for (k, word) in words.iter_mut().enumerate() {
+            *word = self.word_with(base, slots, k);
+        }
+        Some(words)
     }
 
     #[inline]
     fn word_with(&self, base: &Address, slots: &[u8], offset: usize) -> u16 {
         match slots.get(offset) {
             Some(&slot) if slot != NO_SLOT => word_of(self.values[usize::from(slot)]),
-            _ => self.word(base, offset as u32),
+            _ => self.word_by_address(base, offset),
         }
+    }
+
+    /// [`Memory::word`] for a word whose slot was not found at load: kept out of line, so that
+    /// the slot read above stays small enough to be inlined into the emulator's crate.
+    #[cold]
+    #[inline(never)]
+    fn word_by_address(&self, base: &Address, offset: usize) -> u16 {
+        self.word(base, offset as u32)
     }
 
     /// Write the word at `base` + `offset`.

@@ -109,7 +109,7 @@ fn judge_declared<I: Implementation + ?Sized>(
     let outcome = catch_unwind(AssertUnwindSafe(|| {
         let mut steps = Steps::judge(vector, expected, cpu_writes);
         let ran = implementation.run(vector, &mut steps);
-        (ran, steps.into_problems())
+        (ran, steps.take_problems())
     }));
     match outcome {
         Ok((Ok(()), problems)) if problems.is_empty() => {

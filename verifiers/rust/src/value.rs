@@ -112,6 +112,7 @@ impl Address {
     }
 
     /// The address as written (`D100`).
+    #[inline]
     pub fn name(&self) -> &str {
         &self.name
     }
@@ -157,6 +158,7 @@ impl Address {
     }
 
     /// Whether `other` is of the same device type (`D100` and `D7999`).
+    #[inline]
     pub fn same_kind(&self, other: &Address) -> bool {
         if self.kind_key != 0 && other.kind_key != 0 {
             self.kind_key == other.kind_key

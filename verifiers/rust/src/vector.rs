@@ -34,6 +34,7 @@ pub enum Operand {
 
 impl Operand {
     /// The device, if the operand is one.
+    #[inline]
     pub fn device(&self) -> Option<&Address> {
         match self {
             Operand::Device(a) => Some(a),
@@ -90,6 +91,7 @@ pub struct Step {
 
 impl Step {
     /// `(slot, value)` of each device the outside world writes before the execution.
+    #[inline]
     pub fn set(&self) -> &[(usize, Value)] {
         &self.set
     }
@@ -160,25 +162,32 @@ pub struct Vector {
     pub(crate) expectations: Option<Expectations>,
 }
 
+// The accessors an emulator calls on every step are `#[inline]`: a function of another crate
+// (the emulator's) is otherwise never inlined without LTO, and each would be a call.
 impl Vector {
     /// The stable id (`fx5-time-add/TADD/manual-example/program`): the test's name.
+    #[inline]
     pub fn id(&self) -> &str {
         &self.id
     }
     /// The family (`fx5-time-add`).
+    #[inline]
     pub fn family(&self) -> &str {
         &self.family
     }
     /// The instruction as the spec spells it (`LDTM<=`, `LD <=DT`).
+    #[inline]
     pub fn instruction(&self) -> &str {
         &self.instruction
     }
     /// The family as a generated enum (`None` for a family this build does not know, from a
     /// newer copy named by `PLCVEC_VECTORS`).
+    #[inline]
     pub fn known_family(&self) -> Option<Family> {
         self.known_family
     }
     /// The instruction as a generated enum (`None` for one this build does not know).
+    #[inline]
     pub fn known_instruction(&self) -> Option<Instruction> {
         self.known_instruction
     }
@@ -216,17 +225,21 @@ impl Vector {
         }
     }
     /// Every device the vector lists (its slots), sorted by name.
+    #[inline]
     pub fn devices(&self) -> &[Address] {
         &self.devices
     }
     /// The initial value of each slot.
+    #[inline]
     pub fn initial(&self) -> &[Value] {
         &self.initial
     }
+    #[inline]
     pub(crate) fn initial_image(&self) -> &Small<Value, INLINE_SLOTS> {
         &self.initial
     }
     /// Whether each slot is a scratch word (the implementation's own work area, never compared).
+    #[inline]
     pub fn scratch(&self) -> &[bool] {
         &self.scratch
     }
@@ -276,6 +289,7 @@ impl Vector {
         Some((self.operands[i].1.device()?, &self.operand_slots[i]))
     }
     /// The executions, in order.
+    #[inline]
     pub fn steps(&self) -> &[Step] {
         &self.steps
     }
