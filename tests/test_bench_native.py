@@ -214,7 +214,7 @@ def test_a_failing_bench_of_this_tree_exits_1_and_says_why(repo, capsys):
 def test_the_worktree_is_removed_when_the_run_is_interrupted(repo, stop):
     seen = []
 
-    def invoke(script, timeout):
+    def invoke(script, timeout, vectors=None):
         seen.append(Path(script))
         assert _worktrees(repo)[1:] and Path(script).is_file()   # the baseline's worktree exists meanwhile
         raise stop
@@ -235,6 +235,65 @@ def test_the_worktree_is_removed_when_a_bench_leaves_files_in_it(repo, capsys):
     _git(repo, "tag", "builds")
     _git(repo, "checkout", "-q", "-")
     assert main(["bench-native", "--root", str(repo), "--baseline", "builds", "--lang", "a", "--rounds", "1"]) == 0
+    _clean(repo)
+
+
+# ---------------------------------------------------------------------------------------------------
+# --same-vectors: both sides judge one folder
+
+
+def _counting_bench(repo, side, rate):
+    """A bench `d` that judges the folder PLCVEC_VECTORS names: its `count` file is how many
+    vectors; it logs `d <side> <folder>`."""
+    _bench(repo, "d", f"""\
+        echo "d {side} $PLCVEC_VECTORS" >> "$BENCH_LOG"
+        n=$(cat "$PLCVEC_VECTORS/count") || exit 4
+        echo "{{\\"lang\\": \\"d\\", \\"vectors\\": $n, \\"vectors_per_s\\": {rate}}}"
+        """)
+
+
+def test_same_vectors_names_one_folder_to_both_sides(repo, capsys, tmp_path):
+    _counting_bench(repo, "old", 400)
+    _git(repo, "add", "-A")
+    _git(repo, "commit", "-q", "-m", "d reads PLCVEC_VECTORS")
+    _git(repo, "tag", "d-old")
+    _counting_bench(repo, "new", 300)
+    _git(repo, "commit", "-q", "-am", "d slower")
+    folder = tmp_path / "shared-vectors"
+    folder.mkdir()
+    (folder / "count").write_text("3526\n")
+    args = ["bench-native", "--root", str(repo), "--baseline", "d-old", "--lang", "d", "--rounds", "1"]
+    assert main(args + ["--same-vectors", "--vectors", str(folder)]) == 0
+    out = capsys.readouterr().out
+    assert (tmp_path / "log").read_text().split("\n") == [f"d old {folder}", f"d new {folder}"] * 2 + [""]
+    summary_line = json.loads(out.strip().splitlines()[-1])
+    assert summary_line["same_vectors"] == str(folder)
+    assert summary_line["compared"]["d"]["ratio"] == 0.75
+    assert summary_line["compared"]["d"]["baseline_vectors"] == summary_line["compared"]["d"]["current_vectors"] == [3526]
+    assert f"both sides judged the same vectors: {folder}" in out
+    _clean(repo)
+
+
+def test_same_vectors_refuses_a_language_whose_sides_report_different_counts(repo, capsys):
+    # `a` judges its own set whatever PLCVEC_VECTORS says: 3678 vectors at `old`, 3526 now.
+    folder = repo.parent / "elsewhere"
+    folder.mkdir()
+    assert main(["bench-native", "--root", str(repo), "--baseline", "old", "--lang", "a", "--rounds", "1",
+                 "--same-vectors", "--vectors", str(folder)]) == 1
+    out = capsys.readouterr().out
+    assert ("a          not compared: --same-vectors: the two sides judged different numbers of vectors, "
+            "3678 (baseline) and 3526 (current)") in out
+    assert json.loads(out.strip().splitlines()[-1])["compared"] == {}
+    _clean(repo)
+
+
+def test_same_vectors_needs_a_baseline_and_an_existing_folder(repo, capsys):
+    assert main(["bench-native", "--root", str(repo), "--same-vectors"]) == 2
+    assert "--same-vectors is for --baseline" in capsys.readouterr().err
+    missing = repo.parent / "no-such-folder"
+    assert main(["bench-native", "--root", str(repo), "--baseline", "old", "--same-vectors", "--vectors", str(missing)]) == 2
+    err = capsys.readouterr().err
+    assert f"{missing}: no such vector folder" in err and "Traceback" not in err
     _clean(repo)
 
 

@@ -17,6 +17,13 @@ each side's bench is run once to build it (that run's figure is not counted), th
 in turn, baseline then this tree, for `--rounds` rounds, so that both sides meet the same moments
 of a shared machine. Each side judges its own vectors: their counts may differ between revisions,
 so vectors/s is the figure compared, and the table says how many vectors each side ran.
+
+`--same-vectors` makes both sides judge the same vectors, the folder `--vectors` (this tree's golden
+set by default), named to each bench by PLCVEC_VECTORS: two revisions' vector sets differ in size
+and weight, and vectors/s of two different sets is not one measure. A language whose two sides
+report different numbers of vectors is not compared (its bench does not read PLCVEC_VECTORS, or
+one side's loader left vectors out), and a side whose loader refuses the folder fails as any bench
+does, with its own words.
 """
 from __future__ import annotations
 
@@ -50,13 +57,17 @@ def register(sub, spec_parent):
     from plcvec_verify.locate import checkout
 
     root = checkout()   # the checkout in use (plcvec_verify/locate.py): the native verifiers live only there
-    b.add_argument("--vectors", default=str(root / "vectors") if root else None, help="the vector folder for the Python figure")
+    b.add_argument("--vectors", default=str(root / "vectors") if root else None,
+                   help="the vector folder for the Python figure, and with --same-vectors the one both sides judge")
     b.add_argument("--root", default=str(root) if root else None,
                    help="the repository holding verifiers/ (default: %(default)s)")
     b.add_argument("--baseline", metavar="REV",
                    help="compare each bench with the same bench of git revision REV (a temporary git worktree), "
                         "run in turn with this tree's in the same run; prints vectors/s of each (median and spread), "
                         "the ratio this tree / REV, seconds per pass, loading seconds and peak memory")
+    b.add_argument("--same-vectors", action="store_true",
+                   help="with --baseline: both sides judge the vectors of --vectors (PLCVEC_VECTORS to each bench) "
+                        "instead of each its own revision's; a language whose sides report different counts is not compared")
     b.add_argument("--rounds", type=_positive_int, metavar="N",
                    help=f"with --baseline: how many times each side is measured, in turn (default: {DEFAULT_ROUNDS}), "
                         "after one run of each that builds it and is not counted")
@@ -79,11 +90,15 @@ def _positive_int(text):
 # Running one bench
 
 
-def _child_env():
+def _child_env(vectors=None):
     """This environment without the PLCVEC_* variables: each bench judges its own tree's golden set,
     which a PLCVEC_VECTORS or selection left in the shell would change (and change alike for both
-    sides of a comparison, hiding the difference between their vector sets)."""
-    return {k: v for k, v in os.environ.items() if not k.startswith("PLCVEC_")}
+    sides of a comparison, hiding the difference between their vector sets). With `vectors`, the
+    bench is told to judge that folder instead (PLCVEC_VECTORS), and nothing else of the shell's."""
+    env = {k: v for k, v in os.environ.items() if not k.startswith("PLCVEC_")}
+    if vectors is not None:
+        env["PLCVEC_VECTORS"] = str(vectors)
+    return env
 
 
 def _children(pid):
@@ -146,16 +161,17 @@ def _kill_group(proc):
     proc.wait()
 
 
-def invoke(script: Path, timeout=TIMEOUT_S) -> dict:
+def invoke(script: Path, timeout=TIMEOUT_S, vectors=None) -> dict:
     """Run one bench script; its JSON figure, with `wall_seconds` (the whole run) and `peak_mib` (the
     benchmark program's, where it could be told apart) added, or {"error": message}. The script and
     everything it starts form a process group of their own, killed whole on a timeout, an error or
-    Ctrl-C, so that no compiler goes on writing into a folder about to be removed."""
+    Ctrl-C, so that no compiler goes on writing into a folder about to be removed. `vectors`: the
+    folder the bench judges instead of its own golden set (PLCVEC_VECTORS)."""
     with tempfile.TemporaryFile("w+") as out, tempfile.TemporaryFile("w+") as err:
         start = time.monotonic()
         try:
             proc = subprocess.Popen([str(script)], cwd=script.parent, stdout=out, stderr=err, text=True,
-                                    stdin=subprocess.DEVNULL, env=_child_env(), start_new_session=True)
+                                    stdin=subprocess.DEVNULL, env=_child_env(vectors), start_new_session=True)
         except OSError as exc:
             return {"error": f"cannot run {script}: {exc.strerror or exc}"}
         peak = {}
@@ -293,11 +309,29 @@ def _num(value, fmt, width):
     return f"{'-' if value is None else format(value, fmt):>{width}}"
 
 
-def print_comparison(results, base_label, rounds, file=None):
+def same_counts(results):
+    """Under --same-vectors: a compared language whose sides reported different numbers of vectors
+    is not compared after all (they did not judge the same vectors). The languages it was so for."""
+    differed = []
+    for result in results:
+        if result.error:
+            continue
+        counts = {side: sorted({int(f.get("vectors", 0)) for f in getattr(result, side)}) for side in ("baseline", "current")}
+        if counts["baseline"] != counts["current"] or len(counts["current"]) != 1:
+            shown = " and ".join(f"{'/'.join(map(str, n))} ({side})" for side, n in counts.items())
+            result.error = (f"--same-vectors: the two sides judged different numbers of vectors, {shown}: a bench that "
+                            "does not read PLCVEC_VECTORS, or a loader that left vectors out")
+            differed.append(result.lang)
+    return differed
+
+
+def print_comparison(results, base_label, rounds, file=None, vectors=None):
     file = file or sys.stdout
     print(f"bench-native: this tree against {base_label}, {rounds} round(s) of baseline then this tree, after one "
           "run of each that builds it (not counted); vectors/s is the median of the rounds, spread (max - min) / median",
           file=file)
+    if vectors is not None:
+        print(f"both sides judged the same vectors: {vectors} (PLCVEC_VECTORS)", file=file)
     head = (f"{'language':10} {'side':16} {'vectors':>8} {'vectors/s':>12} {'spread':>7} {'s/pass':>10} "
             f"{'load s':>7} {'peak MiB':>8} {'CPU vectors/s':>13}")
     print(head, file=file)
@@ -319,7 +353,7 @@ def print_comparison(results, base_label, rounds, file=None):
               + (f", {s['cpu_ratio']:.3f}x by CPU time" if s["cpu_ratio"] else ""), file=file)
     print("peak MiB: the benchmark program's own peak resident memory (not its build's); "
           "CPU vectors/s: where the bench reports it", file=file)
-    print(json.dumps({"baseline": base_label, "rounds": rounds,
+    print(json.dumps({"baseline": base_label, "rounds": rounds, "same_vectors": None if vectors is None else str(vectors),
                       "compared": {s["lang"]: {"ratio": round(s["ratio"], 4),
                                                "cpu_ratio": round(s["cpu_ratio"], 4) if s["cpu_ratio"] else None,
                                                "baseline_vectors_per_s": round(s["baseline"]["vectors_per_s"]),
@@ -398,6 +432,13 @@ def _terminate_as_interrupt(signum, frame):
 
 def run_baseline(args, root: Path, progress=None, invoke_bench=invoke):
     rounds = args.rounds or DEFAULT_ROUNDS
+    vectors = None
+    if getattr(args, "same_vectors", False):
+        if not getattr(args, "vectors", None):
+            raise PlcvecError("bench-native --same-vectors: name the vector folder both sides judge with --vectors")
+        vectors = Path(args.vectors).resolve()
+        if not vectors.exists():
+            raise PlcvecError(f"bench-native --same-vectors: {vectors}: no such vector folder or file")
     here = _scripts(root)
     langs = _select(args.lang, list(here))
     if not langs:
@@ -413,19 +454,21 @@ def run_baseline(args, root: Path, progress=None, invoke_bench=invoke):
             there = _scripts(tree.path)
 
             def runner(script):
-                return lambda build: invoke_bench(script, timeout=BUILD_TIMEOUT_S if build else TIMEOUT_S)
+                return lambda build: invoke_bench(script, timeout=BUILD_TIMEOUT_S if build else TIMEOUT_S, vectors=vectors)
 
             results = compare(langs, {lang: runner(there[lang]) if lang in there else None for lang in langs},
                               {lang: runner(here[lang]) for lang in langs}, rounds, progress)
+            differed = same_counts(results) if vectors is not None else []
     finally:
         if main_thread:
             signal.signal(signal.SIGTERM, previous)
-    summaries = print_comparison(results, label, rounds)
+    summaries = print_comparison(results, label, rounds, vectors=vectors)
     sys.stdout.flush()
     if not summaries:
         print("plcvec: bench-native --baseline: no language could be compared", file=sys.stderr)
         return 1
-    return 1 if any(r.current_failed for r in results) else 0
+    # Asked for the same vectors and not given them: not a measurement to pass on.
+    return 1 if differed or any(r.current_failed for r in results) else 0
 
 
 # ---------------------------------------------------------------------------------------------------
@@ -440,6 +483,8 @@ def run(args):
         return run_baseline(args, root)
     if args.rounds is not None:
         raise PlcvecError("bench-native: --rounds is for --baseline (without it each bench runs once)")
+    if args.same_vectors:
+        raise PlcvecError("bench-native: --same-vectors is for --baseline (without it each bench judges its own golden set)")
     if not args.vectors:
         raise PlcvecError("bench-native: not in a plcvec checkout; name the repository with --root and the vectors with --vectors")
     from plcvec_verify.bench import in_process_rate
