@@ -24,7 +24,7 @@ func StartGuarded(plan *Plan, impl Implementation, test string, inChild bool, ti
 		if err != nil {
 			return nil, err
 		}
-		g.src = &isolated{plan: plan, child: c, wanted: wanted, timeout: timeout, last: -1, timer: time.NewTimer(time.Hour)}
+		g.src = newIsolated(plan, c, wanted, timeout)
 	}
 	if err := g.src.start(); err != nil {
 		g.src.close()

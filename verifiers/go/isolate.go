@@ -26,6 +26,13 @@ import (
 // never returns cannot be stopped. The child runs the test function up to the same Run call,
 // judges the vectors it is given and writes one line per vector to a pipe (file descriptor 3);
 // the parent reads them, one subtest per vector, and bounds each by PLCVEC_TIMEOUT.
+//
+// A system call per vector would cost more than judging it, so the child writes its lines in
+// batches (a failing vector's at once, before the next starts) and keeps its position in memory
+// it shares with the parent (a file both map, file descriptor 4; beat_unix.go): which vector it
+// is judging, or has judged. The parent watches that position for the bound, and when the child
+// ends or is stopped it knows from it which vector was running, and that the vectors judged
+// before it whose lines were not yet written passed.
 
 const (
 	envChild  = "PLCVEC_GO_CHILD"  // set in the child: "<test name>\n<ordinal of the Run call>"
@@ -33,6 +40,9 @@ const (
 	// readyBound is how long the child may take to reach Run (load the suite, build the plan).
 	readyBound = 120 * time.Second
 	outputKept = 16 << 10 // bytes of the child's own output kept for a report
+	beatSize   = 8        // bytes of the shared position
+	// flushEvery is how many passing vectors' lines the child keeps before it writes them.
+	flushEvery = 64
 )
 
 // runCalls counts the Run calls of each test in this process, so that the child acts on the
@@ -101,11 +111,19 @@ func decodeWanted(text string, n int) ([]bool, error) {
 func childServe(plan *Plan, impl Implementation, setupErr error) {
 	pipe := os.NewFile(3, "plcvec-pipe")
 	w := bufio.NewWriter(pipe)
-	if setupErr != nil {
-		fmt.Fprintf(w, "error %s\n", strconv.Quote(setupErr.Error()))
-		w.Flush()
-		os.Exit(0)
+	if setupErr == nil {
+		var b *beat
+		if b, setupErr = mapBeat(os.NewFile(4, "plcvec-beat")); setupErr == nil {
+			childJudge(plan, impl, w, b) // does not return
+		}
 	}
+	fmt.Fprintf(w, "error %s\n", strconv.Quote(setupErr.Error()))
+	w.Flush()
+	os.Exit(0)
+}
+
+// childJudge judges the wanted cases, a line each, keeping its position in b; it ends the process.
+func childJudge(plan *Plan, impl Implementation, w *bufio.Writer, b *beat) {
 	wanted, err := decodeWanted(os.Getenv(envWanted), len(plan.Cases))
 	if err != nil {
 		fmt.Fprintf(w, "error %s\n", strconv.Quote(err.Error()))
@@ -115,24 +133,31 @@ func childServe(plan *Plan, impl Implementation, setupErr error) {
 	fmt.Fprintf(w, "ready %s\n", planDigest(plan))
 	w.Flush()
 	var v Verdict
+	kept := 0
 	for i, c := range plan.Cases {
 		if !wanted[i] {
 			continue
 		}
+		b.store(2 * uint64(i+1))
 		v = Verdict{}
 		c.judge(impl, &v)
-		if v.Status == StatusPass {
-			w.WriteString(strconv.Itoa(i))
-		} else {
+		if v.Status != StatusPass {
+			// Written before the position says judged: a case judged, with no line, passed.
 			line, _ := json.Marshal(wire{v.Status, v.Problems, v.Message, v.passes()})
-			fmt.Fprintf(w, "%d %s", i, line)
+			fmt.Fprintf(w, "%d %s\n", i, line)
+			kept = flushEvery
+		} else {
+			w.WriteString(strconv.Itoa(i))
+			w.WriteByte('\n')
+			kept++
 		}
-		w.WriteByte('\n')
-		// One line per vector, written before the next starts: if the process ends during a
-		// vector, the parent knows which.
-		if w.Flush() != nil {
-			os.Exit(1) // the parent has gone
+		if kept >= flushEvery {
+			if w.Flush() != nil {
+				os.Exit(1) // the parent has gone
+			}
+			kept = 0
 		}
+		b.store(2*uint64(i+1) + 1)
 	}
 	w.WriteString("done\n")
 	w.Flush()
@@ -141,11 +166,13 @@ func childServe(plan *Plan, impl Implementation, setupErr error) {
 
 // child is the parent's view of the second process.
 type child struct {
-	cmd    *exec.Cmd
-	lines  chan string // closed at the end of the pipe
-	output *tail
-	exited chan struct{}
-	err    error // the process's end, once exited is closed
+	cmd     *exec.Cmd
+	lines   chan []string // the lines read at once; closed at the end of the pipe
+	pending []string      // lines received and not yet taken
+	beat    *beat         // the child's position (isolate.go's top)
+	output  *tail
+	exited  chan struct{}
+	err     error // the process's end, once exited is closed
 }
 
 // tail keeps the last bytes written to it: the child's own output, for a report.
@@ -185,25 +212,54 @@ func startChild(name string, ordinal int, wanted []bool) (*child, error) {
 		// The child lives no longer than the parent may.
 		args = append(args, "-test.timeout="+fl.Value.String())
 	}
-	r, w, err := os.Pipe()
+	shared, err := os.CreateTemp("", "plcvec-beat-")
 	if err != nil {
 		return nil, err
 	}
-	c := &child{cmd: exec.Command(self, args...), lines: make(chan string, 256), output: &tail{}, exited: make(chan struct{})}
+	// The file is only a name for the memory: gone from the folder at once, mapped by both.
+	os.Remove(shared.Name())
+	defer shared.Close()
+	if err := shared.Truncate(beatSize); err != nil {
+		return nil, err
+	}
+	b, err := mapBeat(shared)
+	if err != nil {
+		return nil, err
+	}
+	r, w, err := os.Pipe()
+	if err != nil {
+		b.unmap()
+		return nil, err
+	}
+	c := &child{cmd: exec.Command(self, args...), lines: make(chan []string, 16), beat: b, output: &tail{}, exited: make(chan struct{})}
 	c.cmd.Env = append(os.Environ(), envChild+"="+name+"\n"+strconv.Itoa(ordinal), envWanted+"="+encodeWanted(wanted))
 	c.cmd.Stdout, c.cmd.Stderr = c.output, c.output
-	c.cmd.ExtraFiles = []*os.File{w}
+	c.cmd.ExtraFiles = []*os.File{w, shared}
 	if err := c.cmd.Start(); err != nil {
 		r.Close()
 		w.Close()
+		b.unmap()
 		return nil, err
 	}
 	w.Close() // the child holds the write end now: the pipe ends when the child does
 	go func() {
-		s := bufio.NewScanner(r)
-		s.Buffer(make([]byte, 64<<10), 64<<20)
-		for s.Scan() {
-			c.lines <- s.Text()
+		// The lines that have arrived go on together: a handoff per batch, not per line.
+		rd := bufio.NewReaderSize(r, 64<<10)
+		var batch []string
+		for {
+			line, err := rd.ReadString('\n')
+			if line = strings.TrimSuffix(line, "\n"); line != "" || err == nil {
+				batch = append(batch, line)
+			}
+			if err != nil || rd.Buffered() == 0 || len(batch) >= 1024 {
+				if len(batch) > 0 {
+					c.lines <- batch
+					batch = nil
+				}
+			}
+			if err != nil {
+				break
+			}
 		}
 		close(c.lines)
 		r.Close()
@@ -223,18 +279,67 @@ var (
 
 // next is the child's next line within bound.
 func (c *child) next(bound time.Duration, timer *time.Timer) (string, error) {
-	timer.Reset(bound)
-	select {
-	case line, ok := <-c.lines:
-		if !timer.Stop() {
-			<-timer.C
+	if len(c.pending) == 0 {
+		timer.Reset(bound)
+		select {
+		case batch, ok := <-c.lines:
+			if !timer.Stop() {
+				<-timer.C
+			}
+			if !ok {
+				return "", errEnded
+			}
+			c.pending = batch
+		case <-timer.C:
+			return "", errHung
 		}
-		if !ok {
-			return "", errEnded
+	}
+	line := c.pending[0]
+	c.pending = c.pending[1:]
+	return line, nil
+}
+
+// watched is the child's next line; errHung once the child's position has stayed the same for
+// bound (watched every tick), errEnded at the end of the pipe.
+func (c *child) watched(bound time.Duration, tick *time.Ticker, w *watch) (string, error) {
+	for len(c.pending) == 0 {
+		select {
+		case batch, ok := <-c.lines:
+			if !ok {
+				return "", errEnded
+			}
+			c.pending = batch
+		case now := <-tick.C:
+			if pos := c.beat.load(); pos != w.seen {
+				w.seen, w.since = pos, now
+			} else if now.Sub(w.since) >= bound {
+				return "", errHung
+			}
 		}
-		return line, nil
-	case <-timer.C:
-		return "", errHung
+	}
+	line := c.pending[0]
+	c.pending = c.pending[1:]
+	return line, nil
+}
+
+// watch is what the parent last saw of the child's position, and since when.
+type watch struct {
+	seen  uint64
+	since time.Time
+}
+
+// drain takes the lines still on their way once the child has been stopped.
+func (c *child) drain() {
+	for {
+		select {
+		case batch, ok := <-c.lines:
+			if !ok {
+				return
+			}
+			c.pending = append(c.pending, batch...)
+		case <-time.After(10 * time.Second):
+			return
+		}
 	}
 }
 

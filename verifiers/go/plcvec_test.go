@@ -496,11 +496,17 @@ func TestInProcess(t *testing.T) {
 	}
 }
 
-// looping never answers on the manual's TADD example.
-type looping struct{ plcvec.Implementation }
+// looping never answers on the manual's TADD example; with exit set, it ends the process there.
+type looping struct {
+	plcvec.Implementation
+	exit bool
+}
 
 func (l looping) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 	if req.ID == manualTADD {
+		if l.exit {
+			os.Exit(3)
+		}
 		for {
 		}
 	}
@@ -508,19 +514,39 @@ func (l looping) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 }
 
 // TestTimeout: a vector that never answers is reported against its id within PLCVEC_TIMEOUT,
-// and the run ends, in a second process (the default) and in this one (Options.InProcess). Run
-// in a child test binary, since the in-process watchdog ends its process.
+// and the run ends, in a second process (the default) and in this one (Options.InProcess); a
+// vector that ends the process is reported against its id too. Every vector before it passed,
+// and says so, although the second process writes passing vectors' lines in batches. Run in a
+// child test binary, since the in-process watchdog ends its process.
 func TestTimeout(t *testing.T) {
+	selection := plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}}
 	if mode := os.Getenv("PLCVEC_TEST_LOOP"); mode != "" {
 		ref, err := reference.New(nil)
 		if err != nil {
 			t.Fatal(err)
 		}
-		plcvec.Run(t, looping{ref.Implementation()}, plcvec.Options{InProcess: mode == "in-process",
-			Selection: plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}}})
+		plcvec.Run(t, looping{ref.Implementation(), mode == "exits"}, plcvec.Options{InProcess: mode == "in-process",
+			Selection: selection})
 		return
 	}
-	for _, mode := range []string{"isolated", "in-process"} {
+	ref, err := reference.New(nil)
+	if err != nil {
+		t.Fatal(err)
+	}
+	plan, err := plcvec.Prepare(ref.Implementation(), plcvec.Options{Selection: selection})
+	if err != nil {
+		t.Fatal(err)
+	}
+	before := -1
+	for i, c := range plan.Cases {
+		if c.Vector.ID == manualTADD {
+			before = i
+		}
+	}
+	if before < 1 {
+		t.Fatalf("%s is not after another vector of its family (at %d): the test would show nothing", manualTADD, before)
+	}
+	for _, mode := range []string{"isolated", "in-process", "exits"} {
 		t.Run(mode, func(t *testing.T) {
 			cmd := exec.Command(os.Args[0], "-test.run", "^TestTimeout$", "-test.v")
 			cmd.Env = append(os.Environ(), "PLCVEC_TEST_LOOP="+mode, "PLCVEC_TIMEOUT=0.5")
@@ -529,8 +555,16 @@ func TestTimeout(t *testing.T) {
 			if err == nil {
 				t.Fatalf("a vector that never answers passed:\n%s", out)
 			}
-			if !strings.Contains(string(out), manualTADD) || !strings.Contains(string(out), "no answer within 0.5 s (PLCVEC_TIMEOUT)") {
-				t.Errorf("the vector is not named with the bound:\n%s", out)
+			said := "no answer within 0.5 s (PLCVEC_TIMEOUT)"
+			if mode == "exits" {
+				said = "the implementation ended the test process with exit status 3"
+			}
+			if !strings.Contains(string(out), manualTADD) || !strings.Contains(string(out), said) {
+				t.Errorf("the vector is not named with %q:\n%s", said, out)
+			}
+			// (In process, the watchdog ends the process before go test prints its subtests' results.)
+			if passed := strings.Count(string(out), "--- PASS: TestTimeout/"); mode != "in-process" && passed != before {
+				t.Errorf("%d vectors passed before %s, not %d:\n%s", passed, manualTADD, before, out)
 			}
 			if d := time.Since(start); d > 60*time.Second {
 				t.Errorf("took %s", d)

@@ -77,7 +77,7 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 		if err != nil {
 			t.Fatalf("plcvec: cannot start the test binary again to judge the vectors in it (%v); Options.InProcess judges them in this process", err)
 		}
-		src = &isolated{plan: plan, child: c, wanted: wanted, timeout: env.timeout, last: -1, timer: time.NewTimer(time.Hour)}
+		src = newIsolated(plan, c, wanted, env.timeout)
 	}
 	defer src.close()
 	if err := src.start(); err != nil {
@@ -200,7 +200,17 @@ type isolated struct {
 	timeout time.Duration
 	last    int // the index of the last verdict read
 	timer   *time.Timer
+	tick    *time.Ticker
+	watch   watch
 	done    bool
+	// Once the child has ended or been stopped: its last position, and what ended it.
+	ended   bool
+	pos     uint64
+	endedBy error
+}
+
+func newIsolated(plan *Plan, c *child, wanted []bool, timeout time.Duration) *isolated {
+	return &isolated{plan: plan, child: c, wanted: wanted, timeout: timeout, last: -1, timer: time.NewTimer(time.Hour)}
 }
 
 func (s *isolated) start() error {
@@ -218,27 +228,58 @@ func (s *isolated) start() error {
 		return fmt.Errorf("the test binary, started again, prepared other vectors than this run (%s, not %s): does the test choose them at random?",
 			strings.TrimPrefix(line, "ready "), planDigest(s.plan))
 	}
+	// The child's position, watched every eighth of the bound (10 ms to 1 s).
+	tick := s.timeout / 8
+	tick = max(10*time.Millisecond, min(time.Second, tick))
+	s.tick = time.NewTicker(tick)
+	s.watch = watch{seen: s.child.beat.load(), since: time.Now()}
 	return nil
 }
 
 func (s *isolated) verdict(i int) (wire, bool) {
 	for {
-		line, err := s.child.next(s.timeout, s.timer)
+		var line string
+		var err error
+		if len(s.child.pending) > 0 || !s.ended {
+			line, err = s.child.watched(s.timeout, s.tick, &s.watch)
+		} else {
+			err = s.endedBy
+		}
 		if err != nil {
-			// The child is on the first wanted case after the last verdict it gave.
-			at := s.last + 1
-			for at < len(s.wanted) && !s.wanted[at] {
+			if !s.ended {
+				// Stop the child (a hung one; an ended one is gone already), and take the lines it
+				// wrote before it ended, then its last position.
+				s.ended, s.endedBy, s.done = true, err, true
+				if err == errHung {
+					s.child.stop()
+				}
+				s.child.drain()
+				s.pos = s.child.beat.load()
+				if len(s.child.pending) > 0 {
+					continue
+				}
+			}
+			// The child had judged case i, and it passed: its line was kept to be written with
+			// others (a case that did not pass is written before the position moves on).
+			if judged := int(s.pos/2) - 1; i < judged || (i == judged && s.pos%2 == 1) {
+				return wire{Status: StatusPass}, false
+			}
+			// The child was on the case its position names, or, between cases, on the next
+			// wanted one.
+			at := int(s.pos/2) - 1
+			if s.pos%2 == 1 || at < 0 {
 				at++
+				for at < len(s.wanted) && !s.wanted[at] {
+					at++
+				}
 			}
 			w := wire{Status: StatusError}
-			if err == errHung {
-				s.child.stop()
+			if s.endedBy == errHung {
 				w.Message = fmt.Sprintf("no answer within %s s (%s); the implementation was stopped and the run ends here",
 					strconv.FormatFloat(s.timeout.Seconds(), 'g', -1, 64), EnvTimeout)
 			} else {
 				w.Message = "the implementation " + s.child.ending() + "\n(while running this vector; the run ends here)"
 			}
-			s.done = true
 			if at != i && at < len(s.plan.Cases) {
 				w.Message = "while vector " + s.plan.Cases[at].id + " ran: " + w.Message
 			}
@@ -247,7 +288,7 @@ func (s *isolated) verdict(i int) (wire, bool) {
 		j, w, perr := parseVerdict(line)
 		if perr != nil || j <= s.last || j >= len(s.plan.Cases) {
 			s.child.stop()
-			s.done = true
+			s.done, s.ended, s.endedBy = true, true, errEnded
 			return wire{Status: StatusError, Message: fmt.Sprintf("the test binary judging the vectors wrote something else on its pipe: %.80q", line)}, true
 		}
 		s.last = j
@@ -267,6 +308,10 @@ func (s *isolated) close() {
 		}
 	}
 	s.child.stop()
+	if s.tick != nil {
+		s.tick.Stop()
+	}
+	s.child.beat.unmap()
 }
 
 // inProcess judges in this process, with a watchdog: a vector that holds the run longer than

@@ -14,9 +14,6 @@ import org.junit.platform.launcher.TestPlan;
  * method pattern ({@code -Dtest=MyTest#nothing}).
  */
 public final class FilterWatch implements TestExecutionListener {
-    /** Set by {@link PlcvecTests} when a factory's tests are built in this process. */
-    static volatile boolean factoryRan;
-
     private volatile int tests;
 
     @Override
@@ -30,7 +27,7 @@ public final class FilterWatch implements TestExecutionListener {
     public void testPlanExecutionFinished(TestPlan plan) {
         String filter = System.getProperty("test");
         // Only a run of nothing: a filter that picks some other test of the project is the user's intent.
-        if (filter != null && !filter.isBlank() && !factoryRan && tests == 0) {
+        if (filter != null && !filter.isBlank() && !PlcvecTests.factoryRan && tests == 0) {
             System.err.println("plcvec: the test runner's own filter (-Dtest=" + filter + ") ran no plcvec vector; a "
                     + "filter that matches nothing tests nothing. Select vectors with " + Environment.ID
                     + " instead (e.g. " + Environment.ID + "='fx5-time-add/TADDP/*' mvn test).");

@@ -6,12 +6,8 @@ import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.concurrent.TimeUnit;
-import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Assumptions;
@@ -42,25 +38,48 @@ import org.opentest4j.AssertionFailedError;
  * known-failures file and the bound on each vector:
  * {@code PLCVEC_ID='fx5-time-add/TADDP/*' mvn test}. An empty selection, an unknown name, or a run
  * in which nothing passes (every vector skipped or unsupported) fails: a gate never passes by
- * accident. A vector that gives no answer within {@code PLCVEC_TIMEOUT} (10 s) is an error and ends
- * the run: every vector after it is not run (an error of its test), and the end of the run says why.
+ * accident. A vector that gives no answer within {@code PLCVEC_TIMEOUT} (10 s) ends the run: its
+ * error, the run's totals (every vector after it not run) and why it ended are written to standard
+ * error, and the process ends with status 1, which fails the build. The vectors run on the test's
+ * own thread, and a thread that never returns cannot be stopped: a watchdog thread, one per run,
+ * sees that the vector in progress has not changed for the bound.
  */
 public final class PlcvecTests {
+    /**
+     * Set when a factory's tests are built in this process, for {@link FilterWatch}. Kept here, not
+     * there: FilterWatch is a launcher listener, and these tests are built where no launcher is.
+     */
+    static volatile boolean factoryRan;
+
     private final Verifier verifier;
     private final Environment env;
+    private final Consumer<String> timedOut;
 
     private PlcvecTests(Verifier verifier) {
-        this(verifier, Environment.current());
+        this(verifier, Environment.current(), Run::endProcess);
     }
 
     private PlcvecTests(Verifier verifier, Environment env) {
+        this(verifier, env, Run::endProcess);
+    }
+
+    private PlcvecTests(Verifier verifier, Environment env, Consumer<String> timedOut) {
         this.verifier = verifier;
         this.env = env;
+        this.timedOut = timedOut;
     }
 
     /** The same tests under other {@code PLCVEC_*} values than this process's (for tests). */
     PlcvecTests environment(Environment env) {
-        return new PlcvecTests(verifier, env);
+        return new PlcvecTests(verifier, env, timedOut);
+    }
+
+    /**
+     * The same tests, with what the watchdog says when a vector outlives the bound handed to
+     * {@code timedOut} instead of written to standard error before the process ends (for tests).
+     */
+    PlcvecTests onTimeout(Consumer<String> timedOut) {
+        return new PlcvecTests(verifier, env, timedOut);
     }
 
     public static PlcvecTests of(Implementation implementation) {
@@ -93,13 +112,15 @@ public final class PlcvecTests {
      * and a failure when nothing was tested or the run ended early).
      */
     public Stream<DynamicNode> stream() {
-        FilterWatch.factoryRan = true;
+        factoryRan = true;
         Verifier v;
         List<Vector> vectors;
         Duration timeout;
         Path write;
         try {
-            v = verifier.selection(env.narrow(verifier.selection(), verifier.suite()));
+            Selection narrowed = env.narrow(verifier.selection(), verifier.suite());
+            // Narrowed by nothing: the same verifier, and the plan it may have made already.
+            v = narrowed == verifier.selection() ? verifier : verifier.selection(narrowed);
             Path known = env.knownFailures();
             if (known != null) {
                 v = v.expectations(known);
@@ -110,11 +131,13 @@ public final class PlcvecTests {
         } catch (VerifyException e) {
             return Stream.of(usage(e.getMessage()));
         }
-        Run run = new Run(v, vectors.size(), timeout, write);
+        Run run = new Run(v, vectors, timeout, write, timedOut);
         List<DynamicNode> tests = new ArrayList<>(vectors.size() + 2);
-        for (Vector vector : vectors) {
+        for (int i = 0; i < vectors.size(); i++) {
+            Vector vector = vectors.get(i);
+            int index = i;
             // The test source lets an IDE open the vector's line in the vector file.
-            tests.add(DynamicTest.dynamicTest(vector.id(), vector.source(), () -> verdict(run.check(vector))));
+            tests.add(DynamicTest.dynamicTest(vector.id(), vector.source(), () -> verdict(run.check(vector, index))));
         }
         for (Verdict stale : v.knownFailures().unknownIds(v.suite())) {
             run.record(stale);
@@ -178,27 +201,36 @@ public final class PlcvecTests {
     }
 
     /**
-     * One run of the factory's tests: each vector on a watchdog thread bounded by
-     * {@code PLCVEC_TIMEOUT}, the verdicts kept for the end of the run, and the vector in progress
-     * kept for a guard that speaks if the process ends before the run does.
+     * One run of the factory's tests: each vector on the test's own thread, watched by one
+     * watchdog thread that ends the process when a vector outlives {@code PLCVEC_TIMEOUT}; the
+     * verdicts kept for the end of the run, and the vector in progress kept for a guard that
+     * speaks if the process ends before the run does.
      */
     static final class Run {
         private final Verifier verifier;
-        private final int selected;
+        private final List<Vector> vectors;
         private final Duration timeout;
         private final Path write;
+        private final Consumer<String> timedOut;
         private final List<Verdict> verdicts = Collections.synchronizedList(new ArrayList<>());
         private final long start = System.nanoTime();
-        private volatile String current;     // the vector being run
+        /**
+         * The watchdog's view, one word written twice per vector with no fence (a clock read per
+         * vector would cost more than the rest of the guard): the vectors started so far, times
+         * 2^32, plus 1 + the index of the vector in progress (0 between vectors).
+         */
+        private final AtomicLong beat = new AtomicLong();
+        private long started;                // vectors started (the test thread's own count)
         private volatile String ended;       // the vector after which the run ended, or null
         private volatile boolean finished;
-        private ExecutorService worker;
+        private Thread watchdog;
 
-        Run(Verifier verifier, int selected, Duration timeout, Path write) {
+        Run(Verifier verifier, List<Vector> vectors, Duration timeout, Path write, Consumer<String> timedOut) {
             this.verifier = verifier;
-            this.selected = selected;
+            this.vectors = vectors;
             this.timeout = timeout;
             this.write = write;
+            this.timedOut = timedOut;
             ExitGuard.watch(this);
         }
 
@@ -206,62 +238,123 @@ public final class PlcvecTests {
             verdicts.add(r);
         }
 
-        Verdict check(Vector vector) {
+        Verdict check(Vector vector, int index) {
             if (ended != null) {
-                Verdict notRun = new Verdict(vector.id(), vector, Status.NOT_RUN, List.of(),
-                        "not run: the run ended before it", Map.of());
+                Verdict notRun = notRun(vector);
                 verdicts.add(notRun);
                 return notRun;
             }
-            current = vector.id();
-            Future<Verdict> answer = worker().submit(() -> verifier.check(vector));
-            Verdict r;
-            try {
-                r = answer.get(timeout.toNanos(), TimeUnit.NANOSECONDS);
-            } catch (TimeoutException e) {
-                // A thread cannot be stopped safely: the stuck one is left (a daemon, so the process
-                // can still end) and nothing more is run, as the implementation may be broken.
-                answer.cancel(true);
-                worker.shutdownNow();
-                ended = vector.id();
-                r = new Verdict(vector.id(), vector, Status.ERROR, List.of(), "no answer within " + seconds(timeout)
-                        + " (" + Environment.TIMEOUT + "); the run ends here: the vectors after it are not run",
-                        Map.of());
-            } catch (ExecutionException e) {
-                throw new IllegalStateException("plcvec: judging " + vector.id() + " failed", e.getCause());
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException("plcvec: interrupted while " + vector.id() + " ran", e);
+            if (watchdog == null) {
+                watchdog = new Thread(this::watch, "plcvec-watchdog");
+                watchdog.setDaemon(true);
+                watchdog.start();
             }
-            current = null;
+            started++;
+            beat.lazySet(started << 32 | (index + 1));
+            Verdict r = verifier.check(vector);
+            beat.lazySet(started << 32);
             verdicts.add(r);
             return r;
         }
 
-        private ExecutorService worker() {
-            if (worker == null) {
-                worker = Executors.newSingleThreadExecutor(task -> {
-                    Thread t = new Thread(task, "plcvec-vector");
-                    t.setDaemon(true);
-                    return t;
-                });
+        private static Verdict notRun(Vector vector) {
+            return new Verdict(vector.id(), vector, Status.NOT_RUN, List.of(), "not run: the run ended before it", Map.of());
+        }
+
+        /**
+         * The watchdog: every eighth of the bound (10 ms to 1 s), whether the same vector is still
+         * in progress; when it has been for the bound, the run ends there.
+         */
+        private void watch() {
+            long bound = timeout.toNanos();
+            long tick = Math.max(10_000_000L, Math.min(1_000_000_000L, bound / 8));
+            long seen = -1;
+            long since = System.nanoTime();
+            while (!finished) {
+                try {
+                    Thread.sleep(tick / 1_000_000, (int) (tick % 1_000_000));
+                } catch (InterruptedException e) {
+                    return;
+                }
+                long now = System.nanoTime();
+                long b = beat.get();
+                if (b != seen) {
+                    seen = b;
+                    since = now;
+                } else if ((b & 0xffff_ffffL) != 0 && now - since >= bound && !finished) {
+                    timedOut.accept(timedOutText((int) (b & 0xffff_ffffL) - 1));
+                    return;
+                }
             }
-            return worker;
+        }
+
+        /**
+         * What the run says when vector {@code index} outlived the bound: the vector's error, the
+         * end of the run's text (every vector after it not run), and why the run ended; the
+         * expectations file is written as at the end of a run.
+         */
+        private String timedOutText(int index) {
+            Vector v = vectors.get(index);
+            ended = v.id();
+            Verdict late = new Verdict(v.id(), v, Status.ERROR, List.of(), "no answer within " + seconds(timeout)
+                    + " (" + Environment.TIMEOUT + "); the run ends here: the vectors after it are not run", Map.of());
+            List<Verdict> all;
+            synchronized (verdicts) {
+                all = new ArrayList<>(verdicts);
+            }
+            all.add(late);
+            for (int i = index + 1; i < vectors.size(); i++) {
+                all.add(notRun(vectors.get(i)));
+            }
+            StringBuilder text = new StringBuilder(late.report()).append('\n');
+            Report report = report(all);
+            text.append(report.totals());
+            if (write != null) {
+                try {
+                    int n = report.writeExpectations(write, "not triaged yet");
+                    text.append("plcvec: ").append(n).append(" known failures written to ").append(write).append('\n');
+                } catch (RuntimeException e) {
+                    text.append("plcvec: ").append(e.getMessage()).append('\n');
+                }
+            }
+            return text.append(endedText(all)).append('\n').toString();
+        }
+
+        /** The watchdog's end of the process: a thread that never returns cannot be stopped. */
+        static void endProcess(String text) {
+            // The original standard error: a test runner's capture would be lost with the process.
+            java.io.PrintStream err = new java.io.PrintStream(new java.io.FileOutputStream(java.io.FileDescriptor.err), true,
+                    java.nio.charset.StandardCharsets.UTF_8);
+            err.print(text);
+            err.flush();
+            // halt, not exit: the exit guard's hook would say it again, and a hook could wait on
+            // what the stuck thread holds.
+            Runtime.getRuntime().halt(1);
+        }
+
+        private Report report(List<Verdict> all) {
+            String aborted = ended == null ? null : ended + ": no answer within " + seconds(timeout) + " ("
+                    + Environment.TIMEOUT + "); the run ended there";
+            return new Report(verifier.header(), all, (System.nanoTime() - start) / 1e9, aborted);
+        }
+
+        private String endedText(List<Verdict> all) {
+            long notRun = all.stream().filter(r -> r.status() == Status.NOT_RUN).count();
+            return "plcvec: the run ended at " + ended + ", which gave no answer within " + seconds(timeout) + " ("
+                    + Environment.TIMEOUT + "); " + notRun + " vectors were not run";
         }
 
         /** The last test: the totals, the expectations file, and a failure if nothing was tested. */
         void end() {
             finished = true;
-            if (worker != null) {
-                worker.shutdown();
+            if (watchdog != null) {
+                watchdog.interrupt();
             }
             List<Verdict> all;
             synchronized (verdicts) {
                 all = List.copyOf(verdicts);
             }
-            String aborted = ended == null ? null : ended + ": no answer within " + seconds(timeout) + " ("
-                    + Environment.TIMEOUT + "); the run ended there";
-            Report report = new Report(verifier.header(), all, (System.nanoTime() - start) / 1e9, aborted);
+            Report report = report(all);
             System.out.print(report.totals());
             System.out.flush();
             if (write != null) {
@@ -269,9 +362,7 @@ public final class PlcvecTests {
                 System.out.println("plcvec: " + n + " known failures written to " + write);
             }
             if (ended != null) {
-                long notRun = all.stream().filter(r -> r.status() == Status.NOT_RUN).count();
-                throw quiet(new AssertionFailedError("plcvec: the run ended at " + ended + ", which gave no answer within "
-                        + seconds(timeout) + " (" + Environment.TIMEOUT + "); " + notRun + " vectors were not run"));
+                throw quiet(new AssertionFailedError(endedText(all)));
             }
             if (!report.passed() && report.failing().isEmpty()) {
                 throw quiet(new AssertionFailedError("plcvec: nothing tested: " + (all.isEmpty()
@@ -286,10 +377,11 @@ public final class PlcvecTests {
             if (finished) {
                 return null;
             }
-            String at = current;
-            return at != null
-                    ? "plcvec: the process ended while vector " + at + " was running (System.exit or a crash in the "
-                    + "implementation?); " + verdicts.size() + " of " + selected + " vectors were judged, the run did not finish"
+            long b = beat.get();
+            int at = (int) (b & 0xffff_ffffL) - 1;
+            return at >= 0
+                    ? "plcvec: the process ended while vector " + vectors.get(at).id() + " was running (System.exit or a crash in the "
+                    + "implementation?); " + verdicts.size() + " of " + vectors.size() + " vectors were judged, the run did not finish"
                     : null;
         }
     }
