@@ -354,3 +354,25 @@ def test_a_bench_that_outlives_its_bound_is_stopped_and_reported(tmp_path):
     script.chmod(0o755)
     figure = native_bench.invoke(script, timeout=0.5)
     assert figure == {"error": f"{script}: no result within 0.5 s (stopped)"}
+
+
+# ---------------------------------------------------------------------------------------------------
+# Without --baseline: each bench beside Python, and the guarded figure where a bench gives one
+
+
+def test_the_guarded_figure_is_printed_under_its_language_with_the_benchs_own_ratio(tmp_path, monkeypatch, capsys):
+    import plcvec_verify.bench
+
+    root = tmp_path / "repo"
+    _bench(root, "g", f"""echo '{_figure(3526, 4000, guarded_vectors_per_s=3000, guarded_ratio=0.9)}'\n""")
+    _bench(root, "u", f"""echo '{_figure(3526, 2000)}'\n""")
+    monkeypatch.setattr(plcvec_verify.bench, "in_process_rate", lambda vectors: (3526, 1000.0))
+    assert main(["bench-native", "--root", str(root), "--vectors", str(tmp_path)]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    g = next(i for i, line in enumerate(lines) if line.startswith("g "))
+    # 3000 vectors/s is 3.0 times Python's 1000; the ratio is the bench's own (0.9: against its
+    # unguarded judging, which need not be its headline figure), not 3000/4000 worked out here.
+    assert lines[g + 1].split() == ["g,", "under", "the", "per-vector", "bound", "3,526", "3,000", "3.0", "x", "0.90",
+                                    "of", "unguarded"]
+    # A bench without the guarded figure gets no such line.
+    assert [line for line in lines if "per-vector bound" in line] == [lines[g + 1]]

@@ -7,7 +7,9 @@ loading, and prints as its last line one JSON object:
     {"lang": "rust", "vectors": 2899, "passes": 20, "load_seconds": 0.041,
      "seconds": 0.0021, "vectors_per_s": 1380000, "note": "median of 20 passes after 3 warm-up"}
 
-(`seconds` is one pass). The Python figure is the same measurement with the Python reference
+(`seconds` is one pass). A bench may add `guarded_vectors_per_s`, the same vectors through the
+per-vector bound (PLCVEC_TIMEOUT) a user's test run puts on each, and `guarded_ratio`, that figure
+over the same judging without the bound; both are printed under its line. The Python figure is the same measurement with the Python reference
 (plcvec_verify.bench.in_process_rate), taken in this run, so each ratio compares like with like
 on the same machine at the same moment.
 
@@ -507,5 +509,11 @@ def run(args):
         label = f"{lang} ({figure.get('note', '')})" if figure.get("note") else lang
         print(f"{label[:50]:50} {int(figure.get('vectors', 0)):>8,} {rate:>12,.0f} {rate / python_rate:>9.1f}"
               + (f"   load {float(figure['load_seconds']):.3f} s" if "load_seconds" in figure else ""))
+        if "guarded_vectors_per_s" in figure:
+            # The same vectors through the per-vector bound a user's test run puts on each, and its
+            # share of the speed of the same judging without it (guarded_ratio, the bench's own).
+            guarded = float(figure["guarded_vectors_per_s"])
+            print(f"{'  ' + lang + ', under the per-vector bound':50} {int(figure.get('vectors', 0)):>8,} {guarded:>12,.0f} "
+                  f"{guarded / python_rate:>9.1f}   x {float(figure['guarded_ratio']):.2f} of unguarded")
     sys.stdout.flush()
     return 1 if failed else 0
