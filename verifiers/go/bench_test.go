@@ -21,7 +21,8 @@ func BenchmarkJudgeGoldenGuarded(b *testing.B) {
 		b.Fatal(err)
 	}
 	impl := ref.Implementation()
-	plan, err := plcvec.Prepare(impl, plcvec.Options{})
+	// The plan TestPlcvecReference's plcvec.Run makes in the child (PLCVEC_VECTORS, if set, too).
+	plan, err := plcvec.PrepareRun(impl, plcvec.Options{})
 	if err != nil {
 		b.Fatal(err)
 	}

@@ -44,3 +44,9 @@ func (g *Guarded) JudgeAll() (notPassed int) {
 }
 
 func (g *Guarded) Close() { g.src.close() }
+
+// PrepareRun is the plan Run makes of opts and the PLCVEC_* variables, as its child makes it.
+func PrepareRun(impl Implementation, opts Options) (*Plan, error) {
+	plan, _, err := prepareRun(impl, opts)
+	return plan, err
+}
