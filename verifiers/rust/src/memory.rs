@@ -91,7 +91,9 @@ impl<'v> Memory<'v> {
     }
 
     /// Write a device by name.
-    #[inline]
+    // Always inlined, into the emulator's crate too: an emulator names a flag as a constant
+    // (`SM709`), whose key (`pack`) then folds at compile time, and the write is a slot look-up.
+    #[inline(always)]
     pub fn set(&mut self, name: &str, value: Value) {
         match self.vector.slot(name) {
             Some(i) => self.values[i] = value,
@@ -182,7 +184,7 @@ impl<'v> Memory<'v> {
     }
 
     /// Write the bit `name`.
-    #[inline]
+    #[inline(always)]
     pub fn set_bit(&mut self, name: &str, on: bool) {
         self.set(name, Value::Bit(on));
     }

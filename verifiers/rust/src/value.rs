@@ -72,7 +72,7 @@ impl From<u16> for Value {
 /// path of every device access; 0 (no key) for a longer name, which is compared as text.
 /// Byte by byte, not through a copy of a slice of variable length (a call to `memcpy` and its
 /// branches on every device access), and at compile time for a constant name.
-#[inline]
+#[inline(always)]
 pub(crate) const fn pack(name: &str) -> u64 {
     let bytes = name.as_bytes();
     if bytes.is_empty() || bytes.len() > 8 {

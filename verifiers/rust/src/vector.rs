@@ -244,7 +244,7 @@ impl Vector {
         &self.scratch
     }
     /// The slot of a listed device.
-    #[inline]
+    #[inline(always)]
     pub fn slot(&self, name: &str) -> Option<usize> {
         match pack(name) {
             0 => self.devices.binary_search_by(|a| a.name().cmp(name)).ok(),
@@ -273,7 +273,8 @@ impl Vector {
         self.operand_index(name).map(|i| &self.operands[i].1)
     }
 
-    #[inline]
+    // Always inlined for the reason of `Memory::set`: the operand's name is a constant (`s1`).
+    #[inline(always)]
     fn operand_index(&self, name: &str) -> Option<usize> {
         match pack(name) {
             0 => self.operands.iter().position(|(n, _)| n == name),
@@ -283,7 +284,7 @@ impl Vector {
 
     /// The device of operand `name` and the slots of its first words found at load (`NO_SLOT`
     /// where there is none).
-    #[inline]
+    #[inline(always)]
     pub(crate) fn operand_device(&self, name: &str) -> Option<(&Address, &[u8; OPERAND_WORDS])> {
         let i = self.operand_index(name)?;
         Some((self.operands[i].1.device()?, &self.operand_slots[i]))
