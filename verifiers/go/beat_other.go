@@ -19,4 +19,8 @@ func (*beat) store(uint64) {}
 
 func (*beat) load() uint64 { return 0 }
 
+func (*beat) storeWritten(uint64) {}
+
+func (*beat) loadWritten() uint64 { return 0 }
+
 func (*beat) unmap() {}

@@ -1,40 +1,68 @@
 package plcvec
 
-import "time"
+import (
+	"bufio"
+	"fmt"
+	"os"
+	"time"
+)
 
 // Guarded judges the cases of a plan through the per-vector bound Run puts on each vector, for
-// BenchmarkJudgeGoldenGuarded: in a second run of this test binary on the named test (Run's
-// default), or in this process under the watchdog (Options.InProcess).
+// BenchmarkJudgeGoldenGuarded: as Run's second process does (serveCases, writing to a pipe and
+// keeping its position in a mapped file) with this process reading them as Run's parent does
+// (isolated.verdict), but with the serving side on a goroutine of this process, so that the
+// clock starts when the judging does, not when a process started a moment before is found to
+// be ready; or in this process under the watchdog (Options.InProcess).
 type Guarded struct {
-	plan *Plan
-	src  source
+	plan   *Plan
+	src    source
+	served chan bool
+	beat   *beat
 }
 
-// StartGuarded starts the source Run would use (the child has loaded its plan and said ready).
-func StartGuarded(plan *Plan, impl Implementation, test string, inChild bool, timeout time.Duration) (*Guarded, error) {
+// StartGuarded makes the source; Judge starts the judging.
+func StartGuarded(plan *Plan, impl Implementation, piped bool, timeout time.Duration) (*Guarded, error) {
 	g := &Guarded{plan: plan}
-	if !inChild {
+	if !piped {
 		g.src = newInProcess(plan, impl, timeout)
-	} else {
-		wanted := make([]bool, len(plan.Cases))
-		for i := range wanted {
-			wanted[i] = true
-		}
-		c, err := startChild(test, 1, wanted)
-		if err != nil {
-			return nil, err
-		}
-		g.src = newIsolated(plan, c, wanted, timeout)
+		return g, g.src.start()
 	}
-	if err := g.src.start(); err != nil {
-		g.src.close()
+	b, shared, err := newBeat()
+	if err != nil {
 		return nil, err
 	}
-	return g, nil
+	shared.Close() // one mapping serves both sides here
+	g.beat = b
+	r, w, err := os.Pipe()
+	if err != nil {
+		return nil, err
+	}
+	wanted := make([]bool, len(plan.Cases))
+	for i := range wanted {
+		wanted[i] = true
+	}
+	c := &child{lines: make(chan []string, 16), beat: g.beat, output: &tail{}, exited: make(chan struct{})}
+	c.read(r)
+	g.src = newIsolated(plan, c, wanted, timeout)
+	g.served = make(chan bool, 1)
+	go func() {
+		bw := bufio.NewWriter(w)
+		fmt.Fprintf(bw, "ready %s\n", planDigest(plan))
+		ok := bw.Flush() == nil
+		<-g.served // the go of JudgeAll
+		ok = ok && serveCases(plan, impl, wanted, bw, g.beat)
+		w.Close()
+		g.served <- ok
+	}()
+	return g, g.src.start()
 }
 
-// JudgeAll takes each case's verdict in turn, as Run does: the number that did not pass.
+// JudgeAll judges every case and takes each one's verdict in turn, as Run does: the number that
+// did not pass.
 func (g *Guarded) JudgeAll() (notPassed int) {
+	if g.served != nil {
+		g.served <- true
+	}
 	for i := range g.plan.Cases {
 		if w, _ := g.src.verdict(i); w.Status != StatusPass {
 			notPassed++
@@ -43,7 +71,18 @@ func (g *Guarded) JudgeAll() (notPassed int) {
 	return notPassed
 }
 
-func (g *Guarded) Close() { g.src.close() }
+// Close ends the source; false if the serving side failed.
+func (g *Guarded) Close() bool {
+	if g.served == nil {
+		g.src.close()
+		return true
+	}
+	ok := <-g.served
+	s := g.src.(*isolated)
+	s.tick.Stop()
+	g.beat.unmap()
+	return ok
+}
 
 // PrepareRun is the plan Run makes of opts and the PLCVEC_* variables, as its child makes it.
 func PrepareRun(impl Implementation, opts Options) (*Plan, error) {

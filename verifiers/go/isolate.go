@@ -27,12 +27,13 @@ import (
 // judges the vectors it is given and writes one line per vector to a pipe (file descriptor 3);
 // the parent reads them, one subtest per vector, and bounds each by PLCVEC_TIMEOUT.
 //
-// A system call per vector would cost more than judging it, so the child writes its lines in
-// batches (a failing vector's at once, before the next starts) and keeps its position in memory
-// it shares with the parent (a file both map, file descriptor 4; beat_unix.go): which vector it
-// is judging, or has judged. The parent watches that position for the bound, and when the child
-// ends or is stopped it knows from it which vector was running, and that the vectors judged
-// before it whose lines were not yet written passed.
+// A system call per vector would cost more than judging it, so the child writes a line only for
+// a vector that does not pass (at once, before the next starts), and keeps its position in
+// memory it shares with the parent (a file both map, file descriptor 4; beat_unix.go): which
+// vector it is judging, or has judged, and how many lines it has written by then. A vector the
+// position has passed, with no line of its own once every line written by then has been read,
+// passed. The parent watches the position for the bound, and when the child ends or is stopped
+// it knows from it which vector was running.
 
 const (
 	envChild  = "PLCVEC_GO_CHILD"  // set in the child: "<test name>\n<ordinal of the Run call>"
@@ -40,9 +41,11 @@ const (
 	// readyBound is how long the child may take to reach Run (load the suite, build the plan).
 	readyBound = 120 * time.Second
 	outputKept = 16 << 10 // bytes of the child's own output kept for a report
-	beatSize   = 8        // bytes of the shared position
-	// flushEvery is how many passing vectors' lines the child keeps before it writes them.
-	flushEvery = 64
+	beatSize   = 16       // bytes of the shared position: the position, then the lines written
+	// pollMin and pollMax bound how long the parent waits before it looks at the position again
+	// when nothing has come on the pipe: the wait doubles while the child has not moved.
+	pollMin = 50 * time.Microsecond
+	pollMax = 10 * time.Millisecond
 )
 
 // runCalls counts the Run calls of each test in this process, so that the child acts on the
@@ -122,7 +125,7 @@ func childServe(plan *Plan, impl Implementation, setupErr error) {
 	os.Exit(0)
 }
 
-// childJudge judges the wanted cases, a line each, keeping its position in b; it ends the process.
+// childJudge judges the cases $PLCVEC_GO_WANTED names (serveCases); it ends the process.
 func childJudge(plan *Plan, impl Implementation, w *bufio.Writer, b *beat) {
 	wanted, err := decodeWanted(os.Getenv(envWanted), len(plan.Cases))
 	if err != nil {
@@ -131,9 +134,18 @@ func childJudge(plan *Plan, impl Implementation, w *bufio.Writer, b *beat) {
 		os.Exit(0)
 	}
 	fmt.Fprintf(w, "ready %s\n", planDigest(plan))
-	w.Flush()
+	if w.Flush() != nil || !serveCases(plan, impl, wanted, w, b) {
+		os.Exit(1) // the parent has gone
+	}
+	os.Exit(0)
+}
+
+// serveCases judges the wanted cases, once the ready line is written, keeping its position in b
+// and writing a line for each case that does not pass; false when the pipe is gone.
+func serveCases(plan *Plan, impl Implementation, wanted []bool, w *bufio.Writer, b *beat) bool {
+	written := uint64(1) // lines, the ready line included
+	b.storeWritten(written)
 	var v Verdict
-	kept := 0
 	for i, c := range plan.Cases {
 		if !wanted[i] {
 			continue
@@ -142,37 +154,30 @@ func childJudge(plan *Plan, impl Implementation, w *bufio.Writer, b *beat) {
 		v = Verdict{}
 		c.judge(impl, &v)
 		if v.Status != StatusPass {
-			// Written before the position says judged: a case judged, with no line, passed.
+			// Written, and counted, before the position says judged.
 			line, _ := json.Marshal(wire{v.Status, v.Problems, v.Message, v.passes()})
 			fmt.Fprintf(w, "%d %s\n", i, line)
-			kept = flushEvery
-		} else {
-			w.WriteString(strconv.Itoa(i))
-			w.WriteByte('\n')
-			kept++
-		}
-		if kept >= flushEvery {
 			if w.Flush() != nil {
-				os.Exit(1) // the parent has gone
+				return false
 			}
-			kept = 0
+			written++
+			b.storeWritten(written)
 		}
 		b.store(2*uint64(i+1) + 1)
 	}
-	w.WriteString("done\n")
-	w.Flush()
-	os.Exit(0)
+	return true
 }
 
 // child is the parent's view of the second process.
 type child struct {
-	cmd     *exec.Cmd
-	lines   chan []string // the lines read at once; closed at the end of the pipe
-	pending []string      // lines received and not yet taken
-	beat    *beat         // the child's position (isolate.go's top)
-	output  *tail
-	exited  chan struct{}
-	err     error // the process's end, once exited is closed
+	cmd      *exec.Cmd
+	lines    chan []string // the lines read at once; closed at the end of the pipe
+	pending  []string      // lines received and not yet taken
+	received uint64        // lines received
+	beat     *beat         // the child's position (isolate.go's top)
+	output   *tail
+	exited   chan struct{}
+	err      error // the process's end, once exited is closed
 }
 
 // tail keeps the last bytes written to it: the child's own output, for a report.
@@ -212,20 +217,11 @@ func startChild(name string, ordinal int, wanted []bool) (*child, error) {
 		// The child lives no longer than the parent may.
 		args = append(args, "-test.timeout="+fl.Value.String())
 	}
-	shared, err := os.CreateTemp("", "plcvec-beat-")
+	b, shared, err := newBeat()
 	if err != nil {
 		return nil, err
 	}
-	// The file is only a name for the memory: gone from the folder at once, mapped by both.
-	os.Remove(shared.Name())
 	defer shared.Close()
-	if err := shared.Truncate(beatSize); err != nil {
-		return nil, err
-	}
-	b, err := mapBeat(shared)
-	if err != nil {
-		return nil, err
-	}
 	r, w, err := os.Pipe()
 	if err != nil {
 		b.unmap()
@@ -242,6 +238,36 @@ func startChild(name string, ordinal int, wanted []bool) (*child, error) {
 		return nil, err
 	}
 	w.Close() // the child holds the write end now: the pipe ends when the child does
+	c.read(r)
+	go func() {
+		c.err = c.cmd.Wait()
+		close(c.exited)
+	}()
+	return c, nil
+}
+
+// newBeat maps a new shared position; its file is for the child to map (closed by the caller).
+func newBeat() (*beat, *os.File, error) {
+	shared, err := os.CreateTemp("", "plcvec-beat-")
+	if err != nil {
+		return nil, nil, err
+	}
+	// The file is only a name for the memory: gone from the folder at once, mapped by both.
+	os.Remove(shared.Name())
+	if err := shared.Truncate(beatSize); err != nil {
+		shared.Close()
+		return nil, nil, err
+	}
+	b, err := mapBeat(shared)
+	if err != nil {
+		shared.Close()
+		return nil, nil, err
+	}
+	return b, shared, nil
+}
+
+// read passes the lines of r on to c.lines until r ends.
+func (c *child) read(r *os.File) {
 	go func() {
 		// The lines that have arrived go on together: a handoff per batch, not per line.
 		rd := bufio.NewReaderSize(r, 64<<10)
@@ -264,11 +290,6 @@ func startChild(name string, ordinal int, wanted []bool) (*child, error) {
 		close(c.lines)
 		r.Close()
 	}()
-	go func() {
-		c.err = c.cmd.Wait()
-		close(c.exited)
-	}()
-	return c, nil
 }
 
 // errEnded is a child that ended before its answer; errHung one that gave none within the bound.
@@ -290,31 +311,9 @@ func (c *child) next(bound time.Duration, timer *time.Timer) (string, error) {
 				return "", errEnded
 			}
 			c.pending = batch
+			c.received += uint64(len(batch))
 		case <-timer.C:
 			return "", errHung
-		}
-	}
-	line := c.pending[0]
-	c.pending = c.pending[1:]
-	return line, nil
-}
-
-// watched is the child's next line; errHung once the child's position has stayed the same for
-// bound (watched every tick), errEnded at the end of the pipe.
-func (c *child) watched(bound time.Duration, tick *time.Ticker, w *watch) (string, error) {
-	for len(c.pending) == 0 {
-		select {
-		case batch, ok := <-c.lines:
-			if !ok {
-				return "", errEnded
-			}
-			c.pending = batch
-		case now := <-tick.C:
-			if pos := c.beat.load(); pos != w.seen {
-				w.seen, w.since = pos, now
-			} else if now.Sub(w.since) >= bound {
-				return "", errHung
-			}
 		}
 	}
 	line := c.pending[0]
@@ -337,6 +336,7 @@ func (c *child) drain() {
 				return
 			}
 			c.pending = append(c.pending, batch...)
+			c.received += uint64(len(batch))
 		case <-time.After(10 * time.Second):
 			return
 		}

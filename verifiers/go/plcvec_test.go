@@ -496,16 +496,20 @@ func TestInProcess(t *testing.T) {
 	}
 }
 
-// looping never answers on the manual's TADD example; with exit set, it ends the process there.
+// looping never answers on the manual's TADD example; in mode "exits" it ends the process there,
+// in mode "wrong" it answers D30 = 99 there.
 type looping struct {
 	plcvec.Implementation
-	exit bool
+	mode string
 }
 
 func (l looping) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 	if req.ID == manualTADD {
-		if l.exit {
+		switch l.mode {
+		case "exits":
 			os.Exit(3)
+		case "wrong":
+			return manualAnswer{set("D30", plcvec.Word(99))}.Run(req)
 		}
 		for {
 		}
@@ -516,8 +520,9 @@ func (l looping) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 // TestTimeout: a vector that never answers is reported against its id within PLCVEC_TIMEOUT,
 // and the run ends, in a second process (the default) and in this one (Options.InProcess); a
 // vector that ends the process is reported against its id too. Every vector before it passed,
-// and says so, although the second process writes passing vectors' lines in batches. Run in a
-// child test binary, since the in-process watchdog ends its process.
+// and says so, although the second process writes no line for a vector that passes; a vector
+// that fails among passing ones fails alone. Run in a child test binary, since the in-process
+// watchdog ends its process.
 func TestTimeout(t *testing.T) {
 	selection := plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}}
 	if mode := os.Getenv("PLCVEC_TEST_LOOP"); mode != "" {
@@ -525,7 +530,7 @@ func TestTimeout(t *testing.T) {
 		if err != nil {
 			t.Fatal(err)
 		}
-		plcvec.Run(t, looping{ref.Implementation(), mode == "exits"}, plcvec.Options{InProcess: mode == "in-process",
+		plcvec.Run(t, looping{ref.Implementation(), mode}, plcvec.Options{InProcess: mode == "in-process",
 			Selection: selection})
 		return
 	}
@@ -546,7 +551,7 @@ func TestTimeout(t *testing.T) {
 	if before < 1 {
 		t.Fatalf("%s is not after another vector of its family (at %d): the test would show nothing", manualTADD, before)
 	}
-	for _, mode := range []string{"isolated", "in-process", "exits"} {
+	for _, mode := range []string{"isolated", "in-process", "exits", "wrong"} {
 		t.Run(mode, func(t *testing.T) {
 			cmd := exec.Command(os.Args[0], "-test.run", "^TestTimeout$", "-test.v")
 			cmd.Env = append(os.Environ(), "PLCVEC_TEST_LOOP="+mode, "PLCVEC_TIMEOUT=0.5")
@@ -555,16 +560,20 @@ func TestTimeout(t *testing.T) {
 			if err == nil {
 				t.Fatalf("a vector that never answers passed:\n%s", out)
 			}
-			said := "no answer within 0.5 s (PLCVEC_TIMEOUT)"
-			if mode == "exits" {
+			said, wantPassed := "no answer within 0.5 s (PLCVEC_TIMEOUT)", before
+			switch mode {
+			case "exits":
 				said = "the implementation ended the test process with exit status 3"
+			case "wrong":
+				// A vector that does not pass has a line of its own, between passing vectors that have none.
+				said, wantPassed = "--- FAIL: TestTimeout/"+plcvec.SubtestName(manualTADD), len(plan.Cases)-1
 			}
 			if !strings.Contains(string(out), manualTADD) || !strings.Contains(string(out), said) {
 				t.Errorf("the vector is not named with %q:\n%s", said, out)
 			}
 			// (In process, the watchdog ends the process before go test prints its subtests' results.)
-			if passed := strings.Count(string(out), "--- PASS: TestTimeout/"); mode != "in-process" && passed != before {
-				t.Errorf("%d vectors passed before %s, not %d:\n%s", passed, manualTADD, before, out)
+			if passed := strings.Count(string(out), "--- PASS: TestTimeout/"); mode != "in-process" && passed != wantPassed {
+				t.Errorf("%d vectors passed beside %s, not %d:\n%s", passed, manualTADD, wantPassed, out)
 			}
 			if d := time.Since(start); d > 60*time.Second {
 				t.Errorf("took %s", d)

@@ -202,6 +202,9 @@ type isolated struct {
 	timer   *time.Timer
 	tick    *time.Ticker
 	watch   watch
+	poll    *time.Timer
+	wait    time.Duration // the next wait for the position to move
+	known   int           // every wanted case up to this index is judged, its line (if any) read
 	done    bool
 	// Once the child has ended or been stopped: its last position, and what ended it.
 	ended   bool
@@ -210,7 +213,8 @@ type isolated struct {
 }
 
 func newIsolated(plan *Plan, c *child, wanted []bool, timeout time.Duration) *isolated {
-	return &isolated{plan: plan, child: c, wanted: wanted, timeout: timeout, last: -1, timer: time.NewTimer(time.Hour)}
+	return &isolated{plan: plan, child: c, wanted: wanted, timeout: timeout, last: -1, known: -1,
+		timer: time.NewTimer(time.Hour), poll: time.NewTimer(time.Hour), wait: pollMin}
 }
 
 func (s *isolated) start() error {
@@ -238,65 +242,104 @@ func (s *isolated) start() error {
 
 func (s *isolated) verdict(i int) (wire, bool) {
 	for {
-		var line string
-		var err error
-		if len(s.child.pending) > 0 || !s.ended {
-			line, err = s.child.watched(s.timeout, s.tick, &s.watch)
-		} else {
-			err = s.endedBy
+		if len(s.child.pending) > 0 {
+			line := s.child.pending[0]
+			j, w, perr := parseVerdict(line)
+			if perr != nil || j <= s.last || j >= len(s.plan.Cases) {
+				s.child.stop()
+				s.done, s.ended, s.endedBy = true, true, errEnded
+				s.child.pending = nil
+				return wire{Status: StatusError, Message: fmt.Sprintf("the test binary judging the vectors wrote something else on its pipe: %.80q", line)}, true
+			}
+			if j > i {
+				return wire{Status: StatusPass}, false // judged before j, with no line: passed
+			}
+			s.child.pending, s.last = s.child.pending[1:], j
+			if j == i {
+				return w, false
+			}
+			continue // a verdict of a case this process did not run (-failfast): read past it
 		}
-		if err != nil {
-			if !s.ended {
-				// Stop the child (a hung one; an ended one is gone already), and take the lines it
-				// wrote before it ended, then its last position.
-				s.ended, s.endedBy, s.done = true, err, true
-				if err == errHung {
-					s.child.stop()
-				}
-				s.child.drain()
-				s.pos = s.child.beat.load()
-				if len(s.child.pending) > 0 {
-					continue
-				}
-			}
-			// The child had judged case i, and it passed: its line was kept to be written with
-			// others (a case that did not pass is written before the position moves on).
-			if judged := int(s.pos/2) - 1; i < judged || (i == judged && s.pos%2 == 1) {
-				return wire{Status: StatusPass}, false
-			}
-			// The child was on the case its position names, or, between cases, on the next
-			// wanted one.
-			at := int(s.pos/2) - 1
-			if s.pos%2 == 1 || at < 0 {
-				at++
-				for at < len(s.wanted) && !s.wanted[at] {
-					at++
-				}
-			}
-			w := wire{Status: StatusError}
-			if s.endedBy == errHung {
-				w.Message = fmt.Sprintf("no answer within %s s (%s); the implementation was stopped and the run ends here",
-					strconv.FormatFloat(s.timeout.Seconds(), 'g', -1, 64), EnvTimeout)
-			} else {
-				w.Message = "the implementation " + s.child.ending() + "\n(while running this vector; the run ends here)"
-			}
-			if at != i && at < len(s.plan.Cases) {
-				w.Message = "while vector " + s.plan.Cases[at].id + " ran: " + w.Message
-			}
-			return w, true
+		if i <= s.known {
+			return wire{Status: StatusPass}, false
 		}
-		j, w, perr := parseVerdict(line)
-		if perr != nil || j <= s.last || j >= len(s.plan.Cases) {
-			s.child.stop()
-			s.done, s.ended, s.endedBy = true, true, errEnded
-			return wire{Status: StatusError, Message: fmt.Sprintf("the test binary judging the vectors wrote something else on its pipe: %.80q", line)}, true
+		if s.ended {
+			return s.endVerdict(i)
 		}
-		s.last = j
-		if j == i {
-			return w, false
+		// The position, then the lines written by then: if every one has been read, each case
+		// the position has passed and no line named passed.
+		pos := s.child.beat.load()
+		judged := int(pos/2) - 1
+		if pos%2 == 0 {
+			judged--
 		}
-		// A verdict of a case this process did not run (-failfast): read past it.
+		if s.child.received >= s.child.beat.loadWritten() && judged > s.known {
+			s.known, s.wait = judged, pollMin
+			continue
+		}
+		s.poll.Reset(s.wait)
+		select {
+		case batch, ok := <-s.child.lines:
+			if !s.poll.Stop() {
+				<-s.poll.C
+			}
+			if !ok {
+				s.end(errEnded)
+				continue
+			}
+			s.child.pending = batch
+			s.child.received += uint64(len(batch))
+		case now := <-s.tick.C:
+			if !s.poll.Stop() {
+				<-s.poll.C
+			}
+			if pos := s.child.beat.load(); pos != s.watch.seen {
+				s.watch.seen, s.watch.since = pos, now
+			} else if now.Sub(s.watch.since) >= s.timeout {
+				s.end(errHung)
+			}
+		case <-s.poll.C:
+			s.wait = min(2*s.wait, pollMax)
+		}
 	}
+}
+
+// end stops the child (a hung one; an ended one is gone already) and takes the lines it wrote
+// before it ended, then its last position.
+func (s *isolated) end(err error) {
+	s.ended, s.endedBy, s.done = true, err, true
+	if err == errHung {
+		s.child.stop()
+	}
+	s.child.drain()
+	s.pos = s.child.beat.load()
+}
+
+// endVerdict is case i's verdict once the child has ended, every line it wrote read.
+func (s *isolated) endVerdict(i int) (wire, bool) {
+	// The child had judged case i, and it passed: it wrote no line for it.
+	if judged := int(s.pos/2) - 1; i < judged || (i == judged && s.pos%2 == 1) {
+		return wire{Status: StatusPass}, false
+	}
+	// The child was on the case its position names, or, between cases, on the next wanted one.
+	at := int(s.pos/2) - 1
+	if s.pos%2 == 1 || at < 0 {
+		at++
+		for at < len(s.wanted) && !s.wanted[at] {
+			at++
+		}
+	}
+	w := wire{Status: StatusError}
+	if s.endedBy == errHung {
+		w.Message = fmt.Sprintf("no answer within %s s (%s); the implementation was stopped and the run ends here",
+			strconv.FormatFloat(s.timeout.Seconds(), 'g', -1, 64), EnvTimeout)
+	} else {
+		w.Message = "the implementation " + s.child.ending() + "\n(while running this vector; the run ends here)"
+	}
+	if at != i && at < len(s.plan.Cases) {
+		w.Message = "while vector " + s.plan.Cases[at].id + " ran: " + w.Message
+	}
+	return w, true
 }
 
 func (s *isolated) close() {
