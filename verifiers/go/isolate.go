@@ -43,7 +43,9 @@ const (
 	outputKept = 16 << 10 // bytes of the child's own output kept for a report
 	beatSize   = 16       // bytes of the shared position: the position, then the lines written
 	// pollMin and pollMax bound how long the parent waits before it looks at the position again
-	// when nothing has come on the pipe: the wait doubles while the child has not moved.
+	// when nothing has come on the pipe: the wait doubles each time, since the child does not
+	// wait for the parent (a longer wait only delays the subtests' reports; a line, the end of
+	// the pipe and the bound's tick each wake the parent at once).
 	pollMin = 50 * time.Microsecond
 	pollMax = 10 * time.Millisecond
 )

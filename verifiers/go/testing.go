@@ -203,7 +203,7 @@ type isolated struct {
 	tick    *time.Ticker
 	watch   watch
 	poll    *time.Timer
-	wait    time.Duration // the next wait for the position to move
+	wait    time.Duration // the next wait for the position to move: it only grows (pollMin to pollMax)
 	known   int           // every wanted case up to this index is judged, its line (if any) read
 	done    bool
 	// Once the child has ended or been stopped: its last position, and what ended it.
@@ -274,7 +274,7 @@ func (s *isolated) verdict(i int) (wire, bool) {
 			judged--
 		}
 		if s.child.received >= s.child.beat.loadWritten() && judged > s.known {
-			s.known, s.wait = judged, pollMin
+			s.known = judged
 			continue
 		}
 		s.poll.Reset(s.wait)
