@@ -13,6 +13,7 @@ import { fileURLToPath } from "node:url";
 const here = dirname(fileURLToPath(import.meta.url));
 const fixture = join(here, "..", "fixtures", "mutant-node-test.js");
 const adapter = join(here, "..", "src", "bin", "reference-adapter.js");
+const reporter = join(here, "..", "src", "reporter.js");
 const BOUND = { timeout: 120_000, encoding: "utf8" as const, maxBuffer: 64 * 1024 * 1024 };
 
 function nodeTest(args: string[], env: Record<string, string> = {}) {
@@ -28,6 +29,25 @@ test("node --test: a broken emulator fails, one test per vector named by its id,
   assert.match(run.stdout, /✖ fx5-time-add\/TADD\/[^\n]+/);
   assert.match(run.stdout, /step 0 D\d+: expected \d+, got \d+/);
   assert.match(run.stdout, /✔ fx5-time-add\/TADD\/manual-example\/program/);
+});
+
+test("node --test --test-reporter=plcvec/reporter: each failing vector's block once, then the run's text", () => {
+  const { NODE_TEST_CONTEXT: _, ...clean } = process.env;
+  const run = spawnSync(process.execPath, ["--test", `--test-reporter=${reporter}`, fixture], { ...BOUND, env: clean });
+  assert.equal(run.status, 1, run.stdout + run.stderr);
+  const failed = [...run.stdout.matchAll(/^FAIL (\S.*)$/gm)].map((m) => m[1]);
+  assert.ok(failed.length > 0, run.stdout);
+  assert.equal(new Set(failed).size, failed.length, "a failing vector's block printed twice");
+  // The run's text, which the dot reporter drops (vectorTests writes it on stderr as the file ends).
+  assert.match(run.stdout, /^(READINGS|NOT EXPLAINED by any reading): /m);
+  const totals = /^(\d+) vectors: \d+ pass, (\d+) fail/m.exec(run.stdout);
+  assert.ok(totals, run.stdout);
+  assert.equal(Number(totals[2]), failed.length);
+  assert.match(run.stdout, /^node:test: tests \d+, /m);
+  // Under the spec reporter the same run shows each failing test in two places.
+  const spec = nodeTest([]);
+  const once = failed[0]!;
+  assert.equal(spec.stdout.split(`FAIL ${once}\n`).length - 1, 2, "the spec reporter no longer repeats: update the README");
 });
 
 test("node --test --test-name-pattern selects vectors by id", () => {
