@@ -140,7 +140,7 @@ def test_time_example_orderings_are_exactly_those_that_work(report):
         if satisfied(TIME_BITS, table, values):
             for name in works:
                 works[name].add(ordering(values, name))
-    # NOTES.md: hA < hB < hC, mB < mC <= mA and sC <= sA < sB.
+    # What the printed table allows (derived from it by hand): hA < hB < hC, mB < mC <= mA and sC <= sA < sB.
     assert works == {"hour": {"A < B < C"}, "minute": {"B < C < A", "B < A = C"}, "second": {"C < A < B", "A = C < B"}}
     f = finding(report, "fx5-time-compare", "abc", "values-found")
     assert {k: set(v) for k, v in f.orderings.items()} == works

@@ -3,7 +3,7 @@ pages here, independently of the spec file that also records them."""
 import pytest
 
 # FX5 date comparison, first table (fx5-date-compare-LDDT.txt, "Ex."), A=2006/9/22 B=2007/6/23 C=2008/8/8
-# (NOTES.md). Columns A<B, B<C, A<C; rows by (s3).
+# (the figure of the FX5 Programming Manual (Instructions), JY997D55801). Columns A<B, B<C, A<C; rows by (s3).
 DATE_TABLE_1 = {1: (1, 0, 0), 2: (0, 1, 0), 3: (0, 1, 0), 4: (1, 1, 1), 5: (1, 1, 1), 6: (1, 1, 1), 7: (1, 1, 1), 0: (0, 0, 0)}
 # Second table (nonexistent dates A=2006/02/30, B=2007/03/29, C=2008/02/31), as printed.
 DATE_TABLE_2 = {1: (0, 0, 1), 2: (0, 0, 0), 3: (1, 0, 1), 4: (1, 1, 1), 5: (1, 1, 1), 6: (1, 1, 1), 7: (1, 1, 1), 0: (0, 0, 0)}
@@ -43,7 +43,8 @@ def test_comparison_tables(golden, family, table_id, table, errata):
 
 
 def test_time_example_values_satisfy_notes_constraint(families):
-    """NOTES.md: any values with hA < hB < hC, mB < mC <= mA and sC <= sA < sB reproduce the table."""
+    """Derived by hand from the table the FX5 Programming Manual (Instructions) prints: any values with
+    hA < hB < hC, mB < mC <= mA and sC <= sA < sB reproduce it."""
     v = next(e for e in families["fx5-time-compare"].doc["examples"] if e["id"] == "abc")["values"]
     A, B, C = v["A"], v["B"], v["C"]
     assert A["hour"] < B["hour"] < C["hour"]

@@ -144,8 +144,9 @@ int fx5_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step
         return evaluate(ref, v, step, date, condition);
     int rlo = step->rlo_in == 1;
     int logic = ref->follows[PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF];
-    /* "(Devices are used as a normally open contact.)"; NOTES.md (iQ-R processing times): an
-     * AND/OR comparison is not executed while the preceding logic is off: FX5-AND-OR-WHEN-OFF. */
+    /* "(Devices are used as a normally open contact.)"; the MELSEC iQ-R Programming Manual (CPU
+     * Module Instructions), processing-time tables: an AND/OR comparison is not executed while the
+     * preceding logic is off: FX5-AND-OR-WHEN-OFF. */
     if (info->form == PLCVEC_FORM_AND) {
         if (!rlo && logic != PLCVEC_FX5_AND_OR_WHEN_OFF_ALWAYS_EXECUTED)
             return 0;

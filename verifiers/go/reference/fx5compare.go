@@ -103,8 +103,9 @@ func configureFX5(r *Reference) (c fx5Config, err error) {
 }
 
 // Execute is one scan of one LD/AND/OR contact. "(Devices are used as a normally open
-// contact.)" NOTES.md (iQ-R processing times): an AND/OR comparison is not executed while the
-// preceding logic decides it (FX5-AND-OR-WHEN-OFF).
+// contact.)" The MELSEC iQ-R Programming Manual (CPU Module Instructions), processing-time
+// tables: an AND/OR comparison is not executed while the preceding logic decides it
+// (FX5-AND-OR-WHEN-OFF).
 func (c *fx5Compare) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
 	switch c.form {
 	case formLD:

@@ -178,8 +178,9 @@ class FX5CompareMachine:
             return self.evaluate(condition, operands, clock)
         rlo = bool(step["rlo_in"])
         logic = self.choices["FX5-AND-OR-WHEN-OFF"]
-        # "(Devices are used as a normally open contact.)"  NOTES.md (iQ-R processing
-        # times): "an AND/OR comparison is not executed while the preceding logic is off".
+        # "(Devices are used as a normally open contact.)"  The MELSEC iQ-R Programming Manual
+        # (processing-time tables): "an AND/OR comparison is not executed while the preceding
+        # logic is off".
         if form == "AND":
             if not rlo and logic in ("and-skipped", "short-circuit"):
                 return False

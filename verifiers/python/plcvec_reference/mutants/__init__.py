@@ -72,7 +72,7 @@ class DeviceRangeUnchecked:
         self.mem = _DictMemory(self.mem.values, self.mem.sizes)
 
 
-# Importing the modules registers their mutants, listed in the order of manual/NOTES.md.
+# Importing the modules registers their mutants, listed family by family.
 from . import fx5_compare, fx5_tadd, fc6a_hour, cp1e_dt  # noqa: E402,F401,I001
 
 __all__ = ["MUTANTS", "Mutant", "mutant", "with_operand", "DeviceRangeUnchecked"]

@@ -85,8 +85,9 @@ impl Fx5Compare {
         mem: &mut Memory<'_>,
     ) -> Result<bool, Refusal> {
         let logic = self.logic;
-        // "(Devices are used as a normally open contact.)" NOTES.md (iQ-R processing times): "an
-        // AND/OR comparison is not executed while the preceding logic is off".
+        // "(Devices are used as a normally open contact.)" The MELSEC iQ-R Programming Manual
+        // (CPU Module Instructions), processing-time tables: "an AND/OR comparison is not
+        // executed while the preceding logic is off".
         match form {
             Form::Ld => self.contact(kind, condition, vector, step, mem),
             Form::And => {

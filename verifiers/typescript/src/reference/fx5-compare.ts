@@ -117,7 +117,8 @@ export class Fx5CompareMachine extends BaseMachine {
     if (form === "LD") return this.evaluate(condition, operands, step.clock);
     const rlo = step.rlo_in === true;
     const logic = this.choice("FX5-AND-OR-WHEN-OFF");
-    // NOTES.md: "an AND/OR comparison is not executed while the preceding logic is off" (the default).
+    // The MELSEC iQ-R Programming Manual's processing-time tables: "an AND/OR comparison is not
+    // executed while the preceding logic is off" (the default).
     if (form === "AND") {
       if (!rlo && (logic === "and-skipped" || logic === "short-circuit")) return false;
       const contact = this.evaluate(condition, operands, step.clock);

@@ -62,8 +62,9 @@ public class Fx5Compare implements Emulator.Scan {
     /** One scan of one LD/AND/OR contact; returns the logic state after it. */
     @Override
     public Boolean execute(Step step) {
-        // "(Devices are used as a normally open contact.)" NOTES.md (iQ-R processing times): "an
-        // AND/OR comparison is not executed while the preceding logic is off" (FX5-AND-OR-WHEN-OFF).
+        // "(Devices are used as a normally open contact.)" The MELSEC iQ-R Programming Manual
+        // (CPU Module Instructions), processing-time tables: "an AND/OR comparison is not
+        // executed while the preceding logic is off" (FX5-AND-OR-WHEN-OFF).
         Fx5AndOrWhenOff logic = settings.fx5Logic;
         erred = false;
         boolean result = Contact.result(form, step, logic != Fx5AndOrWhenOff.ALWAYS_EXECUTED,
