@@ -83,6 +83,15 @@ def test_write_expectations_from_the_environment_is_read_back_as_known_failures(
     proc = subprocess.run(args, cwd=tmp_path, capture_output=True, text=True, timeout=300, env=env)
     assert proc.returncode == 0 and "1 xfailed" in proc.stdout, proc.stdout + proc.stderr
 
+
+def test_an_expectations_file_that_cannot_be_written_is_a_usage_error_not_a_traceback(tmp_path):
+    (tmp_path / "a-file").write_text("")
+    rc, out = pytest_in(tmp_path, *REFERENCE, "-k", "manual-example and TADD",
+                        "--plcvec-write-expectations", str(tmp_path / "a-file" / "known.toml"))
+    assert rc == 4, out                                 # pytest's usage error, as plcvec verify exits 2
+    assert f"--plcvec-write-expectations {tmp_path / 'a-file' / 'known.toml'}: " in out, out
+    assert "Traceback" not in out and "Error: [Errno" not in out, out
+
 # -- the gate holds under pytest as under `plcvec verify` ------------------------------------
 
 LAZY = REPO / "tests" / "adapters" / "lazy.py"

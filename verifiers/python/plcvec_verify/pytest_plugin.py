@@ -207,7 +207,12 @@ def _run(session):
         # As plcvec verify does: written before anything is reported, an aborted run's failures so far included.
         from .known import write_expectations
 
-        config._plcvec_written = write_expectations(options.write_expectations, report.results, "not yet triaged")
+        try:
+            config._plcvec_written = write_expectations(options.write_expectations, report.results, "not yet triaged")
+        except OSError as exc:
+            # The vectors were judged; the file could not be written: a usage error at the session's end.
+            config._plcvec_write_error = (f"plcvec: --plcvec-write-expectations {options.write_expectations}: "
+                                          f"{exc.strerror or exc}")
     if report.stopped:
         raise KeyboardInterrupt(report.aborted)
     results = {r.id: r for r in report.results}
@@ -258,6 +263,9 @@ def pytest_sessionfinish(session, exitstatus):
     """A session that passed but proves nothing (or too little) exits 5, like `plcvec verify`."""
     config = session.config
     if not _enabled(config) or not hasattr(config, "_plcvec_gate") or config.option.collectonly:
+        return
+    if getattr(config, "_plcvec_write_error", None):
+        session.exitstatus = pytest.ExitCode.USAGE_ERROR
         return
     gate = config._plcvec_gate
     report = getattr(config, "_plcvec_report", None)
@@ -314,6 +322,8 @@ def pytest_terminal_summary(terminalreporter, config):
         terminalreporter.write_line(line, yellow=True)
     if shortfall:
         terminalreporter.write_line(f"NOT PASSED (exit 5): {shortfall}", red=True)
+    if getattr(config, "_plcvec_write_error", None):
+        terminalreporter.write_line(config._plcvec_write_error, red=True)
     written = getattr(config, "_plcvec_written", None)
     if written is not None:
         terminalreporter.write_line(f"{written} known failures written to {config._plcvec_options.write_expectations}")
