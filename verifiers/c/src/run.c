@@ -15,12 +15,19 @@ typedef struct reason_count {
     size_t n;
 } reason_count;
 
+/* TEXT.md's order of every counted list (skip reasons, roll-up groups): the largest count first,
+ * then the text in byte order. */
+static int count_then_text(size_t n1, const char *s1, size_t n2, const char *s2)
+{
+    if (n1 != n2)
+        return n1 > n2 ? -1 : 1;
+    return strcmp(s1, s2);
+}
+
 static int by_count_then_reason(const void *a, const void *b)
 {
     const reason_count *x = a, *y = b;
-    if (x->n != y->n)
-        return x->n > y->n ? -1 : 1;
-    return strcmp(x->reason, y->reason);
+    return count_then_text(x->n, x->reason, y->n, y->reason);
 }
 
 #define SHOW_REASONS 12
@@ -242,9 +249,7 @@ typedef struct group {
 static int group_order(const void *a, const void *b)
 {
     const group *x = a, *y = b;
-    if (x->n != y->n)
-        return x->n > y->n ? -1 : 1;
-    return strcmp(x->key, y->key);
+    return count_then_text(x->n, x->key, y->n, y->key);
 }
 
 static int id_order(const void *a, const void *b)

@@ -88,6 +88,9 @@ def machine_free(text: str, header: str) -> str:
 
 
 def main() -> int:
+    if len(sys.argv) != 2 or not (Path(sys.argv[1]) / "libplcvec.a").is_file():
+        print(f"text_blocks: give the build folder that holds libplcvec.a ({__doc__.strip().splitlines()[-2].strip()})")
+        return 2
     build = Path(sys.argv[1]).resolve()
     answers = json.loads((TEXT / "answers.json").read_text(encoding="utf-8"))
     ids = current_cases()
