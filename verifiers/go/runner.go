@@ -39,6 +39,7 @@ type Plan struct {
 	// offered: the combinations each case's vector offers, worked out for the text on demand
 	offered map[*Case][]offer
 	byID    map[string]*Case // the cases by id, made on demand
+	digest  string           // planDigest's, made on demand
 }
 
 // Case is one selected vector with its request and expectation.

@@ -98,7 +98,8 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 				t.Errorf("plcvec: -run %q selects this vector, which plcvec did not foresee; choose vectors with PLCVEC_ID instead", runFlag())
 				return
 			}
-			w, end := src.verdict(i)
+			var w wire
+			end := src.verdict(i, &w)
 			v := verdictOf(c, w)
 			if plan.Known != nil {
 				plan.Known.apply(&v)
@@ -188,7 +189,7 @@ func canIsolate() bool {
 // source gives the verdict of each wanted case, in order; end says the run ends with it.
 type source interface {
 	start() error
-	verdict(i int) (w wire, end bool)
+	verdict(i int, w *wire) (end bool)
 	close()
 }
 
@@ -240,7 +241,7 @@ func (s *isolated) start() error {
 	return nil
 }
 
-func (s *isolated) verdict(i int) (wire, bool) {
+func (s *isolated) verdict(i int, out *wire) bool {
 	for {
 		if len(s.child.pending) > 0 {
 			line := s.child.pending[0]
@@ -249,22 +250,26 @@ func (s *isolated) verdict(i int) (wire, bool) {
 				s.child.stop()
 				s.done, s.ended, s.endedBy = true, true, errEnded
 				s.child.pending = nil
-				return wire{Status: StatusError, Message: fmt.Sprintf("the test binary judging the vectors wrote something else on its pipe: %.80q", line)}, true
+				*out = wire{Status: StatusError, Message: fmt.Sprintf("the test binary judging the vectors wrote something else on its pipe: %.80q", line)}
+				return true
 			}
 			if j > i {
-				return wire{Status: StatusPass}, false // judged before j, with no line: passed
+				*out = wire{Status: StatusPass} // judged before j, with no line: passed
+				return false
 			}
 			s.child.pending, s.last = s.child.pending[1:], j
 			if j == i {
-				return w, false
+				*out = w
+				return false
 			}
 			continue // a verdict of a case this process did not run (-failfast): read past it
 		}
 		if i <= s.known {
-			return wire{Status: StatusPass}, false
+			*out = wire{Status: StatusPass}
+			return false
 		}
 		if s.ended {
-			return s.endVerdict(i)
+			return s.endVerdict(i, out)
 		}
 		// The position, then the lines written by then: if every one has been read, each case
 		// the position has passed and no line named passed.
@@ -316,10 +321,11 @@ func (s *isolated) end(err error) {
 }
 
 // endVerdict is case i's verdict once the child has ended, every line it wrote read.
-func (s *isolated) endVerdict(i int) (wire, bool) {
+func (s *isolated) endVerdict(i int, out *wire) bool {
 	// The child had judged case i, and it passed: it wrote no line for it.
 	if judged := int(s.pos/2) - 1; i < judged || (i == judged && s.pos%2 == 1) {
-		return wire{Status: StatusPass}, false
+		*out = wire{Status: StatusPass}
+		return false
 	}
 	// The child was on the case its position names, or, between cases, on the next wanted one.
 	at := int(s.pos/2) - 1
@@ -339,7 +345,8 @@ func (s *isolated) endVerdict(i int) (wire, bool) {
 	if at != i && at < len(s.plan.Cases) {
 		w.Message = "while vector " + s.plan.Cases[at].id + " ran: " + w.Message
 	}
-	return w, true
+	*out = w
+	return true
 }
 
 func (s *isolated) close() {
@@ -364,9 +371,11 @@ type inProcess struct {
 	plan    *Plan
 	impl    Implementation
 	timeout time.Duration
-	running atomic.Int64 // index + 1 of the case being judged, 0 between cases
-	seq     atomic.Int64 // cases started: the watchdog sees progress without a clock read per case
-	stop    chan struct{}
+	// position is the child's in isolate.go, kept here: 2*(i+1) while case i is judged,
+	// 2*(i+1)+1 once it is, 0 before any. Two atomic stores per case and no clock read: each
+	// case moves it to a value it never had, which is the progress the watchdog looks for.
+	position atomic.Uint64
+	stop     chan struct{}
 }
 
 func newInProcess(plan *Plan, impl Implementation, timeout time.Duration) *inProcess {
@@ -385,32 +394,33 @@ func (s *inProcess) watch() {
 	}
 	ticker := time.NewTicker(tick)
 	defer ticker.Stop()
-	seen, since := int64(-1), time.Now()
+	seen, since := s.position.Load(), time.Now()
 	for {
 		select {
 		case <-s.stop:
 			return
 		case now := <-ticker.C:
-			if seq := s.seq.Load(); seq != seen {
-				seen, since = seq, now
+			if pos := s.position.Load(); pos != seen {
+				seen, since = pos, now
 				continue
 			}
-			if r := s.running.Load(); r > 0 && now.Sub(since) >= s.timeout {
+			// Unmoved for the bound, and on a case (even), not between two.
+			if seen%2 == 0 && seen > 0 && now.Sub(since) >= s.timeout {
 				fmt.Fprintf(os.Stderr, "plcvec: vector %s: no answer within %s s (%s); the run ends here\n",
-					s.plan.Cases[r-1].id, strconv.FormatFloat(s.timeout.Seconds(), 'g', -1, 64), EnvTimeout)
+					s.plan.Cases[seen/2-1].id, strconv.FormatFloat(s.timeout.Seconds(), 'g', -1, 64), EnvTimeout)
 				os.Exit(1)
 			}
 		}
 	}
 }
 
-func (s *inProcess) verdict(i int) (wire, bool) {
-	s.running.Store(int64(i) + 1)
-	s.seq.Add(1)
+func (s *inProcess) verdict(i int, out *wire) bool {
+	s.position.Store(2 * uint64(i+1))
 	var v Verdict
 	s.plan.Cases[i].judge(s.impl, &v)
-	s.running.Store(0)
-	return wire{v.Status, v.Problems, v.Message, v.passes()}, false
+	s.position.Store(2*uint64(i+1) + 1)
+	*out = wire{v.Status, v.Problems, v.Message, v.passes()}
+	return false
 }
 
 func (s *inProcess) close() { close(s.stop) }
