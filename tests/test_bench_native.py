@@ -119,11 +119,13 @@ def _recording_runner(calls, side, lang, fail_on=None):
     return run
 
 
-def test_each_side_is_built_once_then_the_rounds_alternate_baseline_then_current():
+def test_each_side_is_built_once_then_the_rounds_alternate_which_side_goes_first():
     calls = []
     runners = {side: {lang: _recording_runner(calls, side, lang) for lang in "xy"} for side in ("base", "cur")}
     results = compare(["x", "y"], runners["base"], runners["cur"], rounds=3)
-    one = [("base", "build"), ("cur", "build")] + [("base", "round"), ("cur", "round")] * 3
+    # Baseline first in rounds 1 and 3, this tree first in round 2: a drift over the run is shared.
+    one = [("base", "build"), ("cur", "build"), ("base", "round"), ("cur", "round"),
+           ("cur", "round"), ("base", "round"), ("base", "round"), ("cur", "round")]
     assert calls == [("x", *call) for call in one] + [("y", *call) for call in one]
     assert [(len(r.baseline), len(r.current), r.error) for r in results] == [(3, 3, None), (3, 3, None)]
 
@@ -136,7 +138,8 @@ def test_a_failure_ends_that_language_only_and_says_which_side():
     cur = {lang: _recording_runner(calls, "cur", lang, late if lang == "y" else None) for lang in "xyz"}
     x, y, z = compare(["x", "y", "z"], base, cur, rounds=3)
     assert x.error == "baseline: it broke" and not x.current_failed and x.current == []
-    assert y.error == "current, round 2: it broke" and y.current_failed and len(y.baseline) == 2
+    # Round 2 runs this tree first: its baseline side is not run after the failure.
+    assert y.error == "current, round 2: it broke" and y.current_failed and len(y.baseline) == 1
     assert z.error == "the baseline revision has no executable verifiers/z/bench"
     assert [c for c in calls if c[0] == "x"] == [("x", "base", "build")]
     assert [c for c in calls if c[0] == "z"] == []
@@ -161,6 +164,8 @@ def test_medians_spreads_and_ratios():
     assert cur["vectors_per_s"] == 99 and cur["spread"] == pytest.approx(33 / 99)
     assert s["ratio"] == pytest.approx(0.9)                       # 99 / 110
     assert s["round_ratios"] == pytest.approx((0.8, 121 / 120))   # 99/100, 121/120, 88/110
+    assert s["paired_ratio"] == pytest.approx(0.99)                # the middle one of 0.8, 0.99, 1.00833
+    assert s["best_ratio"] == pytest.approx(121 / 120)             # fastest current 121, fastest baseline 120
     assert s["cpu_ratio"] == pytest.approx(0.9)                   # 180 / 200
     assert base["seconds"] == pytest.approx(0.02) and cur["seconds"] == pytest.approx(0.05)
     assert base["peak_mib"] == 20 and cur["peak_mib"] is None      # not given in every round: not shown
@@ -182,15 +187,18 @@ def test_no_cpu_ratio_unless_both_sides_give_the_cpu_figure():
 def test_a_whole_run_against_a_revision(repo, capsys, tmp_path):
     assert main(["bench-native", "--root", str(repo), "--baseline", "old", "--rounds", "2"]) == 0
     out = capsys.readouterr().out
-    assert (tmp_path / "log").read_text().split("\n") == ["a old", "a new"] * 3 + [""]   # b is never run: not at `old`
+    # Built, round 1 baseline first, round 2 this tree first; b is never run: not at `old`.
+    assert (tmp_path / "log").read_text().split("\n") == ["a old", "a new", "a old", "a new", "a new", "a old", ""]
     summary_line = json.loads(out.strip().splitlines()[-1])
-    assert summary_line["compared"]["a"] == {"ratio": 0.5, "cpu_ratio": None, "baseline_vectors_per_s": 2000,
+    assert summary_line["compared"]["a"] == {"ratio": 0.5, "paired_ratio": 0.5, "best_ratio": 0.5,
+                                             "cpu_ratio": None, "baseline_vectors_per_s": 2000,
                                              "current_vectors_per_s": 1000, "baseline_vectors": [3678],
                                              "current_vectors": [3526]}
     assert summary_line["not_compared"] == {"b": "the baseline revision has no executable verifiers/b/bench"}
     rows = {line.split()[0]: line for line in out.splitlines() if line.startswith(("a ", "b "))}
     assert "3,678" in rows["a"] and "2,000" in rows["a"] and "0.500" in rows["a"]
-    assert "3,526" in out and "0.500x by the clock (rounds 0.500x to 0.500x)" in out
+    assert "3,526" in out and "0.500x by the clock (rounds 0.500x to 0.500x, median of the rounds 0.500x, " \
+                              "fastest round over fastest 0.500x)" in out
     assert rows["b"].startswith("b          not compared:")
     _clean(repo)
 

@@ -16,8 +16,9 @@ on the same machine at the same moment.
 `--baseline REV` compares each language's bench with the same bench of git revision REV instead:
 REV is checked out in a temporary `git worktree` (removed at the end, on an error or Ctrl-C too),
 each side's bench is run once to build it (that run's figure is not counted), then the two are run
-in turn, baseline then this tree, for `--rounds` rounds, so that both sides meet the same moments
-of a shared machine. Each side judges its own vectors: their counts may differ between revisions,
+in turn for `--rounds` rounds (baseline first in odd rounds, this tree first in even ones), so that
+both sides meet the same moments of a shared machine; besides the ratio of the medians it prints the
+median of the round-by-round ratios and the fastest round's ratio (`summary`). Each side judges its own vectors: their counts may differ between revisions,
 so vectors/s is the figure compared, and the table says how many vectors each side ran.
 
 `--same-vectors` makes both sides judge the same vectors, the folder `--vectors` (this tree's golden
@@ -66,7 +67,8 @@ def register(sub, spec_parent):
     b.add_argument("--baseline", metavar="REV",
                    help="compare each bench with the same bench of git revision REV (a temporary git worktree), "
                         "run in turn with this tree's in the same run; prints vectors/s of each (median and spread), "
-                        "the ratio this tree / REV, seconds per pass, loading seconds and peak memory")
+                        "the ratio this tree / REV (of the medians, the median of the rounds' ratios, and of the fastest "
+                        "rounds), seconds per pass, loading seconds and peak memory")
     b.add_argument("--same-vectors", action="store_true",
                    help="with --baseline: both sides judge the vectors of --vectors (PLCVEC_VECTORS to each bench) "
                         "instead of each its own revision's; a language whose sides report different counts is not compared")
@@ -246,7 +248,9 @@ class Comparison:
 
 def compare(langs, baseline_runners, current_runners, rounds, progress=lambda message: None):
     """Each language measured on both sides: one run of each that builds it (not counted), then
-    `rounds` rounds of baseline then current. `baseline_runners[lang](build=...)` and
+    `rounds` rounds, baseline then current in the odd rounds and current then baseline in the even
+    ones, so that a machine slowing down (or speeding up) over the run weighs on both sides alike
+    rather than on whichever always runs second. `baseline_runners[lang](build=...)` and
     `current_runners[lang](build=...)` return a bench's figure or {"error": ...}; a language whose
     baseline bench is absent has None.
     A failure on either side ends that language's comparison (its other rounds are not run)."""
@@ -261,8 +265,8 @@ def compare(langs, baseline_runners, current_runners, rounds, progress=lambda me
                  ("current", current_runners[lang], result.current))
         stages = [("building and a first run", "", True)] + [
             (f"round {i} of {rounds}", f", round {i}", False) for i in range(1, rounds + 1)]
-        for stage, where, build in stages:
-            for side, runner, figures in sides:
+        for n, (stage, where, build) in enumerate(stages):
+            for side, runner, figures in (sides if n % 2 == 1 or build else sides[::-1]):
                 progress(f"{lang}: {stage} ({side})")
                 figure = runner(build=build)
                 if "error" in figure:
@@ -287,7 +291,13 @@ def summary(result: Comparison) -> dict:
     """The figures of one compared language: per side the median vectors/s and its spread, the vector
     counts, the medians of seconds per pass, loading seconds and peak memory where given; the ratio
     current / baseline of the medians, the range of the round-by-round ratios, and the same ratio by
-    CPU time where both benches give cpu_vectors_per_s in every round."""
+    CPU time where both benches give cpu_vectors_per_s in every round.
+
+    Two more ratios, for a machine shared with other work, whose load comes and goes over seconds:
+    `paired_ratio`, the median of the round-by-round ratios (each of two runs a moment apart, so a
+    slow minute weighs on both), and `best_ratio`, the fastest round of this tree over the fastest
+    round of the baseline (work from other programs only ever slows a run down, so the fastest round
+    of each side is the one least disturbed: timeit's reading of repeated timings)."""
     out = {"lang": result.lang}
     for side in ("baseline", "current"):
         figures = getattr(result, side)
@@ -302,6 +312,8 @@ def summary(result: Comparison) -> dict:
     out["ratio"] = cur["vectors_per_s"] / base["vectors_per_s"]
     per_round = [c / b for b, c in zip(base["rounds"], cur["rounds"])]
     out["round_ratios"] = (min(per_round), max(per_round))
+    out["paired_ratio"] = statistics.median(per_round)
+    out["best_ratio"] = max(cur["rounds"]) / max(base["rounds"])
     out["cpu_ratio"] = (cur["cpu_vectors_per_s"] / base["cpu_vectors_per_s"]
                         if cur["cpu_vectors_per_s"] and base["cpu_vectors_per_s"] else None)
     return out
@@ -329,9 +341,9 @@ def same_counts(results):
 
 def print_comparison(results, base_label, rounds, file=None, vectors=None):
     file = file or sys.stdout
-    print(f"bench-native: this tree against {base_label}, {rounds} round(s) of baseline then this tree, after one "
-          "run of each that builds it (not counted); vectors/s is the median of the rounds, spread (max - min) / median",
-          file=file)
+    print(f"bench-native: this tree against {base_label}, {rounds} round(s) of the two in turn (baseline first in odd "
+          "rounds, this tree first in even ones), after one run of each that builds it (not counted); vectors/s is the "
+          "median of the rounds, spread (max - min) / median", file=file)
     if vectors is not None:
         print(f"both sides judged the same vectors: {vectors} (PLCVEC_VECTORS)", file=file)
     head = (f"{'language':10} {'side':16} {'vectors':>8} {'vectors/s':>12} {'spread':>7} {'s/pass':>10} "
@@ -351,12 +363,15 @@ def print_comparison(results, base_label, rounds, file=None, vectors=None):
                   f"{one['spread'] * 100:>6.1f}% {_num(one['seconds'], '.6f', 10)} {_num(one['load_seconds'], '.3f', 7)} "
                   f"{_num(one['peak_mib'], '.1f', 8)} {_num(one['cpu_vectors_per_s'], ',.0f', 13)}", file=file)
         low, high = s["round_ratios"]
-        print(f"{'':10} {'this / baseline':16} {s['ratio']:>20.3f}x by the clock (rounds {low:.3f}x to {high:.3f}x)"
+        print(f"{'':10} {'this / baseline':16} {s['ratio']:>20.3f}x by the clock (rounds {low:.3f}x to {high:.3f}x, "
+              f"median of the rounds {s['paired_ratio']:.3f}x, fastest round over fastest {s['best_ratio']:.3f}x)"
               + (f", {s['cpu_ratio']:.3f}x by CPU time" if s["cpu_ratio"] else ""), file=file)
     print("peak MiB: the benchmark program's own peak resident memory (not its build's); "
           "CPU vectors/s: where the bench reports it", file=file)
     print(json.dumps({"baseline": base_label, "rounds": rounds, "same_vectors": None if vectors is None else str(vectors),
                       "compared": {s["lang"]: {"ratio": round(s["ratio"], 4),
+                                               "paired_ratio": round(s["paired_ratio"], 4),
+                                               "best_ratio": round(s["best_ratio"], 4),
                                                "cpu_ratio": round(s["cpu_ratio"], 4) if s["cpu_ratio"] else None,
                                                "baseline_vectors_per_s": round(s["baseline"]["vectors_per_s"]),
                                                "current_vectors_per_s": round(s["current"]["vectors_per_s"]),
