@@ -24,7 +24,7 @@ import { summarize, type Report } from "./runner.js";
 import { selectWithEnvironment, type Selection } from "./selection.js";
 import { loadSuite, type Suite } from "./suite.js";
 import { describe, FAILING, type Verdict } from "./verdict.js";
-import { register, timeoutSeconds, watched } from "./watchdog.js";
+import { enter, leave, register, timeoutSeconds } from "./watchdog.js";
 
 /** A vector the implementation does not pass; its message is the whole field-level diff, with no stack to read past. */
 export class VectorFailure extends Error {
@@ -92,7 +92,13 @@ export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
   const verdicts: Verdict[] = [];
   const list = vectors.map((vector, i): Case => {
     const run = (): Verdict => {
-      const verdict = watched(first + i, () => applyKnown(judge(prepare(vector, followed), impl), known));
+      let verdict: Verdict;
+      enter(first + i);
+      try {
+        verdict = applyKnown(judge(prepare(vector, followed), impl), known);
+      } finally {
+        leave();
+      }
       verdicts.push(verdict);
       return verdict;
     };

@@ -4,13 +4,15 @@
  *
  * An implementation runs in the test's own thread (it is the user's object, closures and all), so
  * a synchronous loop that never returns cannot be interrupted there. A watchdog thread watches
- * instead: the runner stores the number of the vector in progress in shared memory (two atomic
- * stores per vector, nothing else), and when one vector has held it for PLCVEC_TIMEOUT seconds
- * the watchdog writes the vector's id to stderr and ends the process, which fails any test run.
+ * instead: the runner stores the number of the vector in progress in shared memory (on entry the
+ * number and a count of vectors started, on leaving a zero: three plain stores per vector, no
+ * call, allocation or system call), the watchdog reads it on its tick, and when one vector has
+ * held it for PLCVEC_TIMEOUT seconds the watchdog writes the vector's id to stderr and ends the
+ * process, which fails any test run.
  *
  * An implementation that calls `process.exit` half way, or `process.abort`, is caught at the
- * process's exit (or just before the abort): the vector in progress is named and the exit status
- * is made non-zero, so an early exit is never a green run.
+ * process's exit (or just before the abort), which reads the same number: the vector in progress
+ * is named and the exit status is made non-zero, so an early exit is never a green run.
  */
 import { writeSync } from "node:fs";
 import { Worker } from "node:worker_threads";
@@ -52,48 +54,50 @@ setInterval(() => {
 }, workerData.tick);
 `;
 
-/** [0]: 1 + the number of the vector in progress, 0 when none; [1]: vectors started so far. */
-let beat: Int32Array | undefined;
+/**
+ * [0]: 1 + the number of the vector in progress, 0 when none; [1]: vectors started so far. Made
+ * when the module loads (8 bytes; the watchdog that reads it starts at the first register()), so
+ * that enter/leave store into a constant, with no check that it exists or what it holds.
+ */
+const beat = new Int32Array(new SharedArrayBuffer(8));
 let watchdog: Worker | undefined;
 /** Every vector registered in this process, by number. */
 const ids: string[] = [];
-/** The number of the vector in progress, or -1. */
-let current = -1;
 
-function start(): Int32Array {
+function start(): Worker {
   const seconds = timeoutSeconds();
-  const shared = new Int32Array(new SharedArrayBuffer(8));
   const milliseconds = seconds * 1000;
-  watchdog = new Worker(WATCHDOG, {
+  const worker = new Worker(WATCHDOG, {
     eval: true,
-    workerData: { buffer: shared.buffer, seconds, milliseconds, tick: Math.max(10, Math.min(250, milliseconds / 8)) },
+    workerData: { buffer: beat.buffer, seconds, milliseconds, tick: Math.max(10, Math.min(250, milliseconds / 8)) },
     stdout: false,
     stderr: false,
   });
-  watchdog.unref();
+  worker.unref();
   process.on("exit", (code) => {
-    if (current < 0) return;
+    if (beat[0] === 0) return;
     say(`the implementation ended the process (exit status ${code}) while running this vector; the run ends here`);
     process.exitCode = 1;
   });
   const abort = process.abort.bind(process);
   process.abort = (): never => {
-    if (current >= 0) say("the implementation aborted the process while running this vector");
+    if (beat[0] !== 0) say("the implementation aborted the process while running this vector");
     return abort();
   };
-  return shared;
+  return worker;
 }
 
+/** Name the vector in progress (this thread's own last store says which) with `what`. */
 function say(what: string): void {
-  writeSync(2, `plcvec: vector ${ids[current] ?? "?"}: ${what}\n`);
+  writeSync(2, `plcvec: vector ${ids[beat[0]! - 1] ?? "?"}: ${what}\n`);
 }
 
 /** Number these vectors for the watchdog; returns the number of the first. */
 export function register(list: readonly string[]): number {
-  beat ??= start();
+  watchdog ??= start();
   const first = ids.length;
   ids.push(...list);
-  watchdog!.postMessage(list);
+  watchdog.postMessage(list);
   return first;
 }
 
@@ -103,32 +107,29 @@ export function register(list: readonly string[]): number {
  * its tick, not at once (an atomic store is a fence on every vector).
  */
 export function enter(n: number): void {
-  const b = beat!;
-  current = n;
-  b[0] = n + 1;
-  b[1]! += 1;
+  beat[0] = n + 1;
+  beat[1]! += 1;
 }
 
 /** The vector in progress is done. */
 export function leave(): void {
-  beat![0] = 0;
-  current = -1;
+  beat[0] = 0;
 }
 
-/** Run `body` as vector number `n` (from register), under the bound and the exit guard. */
-export function watched<T>(n: number, body: () => T): T {
-  enter(n);
-  try {
-    return body();
-  } finally {
-    leave();
-  }
-}
-
-/** Each of `list` run as `body(index)` under the guard, in order. */
+/**
+ * Each of `list` run as `body(index)` under the guard, in order. Each vector is bracketed by
+ * enter/leave itself, not through a callback made per vector: the guard allocates nothing per vector.
+ */
 export function guarded<T>(list: readonly string[], body: (index: number) => T): T[] {
   const first = register(list);
   const out: T[] = [];
-  for (let i = 0; i < list.length; i++) out.push(watched(first + i, () => body(i)));
+  for (let i = 0; i < list.length; i++) {
+    enter(first + i);
+    try {
+      out.push(body(i));
+    } finally {
+      leave();
+    }
+  }
   return out;
 }
