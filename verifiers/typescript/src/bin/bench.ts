@@ -22,12 +22,13 @@
  *   guarded_ratio          the median over iterations of unguarded seconds / guarded seconds of
  *                          the same iteration: the share of the unguarded speed the guard leaves;
  *   guarded_ratio_fastest  the fastest unguarded pass / the fastest guarded pass;
- *   guarded_vectors_per_s, unguarded_vectors_per_s  vectors / the median pass of each kind;
+ *   guarded_vectors_per_s, unguarded_loop_vectors_per_s  vectors / the median pass of each kind;
  *   guard_fixed_seconds    what the guard costs once per run, before any pass: the first
  *                          register(), which starts the watchdog thread (whose own start-up
  *                          then runs on that thread, during the warm-up), sets the exit hooks and
  *                          posts the ids. A pass has no cost of the guard's but enter/leave per
- *                          vector, so the ratios are the per-vector cost with nothing taken out.
+ *                          vector, so the ratios are the per-vector cost with nothing taken out
+                          (what another bench calls guarded_ratio_per_vector is guarded_ratio here).
  * The two passes are two functions, the same loop but for enter/leave, and the warm-up runs them
  * in turn, so that each is optimized before the first timed pass (node --trace-opt --trace-deopt:
  * both are compiled during the warm-up, nothing is compiled or deoptimized after it, and both call
@@ -171,7 +172,7 @@ console.log(
     vectors_per_s: Math.round(n / median),
     cpu_vectors_per_s: Math.round(n / medianOf(cpuSeconds)),
     guarded_vectors_per_s: Math.round(n / medianOf(guarded)),
-    unguarded_vectors_per_s: Math.round(n / medianOf(unguarded)),
+    unguarded_loop_vectors_per_s: Math.round(n / medianOf(unguarded)),
     guarded_ratio: Number(guardedRatio.toFixed(3)),
     guarded_ratio_fastest: Number(guardedRatioFastest.toFixed(3)),
     guard_fixed_seconds: Number(guardFixedSeconds.toFixed(4)),
