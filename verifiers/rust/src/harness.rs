@@ -43,6 +43,7 @@ use std::fs::{File, OpenOptions};
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Duration, Instant};
 
@@ -327,7 +328,7 @@ where
             plan,
             known,
             write,
-            watch: Watch { running: Mutex::new(Vec::new()), timeout, progress },
+            watch: Arc::new(Watch::new(timeout, progress)),
             failing: Mutex::new(Vec::new()),
             skips: Mutex::new(BTreeMap::new()),
             results: Mutex::new(Vec::new()),
@@ -399,7 +400,7 @@ where
         };
         if !args.list {
             shared.choose(&args, &trials);
-            Watch::start(Arc::clone(&shared));
+            shared.start_watchdog();
         }
         let started = Instant::now();
         let conclusion = libtest_mimic::run(&args, trials);
@@ -436,7 +437,7 @@ where
         let args = self.args.clone().unwrap_or_else(Arguments::from_args);
         let (trials, shared) = self.prepare(None).map_err(Stop::into_error)?;
         shared.choose(&args, &trials);
-        Watch::start(Arc::clone(&shared));
+        shared.start_watchdog();
         Ok(libtest_mimic::run(&args, trials))
     }
 }
@@ -455,7 +456,7 @@ struct Shared<F> {
     plan: Plan<'static>,
     known: Option<KnownFailures>,
     write: Option<PathBuf>,
-    watch: Watch,
+    watch: Arc<Watch>,
     /// Ids for the expectations file: failures and known failures that still fail.
     failing: Mutex<Vec<String>>,
     /// Skip reason -> how many.
@@ -516,6 +517,14 @@ where
             *slot = Some((verdict, answer));
         }
         outcome
+    }
+}
+
+impl<F: Send + Sync + 'static> Shared<F> {
+    /// The watchdog: a vector that takes longer than the timeout ends the run.
+    fn start_watchdog(self: &Arc<Self>) {
+        let shared = Arc::clone(self);
+        Watch::start(&self.watch, move |late| shared.end_on_timeout(late));
     }
 }
 
@@ -639,9 +648,15 @@ struct Watch {
     running: Mutex<Vec<(usize, Instant)>>,
     timeout: Duration,
     progress: Option<File>,
+    /// Set when the watchdog is to end (the bench's guard, dropped).
+    stopped: AtomicBool,
 }
 
 impl Watch {
+    fn new(timeout: Duration, progress: Option<File>) -> Watch {
+        Watch { running: Mutex::new(Vec::new()), timeout, progress, stopped: AtomicBool::new(false) }
+    }
+
     fn begin(&self, index: usize, id: &str) {
         if let Some(mut f) = self.progress.as_ref() {
             // One write each, so that lines from test threads do not interleave.
@@ -657,22 +672,73 @@ impl Watch {
         }
     }
 
-    /// The watchdog thread: it never holds the process (a thread does not keep it running).
-    fn start<F: Send + Sync + 'static>(shared: Arc<Shared<F>>) {
-        let tick = (shared.watch.timeout / 10).clamp(Duration::from_millis(5), Duration::from_millis(250));
+    /// The watchdog thread, which calls `late` with a vector that took longer than the timeout:
+    /// it never holds the process (a thread does not keep it running).
+    fn start(watch: &Arc<Watch>, late: impl Fn(usize) + Send + 'static) {
+        let watch = Arc::clone(watch);
+        let tick = (watch.timeout / 10).clamp(Duration::from_millis(5), Duration::from_millis(250));
         let spawned = std::thread::Builder::new().name("plcvec-watchdog".into()).spawn(move || loop {
             std::thread::sleep(tick);
-            let late = {
-                let running = shared.watch.running.lock().unwrap_or_else(|e| e.into_inner());
-                running.iter().find(|(_, at)| at.elapsed() > shared.watch.timeout).map(|&(i, _)| i)
+            if watch.stopped.load(Ordering::Relaxed) {
+                return;
+            }
+            let found = {
+                let running = watch.running.lock().unwrap_or_else(|e| e.into_inner());
+                running.iter().find(|(_, at)| at.elapsed() > watch.timeout).map(|&(i, _)| i)
             };
-            if let Some(index) = late {
-                shared.end_on_timeout(index);
+            if let Some(index) = found {
+                late(index);
             }
         });
         if let Err(e) = spawned {
             eprintln!("plcvec: cannot start the watchdog thread ({e}); vectors run without a time bound");
         }
+    }
+}
+
+/// The guard the harness puts around each vector (the watchdog and the progress record the
+/// supervised child writes), driven from outside the harness around [`judge_plan`]'s judging: the
+/// crate's benchmark sets the judging with it beside the same judging without. Not part of the
+/// API; it may change in any release.
+///
+/// [`judge_plan`]: crate::judge_plan
+#[doc(hidden)]
+pub struct Guard {
+    watch: Arc<Watch>,
+}
+
+#[doc(hidden)]
+impl Guard {
+    /// The guard a supervised child puts on a run: the watchdog started with `timeout`, and the
+    /// progress record appended to `progress` (an existing file) when given, as the child opens
+    /// the file its parent made. A vector that takes longer ends the process (status 101).
+    pub fn start(timeout: Duration, progress: Option<&std::path::Path>) -> std::io::Result<Guard> {
+        let progress = progress.map(|p| OpenOptions::new().append(true).open(p)).transpose()?;
+        let watch = Arc::new(Watch::new(timeout, progress));
+        Watch::start(&watch, move |late| {
+            eprintln!("plcvec: the vector at {late} of the plan took longer than {} s", timeout.as_secs_f64());
+            std::process::exit(i32::from(EXIT_FAILED));
+        });
+        Ok(Guard { watch })
+    }
+
+    /// [`judge_plan`](crate::judge_plan) with the guard around each vector, as the harness puts
+    /// it around each test.
+    pub fn judge_plan<I: Implementation + ?Sized>(&self, plan: &Plan<'_>, implementation: &mut I) -> Vec<Verdict> {
+        let vectors = plan.vectors();
+        crate::runner::judge_plan_marked(plan, implementation, |index, starts| {
+            if starts {
+                self.watch.begin(index, vectors[index].id());
+            } else {
+                self.watch.end(index, vectors[index].id());
+            }
+        })
+    }
+}
+
+impl Drop for Guard {
+    fn drop(&mut self) {
+        self.watch.stopped.store(true, Ordering::Relaxed);
     }
 }
 

@@ -236,18 +236,33 @@ pub(crate) fn unknown_known(known: &KnownFailures, suite: &Suite) -> Vec<String>
 
 /// Judge every vector of a plan (the benchmark's loop): unsupported instructions are skipped.
 pub fn judge_plan<I: Implementation + ?Sized>(plan: &Plan<'_>, implementation: &mut I) -> Vec<Verdict> {
+    judge_plan_marked(plan, implementation, |_, _| ())
+}
+
+/// [`judge_plan`] calling `mark(index, true)` before and `mark(index, false)` after the judging of
+/// each supported vector: the harness's guard around the same judging, for its benchmark
+/// ([`judge_plan`] marks nothing, and the compiler removes the calls).
+pub(crate) fn judge_plan_marked<I, M>(plan: &Plan<'_>, implementation: &mut I, mut mark: M) -> Vec<Verdict>
+where
+    I: Implementation + ?Sized,
+    M: FnMut(usize, bool),
+{
     // Ask once per instruction the build knows (an unknown one is asked every time), by the
     // enum's index: no hashing per vector.
     let mut asked: Vec<Option<bool>> = vec![None; Instruction::ALL.len()];
     let cpu_writes = implementation.cpu_writes();
     plan.iter()
-        .map(|(v, expected)| {
+        .enumerate()
+        .map(|(index, (v, expected))| {
             let supported = match v.known_instruction().and_then(|i| asked.get_mut(i as usize)) {
                 Some(answer) => *answer.get_or_insert_with(|| implementation.supports(v.instruction())),
                 None => implementation.supports(v.instruction()),
             };
             if supported {
-                judge_declared(implementation, v, expected, &cpu_writes)
+                mark(index, true);
+                let verdict = judge_declared(implementation, v, expected, &cpu_writes);
+                mark(index, false);
+                verdict
             } else {
                 Verdict {
                     status: Status::Skip,

@@ -6,11 +6,35 @@
 //! warm-up passes (at least `PASSES`, and as many more as fit in `SECONDS`, so that the thread's
 //! CPU time over them is measured to well under 1%). The last line is the JSON object
 //! `plcvec bench-native` reads.
+//!
+//! Then the guard a user's test run puts around each vector (`plcvec::harness`: the watchdog of
+//! `PLCVEC_TIMEOUT` and the progress record the supervised child keeps for its parent, which
+//! names the vector a child that ends half way was running), through the harness's own guard
+//! (`plcvec::harness::Guard`, hidden from the API's documentation: it exists for this bench)
+//! around the same judging as an unguarded pass, with a progress file as the child has it. Each
+//! iteration times one unguarded and one guarded pass back to back, which goes first alternating,
+//! so that both see the same state of a noisy machine:
+//!
+//! - `guarded_ratio`: the median over iterations of unguarded seconds / guarded seconds of the
+//!   same iteration (1.0: the guard costs nothing per vector);
+//! - `guarded_ratio_fastest`: the fastest unguarded pass / the fastest guarded pass;
+//! - `guarded_vectors_per_s`: the vectors / the median guarded pass;
+//! - `guard_fixed_seconds`: what the guard costs once per run, not per vector (starting the
+//!   watchdog thread and opening the progress file, and stopping the watchdog), the median of
+//!   `FIXED_SAMPLES` starts, kept out of the passes above: the guard is started once, before
+//!   them. A test run also starts the test binary a second time (the supervised child, which
+//!   loads the suite again: about `load_seconds`); that is not measured here.
+//!
+//! The harness's own work per test that is not the guard (an implementation built per vector,
+//! the known-failures bookkeeping, the verdicts kept for the run's text) and libtest-mimic's
+//! per-test cost are in neither pass.
 #![forbid(unsafe_code)]
 
-use std::time::Instant;
+use std::fs::File;
+use std::time::{Duration, Instant};
 
-use plcvec::{Choices, OnMemory, Plan, Status, Suite};
+use plcvec::harness::Guard;
+use plcvec::{Choices, OnMemory, Plan, Status, Suite, Verdict};
 use plcvec_reference::Reference;
 
 const WARM_UP: usize = 3;
@@ -20,6 +44,13 @@ const PASSES: usize = 20;
 const SECONDS: f64 = 2.0;
 /// A bound on the passes, whatever the clock says.
 const MAX_PASSES: usize = 1_000_000;
+/// Paired iterations (an unguarded and a guarded pass each): at least this many, and as many more
+/// as fit in `PAIRED_SECONDS`, up to `MAX_PAIRED`.
+const PAIRED: usize = 300;
+const PAIRED_SECONDS: f64 = 3.0;
+const MAX_PAIRED: usize = 100_000;
+/// Starts of the guard timed for its fixed cost.
+const FIXED_SAMPLES: usize = 21;
 
 fn main() -> std::process::ExitCode {
     let started = Instant::now();
@@ -43,9 +74,7 @@ fn main() -> std::process::ExitCode {
         let start = Instant::now();
         let verdicts = plcvec::judge_plan(&plan, &mut reference);
         let elapsed = start.elapsed().as_secs_f64();
-        // Every pass must be a passing run: a fast wrong answer is not a figure.
-        if let Some((v, verdict)) = plan.vectors().iter().zip(&verdicts).find(|(_, v)| v.status != Status::Pass) {
-            eprintln!("bench: the reference did not pass {}: {:?}", v.id(), verdict);
+        if !all_pass(&plan, &verdicts) {
             return std::process::ExitCode::from(1);
         }
         if pass >= WARM_UP {
@@ -86,10 +115,118 @@ fn main() -> std::process::ExitCode {
     };
     let fastest_rate = n as f64 / fastest;
     println!("{:50}", format!("loading and expectations: {load_seconds:.3} s"));
+
+    let guarded = match guarded(&plan, &mut reference) {
+        Ok(Some(g)) => g,
+        Ok(None) => return std::process::ExitCode::from(1),
+        Err(e) => {
+            eprintln!("bench: the guard's progress file: {e}");
+            return std::process::ExitCode::from(1);
+        }
+    };
+    let guarded_rate = n as f64 / guarded.seconds;
     println!(
-        "{{\"lang\": \"rust\", \"vectors\": {n}, \"passes\": {passes}, \"load_seconds\": {load_seconds:.4}, \"seconds\": {wall:.6}, \"vectors_per_s\": {rate:.0}{cpu_key}, \"note\": \"{cpu_note}median of {passes} passes after {WARM_UP} warm-up, {fastest_rate:.0}/s in the fastest pass\"}}"
+        "{:50} {:>8} {:>12.0}",
+        format!("under the harness's guard, median: pass {:.6} s", guarded.seconds),
+        n,
+        guarded_rate
+    );
+    println!(
+        "{:50}",
+        format!(
+            "guarded ratio {:.3} (median of {} paired passes), {:.3} fastest to fastest; fixed {:.6} s",
+            guarded.ratio, guarded.iterations, guarded.ratio_fastest, guarded.fixed
+        )
+    );
+    println!(
+        "{{\"lang\": \"rust\", \"vectors\": {n}, \"passes\": {passes}, \"load_seconds\": {load_seconds:.4}, \"seconds\": {wall:.6}, \"vectors_per_s\": {rate:.0}{cpu_key}, \"guarded_vectors_per_s\": {guarded_rate:.0}, \"guarded_ratio\": {:.3}, \"guarded_ratio_fastest\": {:.3}, \"guarded_iterations\": {}, \"guard_fixed_seconds\": {:.6}, \"note\": \"{cpu_note}median of {passes} passes after {WARM_UP} warm-up, {fastest_rate:.0}/s in the fastest pass\"}}",
+        guarded.ratio, guarded.ratio_fastest, guarded.iterations, guarded.fixed
     );
     std::process::ExitCode::SUCCESS
+}
+
+/// Whether every verdict is a pass (a fast wrong answer is not a figure); if not, says which.
+fn all_pass(plan: &Plan<'_>, verdicts: &[Verdict]) -> bool {
+    match plan.vectors().iter().zip(verdicts).find(|(_, v)| v.status != Status::Pass) {
+        Some((v, verdict)) => {
+            eprintln!("bench: the reference did not pass {}: {:?}", v.id(), verdict);
+            false
+        }
+        None => true,
+    }
+}
+
+struct Guarded {
+    /// The median guarded pass, seconds.
+    seconds: f64,
+    ratio: f64,
+    ratio_fastest: f64,
+    iterations: usize,
+    fixed: f64,
+}
+
+/// The paired passes, unguarded and guarded, with the progress record in a file of the temporary
+/// folder (as the supervised child's); `None` when a pass did not pass.
+fn guarded(plan: &Plan<'_>, reference: &mut OnMemory<Reference>) -> std::io::Result<Option<Guarded>> {
+    let path = std::env::temp_dir().join(format!("plcvec-bench-progress-{}", std::process::id()));
+    let result = paired(plan, reference, &path);
+    let _ = std::fs::remove_file(&path);
+    result
+}
+
+fn paired(
+    plan: &Plan<'_>,
+    reference: &mut OnMemory<Reference>,
+    path: &std::path::Path,
+) -> std::io::Result<Option<Guarded>> {
+    // The record grows by each guarded pass; emptied between passes (untimed), so that each pass
+    // writes to a file the size a run's is.
+    let record = File::create(path)?;
+    let timeout = Duration::from_secs_f64(plcvec::harness::DEFAULT_TIMEOUT_S);
+    let mut fixed = Vec::new();
+    for _ in 0..FIXED_SAMPLES {
+        let start = Instant::now();
+        drop(Guard::start(timeout, Some(path))?);
+        fixed.push(start.elapsed().as_secs_f64());
+    }
+    let guard = Guard::start(timeout, Some(path))?;
+    let (mut unguarded, mut guarded, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
+    let mut measuring = None;
+    for iteration in 0..WARM_UP + MAX_PAIRED {
+        if iteration == WARM_UP {
+            measuring = Some(Instant::now());
+        }
+        record.set_len(0)?;
+        let mut times = [0.0; 2]; // unguarded, guarded
+        for which in [iteration % 2, 1 - iteration % 2] {
+            let start = Instant::now();
+            let verdicts =
+                if which == 0 { plcvec::judge_plan(plan, reference) } else { guard.judge_plan(plan, reference) };
+            times[which] = start.elapsed().as_secs_f64();
+            if !all_pass(plan, &verdicts) {
+                return Ok(None);
+            }
+        }
+        if iteration >= WARM_UP {
+            unguarded.push(times[0]);
+            guarded.push(times[1]);
+            ratios.push(times[0] / times[1]);
+        }
+        if ratios.len() >= PAIRED && measuring.is_some_and(|since| since.elapsed().as_secs_f64() >= PAIRED_SECONDS) {
+            break;
+        }
+    }
+    drop(guard);
+    let iterations = ratios.len();
+    let seconds = median(&mut guarded);
+    median(&mut unguarded);
+    Ok(Some(Guarded {
+        seconds,
+        ratio: median(&mut ratios),
+        ratio_fastest: unguarded[0] / guarded[0],
+        iterations,
+        fixed: median(&mut fixed),
+    }))
 }
 
 fn median(values: &mut [f64]) -> f64 {
