@@ -28,7 +28,11 @@
 //! - The vectors run in a child process of the test binary (the binary starts itself once
 //!   more), so an implementation that ends the process half way (`exit(0)`, an abort) fails
 //!   the run, naming the vector it was running. `main` therefore runs twice: keep it to the call
-//!   of [`run`]. [`Harness::in_process`] gives that guard up.
+//!   of [`run`]. [`Harness::in_process`] gives that guard up. The child records nothing per
+//!   vector (that would cost more than judging it): when it ends early, the vectors are run once
+//!   more, each recorded, that run's output set aside (`main` runs a third time), and the vector
+//!   that run ends on is named; when it does not end early, the run still fails, saying that the
+//!   vector cannot be named.
 //! - A vector that takes longer than `PLCVEC_TIMEOUT` ends the run, naming the vector: an
 //!   error, the vectors not yet judged not run, the run's text with `ABORTED: <why>`, and the
 //!   expectations file written with the failures so far, as `plcvec verify` reports an aborted run.
@@ -43,7 +47,7 @@ use std::fs::{File, OpenOptions};
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Duration, Instant};
 
@@ -72,8 +76,18 @@ pub const EXIT_FAILED: u8 = 101;
 pub const DEFAULT_TIMEOUT_S: f64 = 10.0;
 
 /// Set by the supervising process for the child that runs the vectors: the file in which the
-/// child records each vector as it starts and ends (internal; not for users).
+/// child notes that the run came to its end (internal; not for users).
 const PROGRESS_ENV: &str = "PLCVEC_HARNESS_PROGRESS";
+/// Set by the supervising process, with `PROGRESS_ENV`, for the child that runs the vectors once
+/// more to find the one a run ended on: it records each vector as it starts and ends, and writes
+/// no expectations file (internal; not for users).
+const EACH_VECTOR_ENV: &str = "PLCVEC_HARNESS_EACH_VECTOR";
+
+/// The file a supervised child tells its parent through, and whether it records each vector.
+struct Progress {
+    file: File,
+    each_vector: bool,
+}
 
 /// Run every selected vector as its own test with implementations `factory` builds (one per
 /// vector, so nothing carries over), and return the process's exit code.
@@ -271,7 +285,7 @@ where
         Ok(self.prepare(None).map_err(Stop::into_error)?.0)
     }
 
-    fn prepare(self, progress: Option<File>) -> std::result::Result<(Vec<Trial>, Arc<Shared<F>>), Stop> {
+    fn prepare(self, progress: Option<Progress>) -> std::result::Result<(Vec<Trial>, Arc<Shared<F>>), Stop> {
         let suite = match self.suite {
             Some(s) => s,
             None => Suite::from_env()?,
@@ -288,7 +302,11 @@ where
         };
         let known_path = self.known_failures.or_else(|| env_path("PLCVEC_KNOWN_FAILURES"));
         let known = known_path.map(KnownFailures::load).transpose()?;
-        let write = self.write_expectations.or_else(|| env_path("PLCVEC_WRITE_EXPECTATIONS"));
+        // The run again to find a vector writes no expectations: the run it repeats ended early.
+        let write = match &progress {
+            Some(p) if p.each_vector => None,
+            _ => self.write_expectations.or_else(|| env_path("PLCVEC_WRITE_EXPECTATIONS")),
+        };
         let unknown = selection.unknown_names(suite);
         if !unknown.is_empty() {
             return Err(Stop::Usage(Error::new(format!(
@@ -315,6 +333,18 @@ where
         }
         let (name, choices, cpu_writes) = (probe.name(), probe.interpretations(), probe.cpu_writes());
         drop(probe);
+        let (progress, record) = match progress {
+            Some(Progress { file, each_vector: true }) => {
+                let record = file
+                    .try_clone()
+                    .and_then(|copy| Record::create(copy, plan.vectors().iter().map(|v| v.id())))
+                    .map_err(|e| Error::new(format!("cannot write the harness's progress file: {e}")))?;
+                (Some(file), Some(record))
+            }
+            Some(Progress { file, each_vector: false }) => (Some(file), None),
+            None => (None, None),
+        };
+        let watch = Arc::new(Watch::new(plan.len(), timeout, progress, record));
         let mut trials = Vec::new();
         if let Some(k) = &known {
             for e in k.unknown_ids(|id| suite.get(id).is_some()) {
@@ -328,7 +358,7 @@ where
             plan,
             known,
             write,
-            watch: Arc::new(Watch::new(timeout, progress)),
+            watch,
             failing: Mutex::new(Vec::new()),
             skips: Mutex::new(BTreeMap::new()),
             results: Mutex::new(Vec::new()),
@@ -369,24 +399,25 @@ where
         if self.isolated && progress_path.is_none() && !args.list {
             return supervise();
         }
-        let progress = match progress_path.as_deref().map(|p| OpenOptions::new().append(true).open(p)) {
-            Some(Ok(f)) => Some(f),
+        let each_vector = std::env::var_os(EACH_VECTOR_ENV).is_some();
+        let progress = match progress_path.as_deref().map(|p| OpenOptions::new().write(true).open(p)) {
+            Some(Ok(file)) => Some(Progress { file, each_vector }),
             Some(Err(e)) => {
                 eprintln!("plcvec: cannot write the harness's progress file: {e}");
                 return ExitCode::from(EXIT_USAGE);
             }
             None => None,
         };
-        let marker = progress.as_ref().and_then(|f| f.try_clone().ok());
+        let marker = progress.as_ref().and_then(|p| p.file.try_clone().ok());
         let code = self.run_here(args, progress);
         // The supervisor reads this line as "the run came to its end", not ended half way.
-        if let Some(mut f) = marker {
-            let _ = f.write_all(b"=done\n");
+        if let Some(f) = marker {
+            Record::came_to_end(&f);
         }
         ExitCode::from(code)
     }
 
-    fn run_here(self, args: Arguments, progress: Option<File>) -> u8 {
+    fn run_here(self, args: Arguments, progress: Option<Progress>) -> u8 {
         let (trials, shared) = match self.prepare(progress) {
             Ok(prepared) => prepared,
             Err(Stop::Usage(e)) => {
@@ -479,10 +510,12 @@ where
 {
     fn judge_one(&self, index: usize) -> std::result::Result<Completion, Failed> {
         let (vector, expected) = self.plan.get(index).expect("index within the plan");
-        self.watch.begin(index, vector.id());
+        // Everything of the implementation's runs under the guard: building it, judging, the
+        // failing answer asked again, dropping them.
+        self.watch.begin(index, 1);
         let mut implementation = (self.factory)();
         let mut verdict = judge(&mut implementation, vector, expected);
-        self.watch.end(index, vector.id());
+        drop(implementation);
         // The failing answer, once more from a new implementation: what the roll-up judges
         // under the other alternatives.
         let answer = (verdict.status == Status::Fail).then(|| {
@@ -495,6 +528,7 @@ where
                 Vec::new()
             }
         });
+        self.watch.end(index, 1);
         if matches!(verdict.status, Status::Fail | Status::Error) {
             self.failing.lock().unwrap_or_else(|e| e.into_inner()).push(vector.id().to_owned());
         }
@@ -613,8 +647,8 @@ impl<F> Shared<F> {
             eprintln!("{line}");
         }
         eprintln!("plcvec: {why}");
-        if let Some(mut f) = self.watch.progress.as_ref() {
-            let _ = f.write_all(format!("!{id}\n=done\n").as_bytes());
+        if let Some(file) = &self.watch.progress {
+            Record::came_to_end(file);
         }
         std::process::exit(i32::from(EXIT_FAILED));
     }
@@ -643,56 +677,168 @@ impl<F> Shared<F> {
 /// The per-vector bound and the record of what is running: a thread ends the run when a
 /// vector takes longer than the timeout, naming it; the supervising process reads the record
 /// when the process ends early.
+///
+/// Judging a vector of the golden set takes well under a microsecond, and a system call takes
+/// longer: what the guard does per vector is two atomic stores. No lock, no clock, no allocation,
+/// no system call: the watchdog reads the vectors' states on its tick and times a vector from the
+/// tick that first saw it running. Only the child that runs the vectors again to find the one a
+/// run ended on (`supervise`) also writes each vector's start and end to its record.
 struct Watch {
-    /// (index in the plan, when it started) of each vector being judged.
-    running: Mutex<Vec<(usize, Instant)>>,
+    /// Per vector of the plan: `pass << 1 | 1` while it is judged, `pass << 1` once judged (0:
+    /// not yet started). The pass tells the watchdog a vector judged again (the bench's guard
+    /// judges a plan many times; the harness, once) from one still running.
+    states: Box<[AtomicU32]>,
     timeout: Duration,
+    /// The supervised child's file, for the note that the run came to its end.
     progress: Option<File>,
+    /// The record of each vector, when this child runs the vectors again to find one.
+    record: Option<Record>,
     /// Set when the watchdog is to end (the bench's guard, dropped).
     stopped: AtomicBool,
 }
 
 impl Watch {
-    fn new(timeout: Duration, progress: Option<File>) -> Watch {
-        Watch { running: Mutex::new(Vec::new()), timeout, progress, stopped: AtomicBool::new(false) }
+    fn new(vectors: usize, timeout: Duration, progress: Option<File>, record: Option<Record>) -> Watch {
+        let states = (0..vectors).map(|_| AtomicU32::new(0)).collect();
+        Watch { states, timeout, progress, record, stopped: AtomicBool::new(false) }
     }
 
-    fn begin(&self, index: usize, id: &str) {
-        if let Some(mut f) = self.progress.as_ref() {
-            // One write each, so that lines from test threads do not interleave.
-            let _ = f.write_all(format!("+{id}\n").as_bytes());
+    fn begin(&self, index: usize, pass: u32) {
+        if let Some(record) = &self.record {
+            record.mark(index, Record::RUNNING);
         }
-        self.running.lock().unwrap_or_else(|e| e.into_inner()).push((index, Instant::now()));
+        self.states[index].store(pass << 1 | 1, Ordering::Relaxed);
     }
 
-    fn end(&self, index: usize, id: &str) {
-        self.running.lock().unwrap_or_else(|e| e.into_inner()).retain(|&(i, _)| i != index);
-        if let Some(mut f) = self.progress.as_ref() {
-            let _ = f.write_all(format!("-{id}\n").as_bytes());
+    fn end(&self, index: usize, pass: u32) {
+        self.states[index].store(pass << 1, Ordering::Relaxed);
+        if let Some(record) = &self.record {
+            record.mark(index, Record::JUDGED);
         }
     }
 
     /// The watchdog thread, which calls `late` with a vector that took longer than the timeout:
-    /// it never holds the process (a thread does not keep it running).
+    /// it never holds the process (a thread does not keep it running). A vector started at most
+    /// one tick before the tick that first sees it running, and is late once that tick is a
+    /// timeout old: never before it has taken the timeout, at most two ticks after.
     fn start(watch: &Arc<Watch>, late: impl Fn(usize) + Send + 'static) {
         let watch = Arc::clone(watch);
         let tick = (watch.timeout / 10).clamp(Duration::from_millis(5), Duration::from_millis(250));
-        let spawned = std::thread::Builder::new().name("plcvec-watchdog".into()).spawn(move || loop {
-            std::thread::sleep(tick);
-            if watch.stopped.load(Ordering::Relaxed) {
-                return;
-            }
-            let found = {
-                let running = watch.running.lock().unwrap_or_else(|e| e.into_inner());
-                running.iter().find(|(_, at)| at.elapsed() > watch.timeout).map(|&(i, _)| i)
-            };
-            if let Some(index) = found {
-                late(index);
+        let spawned = std::thread::Builder::new().name("plcvec-watchdog".into()).spawn(move || {
+            // (index, its state, the tick that first saw it running in that state)
+            let mut running: Vec<(usize, u32, Instant)> = Vec::new();
+            loop {
+                std::thread::sleep(tick);
+                if watch.stopped.load(Ordering::Relaxed) {
+                    return;
+                }
+                let now = Instant::now();
+                running.retain(|&(i, state, _)| watch.states[i].load(Ordering::Relaxed) == state);
+                for (i, state) in watch.states.iter().enumerate() {
+                    let state = state.load(Ordering::Relaxed);
+                    if state & 1 == 1 && !running.iter().any(|&(j, s, _)| j == i && s == state) {
+                        running.push((i, state, now));
+                    }
+                }
+                if let Some(&(index, _, _)) = running.iter().find(|(_, _, seen)| now - *seen >= watch.timeout) {
+                    late(index);
+                }
             }
         });
         if let Err(e) = spawned {
             eprintln!("plcvec: cannot start the watchdog thread ({e}); vectors run without a time bound");
         }
+    }
+}
+
+/// The file the supervised child shares with its parent (`PROGRESS_ENV`), which the parent reads
+/// when the child has ended: the number of vectors (8 bytes, little-endian), a byte that says the
+/// run came to its end, a byte per vector (not started, being judged, judged), then each vector's
+/// id (its length in bytes, 4 bytes little-endian, then the id: an id may hold any character). A child that runs the vectors for the first time writes only the byte that
+/// says it came to its end (the rest reads as no vector); the child that runs them again to find
+/// the one a run ended on writes it all: each mark is one write of one byte at the vector's own
+/// place, so that the file says exactly what was running whatever the test threads.
+struct Record {
+    file: File,
+}
+
+impl Record {
+    const RUNNING: u8 = 1;
+    const JUDGED: u8 = 2;
+    /// Where the byte that says the run came to its end is.
+    const END_AT: u64 = 8;
+    /// Where the vectors' bytes begin.
+    const MARKS_AT: u64 = 9;
+
+    /// The record of a plan of these ids, written whole before any vector starts.
+    fn create<'a>(file: File, ids: impl ExactSizeIterator<Item = &'a str>) -> std::io::Result<Record> {
+        let mut head = Vec::new();
+        head.extend_from_slice(&(ids.len() as u64).to_le_bytes());
+        head.push(0);
+        head.resize(head.len() + ids.len(), 0);
+        for id in ids {
+            head.extend_from_slice(&u32::try_from(id.len()).unwrap_or(u32::MAX).to_le_bytes());
+            head.extend_from_slice(id.as_bytes());
+        }
+        write_at(&file, &head, 0)?;
+        Ok(Record { file })
+    }
+
+    fn mark(&self, index: usize, state: u8) {
+        let _ = write_at(&self.file, &[state], Record::MARKS_AT + index as u64);
+    }
+
+    /// Note in `file` that the run came to its end (not ended half way).
+    fn came_to_end(file: &File) {
+        let _ = write_at(file, &[1], Record::END_AT);
+    }
+
+    /// What a record says: the ids of the vectors being judged, how many were judged, and
+    /// whether the run came to its end.
+    fn read(bytes: &[u8]) -> (Vec<String>, usize, bool) {
+        let Some((n, rest)) = bytes.split_first_chunk::<8>() else { return (Vec::new(), 0, false) };
+        let Some((&end, rest)) = rest.split_first() else { return (Vec::new(), 0, false) };
+        let n = usize::try_from(u64::from_le_bytes(*n)).unwrap_or(usize::MAX).min(rest.len());
+        let (marks, mut rest) = rest.split_at(n);
+        let mut ids = Vec::new();
+        while let Some((len, after)) = rest.split_first_chunk::<4>() {
+            let len = usize::try_from(u32::from_le_bytes(*len)).unwrap_or(usize::MAX).min(after.len());
+            let (id, after) = after.split_at(len);
+            ids.push(id);
+            rest = after;
+        }
+        let running = (0..n)
+            .filter(|&i| marks[i] == Record::RUNNING)
+            .map(|i| {
+                ids.get(i).map_or_else(
+                    || format!("the vector at {i} of the plan"),
+                    |id| String::from_utf8_lossy(id).into_owned(),
+                )
+            })
+            .collect();
+        (running, marks.iter().filter(|&&m| m == Record::JUDGED).count(), end != 0)
+    }
+}
+
+/// One write of `bytes` at `offset` in `file` (whatever the file's position).
+fn write_at(file: &File, bytes: &[u8], offset: u64) -> std::io::Result<()> {
+    #[cfg(unix)]
+    {
+        std::os::unix::fs::FileExt::write_all_at(file, bytes, offset)
+    }
+    #[cfg(windows)]
+    {
+        let written = std::os::windows::fs::FileExt::seek_write(file, bytes, offset)?;
+        if written == bytes.len() {
+            Ok(())
+        } else {
+            Err(std::io::Error::new(std::io::ErrorKind::WriteZero, "a short write to the progress record"))
+        }
+    }
+    #[cfg(not(any(unix, windows)))]
+    {
+        let _ = (file, bytes, offset);
+        Err(std::io::Error::new(std::io::ErrorKind::Unsupported, "no positioned writes on this platform"))
     }
 }
 
@@ -705,32 +851,46 @@ impl Watch {
 #[doc(hidden)]
 pub struct Guard {
     watch: Arc<Watch>,
+    /// The passes judged so far.
+    passes: AtomicU32,
 }
 
 #[doc(hidden)]
 impl Guard {
-    /// The guard a supervised child puts on a run: the watchdog started with `timeout`, and the
-    /// progress record appended to `progress` (an existing file) when given, as the child opens
-    /// the file its parent made. A vector that takes longer ends the process (status 101).
-    pub fn start(timeout: Duration, progress: Option<&std::path::Path>) -> std::io::Result<Guard> {
-        let progress = progress.map(|p| OpenOptions::new().append(true).open(p)).transpose()?;
-        let watch = Arc::new(Watch::new(timeout, progress));
+    /// The guard a supervised child puts on a run of `plan`: the watchdog started with
+    /// `timeout`, and `progress` (an existing file), when given, opened as the child opens the
+    /// file its parent made; with `each_vector`, each vector recorded in it, as the child that
+    /// runs the vectors again to find the one a run ended on records them. A vector that takes
+    /// longer ends the process (status 101).
+    pub fn start(
+        plan: &Plan<'_>,
+        timeout: Duration,
+        progress: Option<&std::path::Path>,
+        each_vector: bool,
+    ) -> std::io::Result<Guard> {
+        let progress = progress.map(|path| OpenOptions::new().write(true).open(path)).transpose()?;
+        let record = match (&progress, each_vector) {
+            (Some(file), true) => Some(Record::create(file.try_clone()?, plan.vectors().iter().map(|v| v.id()))?),
+            _ => None,
+        };
+        let watch = Arc::new(Watch::new(plan.len(), timeout, progress, record));
         Watch::start(&watch, move |late| {
             eprintln!("plcvec: the vector at {late} of the plan took longer than {} s", timeout.as_secs_f64());
             std::process::exit(i32::from(EXIT_FAILED));
         });
-        Ok(Guard { watch })
+        Ok(Guard { watch, passes: AtomicU32::new(0) })
     }
 
-    /// [`judge_plan`](crate::judge_plan) with the guard around each vector, as the harness puts
-    /// it around each test.
+    /// [`judge_plan`](crate::judge_plan) of the plan the guard was started with, the guard around
+    /// each vector as the harness puts it around each test.
     pub fn judge_plan<I: Implementation + ?Sized>(&self, plan: &Plan<'_>, implementation: &mut I) -> Vec<Verdict> {
-        let vectors = plan.vectors();
+        assert_eq!(plan.len(), self.watch.states.len(), "the plan the guard was started with");
+        let pass = self.passes.fetch_add(1, Ordering::Relaxed).wrapping_add(1) & (u32::MAX >> 1);
         crate::runner::judge_plan_marked(plan, implementation, |index, starts| {
             if starts {
-                self.watch.begin(index, vectors[index].id());
+                self.watch.begin(index, pass);
             } else {
-                self.watch.end(index, vectors[index].id());
+                self.watch.end(index, pass);
             }
         })
     }
@@ -745,7 +905,62 @@ impl Drop for Guard {
 /// Run this test binary once more as a child that runs the vectors, and judge how it ended:
 /// a child that exits (with any status, 0 included) or dies before the run came to its end
 /// fails the run, naming the vector(s) it was running.
+///
+/// The child records nothing per vector (a system call per vector costs more than judging it,
+/// and nothing else a safe program can write outlives a process that dies): when it ends early,
+/// the vectors are run once more by a child that records each as it starts and ends, its output
+/// set aside, and the vector that child ends on is named. An implementation that ends the process
+/// on a vector does so again; when the second run does not end early, the run still fails, and
+/// says that the vector cannot be named.
 fn supervise() -> ExitCode {
+    let (status, record) = match run_child(false) {
+        Ok(ended) => ended,
+        Err(code) => return code,
+    };
+    if Record::read(&record).2 {
+        return ExitCode::from(status.code().map_or(EXIT_FAILED, |c| u8::try_from(c).unwrap_or(EXIT_FAILED)));
+    }
+    let how = describe_status(&status);
+    eprintln!("plcvec: the test process ended early ({how}); running the vectors again, each recorded, to find the one it ended on");
+    let again = run_child(true);
+    let _ = std::io::stdout().flush();
+    let ended_again = match &again {
+        Ok((status, record)) => {
+            let (running, finished, done) = Record::read(record);
+            let how_again = describe_status(status);
+            let same = if how_again == how { "the same way".to_owned() } else { format!("({how_again})") };
+            (!done).then_some((running, finished, same))
+        }
+        Err(_) => None,
+    };
+    match ended_again {
+        Some((running, finished, same)) if running.is_empty() => println!(
+            "\n\nFAIL the run\n    the test process ended ({how}) before the run came to its end; run again with each \
+             vector recorded, it ended {same} after {finished} vectors and while none was being judged; a run that \
+             ends early is never a pass"
+        ),
+        Some((running, _, same)) => {
+            for id in &running {
+                println!(
+                    "\n\nFAIL {id}\n    the test process ended ({how}) before the run came to its end; run again with \
+                     each vector recorded, it ended {same} while the implementation ran this vector; a run that ends \
+                     early is never a pass"
+                );
+            }
+        }
+        None => println!(
+            "\n\nFAIL the run\n    the test process ended ({how}) before the run came to its end; run again with each \
+             vector recorded, it did not end early, so the vector it ended on cannot be named; a run that ends early \
+             is never a pass"
+        ),
+    }
+    eprintln!("plcvec: the test process ended early ({how})");
+    ExitCode::from(EXIT_FAILED)
+}
+
+/// Run this test binary as the child that runs the vectors (with `each_vector`, recording each,
+/// its output set aside): how it ended, and its record.
+fn run_child(each_vector: bool) -> std::result::Result<(std::process::ExitStatus, Vec<u8>), ExitCode> {
     let progress = std::env::temp_dir().join(format!(
         "plcvec-progress-{}-{}",
         std::process::id(),
@@ -753,60 +968,27 @@ fn supervise() -> ExitCode {
     ));
     if let Err(e) = File::create(&progress) {
         eprintln!("plcvec: cannot create {}: {e}", progress.display());
-        return ExitCode::from(EXIT_USAGE);
+        return Err(ExitCode::from(EXIT_USAGE));
     }
     let status = std::env::current_exe().and_then(|exe| {
-        std::process::Command::new(exe).args(std::env::args_os().skip(1)).env(PROGRESS_ENV, &progress).status()
+        let mut child = std::process::Command::new(exe);
+        child.args(std::env::args_os().skip(1)).env(PROGRESS_ENV, &progress);
+        if each_vector {
+            child.env(EACH_VECTOR_ENV, "1").stdout(std::process::Stdio::null()).stderr(std::process::Stdio::null());
+        } else {
+            child.env_remove(EACH_VECTOR_ENV);
+        }
+        child.status()
     });
-    let record = std::fs::read_to_string(&progress).unwrap_or_default();
+    let record = std::fs::read(&progress).unwrap_or_default();
     let _ = std::fs::remove_file(&progress);
-    let status = match status {
-        Ok(s) => s,
+    match status {
+        Ok(s) => Ok((s, record)),
         Err(e) => {
             eprintln!("plcvec: cannot start the test binary again to run the vectors: {e}");
-            return ExitCode::from(EXIT_USAGE);
-        }
-    };
-    let (running, finished, done) = read_progress(&record);
-    if done {
-        return ExitCode::from(status.code().map_or(EXIT_FAILED, |c| u8::try_from(c).unwrap_or(EXIT_FAILED)));
-    }
-    let how = describe_status(&status);
-    let _ = std::io::stdout().flush();
-    if running.is_empty() {
-        println!(
-            "\n\nFAIL the run\n    the test process ended ({how}) before the run came to its end, after {finished} vectors \
-             and while none was being judged; a run that ends early is never a pass"
-        );
-    }
-    for id in &running {
-        println!(
-            "\n\nFAIL {id}\n    the test process ended ({how}) while the implementation ran this vector; \
-             a run that ends early is never a pass"
-        );
-    }
-    eprintln!("plcvec: the test process ended early ({how}) after {finished} vectors");
-    ExitCode::from(EXIT_FAILED)
-}
-
-/// (the vectors started and not ended, how many ended, whether the run came to its end).
-fn read_progress(record: &str) -> (Vec<&str>, usize, bool) {
-    let mut running: Vec<&str> = Vec::new();
-    let mut finished = 0;
-    let mut done = false;
-    for line in record.lines() {
-        if let Some(id) = line.strip_prefix('+') {
-            running.push(id);
-        } else if let Some(id) = line.strip_prefix('-') {
-            if let Some(at) = running.iter().position(|r| *r == id) {
-                running.remove(at);
-                finished += 1;
-            }
-        } else if line == "=done" {
-            done = true;
+            Err(ExitCode::from(EXIT_USAGE))
         }
     }
-    (running, finished, done)
 }
 
 fn describe_status(status: &std::process::ExitStatus) -> String {
@@ -828,4 +1010,68 @@ fn describe_status(status: &std::process::ExitStatus) -> String {
         }
     }
     status.to_string()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn scratch(name: &str) -> PathBuf {
+        std::env::temp_dir().join(format!("plcvec-harness-{name}-{}", std::process::id()))
+    }
+
+    #[test]
+    fn the_record_says_which_vectors_were_running_whatever_their_ids() {
+        let path = scratch("record");
+        let ids = ["a/1", "b\nwith a line break", "", "d/4"];
+        let record = Record::create(File::create(&path).unwrap(), ids.iter().copied()).unwrap();
+        // Nothing started yet, the run not at its end.
+        assert_eq!(Record::read(&std::fs::read(&path).unwrap()), (vec![], 0, false));
+        record.mark(0, Record::RUNNING);
+        record.mark(1, Record::RUNNING);
+        record.mark(3, Record::RUNNING);
+        record.mark(0, Record::JUDGED);
+        let expected = vec!["b\nwith a line break".to_owned(), "d/4".to_owned()];
+        assert_eq!(Record::read(&std::fs::read(&path).unwrap()), (expected.clone(), 1, false));
+        Record::came_to_end(&record.file);
+        assert_eq!(Record::read(&std::fs::read(&path).unwrap()), (expected, 1, true));
+        std::fs::remove_file(&path).unwrap();
+    }
+
+    #[test]
+    fn a_first_run_notes_only_its_end() {
+        // A child that records no vector writes the end's byte alone (into the empty file its
+        // parent made); one that ended early, nothing.
+        assert_eq!(Record::read(&[]), (vec![], 0, false));
+        let path = scratch("end");
+        let file = File::create(&path).unwrap();
+        Record::came_to_end(&file);
+        assert_eq!(Record::read(&std::fs::read(&path).unwrap()), (vec![], 0, true));
+        std::fs::remove_file(&path).unwrap();
+    }
+
+    #[test]
+    fn the_watchdog_names_a_vector_late_only_once_it_took_the_timeout() {
+        let timeout = Duration::from_millis(100);
+        let watch = Arc::new(Watch::new(3, timeout, None, None));
+        let (tx, rx) = std::sync::mpsc::channel();
+        let started = Instant::now();
+        Watch::start(&watch, move |late| {
+            let _ = tx.send((late, started.elapsed()));
+            std::thread::sleep(Duration::from_secs(3600));
+        });
+        // Vector 0 judged over and over, each time quickly (a new pass each time), for longer than
+        // the timeout; vector 2 never returns.
+        watch.begin(2, 1);
+        let mut pass = 0;
+        while started.elapsed() < timeout * 3 {
+            pass += 1;
+            watch.begin(0, pass);
+            watch.end(0, pass);
+        }
+        let (late, after) = rx.recv_timeout(Duration::from_secs(10)).expect("the watchdog named no vector");
+        assert_eq!(late, 2);
+        assert!(after >= timeout, "named after {after:?}, before the timeout");
+        watch.stopped.store(true, Ordering::Relaxed);
+    }
 }

@@ -8,29 +8,34 @@
 //! `plcvec bench-native` reads.
 //!
 //! Then the guard a user's test run puts around each vector (`plcvec::harness`: the watchdog of
-//! `PLCVEC_TIMEOUT` and the progress record the supervised child keeps for its parent, which
-//! names the vector a child that ends half way was running), through the harness's own guard
-//! (`plcvec::harness::Guard`, hidden from the API's documentation: it exists for this bench)
-//! around the same judging as an unguarded pass, with a progress file as the child has it. Each
-//! iteration times one unguarded and one guarded pass back to back, which goes first alternating,
-//! so that both see the same state of a noisy machine:
+//! `PLCVEC_TIMEOUT`, in the supervised child that notes in a file its parent made that the run
+//! came to its end), through the harness's own guard (`plcvec::harness::Guard`, hidden from the
+//! API's documentation: it exists for this bench) around the same judging as an unguarded pass,
+//! with the file as the child has it. Each iteration times an unguarded pass, a guarded pass and
+//! a pass under the guard of the child that runs the vectors again, each recorded, after a run
+//! ended early, back to back, each kind going first in turn, so that all see the same state of a
+//! noisy machine:
 //!
 //! - `guarded_ratio`: the median over iterations of unguarded seconds / guarded seconds of the
 //!   same iteration (1.0: the guard costs nothing per vector);
 //! - `guarded_ratio_fastest`: the fastest unguarded pass / the fastest guarded pass;
 //! - `guarded_vectors_per_s`: the vectors / the median guarded pass;
-//! - `guard_fixed_seconds`: what the guard costs once per run, not per vector (starting the
-//!   watchdog thread and opening the progress file, and stopping the watchdog), the median of
-//!   `FIXED_SAMPLES` starts, kept out of the passes above: the guard is started once, before
-//!   them. A test run also starts the test binary a second time (the supervised child, which
-//!   loads the suite again: about `load_seconds`); that is not measured here.
+//! - `guard_fixed_seconds`: what the guard costs once per run, not per vector (opening the file,
+//!   starting the watchdog thread, and stopping it), the median of `FIXED_SAMPLES` starts, kept
+//!   out of the passes above: the guard is started once, before them. A test run also starts the
+//!   test binary a second time (the supervised child, which loads the suite again: about
+//!   `load_seconds`); that is not measured here;
+//! - `each_vector_guarded_ratio`: as `guarded_ratio`, for the guard of the child that runs the
+//!   vectors again to name the one a run ended on (two one-byte writes to its record per vector):
+//!   paid only after a run ended early, never by a run that comes to its end.
 //!
 //! The harness's own work per test that is not the guard (an implementation built per vector,
 //! the known-failures bookkeeping, the verdicts kept for the run's text) and libtest-mimic's
-//! per-test cost are in neither pass.
+//! per-test cost are in no pass.
 #![forbid(unsafe_code)]
 
 use std::fs::File;
+use std::path::Path;
 use std::time::{Duration, Instant};
 
 use plcvec::harness::Guard;
@@ -49,6 +54,9 @@ const MAX_PASSES: usize = 1_000_000;
 const PAIRED: usize = 300;
 const PAIRED_SECONDS: f64 = 3.0;
 const MAX_PAIRED: usize = 100_000;
+/// The same for the guard that records each vector (ten times slower a pass).
+const EACH_VECTOR_PAIRED: usize = 100;
+const EACH_VECTOR_SECONDS: f64 = 1.0;
 /// Starts of the guard timed for its fixed cost.
 const FIXED_SAMPLES: usize = 21;
 
@@ -124,23 +132,37 @@ fn main() -> std::process::ExitCode {
             return std::process::ExitCode::from(1);
         }
     };
-    let guarded_rate = n as f64 / guarded.seconds;
+    let (child, each) = (&guarded.child, &guarded.each_vector);
+    let guarded_rate = n as f64 / child.seconds;
     println!(
         "{:50} {:>8} {:>12.0}",
-        format!("under the harness's guard, median: pass {:.6} s", guarded.seconds),
+        format!("under the harness's guard, median: pass {:.6} s", child.seconds),
         n,
         guarded_rate
     );
     println!(
         "{:50}",
         format!(
-            "guarded ratio {:.3} (median of {} paired passes), {:.3} fastest to fastest; fixed {:.6} s",
-            guarded.ratio, guarded.iterations, guarded.ratio_fastest, guarded.fixed
+            "  guarded ratio {:.3} (median of {} paired passes), {:.3} fastest to fastest; once a run {:.6} s",
+            child.ratio, child.iterations, child.ratio_fastest, guarded.fixed
         )
     );
     println!(
-        "{{\"lang\": \"rust\", \"vectors\": {n}, \"passes\": {passes}, \"load_seconds\": {load_seconds:.4}, \"seconds\": {wall:.6}, \"vectors_per_s\": {rate:.0}{cpu_key}, \"guarded_vectors_per_s\": {guarded_rate:.0}, \"guarded_ratio\": {:.3}, \"guarded_ratio_fastest\": {:.3}, \"guarded_iterations\": {}, \"guard_fixed_seconds\": {:.6}, \"note\": \"{cpu_note}median of {passes} passes after {WARM_UP} warm-up, {fastest_rate:.0}/s in the fastest pass\"}}",
-        guarded.ratio, guarded.ratio_fastest, guarded.iterations, guarded.fixed
+        "{:50} {:>8} {:>12.0}",
+        format!("recording each vector, median: pass {:.6} s", each.seconds),
+        n,
+        n as f64 / each.seconds
+    );
+    println!(
+        "{:50}",
+        format!(
+            "  ratio {:.3} (median of {} paired passes; only after a run ended early)",
+            each.ratio, each.iterations
+        )
+    );
+    println!(
+        "{{\"lang\": \"rust\", \"vectors\": {n}, \"passes\": {passes}, \"load_seconds\": {load_seconds:.4}, \"seconds\": {wall:.6}, \"vectors_per_s\": {rate:.0}{cpu_key}, \"guarded_vectors_per_s\": {guarded_rate:.0}, \"guarded_ratio\": {:.3}, \"guarded_ratio_fastest\": {:.3}, \"guarded_iterations\": {}, \"guard_fixed_seconds\": {:.6}, \"each_vector_guarded_ratio\": {:.3}, \"note\": \"{cpu_note}median of {passes} passes after {WARM_UP} warm-up, {fastest_rate:.0}/s in the fastest pass\"}}",
+        child.ratio, child.ratio_fastest, child.iterations, guarded.fixed, each.ratio
     );
     std::process::ExitCode::SUCCESS
 }
@@ -157,76 +179,95 @@ fn all_pass(plan: &Plan<'_>, verdicts: &[Verdict]) -> bool {
 }
 
 struct Guarded {
+    /// The guard of a run's child.
+    child: Paired,
+    /// The guard of the child that runs the vectors again, each recorded, after a run ended early.
+    each_vector: Paired,
+    /// The guard's cost once per run, seconds.
+    fixed: f64,
+}
+
+/// Unguarded and guarded passes, paired.
+struct Paired {
     /// The median guarded pass, seconds.
     seconds: f64,
     ratio: f64,
     ratio_fastest: f64,
     iterations: usize,
-    fixed: f64,
 }
 
-/// The paired passes, unguarded and guarded, with the progress record in a file of the temporary
-/// folder (as the supervised child's); `None` when a pass did not pass.
+/// The paired passes of both guards, their file in the temporary folder as the supervised child's;
+/// `None` when a pass did not pass.
 fn guarded(plan: &Plan<'_>, reference: &mut OnMemory<Reference>) -> std::io::Result<Option<Guarded>> {
     let path = std::env::temp_dir().join(format!("plcvec-bench-progress-{}", std::process::id()));
-    let result = paired(plan, reference, &path);
+    let result = both(plan, reference, &path);
     let _ = std::fs::remove_file(&path);
     result
 }
 
-fn paired(
-    plan: &Plan<'_>,
-    reference: &mut OnMemory<Reference>,
-    path: &std::path::Path,
-) -> std::io::Result<Option<Guarded>> {
-    // The record grows by each guarded pass; emptied between passes (untimed), so that each pass
-    // writes to a file the size a run's is.
-    let record = File::create(path)?;
+fn both(plan: &Plan<'_>, reference: &mut OnMemory<Reference>, path: &Path) -> std::io::Result<Option<Guarded>> {
+    File::create(path)?;
     let timeout = Duration::from_secs_f64(plcvec::harness::DEFAULT_TIMEOUT_S);
     let mut fixed = Vec::new();
     for _ in 0..FIXED_SAMPLES {
         let start = Instant::now();
-        drop(Guard::start(timeout, Some(path))?);
+        drop(Guard::start(plan, timeout, Some(path), false)?);
         fixed.push(start.elapsed().as_secs_f64());
     }
-    let guard = Guard::start(timeout, Some(path))?;
+    let guard = Guard::start(plan, timeout, Some(path), false)?;
+    let Some(child) = paired(plan, reference, &guard, PAIRED, PAIRED_SECONDS) else { return Ok(None) };
+    drop(guard);
+    // Apart, after: its passes are ten times slower, and would slow the passes after them.
+    let guard = Guard::start(plan, timeout, Some(path), true)?;
+    let Some(each_vector) = paired(plan, reference, &guard, EACH_VECTOR_PAIRED, EACH_VECTOR_SECONDS) else {
+        return Ok(None);
+    };
+    Ok(Some(Guarded { child, each_vector, fixed: median(&mut fixed) }))
+}
+
+/// Iterations of an unguarded pass and a pass under `guard`, back to back, which goes first
+/// alternating: at least `at_least`, and as many more as fit in `seconds`.
+fn paired(
+    plan: &Plan<'_>,
+    reference: &mut OnMemory<Reference>,
+    guard: &Guard,
+    at_least: usize,
+    seconds: f64,
+) -> Option<Paired> {
     let (mut unguarded, mut guarded, mut ratios) = (Vec::new(), Vec::new(), Vec::new());
     let mut measuring = None;
     for iteration in 0..WARM_UP + MAX_PAIRED {
         if iteration == WARM_UP {
             measuring = Some(Instant::now());
         }
-        record.set_len(0)?;
-        let mut times = [0.0; 2]; // unguarded, guarded
+        let mut took = [0.0; 2]; // unguarded, guarded
         for which in [iteration % 2, 1 - iteration % 2] {
             let start = Instant::now();
             let verdicts =
                 if which == 0 { plcvec::judge_plan(plan, reference) } else { guard.judge_plan(plan, reference) };
-            times[which] = start.elapsed().as_secs_f64();
+            took[which] = start.elapsed().as_secs_f64();
             if !all_pass(plan, &verdicts) {
-                return Ok(None);
+                return None;
             }
         }
         if iteration >= WARM_UP {
-            unguarded.push(times[0]);
-            guarded.push(times[1]);
-            ratios.push(times[0] / times[1]);
+            unguarded.push(took[0]);
+            guarded.push(took[1]);
+            ratios.push(took[0] / took[1]);
         }
-        if ratios.len() >= PAIRED && measuring.is_some_and(|since| since.elapsed().as_secs_f64() >= PAIRED_SECONDS) {
+        if ratios.len() >= at_least && measuring.is_some_and(|since: Instant| since.elapsed().as_secs_f64() >= seconds)
+        {
             break;
         }
     }
-    drop(guard);
     let iterations = ratios.len();
-    let seconds = median(&mut guarded);
     median(&mut unguarded);
-    Ok(Some(Guarded {
-        seconds,
+    Some(Paired {
+        seconds: median(&mut guarded),
         ratio: median(&mut ratios),
         ratio_fastest: unguarded[0] / guarded[0],
         iterations,
-        fixed: median(&mut fixed),
-    }))
+    })
 }
 
 fn median(values: &mut [f64]) -> f64 {

@@ -1,0 +1,108 @@
+//! A test process that ends half way (an implementation calling `exit(0)`) fails the run, named
+//! by the vector it ended on: the child that runs the vectors records nothing per vector, so the
+//! harness runs them once more, each recorded, its output set aside, and names the vector that
+//! run ends on. When that second run does not end early, the run fails all the same and says the
+//! vector cannot be named; the second run writes no expectations file.
+//!
+//! A test binary of its own (`harness = false`): its `main` is the supervised run when
+//! `PLCVEC_TEST_EARLY_END` is set (the harness starts the binary again for its children), and
+//! otherwise starts that run and checks what it says.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, ExitCode};
+
+use plcvec::harness::{Arguments, Harness};
+use plcvec::{Execute, Memory, OnMemory, Refusal, Selection, Step, Suite, Vector};
+use plcvec_reference::Reference;
+
+/// Set for the supervised run: `always`, or `once:<file>` (end the process only when the file
+/// does not exist yet, creating it: the first run ends, the second does not).
+const CHILD: &str = "PLCVEC_TEST_EARLY_END";
+const ON: &str = "fx5-time-add/TADD/manual-example/program";
+
+struct EndsEarly {
+    reference: Reference,
+    once: Option<PathBuf>,
+}
+
+impl Execute for EndsEarly {
+    fn supports(&self, instruction: &str) -> bool {
+        self.reference.supports(instruction)
+    }
+
+    fn begin(&mut self, vector: &Vector) -> Result<(), Refusal> {
+        self.reference.begin(vector)
+    }
+
+    fn execute(&mut self, vector: &Vector, step: &Step, memory: &mut Memory<'_>) -> Result<Option<bool>, Refusal> {
+        if vector.id() == ON && self.once.as_deref().is_none_or(|marker| std::fs::File::create_new(marker).is_ok()) {
+            std::process::exit(0);
+        }
+        self.reference.execute(vector, step, memory)
+    }
+}
+
+fn tadd() -> Selection {
+    Selection::all().family("fx5-time-add")
+}
+
+/// The supervised run (and, started by it, its children): two test threads.
+fn supervised_run(mode: &str) -> ExitCode {
+    let once = mode.strip_prefix("once:").map(PathBuf::from);
+    Harness::new(move || OnMemory(EndsEarly { reference: Reference::new(), once: once.clone() }))
+        .suite(Suite::embedded().unwrap())
+        .select(tadd())
+        .arguments(Arguments { test_threads: Some(2), ..Arguments::default() })
+        .run()
+}
+
+/// Run the supervised run in `mode` with `PLCVEC_WRITE_EXPECTATIONS=expectations`: its exit
+/// status and stdout.
+fn supervise(mode: &str, expectations: &Path) -> (Option<i32>, String) {
+    let out = Command::new(std::env::current_exe().unwrap())
+        .env(CHILD, mode)
+        .env("PLCVEC_WRITE_EXPECTATIONS", expectations)
+        .env_remove("PLCVEC_KNOWN_FAILURES")
+        .output()
+        .unwrap();
+    (out.status.code(), String::from_utf8_lossy(&out.stdout).into_owned())
+}
+
+fn main() -> ExitCode {
+    if let Ok(mode) = std::env::var(CHILD) {
+        return supervised_run(&mode);
+    }
+    let scratch = std::env::temp_dir().join(format!("plcvec-rust-early-end-{}", std::process::id()));
+    std::fs::create_dir_all(&scratch).unwrap();
+    let expectations = scratch.join("known.toml");
+
+    // Ends on the vector every time: the second run ends on it too, and names it.
+    let (code, stdout) = supervise("always", &expectations);
+    assert_eq!(code, Some(101), "{stdout}");
+    let named = format!(
+        "\n\nFAIL {ON}\n    the test process ended (exit status 0) before the run came to its end; run again with \
+         each vector recorded, it ended the same way while the implementation ran this vector; a run that ends early \
+         is never a pass\n"
+    );
+    assert!(stdout.contains(&named), "{stdout}");
+    assert!(!stdout.contains("cannot be named"), "{stdout}");
+    // The second run's output is set aside: the first run's header alone.
+    let n = tadd().apply(Suite::embedded().unwrap().vectors()).len();
+    assert_eq!(stdout.matches(&format!("\nrunning {n} tests\n")).count(), 1, "{stdout}");
+
+    // Ends only the first time: the run fails all the same, the vector not named, and the second
+    // run (which came to its end) wrote no expectations file.
+    let marker = scratch.join("ended-once");
+    let (code, stdout) = supervise(&format!("once:{}", marker.display()), &expectations);
+    assert_eq!(code, Some(101), "{stdout}");
+    assert!(marker.exists(), "the implementation never ended the process\n{stdout}");
+    let unnamed = "\n\nFAIL the run\n    the test process ended (exit status 0) before the run came to its end; run \
+                   again with each vector recorded, it did not end early, so the vector it ended on cannot be named; \
+                   a run that ends early is never a pass\n";
+    assert!(stdout.contains(unnamed), "{stdout}");
+    assert!(!stdout.contains(&format!("FAIL {ON}")), "{stdout}");
+    assert!(!expectations.exists(), "the second run wrote the expectations file\n{stdout}");
+    std::fs::remove_dir_all(&scratch).unwrap();
+    println!("an early end is named by the vector it ended on: ok");
+    ExitCode::SUCCESS
+}
