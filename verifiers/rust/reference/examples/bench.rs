@@ -11,20 +11,25 @@
 //! `PLCVEC_TIMEOUT`, in the supervised child that notes in a file its parent made that the run
 //! came to its end), through the harness's own guard (`plcvec::harness::Guard`, hidden from the
 //! API's documentation: it exists for this bench) around the same judging as an unguarded pass,
-//! with the file as the child has it. Each iteration times an unguarded pass, a guarded pass and
-//! a pass under the guard of the child that runs the vectors again, each recorded, after a run
-//! ended early, back to back, each kind going first in turn, so that all see the same state of a
-//! noisy machine:
+//! with the file as the child has it. Each iteration times an unguarded pass and a guarded pass
+//! back to back, which goes first alternating, so that both see the same state of a noisy
+//! machine; then the same for the guard of a run in process, and for the guard of the child that
+//! runs the vectors again, each recorded, after a run ended early:
 //!
 //! - `guarded_ratio`: the median over iterations of unguarded seconds / guarded seconds of the
 //!   same iteration (1.0: the guard costs nothing per vector);
 //! - `guarded_ratio_fastest`: the fastest unguarded pass / the fastest guarded pass;
-//! - `guarded_vectors_per_s`: the vectors / the median guarded pass;
+//! - `guarded_vectors_per_s`, `unguarded_loop_vectors_per_s`: the vectors / the median guarded
+//!   pass, and / the median unguarded pass paired with them (`vectors_per_s` is from the
+//!   unguarded passes before, run alone);
 //! - `guard_fixed_seconds`: what the guard costs once per run, not per vector (opening the file,
 //!   starting the watchdog thread, and stopping it), the median of `FIXED_SAMPLES` starts, kept
 //!   out of the passes above: the guard is started once, before them. A test run also starts the
 //!   test binary a second time (the supervised child, which loads the suite again: about
-//!   `load_seconds`); that is not measured here;
+//!   `load_seconds`); that is not measured here. The guarded passes hold none of it, so
+//!   `guarded_ratio` is already the per-vector figure;
+//! - `guarded_in_process_vectors_per_s`, `guarded_in_process_ratio`: the same for the guard of a
+//!   run in process (`Harness::in_process`: the watchdog, no child, no file);
 //! - `each_vector_guarded_ratio`: as `guarded_ratio`, for the guard of the child that runs the
 //!   vectors again to name the one a run ended on (two one-byte writes to its record per vector):
 //!   paid only after a run ended early, never by a run that comes to its end.
@@ -52,7 +57,9 @@ const MAX_PASSES: usize = 1_000_000;
 /// Paired iterations (an unguarded and a guarded pass each): at least this many, and as many more
 /// as fit in `PAIRED_SECONDS`, up to `MAX_PAIRED`.
 const PAIRED: usize = 300;
-const PAIRED_SECONDS: f64 = 3.0;
+const PAIRED_SECONDS: f64 = 2.5;
+/// The same for the guard of a run in process.
+const IN_PROCESS_SECONDS: f64 = 1.5;
 const MAX_PAIRED: usize = 100_000;
 /// The same for the guard that records each vector (ten times slower a pass).
 const EACH_VECTOR_PAIRED: usize = 100;
@@ -132,7 +139,7 @@ fn main() -> std::process::ExitCode {
             return std::process::ExitCode::from(1);
         }
     };
-    let (child, each) = (&guarded.child, &guarded.each_vector);
+    let (child, in_process, each) = (&guarded.child, &guarded.in_process, &guarded.each_vector);
     let guarded_rate = n as f64 / child.seconds;
     println!(
         "{:50} {:>8} {:>12.0}",
@@ -149,6 +156,19 @@ fn main() -> std::process::ExitCode {
     );
     println!(
         "{:50} {:>8} {:>12.0}",
+        format!("  unguarded beside it, median: pass {:.6} s", child.unguarded),
+        n,
+        n as f64 / child.unguarded
+    );
+    println!(
+        "{:50} {:>8} {:>12.0}",
+        format!("in process, median: pass {:.6} s", in_process.seconds),
+        n,
+        n as f64 / in_process.seconds
+    );
+    println!("{:50}", format!("  ratio {:.3} (median of {} paired passes)", in_process.ratio, in_process.iterations));
+    println!(
+        "{:50} {:>8} {:>12.0}",
         format!("recording each vector, median: pass {:.6} s", each.seconds),
         n,
         n as f64 / each.seconds
@@ -161,8 +181,15 @@ fn main() -> std::process::ExitCode {
         )
     );
     println!(
-        "{{\"lang\": \"rust\", \"vectors\": {n}, \"passes\": {passes}, \"load_seconds\": {load_seconds:.4}, \"seconds\": {wall:.6}, \"vectors_per_s\": {rate:.0}{cpu_key}, \"guarded_vectors_per_s\": {guarded_rate:.0}, \"guarded_ratio\": {:.3}, \"guarded_ratio_fastest\": {:.3}, \"guarded_iterations\": {}, \"guard_fixed_seconds\": {:.6}, \"each_vector_guarded_ratio\": {:.3}, \"note\": \"{cpu_note}median of {passes} passes after {WARM_UP} warm-up, {fastest_rate:.0}/s in the fastest pass\"}}",
-        child.ratio, child.ratio_fastest, child.iterations, guarded.fixed, each.ratio
+        "{{\"lang\": \"rust\", \"vectors\": {n}, \"passes\": {passes}, \"load_seconds\": {load_seconds:.4}, \"seconds\": {wall:.6}, \"vectors_per_s\": {rate:.0}{cpu_key}, \"guarded_vectors_per_s\": {guarded_rate:.0}, \"unguarded_loop_vectors_per_s\": {:.0}, \"guarded_in_process_vectors_per_s\": {:.0}, \"guarded_ratio\": {:.3}, \"guarded_ratio_fastest\": {:.3}, \"guarded_iterations\": {}, \"guard_fixed_seconds\": {:.6}, \"guarded_in_process_ratio\": {:.3}, \"each_vector_guarded_ratio\": {:.3}, \"note\": \"{cpu_note}median of {passes} passes after {WARM_UP} warm-up, {fastest_rate:.0}/s in the fastest pass\"}}",
+        n as f64 / child.unguarded,
+        n as f64 / in_process.seconds,
+        child.ratio,
+        child.ratio_fastest,
+        child.iterations,
+        guarded.fixed,
+        in_process.ratio,
+        each.ratio
     );
     std::process::ExitCode::SUCCESS
 }
@@ -181,6 +208,8 @@ fn all_pass(plan: &Plan<'_>, verdicts: &[Verdict]) -> bool {
 struct Guarded {
     /// The guard of a run's child.
     child: Paired,
+    /// The guard of a run in process (`Harness::in_process`: the watchdog alone).
+    in_process: Paired,
     /// The guard of the child that runs the vectors again, each recorded, after a run ended early.
     each_vector: Paired,
     /// The guard's cost once per run, seconds.
@@ -191,6 +220,8 @@ struct Guarded {
 struct Paired {
     /// The median guarded pass, seconds.
     seconds: f64,
+    /// The median unguarded pass, seconds.
+    unguarded: f64,
     ratio: f64,
     ratio_fastest: f64,
     iterations: usize,
@@ -217,12 +248,15 @@ fn both(plan: &Plan<'_>, reference: &mut OnMemory<Reference>, path: &Path) -> st
     let guard = Guard::start(plan, timeout, Some(path), false)?;
     let Some(child) = paired(plan, reference, &guard, PAIRED, PAIRED_SECONDS) else { return Ok(None) };
     drop(guard);
+    let guard = Guard::start(plan, timeout, None, false)?;
+    let Some(in_process) = paired(plan, reference, &guard, PAIRED, IN_PROCESS_SECONDS) else { return Ok(None) };
+    drop(guard);
     // Apart, after: its passes are ten times slower, and would slow the passes after them.
     let guard = Guard::start(plan, timeout, Some(path), true)?;
     let Some(each_vector) = paired(plan, reference, &guard, EACH_VECTOR_PAIRED, EACH_VECTOR_SECONDS) else {
         return Ok(None);
     };
-    Ok(Some(Guarded { child, each_vector, fixed: median(&mut fixed) }))
+    Ok(Some(Guarded { child, in_process, each_vector, fixed: median(&mut fixed) }))
 }
 
 /// Iterations of an unguarded pass and a pass under `guard`, back to back, which goes first
@@ -261,8 +295,8 @@ fn paired(
         }
     }
     let iterations = ratios.len();
-    median(&mut unguarded);
     Some(Paired {
+        unguarded: median(&mut unguarded),
         seconds: median(&mut guarded),
         ratio: median(&mut ratios),
         ratio_fastest: unguarded[0] / guarded[0],
