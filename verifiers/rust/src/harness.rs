@@ -400,6 +400,11 @@ where
             return supervise();
         }
         let each_vector = std::env::var_os(EACH_VECTOR_ENV).is_some();
+        if each_vector {
+            // The run again to find a vector leaves the first run's log as it is (its output is
+            // set aside).
+            args.logfile = None;
+        }
         let progress = match progress_path.as_deref().map(|p| OpenOptions::new().write(true).open(p)) {
             Some(Ok(file)) => Some(Progress { file, each_vector }),
             Some(Err(e)) => {

@@ -59,11 +59,11 @@ const MAX_PASSES: usize = 1_000_000;
 const PAIRED: usize = 300;
 const PAIRED_SECONDS: f64 = 2.5;
 /// The same for the guard of a run in process.
-const IN_PROCESS_SECONDS: f64 = 1.5;
+const IN_PROCESS_SECONDS: f64 = 1.0;
 const MAX_PAIRED: usize = 100_000;
 /// The same for the guard that records each vector (ten times slower a pass).
-const EACH_VECTOR_PAIRED: usize = 100;
-const EACH_VECTOR_SECONDS: f64 = 1.0;
+const EACH_VECTOR_PAIRED: usize = 50;
+const EACH_VECTOR_SECONDS: f64 = 0.5;
 /// Starts of the guard timed for its fixed cost.
 const FIXED_SAMPLES: usize = 21;
 

@@ -18,6 +18,8 @@ use plcvec_reference::Reference;
 /// Set for the supervised run: `always`, or `once:<file>` (end the process only when the file
 /// does not exist yet, creating it: the first run ends, the second does not).
 const CHILD: &str = "PLCVEC_TEST_EARLY_END";
+/// Set for the supervised run: the log file libtest-mimic writes (`--logfile`).
+const LOG: &str = "PLCVEC_TEST_EARLY_END_LOG";
 const ON: &str = "fx5-time-add/TADD/manual-example/program";
 
 struct EndsEarly {
@@ -52,14 +54,19 @@ fn supervised_run(mode: &str) -> ExitCode {
     Harness::new(move || OnMemory(EndsEarly { reference: Reference::new(), once: once.clone() }))
         .suite(Suite::embedded().unwrap())
         .select(tadd())
-        .arguments(Arguments { test_threads: Some(2), ..Arguments::default() })
+        .arguments(Arguments { test_threads: Some(2), logfile: std::env::var(LOG).ok(), ..Arguments::default() })
         .run()
 }
 
-/// Run the supervised run in `mode` with `PLCVEC_WRITE_EXPECTATIONS=expectations`: its exit
-/// status and stdout.
-fn supervise(mode: &str, expectations: &Path) -> (Option<i32>, String) {
-    let out = Command::new(std::env::current_exe().unwrap())
+/// Run the supervised run in `mode` with `PLCVEC_WRITE_EXPECTATIONS=expectations` (and
+/// `--logfile log`, if given): its exit status and stdout.
+fn supervise(mode: &str, expectations: &Path, log: Option<&Path>) -> (Option<i32>, String) {
+    let mut run = Command::new(std::env::current_exe().unwrap());
+    match log {
+        Some(log) => run.env(LOG, log),
+        None => run.env_remove(LOG),
+    };
+    let out = run
         .env(CHILD, mode)
         .env("PLCVEC_WRITE_EXPECTATIONS", expectations)
         .env_remove("PLCVEC_KNOWN_FAILURES")
@@ -75,9 +82,10 @@ fn main() -> ExitCode {
     let scratch = std::env::temp_dir().join(format!("plcvec-rust-early-end-{}", std::process::id()));
     std::fs::create_dir_all(&scratch).unwrap();
     let expectations = scratch.join("known.toml");
+    let log = scratch.join("log.txt");
 
     // Ends on the vector every time: the second run ends on it too, and names it.
-    let (code, stdout) = supervise("always", &expectations);
+    let (code, stdout) = supervise("always", &expectations, None);
     assert_eq!(code, Some(101), "{stdout}");
     let named = format!(
         "\n\nFAIL {ON}\n    the test process ended (exit status 0) before the run came to its end; run again with \
@@ -91,9 +99,9 @@ fn main() -> ExitCode {
     assert_eq!(stdout.matches(&format!("\nrunning {n} tests\n")).count(), 1, "{stdout}");
 
     // Ends only the first time: the run fails all the same, the vector not named, and the second
-    // run (which came to its end) wrote no expectations file.
+    // run (which came to its end) wrote no expectations file, nor its log over the first run's.
     let marker = scratch.join("ended-once");
-    let (code, stdout) = supervise(&format!("once:{}", marker.display()), &expectations);
+    let (code, stdout) = supervise(&format!("once:{}", marker.display()), &expectations, Some(&log));
     assert_eq!(code, Some(101), "{stdout}");
     assert!(marker.exists(), "the implementation never ended the process\n{stdout}");
     let unnamed = "\n\nFAIL the run\n    the test process ended (exit status 0) before the run came to its end; run \
@@ -102,6 +110,8 @@ fn main() -> ExitCode {
     assert!(stdout.contains(unnamed), "{stdout}");
     assert!(!stdout.contains(&format!("FAIL {ON}")), "{stdout}");
     assert!(!expectations.exists(), "the second run wrote the expectations file\n{stdout}");
+    let logged = std::fs::read_to_string(&log).unwrap_or_default();
+    assert!(!logged.contains("test result"), "the second run wrote the log file:\n{logged}");
     std::fs::remove_dir_all(&scratch).unwrap();
     println!("an early end is named by the vector it ended on: ok");
     ExitCode::SUCCESS
