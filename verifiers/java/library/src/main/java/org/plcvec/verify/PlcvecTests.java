@@ -7,6 +7,7 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.concurrent.locks.LockSupport;
 import java.util.function.Consumer;
 import java.util.stream.Stream;
 
@@ -41,8 +42,8 @@ import org.opentest4j.AssertionFailedError;
  * accident. A vector that gives no answer within {@code PLCVEC_TIMEOUT} (10 s) ends the run: its
  * error, the run's totals (every vector after it not run) and why it ended are written to standard
  * error, and the process ends with status 1, which fails the build. The vectors run on the test's
- * own thread, and a thread that never returns cannot be stopped: a watchdog thread, one per run,
- * sees that the vector in progress has not changed for the bound.
+ * own thread, and a thread that never returns cannot be stopped: a watchdog thread, one per
+ * process, sees that a run's vector in progress has not changed for the bound.
  */
 public final class PlcvecTests {
     /**
@@ -201,10 +202,10 @@ public final class PlcvecTests {
     }
 
     /**
-     * One run of the factory's tests: each vector on the test's own thread, watched by one
-     * watchdog thread that ends the process when a vector outlives {@code PLCVEC_TIMEOUT}; the
-     * verdicts kept for the end of the run, and the vector in progress kept for a guard that
-     * speaks if the process ends before the run does.
+     * One run of the factory's tests: each vector on the test's own thread, watched by the
+     * process's watchdog thread ({@link Watchdog}), which ends the process when a vector outlives
+     * {@code PLCVEC_TIMEOUT}; the verdicts kept for the end of the run, and the vector in progress
+     * kept for a guard that speaks if the process ends before the run does.
      */
     static final class Run {
         private final Verifier verifier;
@@ -212,7 +213,7 @@ public final class PlcvecTests {
         private final Duration timeout;
         private final Path write;
         private final Consumer<String> timedOut;
-        private final List<Verdict> verdicts = Collections.synchronizedList(new ArrayList<>());
+        private final List<Verdict> verdicts;
         private final long start = System.nanoTime();
         /**
          * The watchdog's view, one word written twice per vector with no fence (a clock read per
@@ -223,7 +224,12 @@ public final class PlcvecTests {
         private long started;                // vectors started (the test thread's own count)
         private volatile String ended;       // the vector after which the run ended, or null
         private volatile boolean finished;
-        private Thread watchdog;
+        private boolean watched;             // handed to the watchdog (on the run's first vector)
+        /** The bound, and how often the watchdog looks: every eighth of the bound, 10 ms to 1 s. */
+        final long bound;
+        final long tick;
+        private long seen = -1;              // the watchdog's own: the beat it saw last, and since when
+        private long since;
 
         Run(Verifier verifier, List<Vector> vectors, Duration timeout, Path write, Consumer<String> timedOut) {
             this.verifier = verifier;
@@ -231,6 +237,10 @@ public final class PlcvecTests {
             this.timeout = timeout;
             this.write = write;
             this.timedOut = timedOut;
+            this.bound = timeout.toNanos();
+            this.tick = Math.max(10_000_000L, Math.min(1_000_000_000L, bound / 8));
+            // Room for every vector's verdict and a stale known failure or two: no growth mid-run.
+            this.verdicts = Collections.synchronizedList(new ArrayList<>(vectors.size() + 8));
             ExitGuard.watch(this);
         }
 
@@ -239,22 +249,49 @@ public final class PlcvecTests {
         }
 
         Verdict check(Vector vector, int index) {
-            if (ended != null) {
+            if (!enter(index)) {
                 Verdict notRun = notRun(vector);
                 verdicts.add(notRun);
                 return notRun;
             }
-            if (watchdog == null) {
-                watchdog = new Thread(this::watch, "plcvec-watchdog");
-                watchdog.setDaemon(true);
-                watchdog.start();
+            Verdict r = verifier.check(vector);
+            leave();
+            verdicts.add(r);
+            return r;
+        }
+
+        /**
+         * The guard's entry: vector {@code index} is in progress from now on, unless the run has
+         * ended (false: it is not to be run). One read and one store without a fence; no
+         * allocation, no clock, no handoff (the process's watchdog, given the run with its first
+         * vector, reads the word on its own tick).
+         */
+        boolean enter(int index) {
+            if (ended != null) {
+                return false;
+            }
+            if (!watched) {
+                watched = true;
+                Watchdog.watch(this);
             }
             started++;
             beat.lazySet(started << 32 | (index + 1));
-            Verdict r = verifier.check(vector);
+            return true;
+        }
+
+        /** The guard's exit: the vector in progress has its verdict; none is in progress. */
+        void leave() {
             beat.lazySet(started << 32);
-            verdicts.add(r);
-            return r;
+        }
+
+        /**
+         * The run is over: the watchdog and the exit guard forget it (a process that makes many
+         * runs keeps none of them).
+         */
+        void stop() {
+            finished = true;
+            Watchdog.forget(this);
+            ExitGuard.forget(this);
         }
 
         private static Verdict notRun(Vector vector) {
@@ -262,30 +299,23 @@ public final class PlcvecTests {
         }
 
         /**
-         * The watchdog: every eighth of the bound (10 ms to 1 s), whether the same vector is still
-         * in progress; when it has been for the bound, the run ends there.
+         * The watchdog's look at the run, at {@code now}: whether the same vector has been in
+         * progress for the bound; if so, the run ends there (false: the run is not to be watched
+         * any more).
          */
-        private void watch() {
-            long bound = timeout.toNanos();
-            long tick = Math.max(10_000_000L, Math.min(1_000_000_000L, bound / 8));
-            long seen = -1;
-            long since = System.nanoTime();
-            while (!finished) {
-                try {
-                    Thread.sleep(tick / 1_000_000, (int) (tick % 1_000_000));
-                } catch (InterruptedException e) {
-                    return;
-                }
-                long now = System.nanoTime();
-                long b = beat.get();
-                if (b != seen) {
-                    seen = b;
-                    since = now;
-                } else if ((b & 0xffff_ffffL) != 0 && now - since >= bound && !finished) {
-                    timedOut.accept(timedOutText((int) (b & 0xffff_ffffL) - 1));
-                    return;
-                }
+        boolean look(long now) {
+            if (finished) {
+                return false;
             }
+            long b = beat.get();
+            if (b != seen) {
+                seen = b;
+                since = now;
+            } else if ((b & 0xffff_ffffL) != 0 && now - since >= bound && !finished) {
+                timedOut.accept(timedOutText((int) (b & 0xffff_ffffL) - 1));
+                return false;
+            }
+            return true;
         }
 
         /**
@@ -346,10 +376,7 @@ public final class PlcvecTests {
 
         /** The last test: the totals, the expectations file, and a failure if nothing was tested. */
         void end() {
-            finished = true;
-            if (watchdog != null) {
-                watchdog.interrupt();
-            }
+            stop();
             List<Verdict> all;
             synchronized (verdicts) {
                 all = List.copyOf(verdicts);
@@ -392,6 +419,70 @@ public final class PlcvecTests {
     }
 
     /**
+     * The watchdog: one daemon thread per process, started with the first run's first vector,
+     * that looks at every run in progress on the shortest tick among them and ends the run (the
+     * process) whose vector outlived its bound. One per process, not per run: a run starts and
+     * ends no thread, and nothing of it runs beside the vectors but a look at one word a tick.
+     */
+    static final class Watchdog {
+        private static final List<Run> WATCHED = new java.util.concurrent.CopyOnWriteArrayList<>();
+        private static Thread thread;
+        /**
+         * The tick the watchdog sleeps on (Long.MAX_VALUE: until a run is handed over): a run
+         * whose own tick is not shorter wakes nobody. Set to MAX before the watchdog reads the runs,
+         * so that a run handed over meanwhile is either among those read or sees MAX and wakes it.
+         */
+        private static volatile long sleeping = Long.MAX_VALUE;
+
+        private Watchdog() {
+        }
+
+        static synchronized void watch(Run run) {
+            WATCHED.add(run);
+            if (thread == null) {
+                thread = new Thread(Watchdog::loop, "plcvec-watchdog");
+                thread.setDaemon(true);
+                thread.start();
+            } else if (run.tick < sleeping) {
+                LockSupport.unpark(thread);   // to sleep on the shorter tick
+            }
+        }
+
+        static void forget(Run run) {
+            WATCHED.remove(run);
+        }
+
+        private static void loop() {
+            while (true) {
+                sleeping = Long.MAX_VALUE;
+                long tick = Long.MAX_VALUE;
+                for (Run r : WATCHED) {
+                    tick = Math.min(tick, r.tick);
+                }
+                sleeping = tick;
+                if (tick == Long.MAX_VALUE) {
+                    LockSupport.park();       // no run in progress: until one is handed over
+                } else {
+                    LockSupport.parkNanos(tick);
+                }
+                long now = System.nanoTime();
+                for (Run r : WATCHED) {
+                    try {
+                        if (!r.look(now)) {
+                            WATCHED.remove(r);
+                        }
+                    } catch (RuntimeException | Error e) {
+                        // One run's failure (its text could not be made) is not every run's: said
+                        // as an uncaught exception would be, and the other runs stay watched.
+                        WATCHED.remove(r);
+                        Thread.currentThread().getUncaughtExceptionHandler().uncaughtException(Thread.currentThread(), e);
+                    }
+                }
+            }
+        }
+    }
+
+    /**
      * A shutdown hook that names the vector in progress when the process ends in the middle of a
      * run (an implementation calling {@code System.exit}): without it, the test runner reports only
      * that its process went away. {@code Runtime.halt} and signals run no hook; the vector's name
@@ -400,6 +491,10 @@ public final class PlcvecTests {
     static final class ExitGuard {
         private static final List<Run> RUNS = new java.util.concurrent.CopyOnWriteArrayList<>();
         private static boolean installed;
+
+        static void forget(Run run) {
+            RUNS.remove(run);
+        }
 
         static synchronized void watch(Run run) {
             RUNS.add(run);

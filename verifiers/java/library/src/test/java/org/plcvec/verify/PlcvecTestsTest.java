@@ -173,6 +173,25 @@ class PlcvecTestsTest {
     }
 
     @Test
+    void runsShareOneWatchdogThread() throws Throwable {
+        // Three runs in progress at once (each past its first vector, its end not run yet), as
+        // three test classes' factories in one test process: one watchdog thread watches them all,
+        // and a run starts and ends no thread of its own.
+        List<List<DynamicNode>> runs = new java.util.ArrayList<>();
+        for (int i = 0; i < 3; i++) {
+            List<DynamicNode> n = nodes(PlcvecTests.of(Fakes.echo((s, d) -> { })).selection(Selection.all().ids(CompareTest.PROGRAM)));
+            ((DynamicTest) n.get(0)).getExecutable().execute();
+            runs.add(n);
+        }
+        long watchdogs = Thread.getAllStackTraces().keySet().stream()
+                .filter(t -> t.getName().equals("plcvec-watchdog") && t.isAlive()).count();
+        assertEquals(1, watchdogs);
+        for (List<DynamicNode> n : runs) {
+            ((DynamicTest) n.get(n.size() - 1)).getExecutable().execute();
+        }
+    }
+
+    @Test
     void aLambdaIsNamedByTheClassItIsWrittenIn() {
         Emulator lambda = (vector, memory) -> step -> null;
         // Not the JVM's made-up PlcvecTestsTest$$Lambda$123/0x...: the same name in every run.
