@@ -382,5 +382,12 @@ def test_the_guarded_figure_is_printed_under_its_language_with_the_benchs_own_ra
     # unguarded judging, which need not be its headline figure), not 3000/4000 worked out here.
     assert lines[g + 1].split() == ["g,", "under", "the", "per-vector", "bound", "3,526", "3,000", "3.0", "x", "0.90",
                                     "of", "unguarded"]
+    # Where the bench gives the unguarded judging's own figure, it is shown beside the ratio.
+    _bench(root, "h", f"""echo '{_figure(3526, 9000, guarded_vectors_per_s=3000, guarded_ratio=0.97,
+                                          unguarded_loop_vectors_per_s=3100)}'\n""")
+    assert main(["bench-native", "--root", str(root), "--vectors", str(tmp_path), "--lang", "h"]) == 0
+    h = capsys.readouterr().out.splitlines()
+    h = h[next(i for i, line in enumerate(h) if line.startswith("h ")) + 1]
+    assert h.endswith("x 0.97 of unguarded (3,100 vectors/s, the same judging without the bound)")
     # A bench without the guarded figure gets no such line.
     assert [line for line in lines if "per-vector bound" in line] == [lines[g + 1]]
