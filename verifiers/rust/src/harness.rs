@@ -916,7 +916,8 @@ impl Drop for Guard {
 /// the vectors are run once more by a child that records each as it starts and ends, its output
 /// set aside, and the vector that child ends on is named. An implementation that ends the process
 /// on a vector does so again; when the second run does not end early, the run still fails, and
-/// says that the vector cannot be named.
+/// says that the vector cannot be named. A child stopped from outside (`stopped_from_outside`) is
+/// not run again.
 fn supervise() -> ExitCode {
     let (status, record) = match run_child(false) {
         Ok(ended) => ended,
@@ -926,6 +927,16 @@ fn supervise() -> ExitCode {
         return ExitCode::from(status.code().map_or(EXIT_FAILED, |c| u8::try_from(c).unwrap_or(EXIT_FAILED)));
     }
     let how = describe_status(&status);
+    if stopped_from_outside(&status) {
+        let _ = std::io::stdout().flush();
+        println!(
+            "\n\nFAIL the run\n    the test process ended ({how}) before the run came to its end, stopped from outside \
+             (a signal that asks a process to stop, or the kernel's out-of-memory killer), so the vectors are not run \
+             again to name the one it was running; a run that ends early is never a pass"
+        );
+        eprintln!("plcvec: the test process ended early ({how})");
+        return ExitCode::from(EXIT_FAILED);
+    }
     eprintln!("plcvec: the test process ended early ({how}); running the vectors again, each recorded, to find the one it ended on");
     let again = run_child(true);
     let _ = std::io::stdout().flush();
@@ -996,6 +1007,23 @@ fn run_child(each_vector: bool) -> std::result::Result<(std::process::ExitStatus
     }
 }
 
+/// Whether the child was stopped by a signal that comes from outside, not from the implementation
+/// (which ends the process by exiting, aborting or crashing): SIGHUP, SIGINT, SIGTERM, or SIGKILL
+/// (a person's `kill -9`, or the kernel's out-of-memory killer). Running the vectors again then
+/// would only be stopped again, or fill the memory again.
+fn stopped_from_outside(status: &std::process::ExitStatus) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::process::ExitStatusExt;
+        matches!(status.signal(), Some(1 | 2 | 9 | 15))
+    }
+    #[cfg(not(unix))]
+    {
+        let _ = status;
+        false
+    }
+}
+
 fn describe_status(status: &std::process::ExitStatus) -> String {
     if let Some(code) = status.code() {
         return format!("exit status {code}");
@@ -1005,6 +1033,8 @@ fn describe_status(status: &std::process::ExitStatus) -> String {
         use std::os::unix::process::ExitStatusExt;
         if let Some(signal) = status.signal() {
             let name = match signal {
+                1 => " (SIGHUP)",
+                2 => " (SIGINT)",
                 6 => " (SIGABRT)",
                 9 => " (SIGKILL)",
                 11 => " (SIGSEGV)",

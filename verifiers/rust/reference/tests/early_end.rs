@@ -2,21 +2,23 @@
 //! by the vector it ended on: the child that runs the vectors records nothing per vector, so the
 //! harness runs them once more, each recorded, its output set aside, and names the vector that
 //! run ends on. When that second run does not end early, the run fails all the same and says the
-//! vector cannot be named; the second run writes no expectations file.
+//! vector cannot be named; the second run writes no expectations file. A process stopped from
+//! outside (SIGTERM) is not run again.
 //!
 //! A test binary of its own (`harness = false`): its `main` is the supervised run when
 //! `PLCVEC_TEST_EARLY_END` is set (the harness starts the binary again for its children), and
 //! otherwise starts that run and checks what it says.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::{Command, ExitCode};
 
 use plcvec::harness::{Arguments, Harness};
 use plcvec::{Execute, Memory, OnMemory, Refusal, Selection, Step, Suite, Vector};
 use plcvec_reference::Reference;
 
-/// Set for the supervised run: `always`, or `once:<file>` (end the process only when the file
-/// does not exist yet, creating it: the first run ends, the second does not).
+/// Set for the supervised run: `always`, `once:<file>` (end the process only when the file does
+/// not exist yet, creating it: the first run ends, the second does not), or `term:<file>` (add a
+/// line to the file, and stop the process with SIGTERM as from outside).
 const CHILD: &str = "PLCVEC_TEST_EARLY_END";
 /// Set for the supervised run: the log file libtest-mimic writes (`--logfile`).
 const LOG: &str = "PLCVEC_TEST_EARLY_END_LOG";
@@ -24,7 +26,7 @@ const ON: &str = "fx5-time-add/TADD/manual-example/program";
 
 struct EndsEarly {
     reference: Reference,
-    once: Option<PathBuf>,
+    mode: String,
 }
 
 impl Execute for EndsEarly {
@@ -37,8 +39,22 @@ impl Execute for EndsEarly {
     }
 
     fn execute(&mut self, vector: &Vector, step: &Step, memory: &mut Memory<'_>) -> Result<Option<bool>, Refusal> {
-        if vector.id() == ON && self.once.as_deref().is_none_or(|marker| std::fs::File::create_new(marker).is_ok()) {
-            std::process::exit(0);
+        if vector.id() == ON {
+            if let Some(marker) = self.mode.strip_prefix("once:") {
+                if std::fs::File::create_new(marker).is_ok() {
+                    std::process::exit(0);
+                }
+            } else if let Some(count) = self.mode.strip_prefix("term:") {
+                use std::io::Write;
+                let mut file = std::fs::OpenOptions::new().create(true).append(true).open(count).unwrap();
+                file.write_all(b"reached\n").unwrap();
+                Command::new("kill").args(["-TERM", &std::process::id().to_string()]).status().unwrap();
+                loop {
+                    std::thread::sleep(std::time::Duration::from_secs(1));
+                }
+            } else {
+                std::process::exit(0);
+            }
         }
         self.reference.execute(vector, step, memory)
     }
@@ -50,8 +66,8 @@ fn tadd() -> Selection {
 
 /// The supervised run (and, started by it, its children): two test threads.
 fn supervised_run(mode: &str) -> ExitCode {
-    let once = mode.strip_prefix("once:").map(PathBuf::from);
-    Harness::new(move || OnMemory(EndsEarly { reference: Reference::new(), once: once.clone() }))
+    let mode = mode.to_owned();
+    Harness::new(move || OnMemory(EndsEarly { reference: Reference::new(), mode: mode.clone() }))
         .suite(Suite::embedded().unwrap())
         .select(tadd())
         .arguments(Arguments { test_threads: Some(2), logfile: std::env::var(LOG).ok(), ..Arguments::default() })
@@ -112,6 +128,18 @@ fn main() -> ExitCode {
     assert!(!expectations.exists(), "the second run wrote the expectations file\n{stdout}");
     let logged = std::fs::read_to_string(&log).unwrap_or_default();
     assert!(!logged.contains("test result"), "the second run wrote the log file:\n{logged}");
+
+    // Stopped from outside: the run fails, and the vectors are not run again.
+    if cfg!(unix) {
+        let reached = scratch.join("reached");
+        let (code, stdout) = supervise(&format!("term:{}", reached.display()), &expectations, None);
+        assert_eq!(code, Some(101), "{stdout}");
+        let stopped = "\n\nFAIL the run\n    the test process ended (killed by signal 15 (SIGTERM)) before the run \
+                       came to its end, stopped from outside";
+        assert!(stdout.contains(stopped), "{stdout}");
+        let times = std::fs::read_to_string(&reached).unwrap_or_default().lines().count();
+        assert_eq!(times, 1, "the implementation reached {ON} {times} times\n{stdout}");
+    }
     std::fs::remove_dir_all(&scratch).unwrap();
     println!("an early end is named by the vector it ended on: ok");
     ExitCode::SUCCESS
