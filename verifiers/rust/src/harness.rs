@@ -847,10 +847,10 @@ fn write_at(file: &File, bytes: &[u8], offset: u64) -> std::io::Result<()> {
     }
 }
 
-/// The guard the harness puts around each vector (the watchdog and the progress record the
-/// supervised child writes), driven from outside the harness around [`judge_plan`]'s judging: the
-/// crate's benchmark sets the judging with it beside the same judging without. Not part of the
-/// API; it may change in any release.
+/// The guard the harness puts around each vector (the watchdog's states, and the record of each
+/// vector in the child that runs the vectors again after a run ended early), driven from outside
+/// the harness around [`judge_plan`]'s judging: the crate's benchmark sets the judging with it
+/// beside the same judging without. Not part of the API; it may change in any release.
 ///
 /// [`judge_plan`]: crate::judge_plan
 #[doc(hidden)]
