@@ -39,6 +39,19 @@ function heldBefore(expected: Expected, steps: readonly StepResult[], i: number)
  * `cpuWrites` that the vector does not list is the CPU's own write, not a stray one.
  */
 export function compare(expected: Expected, steps: readonly StepResult[], cpuWrites: ReadonlySet<string> = NO_CPU_WRITES): readonly Problem[] {
+  return problemsOf(expected, steps, cpuWrites, undefined);
+}
+
+/**
+ * compare, given the CPU's writes or the implementation that declares them (looked up only when a
+ * step differs: judging a vector that passes, as most do, then looks nothing up per vector).
+ */
+function problemsOf(
+  expected: Expected,
+  steps: readonly StepResult[],
+  given: ReadonlySet<string> | undefined,
+  impl: Implementation | undefined,
+): readonly Problem[] {
   const count = expected.results.length;
   if (steps.length !== count) {
     return [{ step: undefined, field: "steps", expected: `${count} steps`, actual: `${steps.length} steps` }];
@@ -57,6 +70,7 @@ export function compare(expected: Expected, steps: readonly StepResult[], cpuWri
     let got: Devices = typeof step.devices === "object" && step.devices !== null ? step.devices : {};
     if (holds(got, expected, i)) continue;
     const want = expected.states[i]!;
+    const cpuWrites = given ?? (impl === undefined ? NO_CPU_WRITES : cpuWritesOf(impl));
     if (expected.scratch.size || cpuWrites.size) {
       const has = Object.prototype.hasOwnProperty;
       got = Object.fromEntries(
@@ -127,7 +141,7 @@ export function judge(p: Prepared, impl: Implementation): Verdict {
   }
   if ("steps" in outcome) {
     if (!Array.isArray(outcome.steps)) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered steps that are not a list`);
-    const problems = compare(expected, outcome.steps, cpuWritesOf(impl));
+    const problems = problemsOf(expected, outcome.steps, undefined, impl);
     if (problems.length === 0) return verdict(p, PASS, problems);
     return { ...verdict(p, FAIL, problems), answer: outcome.steps };
   }

@@ -43,13 +43,21 @@ export function isBcd(b: number): boolean {
 
 const bcdValue = (b: number): number => (b >> 4) * 10 + (b & 0xf);
 
+/** Parsed mnemonics: a vector's instruction is parsed once, not at every execution. */
+const mnemonics = new Map<string, readonly [string, string]>();
+
 /** "AND <=DT" -> ["AND", "<="]: the form and condition the generated names give as values. */
 function parseMnemonic(instruction: string): readonly [string, string] {
-  const info = (INSTRUCTION_INFO as Readonly<Record<string, InstructionInfo | undefined>>)[instruction];
-  if (info?.family !== "cp1e-time-compare" || info.form === null || info.condition === null) {
-    throw new Error(`not a CP1E time comparison: ${instruction}`);
+  let parsed = mnemonics.get(instruction);
+  if (parsed === undefined) {
+    const info = (INSTRUCTION_INFO as Readonly<Record<string, InstructionInfo | undefined>>)[instruction];
+    if (info?.family !== "cp1e-time-compare" || info.form === null || info.condition === null) {
+      throw new Error(`not a CP1E time comparison: ${instruction}`);
+    }
+    parsed = [info.form, info.condition];
+    mnemonics.set(instruction, parsed);
   }
-  return [info.form, info.condition];
+  return parsed;
 }
 
 export class Cp1eTimeCompare extends BaseMachine {

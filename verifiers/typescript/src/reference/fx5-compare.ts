@@ -31,6 +31,9 @@ export const DATE_FIELDS: readonly Field[] = [
 
 const SM709 = "SM709";
 
+/** Parsed mnemonics of each kind ("LDTM<=" is not a date comparison): a vector's instruction is parsed once. */
+const mnemonics = { TM: new Map<string, { form: string; condition: string }>(), DT: new Map<string, { form: string; condition: string }>() };
+
 
 export class Fx5CompareMachine extends BaseMachine {
   readonly contact = true;
@@ -133,13 +136,19 @@ export class Fx5CompareMachine extends BaseMachine {
     return rlo || contact;
   }
 
-  /** "ANDTM<=" -> {form: "AND", condition: "<="}: the values the generated names give. */
+  /** "ANDTM<=" -> {form: "AND", condition: "<="}: the values the generated names give (parsed once per mnemonic). */
   protected parse(instruction: string): { form: string; condition: string } {
-    const info = (INSTRUCTION_INFO as Readonly<Record<string, InstructionInfo | undefined>>)[instruction];
-    const family = this.kind === "TM" ? "fx5-time-compare" : "fx5-date-compare";
-    if (info?.family !== family || info.form === null || info.condition === null) {
-      throw new Error(`not an FX5 ${this.kind} comparison: ${instruction}`);
+    const parsedOfKind = mnemonics[this.kind];
+    let parsed = parsedOfKind.get(instruction);
+    if (parsed === undefined) {
+      const info = (INSTRUCTION_INFO as Readonly<Record<string, InstructionInfo | undefined>>)[instruction];
+      const family = this.kind === "TM" ? "fx5-time-compare" : "fx5-date-compare";
+      if (info?.family !== family || info.form === null || info.condition === null) {
+        throw new Error(`not an FX5 ${this.kind} comparison: ${instruction}`);
+      }
+      parsed = { form: info.form, condition: info.condition };
+      parsedOfKind.set(instruction, parsed);
     }
-    return info as { form: string; condition: string };
+    return parsed;
   }
 }
