@@ -164,6 +164,31 @@ test("no way out of the gate: an early exit, an abort, a loop, a filter of nothi
   assert.equal(hostileRun({}, ["--test-name-pattern=fx5-time-add/TADDP/"]).status, 0);
 });
 
+test("runVectors' guard names the vector an early exit, an abort or a loop happened on, and the run fails", () => {
+  const fixture = join(here, "..", "fixtures", "run-vectors.js");
+  const { NODE_TEST_CONTEXT: _, ...clean } = process.env;
+  const run = (env: Record<string, string>) => {
+    const r = spawnSync(process.execPath, [fixture], {
+      ...BOUND,
+      env: { ...clean, PLCVEC_FAMILY: "fx5-time-add", PLCVEC_HOSTILE_ON: TADD_EXAMPLE, ...env },
+    });
+    return { status: r.status, signal: r.signal, out: r.stdout + r.stderr };
+  };
+  const cases: [Record<string, string>, RegExp][] = [
+    [{ PLCVEC_HOSTILE: "exit-zero" }, /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: the implementation ended the process \(exit status 0\)/],
+    [{ PLCVEC_HOSTILE: "crash" }, /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: the implementation aborted the process/],
+    [{ PLCVEC_HOSTILE: "loop-forever", PLCVEC_TIMEOUT: "0.5" }, /plcvec: vector fx5-time-add\/TADD\/manual-example\/program: no answer within 0.5 s \(PLCVEC_TIMEOUT\)/],
+  ];
+  for (const [env, pattern] of cases) {
+    const r = run(env);
+    assert.ok(r.status !== 0, `${JSON.stringify(env)}: the run must fail (status ${r.status}, signal ${r.signal})\n${r.out}`);
+    assert.match(r.out, pattern, JSON.stringify(env));
+  }
+  // The same fixture with the reference passes: what fails above is the hostile implementation.
+  const plain = run({});
+  assert.equal(plain.status, 0, plain.out);
+});
+
 test("known failures under node:test: an id the suite does not have is stale; a listed failure passes; the file is written", () => {
   const dir = mkdtempSync(join(tmpdir(), "plcvec-known-"));
   const known = join(dir, "known.toml");
