@@ -89,6 +89,12 @@ class SuiteModel:
     conditions: list[Name] = field(default_factory=list)
     executions: list[Name] = field(default_factory=list)
     generated_note: str = GENERATED_NOTE
+    # The PLCVEC_* variables every runner reads, the old names still read with a warning, and the
+    # names plcvec's own tools use (plcvec_verify.settings, the one table).
+    settings: list = field(default_factory=list)
+    deprecated_settings: list = field(default_factory=list)
+    reserved_settings: list = field(default_factory=list)
+    reserved_setting_prefixes: list = field(default_factory=list)
 
     @property
     def total(self) -> int:
@@ -193,7 +199,16 @@ def load_model(vectors_dir, spec_dir=None) -> SuiteModel:
         forms=[_name(f) for f in FORMS if any(i.form == f for fam in families for i in fam.instructions)],
         conditions=[_name(c) for c in CONDITIONS if any(i.condition == c for fam in families for i in fam.instructions)],
         executions=[_name(e) for e in EXECUTIONS if any(i.execution == e for fam in families for i in fam.instructions)],
+        **_settings(),
     )
+
+
+def _settings() -> dict:
+    from plcvec_verify import settings
+
+    return {"settings": list(settings.SETTINGS), "deprecated_settings": list(settings.DEPRECATED),
+            "reserved_settings": list(settings.RESERVED),
+            "reserved_setting_prefixes": list(settings.RESERVED_PREFIXES)}
 
 
 def _instruction(name: str, metadata: dict) -> Instruction:

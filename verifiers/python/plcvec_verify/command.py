@@ -3,6 +3,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import sys
 from pathlib import Path
 
@@ -76,35 +77,53 @@ ENVIRONMENT = {"PLCVEC_VECTORS": "vectors", "PLCVEC_ID": "id", "PLCVEC_FAMILY": 
 _LISTS = ("id", "family", "instruction", "tag", "interpretation")
 
 
-def apply_environment(args, environ=None) -> dict:
-    """Fill the options not given from the PLCVEC_* variables; -> {option: the variable it came from}."""
+def apply_environment(args, environ=None, warn=None) -> dict:
+    """Fill the options not given from the PLCVEC_* variables; -> {option: the variable it came from}.
+
+    A deprecated name is read as the setting it was renamed to (settings.DEPRECATED); `warn` is given
+    each warning the environment earns (a deprecated name, a PLCVEC_* variable that is no setting)."""
+    from .settings import DEPRECATED, warnings
+
     environ = os.environ if environ is None else environ
+    for message in warnings(environ):
+        (warn or _warn)(message)
+    renamed = {d.replacement: d.name for d in DEPRECATED if d.name in environ and d.replacement not in environ}
     came = {}
     for variable, option in ENVIRONMENT.items():
-        text = environ.get(variable)
+        source = variable if variable in environ else renamed.get(variable, variable)
+        text = environ.get(source)
         if text is None or getattr(args, option):
             continue
         if option in _LISTS:
             # Comma-separated; an empty item (`PLCVEC_FAMILY=,`) stays, to be refused by name.
             value = [item.strip() for item in text.split(",")]
         elif option == "timeout":
-            value = parse_timeout(text, variable)
+            value = parse_timeout(text, source)
         else:
             value = text
             if not text:
-                raise VerifyError(f"{variable} is set but empty")
+                raise VerifyError(f"{source} is set but empty")
         setattr(args, option, value)
-        came[option] = variable
+        came[option] = source
     return came
 
 
+def _warn(message: str) -> None:
+    print(f"plcvec: {message}", file=sys.stderr)
+
+
+# The bound on an answer (CONTRACT.md, "The environment"): one rule in every runner, so that a value
+# one runner takes is never refused by another, and none overflows a platform's clock.
+TIMEOUT_PATTERN = re.compile(r"[0-9]+(\.[0-9]+)?")
+TIMEOUT_MAX = 86400
+
+
 def parse_timeout(text: str, option: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise VerifyError(f"{option}={text}: not a number of seconds")
-    if not value > 0 or value == float("inf"):
-        raise VerifyError(f"{option}={text}: the bound must be a positive number of seconds")
+    """A number of seconds, written as digits with an optional fraction, above 0 and at most one day."""
+    value = float(text) if TIMEOUT_PATTERN.fullmatch(text) else None
+    if value is None or not 0 < value <= TIMEOUT_MAX:
+        raise VerifyError(f"{option}={text}: the bound must be a number of seconds above 0 and at most "
+                          f"{TIMEOUT_MAX}, written as digits with an optional fraction (2, 0.5)")
     return value
 
 
