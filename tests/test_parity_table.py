@@ -36,9 +36,10 @@ def test_table_loads_and_every_vector_it_names_exists():
             ids |= {v["id"] for v in json.loads(family.read_text())["vectors"]}
     for r in rows:
         assert r.on is None or r.on in ids, r.id
+        # The settings, plus the one misspelling and the hostile's choice the rows about them set.
         assert set(r.env) <= {"PLCVEC_ID", "PLCVEC_FAMILY", "PLCVEC_INSTRUCTION", "PLCVEC_TAG",
                               "PLCVEC_INTERPRETATION", "PLCVEC_SHARD", "PLCVEC_KNOWN_FAILURES",
-                              "PLCVEC_TIMEOUT"}, r.id
+                              "PLCVEC_TIMEOUT", "PLCVEC_TAGG", "PLCVEC_HOSTILE_CHOICE"}, r.id
     # Every damage the runner knows is used by some row, and every verdict appears.
     assert {r.damage for r in rows if r.damage} == set(parity.DAMAGES)
     assert {r.verdict for r in rows} == set(parity.STATUS)

@@ -44,11 +44,13 @@ STATUS = {"pass": 0, "fail": 1, "usage": 2, "empty": 5}
 # Languages whose entry point returns the verdict's own status, not only its test runner's.
 EXACT = {"python", "c"}
 ROW_KEYS = {"id", "what", "verdict", "names", "file_line", "hostile", "on", "damage", "source", "env",
-            "known", "filter", "except"}
+            "known", "filter", "except", "not_names", "once", "seconds", "known_as", "known_kind"}
 EXCEPT_KEYS = {"verdict", "names", "skip", "why"}
 DAMAGES = ("unknown-key", "unknown-header-key", "duplicate-id", "bit-holds-2", "word-out-of-range",
            "missing-steps", "major-version", "sha-mismatch", "non-utf8", "cut-at-line",
-           "cut-mid-line", "not-json", "missing-file", "missing-index", "empty-family")
+           "cut-mid-line", "not-json", "missing-file", "missing-index", "empty-family",
+           "fifo", "device", "symlink-loop", "index-fifo", "repeated-key", "repeated-key-in-index",
+           "bit-holds-2-in-final")
 # A user's mistake gets a message, not a stack trace: what each language's traces look like.
 TRACES = {
     "python": re.compile(r"Traceback \(most recent call last\)"),
@@ -81,6 +83,11 @@ class Row:
     known: str | None = None
     filter: str | None = None
     exceptions: dict[str, dict] = field(default_factory=dict)
+    not_names: list[str] = field(default_factory=list)
+    once: list[str] = field(default_factory=list)
+    seconds: float | None = None
+    known_as: str = "PLCVEC_KNOWN_FAILURES"
+    known_kind: str | None = None
 
 
 def load_table(path: Path = TABLE) -> list[Row]:
@@ -112,6 +119,12 @@ def load_table(path: Path = TABLE) -> list[Row]:
             raise TableError(f"{where}: a row takes a damage or a source, not both")
         if raw.get("filter") not in (None, "no-match"):
             raise TableError(f"{where}: filter must be \"no-match\"")
+        if raw.get("known_kind") not in (None, "fifo"):
+            raise TableError(f"{where}: known_kind must be \"fifo\"")
+        if raw.get("known_as", "PLCVEC_KNOWN_FAILURES") not in ("PLCVEC_KNOWN_FAILURES", "PLCVEC_EXPECTATIONS"):
+            raise TableError(f"{where}: known_as must be PLCVEC_KNOWN_FAILURES or PLCVEC_EXPECTATIONS")
+        if raw.get("seconds") is not None and not (isinstance(raw["seconds"], (int, float)) and raw["seconds"] > 0):
+            raise TableError(f"{where}: seconds must be a positive number")
         exceptions = raw.get("except", {})
         for lang, exc in exceptions.items():
             if lang not in LANGUAGES:
@@ -125,7 +138,10 @@ def load_table(path: Path = TABLE) -> list[Row]:
                         hostile=raw.get("hostile", "reference"), on=raw.get("on"),
                         damage=raw.get("damage"), source=raw.get("source"),
                         env={k: str(v) for k, v in raw.get("env", {}).items()},
-                        known=raw.get("known"), filter=raw.get("filter"), exceptions=exceptions))
+                        known=raw.get("known"), filter=raw.get("filter"), exceptions=exceptions,
+                        not_names=list(raw.get("not_names", [])), once=list(raw.get("once", [])),
+                        seconds=raw.get("seconds"), known_as=raw.get("known_as", "PLCVEC_KNOWN_FAILURES"),
+                        known_kind=raw.get("known_kind")))
     if not rows:
         raise TableError(f"{path}: no [[fault]] rows")
     return rows
@@ -207,7 +223,43 @@ class Folder:
 
 
 def damage(folder: Folder, kind: str) -> None:
+    if kind in ("fifo", "device", "symlink-loop", "index-fifo"):
+        # Not a regular file where one is expected: a loader that opens it without looking blocks
+        # (a pipe nobody writes), reads for ever (/dev/zero) or fails with ELOOP.
+        path = folder.index if kind == "index-fifo" else folder.file
+        path.unlink()
+        if kind in ("fifo", "index-fifo"):
+            os.mkfifo(path)
+        elif kind == "device":
+            path.symlink_to("/dev/zero")
+        else:
+            path.symlink_to(path.name)
+        return
+    if kind == "repeated-key-in-index":
+        text = folder.index.read_text(encoding="utf-8")
+        folder.index.write_text(text.replace('{', '{"families": {}, ', 1), encoding="utf-8")
+        return
     header, vectors = folder.read()
+    if kind == "repeated-key":
+        # A JSON object cannot hold a key twice, so the bytes are written: the target's `description`
+        # again, first, with another text (parsers differ on which one wins).
+        folder.write(header, vectors)
+        data = folder.file.read_bytes()
+        at = folder.target_line(data)
+        lines = data.split(b"\n")
+        j = next(i for i in range(at, len(lines)) if b'"description":' in lines[i])
+        lines[j] = re.sub(rb'"description": ?"', lambda m: b'"description":"a second description",' + m.group(0),
+                          lines[j], count=1)
+        folder.file.write_bytes(b"\n".join(lines))
+        folder.reseal()
+        return
+    if kind == "bit-holds-2-in-final":
+        v = folder.target(vectors)
+        devices = v["final"]["devices"]
+        name = next(d for d, value in sorted(devices.items()) if value is True or value is False)
+        devices[name] = 2
+        folder.write(header, vectors)
+        return
     if kind in ("unknown-key", "bit-holds-2", "word-out-of-range", "missing-steps", "duplicate-id"):
         v = folder.target(vectors)
         if kind == "unknown-key":
@@ -362,12 +414,19 @@ def run_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float) 
     if row.known is not None:
         known = scratch / lang / row.id / "known.toml"
         known.parent.mkdir(parents=True, exist_ok=True)
-        known.write_text(row.known.lstrip("\n"), encoding="utf-8")
-        env["PLCVEC_KNOWN_FAILURES"] = str(known)
+        if row.known_kind == "fifo":
+            if known.exists():
+                known.unlink()
+            os.mkfifo(known)
+        else:
+            known.write_text(row.known.lstrip("\n"), encoding="utf-8")
+        env[row.known_as] = str(known)
     status, output, seconds = run_bounded([str(entry(lang))], env, bound)
     problems = []
     if status is None:
         problems.append(f"no answer within {bound:.0f} s (a hang)")
+    elif row.seconds is not None and seconds > row.seconds:
+        problems.append(f"took {seconds:.0f} s, more than the row's {row.seconds:g} s")
     elif lang in EXACT:
         if status != STATUS[verdict]:
             problems.append(f"exit {status}, expected {STATUS[verdict]} ({verdict})")
@@ -377,6 +436,13 @@ def run_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float) 
         name = name.format(**subst)
         if name not in output:
             problems.append(f"output does not name {name!r}")
+    for name in row.not_names:
+        if name.format(**subst) in output:
+            problems.append(f"output names {name.format(**subst)!r}, which it must not")
+    for name in row.once:
+        n = output.count(name.format(**subst))
+        if n != 1:
+            problems.append(f"output holds {name.format(**subst)!r} {n} times, not once")
     if row.file_line:
         named = subst["known"] if row.known is not None else subst["file"]
         if not re.search(re.escape(named) + r":\d+", output):
