@@ -92,6 +92,7 @@ class SuiteModel:
     # The PLCVEC_* variables every runner reads, the old names still read with a warning, and the
     # names plcvec's own tools use (plcvec_verify.settings, the one table).
     settings: list = field(default_factory=list)
+    merged: dict = field(default_factory=dict)       # the manifest's {family: {merged id: the id it went to}}
     deprecated_settings: list = field(default_factory=list)
     reserved_settings: list = field(default_factory=list)
     reserved_setting_prefixes: list = field(default_factory=list)
@@ -188,7 +189,8 @@ def load_model(vectors_dir, spec_dir=None) -> SuiteModel:
             clauses=[_name(c) for c in sorted({c for v in data["vectors"] for c in v.get("clauses", ())})],
             reference=family_reference(spec)))
     return SuiteModel(
-        suite_version=str(manifest.get("generator_version", "")),
+        suite_version=str(manifest.get("suite_version") or manifest.get("generator_version", "")),
+        merged={name: dict(ids) for name, ids in manifest.get("merged", {}).items()},
         schema_version=str(manifest.get("schema_version", "")),
         spec_sha256=str(manifest.get("spec_sha256", "")),
         families=families,
@@ -239,4 +241,4 @@ def _devices_of(vector: dict):
 def index_json(model: SuiteModel) -> str:
     """The exported copy's index: which families, how many vectors, and which suite they are."""
     return jsonl_index(model.generated_note, model.suite_version, model.schema_version, model.spec_sha256,
-                       {f.name.text: f.jsonl for f in model.families})
+                       {f.name.text: f.jsonl for f in model.families}, model.merged)

@@ -216,6 +216,8 @@ def _build_golden(families, outputs):
     manifest = {
         "generated": GENERATED_NOTE,
         "schema_version": SCHEMA_VERSION,
+        "suite_version": __version__,
+        # The old name of suite_version, written until 0.3.0 for runners that read only it.
         "generator_version": __version__,
         "spec_sha256": spec_hash(families),
         "total": sum(entry["count"] for _, _, _, entry, _ in outputs),

@@ -22,10 +22,12 @@ def family_jsonl(family_file: dict) -> str:
 
 
 def jsonl_index(note: str, suite_version: str, schema_version: str, spec_sha256: str,
-                families: dict[str, str]) -> str:
+                families: dict[str, str], merged: dict[str, dict[str, str]]) -> str:
     """The index.json beside a folder of JSON-lines files ({family: its JSON-lines text}): which
     families, how many vectors, the sha256 of each file, and which suite they are. Every runner
-    that reads the JSON-lines form checks a file against it before trusting it."""
+    that reads the JSON-lines form checks a file against it before trusting it. `merged` is the
+    manifest's map of ids merged into another vector ({family: {old id: the id it went to}}), so that
+    a runner reading this form too names the vector an old known-failure id became."""
     counts = {name: text.count("\n") - 1 for name, text in families.items()}
     index = {
         "generated": note,
@@ -36,5 +38,6 @@ def jsonl_index(note: str, suite_version: str, schema_version: str, spec_sha256:
         "families": {name: {"file": f"{name}.jsonl", "count": counts[name],
                             "sha256": hashlib.sha256(text.encode()).hexdigest()}
                      for name, text in sorted(families.items())},
+        "merged": {name: dict(sorted(merged.get(name, {}).items())) for name in sorted(families)},
     }
     return json.dumps(index, indent=1, sort_keys=True) + "\n"

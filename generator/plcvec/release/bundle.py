@@ -80,7 +80,7 @@ def bundle(version, golden, vectors_dir, review_files, docs_dir, changes, licens
     for name, text in jsonl.items():
         out[f"jsonl/{name}.jsonl"] = text.encode("utf-8")
     out["jsonl/index.json"] = jsonl_index(JSONL_NOTE, version, manifest["schema_version"],
-                                          manifest["spec_sha256"], jsonl).encode("utf-8")
+                                          manifest["spec_sha256"], jsonl, manifest.get("merged", {})).encode("utf-8")
     out.update(protocol_schemas())
     out.update({f"review/{name}": text.encode("utf-8") for name, text in review_files.items()})
     for name in DOCS:
