@@ -10,6 +10,8 @@ import re
 from pathlib import Path
 
 from plcvec_verify.adapters import InProcess
+from plcvec_verify.describe import declaration
+from plcvec_verify.known import KnownFailures
 from plcvec_verify.reports import summary_text
 from plcvec_verify.runner import run
 from plcvec_verify.suite import Suite
@@ -40,9 +42,9 @@ def machine_free(text: str) -> str:
     return "\n".join(lines)
 
 
-def shared_run():
+def shared_run(known=None):
     cases = json.loads((TEXT / "answers.json").read_text())
-    return run(Suite.load(TEXT / "vectors"), InProcess(Replay(cases), "text-cases"))
+    return run(Suite.load(TEXT / "vectors"), InProcess(Replay(cases), "text-cases"), known=known)
 
 
 def test_the_shared_cases_give_the_expected_text_byte_for_byte():
@@ -50,6 +52,22 @@ def test_the_shared_cases_give_the_expected_text_byte_for_byte():
     got = machine_free(summary_text(report))
     want = (TEXT / "expected.txt").read_text()
     assert got == want
+
+
+def test_the_shared_cases_with_their_known_failures_give_the_expected_text(monkeypatch):
+    # The file is given as the shared cases name it: `known.toml`, from its own folder.
+    monkeypatch.chdir(TEXT)
+    report = shared_run(KnownFailures.load("known.toml"))
+    got = machine_free(summary_text(report))
+    assert got == (TEXT / "expected-known.txt").read_text()
+
+
+def test_the_declaration_is_written_as_each_python_entry_point_takes_it():
+    # TEXT.md, "The declaration in each runner": the table's two rows for Python's entry points.
+    changes = {"TADD-FLAGS-OFF": "set-only", "FX5-SM709-SCOPE": "all-words"}
+    assert declaration(changes) == "--choose FX5-SM709-SCOPE=all-words --choose TADD-FLAGS-OFF=set-only"
+    assert declaration(changes, "pytest") == ("--plcvec-choose FX5-SM709-SCOPE=all-words "
+                                              "--plcvec-choose TADD-FLAGS-OFF=set-only")
 
 
 def test_the_shared_cases_cover_what_text_md_promises():

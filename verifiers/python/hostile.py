@@ -13,6 +13,7 @@ from __future__ import annotations
 import json
 import os
 import signal
+import subprocess
 import sys
 
 from plcvec_reference.adapter import ReferenceAdapter
@@ -20,7 +21,8 @@ from plcvec_verify.serve import serve
 
 NAMES = ("reference", "wrong-result", "panic", "loop-forever", "empty-answer", "stray-write", "duplicate-write",
          "wrong-type", "out-of-range", "exit-zero", "exit-nonzero", "crash", "mutates-request",
-         "supports-nothing", "skips-everything", "bad-choice", "cpu-writes")
+         "supports-nothing", "skips-everything", "bad-choice", "cpu-writes", "word-65536", "not-a-number",
+         "closes-fds", "child-holds-stdout", "follows-alternative")
 
 
 def _first(devices: dict, kind) -> str:
@@ -29,14 +31,20 @@ def _first(devices: dict, kind) -> str:
 
 
 class Hostile(ReferenceAdapter):
-    def __init__(self, name: str, on: str):
+    def __init__(self, name: str, on: str, choice: str = ""):
         super().__init__()
         self.hostile, self.on = name, on
+        if name == "follows-alternative":
+            # Follows the alternative in what it answers, but its hello declares the defaults.
+            interp, _, alt = choice.partition("=")
+            self.followed = {interp: alt}
         if name == "cpu-writes":
             self.cpu_writes = ["SM56", "SD1", "SD0"]
 
     def hello(self, request):
         answer = super().hello(request)
+        if self.hostile == "follows-alternative":
+            self.choices = self.followed
         if self.hostile == "supports-nothing":
             answer["instructions"] = []
         elif self.hostile == "bad-choice":
@@ -58,6 +66,12 @@ class Hostile(ReferenceAdapter):
         if target and name == "crash":
             sys.stdout.flush()
             os.kill(os.getpid(), signal.SIGSEGV)
+        if target and name == "closes-fds":
+            os.closerange(3, 1024)
+            name = "wrong-result"
+        if target and name == "child-holds-stdout":
+            # A process that inherits stdout and stderr and outlives the answer by far.
+            subprocess.Popen(["sleep", "300"], stdin=subprocess.DEVNULL)
         initial = request["initial"]["devices"]
         answer = super().run(request)
         steps = answer["steps"]
@@ -85,6 +99,10 @@ class Hostile(ReferenceAdapter):
             steps[0]["devices"][_first(steps[0]["devices"], bool)] = 1
         elif name == "out-of-range":
             steps[0]["devices"][_first(steps[0]["devices"], int)] = 70000
+        elif name == "word-65536":
+            steps[0]["devices"][_first(steps[0]["devices"], int)] = 65536
+        elif name == "not-a-number":
+            steps[0]["devices"][_first(steps[0]["devices"], int)] = float("nan")
         elif name == "mutates-request":
             request["initial"]["devices"].clear()
             request["steps"].clear()
@@ -116,7 +134,7 @@ def main() -> int:
               file=sys.stderr)
         return 2
     out = RepeatingOut(sys.stdout.buffer, on) if name == "duplicate-write" else None
-    return serve(Hostile(name, on), stdout=out)
+    return serve(Hostile(name, on, os.environ.get("PLCVEC_HOSTILE_CHOICE", "")), stdout=out)
 
 
 if __name__ == "__main__":

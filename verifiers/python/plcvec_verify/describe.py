@@ -10,7 +10,7 @@ import re
 from collections import Counter
 
 from .compare import UNLISTED, Problem, show
-from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, RunReport, VectorResult
+from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, XFAIL, RunReport, VectorResult
 
 SHOW_PROBLEMS = 12      # field lines shown per failing vector
 SHOW_REASONS = 12       # skip reasons shown
@@ -154,22 +154,32 @@ def block(r: VectorResult, vector: dict | None, followed: dict, defaults: dict, 
     return lines
 
 
-def rollup_lines(report: RunReport, inferred) -> list[str]:
-    """The failing vectors grouped by what would explain them (TEXT.md, "The roll-up by reading")."""
+def rollup_lines(report: RunReport, inferred, syntax: str = "verify") -> list[str]:
+    """The failing vectors and known failures grouped by what would explain them (TEXT.md, "The
+    roll-up by reading"); `syntax` the runner whose declaration is shown ("verify" or "pytest")."""
     by_id = report.suite.by_id
     failing = [r for r in report.results if r.status in (FAIL, ERROR, NOT_RUN)]
-    if not failing:
+    known = [r for r in report.results if r.status == XFAIL]
+    if not failing and not known:
         return []
+
+    def family(vid):
+        return by_id.get(vid, {}).get("family", "")
+
     lines = []
     if inferred.explained:
-        groups = Counter(inferred.explained.values())
         lines.append(f"READINGS: {len(inferred.explained)} of {len(failing)} failing vectors pass "
                      "under other alternatives:")
-        for key, n in sorted(groups.items(), key=lambda kv: (-kv[1], _reading(kv[0]))):
-            lines.append(f"{INDENT}{n:>6}  {_reading(key)}")
-        lines.append(f"{INDENT}declare: " + " ".join(f"--choose {i}={a}" for i, a in inferred.changes.items()))
+        others = [vid for vid in inferred.unexplained]
+        lines += _groups(inferred.explained, others, family, "failing vectors")
+        lines.append(f"{INDENT}declare: " + declaration(inferred.changes, syntax))
         if inferred.broken:
             lines.append(f"{INDENT}(so declared, {len(inferred.broken)} vectors that pass now would fail)")
+        partial = _partial_families(inferred.explained, others, family)
+        if partial:
+            p = sum(1 for vid in others if family(vid) in partial)
+            lines.append(f"{INDENT}partial: {p} failing vectors that no reading explains are of the same families; "
+                         "a declaration may hide part of a bug there")
     if inferred.unexplained:
         lines.append(f"NOT EXPLAINED by any reading: {len(inferred.unexplained)} failing vectors, "
                      "by the clauses they cite:")
@@ -183,7 +193,50 @@ def rollup_lines(report: RunReport, inferred) -> list[str]:
                 lines.append(f"{INDENT}{'':>6}  {vid}")
             if len(ids) > SHOW_IDS:
                 lines.append(f"{INDENT}{'':>6}  ... and {len(ids) - SHOW_IDS} more")
+    if inferred.known_explained:
+        lines.append(f"KNOWN FAILURES: {len(inferred.known_explained)} of {len(known)} known failures pass under "
+                     "other alternatives:")
+        others = [*inferred.unexplained, *inferred.known_unexplained]
+        lines += _groups(inferred.known_explained, others, family, "failing vectors and known failures")
+        changes = dict(sorted({i: a for key in inferred.known_explained.values() for i, a in key}.items()))
+        lines.append(f"{INDENT}declare: " + declaration(changes, syntax))
+        lines.append(f"{INDENT}then remove those {len(inferred.known_explained)} known failures from "
+                     f"{report.known_file}")
     return lines
+
+
+def _groups(explained: dict, others: list, family, what: str) -> list[str]:
+    """One line per smallest change, largest group first, each marked partial when an unexplained
+    vector of `others` is of a family one of its vectors is of."""
+    groups: dict[tuple, list[str]] = {}
+    for vid, key in explained.items():
+        groups.setdefault(key, []).append(vid)
+    lines = []
+    for key, ids in sorted(groups.items(), key=lambda kv: (-len(kv[1]), _reading(kv[0]))):
+        families = {family(vid) for vid in ids}
+        near = [vid for vid in others if family(vid) in families]
+        mark = ""
+        if near:
+            named = ", ".join(sorted({family(vid) for vid in near}))
+            mark = f" (partial: {len(near)} {what} of {named} not explained)"
+        lines.append(f"{INDENT}{len(ids):>6}  {_reading(key)}{mark}")
+    return lines
+
+
+def _partial_families(explained: dict, others: list, family) -> set:
+    """The families of the partial groups' vectors that have unexplained vectors."""
+    explained_families = {family(vid) for vid in explained}
+    return {family(vid) for vid in others} & explained_families
+
+
+# How an implementer declares alternatives in each Python entry point (TEXT.md, "The declaration in
+# each runner").
+_OPTION = {"verify": "--choose", "pytest": "--plcvec-choose"}
+
+
+def declaration(changes: dict, syntax: str = "verify") -> str:
+    """`--choose ID=alt ...` (plcvec verify) or `--plcvec-choose ID=alt ...` (the pytest plugin)."""
+    return " ".join(f"{_OPTION[syntax]} {i}={a}" for i, a in sorted(changes.items()))
 
 
 def _reading(key) -> str:
@@ -219,5 +272,5 @@ def totals_line(report: RunReport) -> str:
     return f"{len(report.results)} vectors: " + ", ".join(parts)
 
 
-__all__ = ["block", "rollup_lines", "skipped_lines", "interpretations_line", "totals_line", "inputs_text",
+__all__ = ["block", "rollup_lines", "declaration", "skipped_lines", "interpretations_line", "totals_line", "inputs_text",
            "operands_text", "clock_text", "percent", "deciding", "FAILING"]

@@ -33,6 +33,8 @@ class Inference:
     choice: dict                                    # interpretation -> alternative that explains most
     explained: dict = field(default_factory=dict)   # failing id -> ((interpretation, alternative), ...)
     unexplained: list = field(default_factory=list)  # failing ids no offered reading explains
+    known_explained: dict = field(default_factory=dict)  # known failure (xfail) id -> its smallest change
+    known_unexplained: list = field(default_factory=list)  # known failures no offered reading explains
     broken: list = field(default_factory=list)      # passing ids that would fail under `choice`
     judged: int = 0                                 # vectors with an answer to judge
 
@@ -167,13 +169,15 @@ def inference(report: RunReport, cpu_writes=frozenset()) -> Inference:
     by_id = {j.id: j for j in judged}
     statuses = {r.id: r.status for r in report.results}
     for r in report.results:
-        if r.status not in (FAIL, ERROR, NOT_RUN):
+        if r.status not in (FAIL, ERROR, NOT_RUN, XFAIL):
             continue
+        explained, unexplained = ((result.known_explained, result.known_unexplained) if r.status == XFAIL
+                                  else (result.explained, result.unexplained))
         j = by_id.get(r.id)
         if j is None or tuple(choice[i] for i in j.touched) not in j.passing:
-            result.unexplained.append(r.id)
+            unexplained.append(r.id)
         else:
-            result.explained[r.id] = _smallest_change(j, followed, choice)
+            explained[r.id] = _smallest_change(j, followed, choice)
     for j in judged:
         if statuses.get(j.id) == PASS and tuple(choice[i] for i in j.touched) not in j.passing:
             result.broken.append(j.id)

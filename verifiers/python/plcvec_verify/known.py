@@ -24,6 +24,7 @@ else:  # the same parser, published as a backport (a dependency below 3.11 only)
 
 from .atomic import write_atomic
 from .errors import VerifyError
+from .files import check_regular
 
 SECTION = "known-failure"
 
@@ -43,6 +44,7 @@ class KnownFailures:
     @classmethod
     def load(cls, path) -> "KnownFailures":
         path = Path(path)
+        check_regular(path)     # a named pipe nobody writes would hang the run before it starts
         try:
             text = path.read_text(encoding="utf-8")
         except OSError as exc:
@@ -94,10 +96,13 @@ class KnownFailures:
                     f"listed as a known failure ({where}: {entry.reason}) but it passes; "
                     "remove it from the expectations file"))
         for vid, entry in sorted(self.entries.items()):
-            if vid not in suite.by_id:
-                results.append(VectorResult(vid, "", "", STALE, message=(
-                    f"listed as a known failure ({self.path}:{entry.line}) but the suite has no such vector; "
-                    "remove it from the expectations file")))
+            if vid in suite.by_id:
+                continue
+            went = suite.merged.get(vid)
+            why = (f": it was merged into {went}; list that id instead" if went
+                   else "; remove it from the expectations file")
+            results.append(VectorResult(vid, "", "", STALE, message=(
+                f"listed as a known failure ({self.path}:{entry.line}) but the suite has no such vector{why}")))
 
 
 def _line_of(text: str, key: str) -> int:
@@ -111,6 +116,7 @@ def write_expectations(path, results, reason: str) -> int:
     """Write the failing vectors of a run as a new expectations file (for adopting the suite)."""
     from .runner import FAILING, NOT_RUN, XFAIL
 
+    check_regular(path)
     lines = ["# Known failures: each passing entry fails the run as stale, so fix and delete.", ""]
     n = 0
     for r in sorted(results, key=lambda r: r.id):

@@ -308,10 +308,10 @@ def pytest_terminal_summary(terminalreporter, config):
         terminalreporter.write_line(f"STALE {r.id}: {r.message}")
     # Each failure was printed once, by its own item; here only what explains them.
     inferred = getattr(config, "_plcvec_inference", None)
-    if inferred is None and any(r.status in FAILING and r.family for r in report.results):
+    if inferred is None and any((r.status in FAILING or r.status == "xfail") and r.family for r in report.results):
         inferred = inference(report, frozenset(report.cpu_writes))
     if inferred is not None:
-        for line in rollup_lines(report, inferred):
+        for line in rollup_lines(report, inferred, syntax="pytest"):
             terminalreporter.write_line(line)
     if config.getoption("plcvec_infer") and inferred is not None:
         from .infer import declaration_lines

@@ -57,7 +57,7 @@ def summary_text(report: RunReport, verbose: bool = False, inferred=None, infer:
             lines.append(f"NOTE {r.id}: {note}")
     for note in report.notes:
         lines.append(f"NOTE adapter: {note}")
-    if any(r.status in FAILING and r.family for r in report.results):
+    if any((r.status in FAILING or r.status == XFAIL) and r.family for r in report.results):
         inferred = inferred or inference(report, frozenset(report.cpu_writes))
         lines += rollup_lines(report, inferred)
     if infer:

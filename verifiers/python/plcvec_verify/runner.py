@@ -63,6 +63,7 @@ class RunReport:
     stopped: int = 0                            # the signal that stopped the run, if one did
     gate: Gate = field(default_factory=Gate)    # what the run must show beyond "no failures"
     cpu_writes: tuple = ()                      # devices the implementation's CPU writes on its own
+    known_file: str = ""                        # the known-failures file as given, when there was one
 
     def count(self, status):
         return sum(1 for r in self.results if r.status == status)
@@ -269,6 +270,7 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     report.results = list(map(results.__getitem__, plan.ids if vectors is plan.vectors else map(_ID, vectors)))
     if known is not None:
         known.apply(report.results, suite)
+        report.known_file = known.path
     report.seconds = time.perf_counter() - started
     return report
 

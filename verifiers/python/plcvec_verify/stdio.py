@@ -418,7 +418,7 @@ class StdioAdapter:
         """Parse complete lines; one json.loads for the lot when they are all JSON (the usual case)."""
         joined = b"[" + b",".join(lines) + b"]"
         try:
-            parsed = json.loads(joined)
+            parsed = json.loads(joined, parse_constant=_not_json)
             if len(parsed) == len(lines):   # else some line held more than one value
                 # json.loads keeps the last of a repeated key; every key is followed by `":` in
                 # compact JSON, so equal counts prove no key was repeated (else look line by line).
@@ -430,7 +430,10 @@ class StdioAdapter:
         out = []
         for line in lines:
             try:
-                out.append(_unrepeated(line, json.loads(line)))
+                out.append(_unrepeated(line, json.loads(line, parse_constant=_not_json)))
+            except _NotFinite as exc:
+                raise _Fault(f"the adapter wrote {exc.args[0]}, which is not a JSON number (a word is an integer "
+                             f"0 to 65535): {_clip(line)}")
             except ValueError:
                 raise _Fault(f"the adapter wrote a line that is not JSON: {_clip(line)}")
         return out
@@ -469,6 +472,14 @@ def _refuse_repeats(pairs):
 
 class _RepeatedKey(ValueError):
     pass
+
+
+class _NotFinite(ValueError):
+    """NaN, Infinity or -Infinity: Python's json reads them, JSON has no such numbers."""
+
+
+def _not_json(name: str):
+    raise _NotFinite(name)
 
 
 def _unrepeated(line: bytes, msg):

@@ -9,12 +9,14 @@ from __future__ import annotations
 import fnmatch
 import hashlib
 import json
+import os
 import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from .errors import VerifyError
 from .expect import Expectations
+from .files import has_repeated_key, not_regular, read_bytes, repeated_key_message
 from .validate import schema_for, validate_file
 
 # A vector folder's index: the JSON form's manifest.json (plcvec generate), or the packaged
@@ -37,6 +39,8 @@ class Suite:
     schema_version: str = ""
     spec_sha256: str = ""
     by_id: dict[str, dict] = field(default_factory=dict)
+    # Ids the generator merged into another vector (the index's `merged`), each with the id it became.
+    merged: dict[str, str] = field(default_factory=dict)
     # Each vector's request and expectation, made once for all the runs over this set.
     expectations: Expectations = field(default_factory=Expectations, repr=False, compare=False)
 
@@ -50,7 +54,9 @@ class Suite:
         `plcvec export` and a release bundle's `jsonl/` hold), or one family file of either form."""
         path = Path(path)
         if path.is_dir():
-            index_path = next((path / name for name in INDEXES if (path / name).is_file()), None)
+            # Whatever is there under an index's name is read as the index (a named pipe is refused by
+            # name when read, not taken for "no index").
+            index_path = next((path / name for name in INDEXES if os.path.lexists(path / name)), None)
             if index_path is None:
                 raise VerifyError(f"{path}: no manifest.json (a vector folder) or index.json (the packaged "
                                   "JSON-lines form); is this a plcvec vector folder?")
@@ -60,10 +66,12 @@ class Suite:
                            for entry in index["families"].values()]
             except (KeyError, TypeError, AttributeError):
                 raise VerifyError(f"{index_path}: no `families` with a `file` each; is this a plcvec vector folder?")
-            suite_version = str(index.get("generator_version") or index.get("suite_version") or "")
+            suite_version = str(index.get("suite_version") or index.get("generator_version") or "")
+            merged = _merged_ids(index.get("merged"))
             manifest_hash = index.get("spec_sha256", "")
-        elif path.exists():
+        elif path.exists() or not_regular(path):
             index_path, entries, suite_version, manifest_hash = None, [(path, None, None)], "", ""
+            merged = {}
         else:
             raise VerifyError(f"{path}: no such vector folder or file")
         schema = schema_for(path)
@@ -101,7 +109,7 @@ class Suite:
             if v["id"] in seen:
                 raise VerifyError(f"{path}: vector id {v['id']} appears twice")
             seen.add(v["id"])
-        return cls(vectors=vectors, headers=headers, source=str(path), suite_version=suite_version,
+        return cls(vectors=vectors, headers=headers, source=str(path), suite_version=suite_version, merged=merged,
                    schema_version=", ".join(sorted(schema_versions)),
                    spec_sha256=manifest_hash or ", ".join(sorted(h for h in spec_hashes if h)))
 
@@ -186,17 +194,35 @@ def _parse_jsonl(path: Path, raw: bytes) -> dict:
     return {**header, "vectors": parsed[1:]}
 
 
+def _merged_ids(merged) -> dict[str, str]:
+    """{old id: the id it is now} from an index's {family: {old id: the id it went to}}, each chain of
+    merges followed to its end (a vector merged into one that was merged again)."""
+    flat = {}
+    for ids in (merged or {}).values():
+        if isinstance(ids, dict):
+            flat.update({k: v for k, v in ids.items() if isinstance(k, str) and isinstance(v, str)})
+    out = {}
+    for old, new in flat.items():
+        seen = {old}
+        while new in flat and new not in seen:
+            seen.add(new)
+            new = flat[new]
+        out[old] = new
+    return out
+
+
 def _read_json(path: Path):
-    return _parse_json(path, _read_bytes(path))
+    """An index: small, so checked for a repeated key at every load."""
+    raw = _read_bytes(path)
+    data = _parse_json(path, raw)
+    text = raw.decode("utf-8")
+    if has_repeated_key(text):
+        raise VerifyError(repeated_key_message(str(path), text))
+    return data
 
 
 def _read_bytes(path: Path) -> bytes:
-    try:
-        return path.read_bytes()
-    except FileNotFoundError:
-        raise VerifyError(f"{path}: no such file")
-    except OSError as exc:
-        raise VerifyError(f"{path}: {exc.strerror}")
+    return read_bytes(path)
 
 
 def _parse_json(path: Path, raw: bytes):

@@ -61,11 +61,13 @@ def validate_file(file: Path, raw: bytes, data: dict, schema_path: Path) -> None
         schema_text = schema_path.read_text(encoding="utf-8")
     except OSError as exc:
         raise VerifyError(f"{schema_path}: cannot read the vector-file schema: {exc.strerror or exc}")
+    # "-k": checked for repeated keys too (a file remembered before that check is checked again).
     key = (hashlib.sha256(raw).hexdigest() + "-"
-           + hashlib.sha256(schema_text.encode("utf-8")).hexdigest()[:16])
+           + hashlib.sha256(schema_text.encode("utf-8")).hexdigest()[:16] + "-k")
     if key in _VALID or _cached(key):
         _VALID.add(key)
         return
+    _refuse_repeated_keys(file, raw, data)
     try:
         validator = _validator(schema_text)
     except Exception as exc:   # a broken schema file is the set's fault, not the vector's
@@ -108,6 +110,26 @@ def vector_problem(v: dict) -> str:
                 return (f"at {where}/{device}: {json.dumps(value)} is {_kind(value)}, but at {first[1]}/{device} "
                         f"the same device holds {json.dumps(first[2])}, {_kind(first[2])}")
     return ""
+
+
+def _refuse_repeated_keys(file: Path, raw: bytes, data: dict) -> None:
+    """A key given twice in one object, named by file, line and vector (CONTRACT.md, "Loading")."""
+    from .files import has_repeated_key, repeated_key_message
+
+    text = raw.decode("utf-8")
+    if file.suffix == ".jsonl":
+        for number, line in enumerate(text.split("\n"), 1):
+            if line and has_repeated_key(line):
+                vector = data["vectors"][number - 2].get("id") if number > 1 else None
+                raise VerifyError(repeated_key_message(str(file), line, number - 1,
+                                                       lambda path: vector if isinstance(vector, str) else None))
+    elif has_repeated_key(text):
+        def vector_of(path):
+            if len(path) >= 2 and path[0] == "vectors" and isinstance(path[1], int):
+                v = data["vectors"][path[1]]
+                return v.get("id") if isinstance(v, dict) else None
+            return None
+        raise VerifyError(repeated_key_message(str(file), text, 0, vector_of))
 
 
 def _describe(error, data) -> str:
