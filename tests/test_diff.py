@@ -184,3 +184,73 @@ def test_alternatives_are_matched_by_their_choices():
     assert change_class(found[0][0]) == "expectation"
     assert change_class(("steps", 0, "rlo_in")) == "inputs" and change_class(("steps", 0, "expect", "result")) == "expectation"
     assert change_class(("clauses",)) == "metadata" and change_class(("initial", "devices", "D100")) == "inputs"
+
+
+# --- the upgrade report: what a new set changes for one implementation ------------------------------
+
+SET_ONLY = f"{TA}/TADD/carry/below-wrap/flags-on-before"    # offers TADD-FLAGS-OFF=set-only
+
+
+@pytest.fixture(scope="module")
+def upgrade_sets(tmp_path_factory):
+    """OLD without one interpretation (a new one in NEW) and with one alternative's expectation that
+    NEW changes; NEW merged one id and dropped another that a known-failures file lists."""
+    root = tmp_path_factory.mktemp("upgrade")
+    old, new = root / "old", root / "new"
+    shutil.copytree(REPO / "vectors", old)
+    shutil.copytree(REPO / "vectors", new)
+
+    def edit_old(by_id, doc):
+        doc["interpretations"] = [i for i in doc["interpretations"] if i["id"] != "TADD-ERROR-ORDER"]
+        alt = next(a for a in by_id[SET_ONLY]["alternatives"] if a["choices"] == {"TADD-FLAGS-OFF": "set-only"})
+        device = next(d for d, v in alt["final"]["devices"].items() if v is True)
+        alt["final"]["devices"][device] = False        # NEW expects another value under set-only
+        for expect in alt["expect"]:
+            expect["devices"].pop(device, None)
+        doc["vectors"].append({**json.loads(json.dumps(by_id[EX1])), "id": f"{TA}/TADD/old/merged-away"})
+    edit_family(old, TA, edit_old)
+    manifest = json.loads((new / "manifest.json").read_text())
+    manifest["merged"][TA] = {f"{TA}/TADD/old/merged-away": EX1}
+    (new / "manifest.json").write_text(json.dumps(manifest, indent=1))
+    known = root / "known.toml"
+    known.write_text(f'[[known-failure]]\nid = "{f"{TA}/TADD/old/merged-away"}"\nreason = "r"\n\n'
+                     f'[[known-failure]]\nid = "{TA}/TADD/gone"\nreason = "r"\n\n'
+                     f'[[known-failure]]\nid = "{SET_ONLY}"\nreason = "r"\n')
+    return old, new, known
+
+
+def test_the_upgrade_report_lists_what_changes_under_the_declarations(upgrade_sets, capsys):
+    old, new, known = upgrade_sets
+    assert main(["diff", str(old), str(new), "--choose", "TADD-FLAGS-OFF=set-only",
+                 "--expectations", str(known)]) == 1
+    out = capsys.readouterr().out
+    # The new interpretation by id, question and default, and that it is not declared.
+    assert "  + TADD-ERROR-ORDER (fx5-time-add): When one execution meets both" in out
+    assert "default device-range-first" in out
+    assert "take their default: TADD-ERROR-ORDER=device-range-first" in out
+    # Under set-only the changed alternative's vector expects something else; nothing else does.
+    assert "vectors whose expectation changed for you: 1\n" in out and f"  ~ {SET_ONLY}\n" in out
+    # Each known failure's fate.
+    assert f"merged into {EX1}; list that id instead" in out
+    assert f"  - {TA}/TADD/gone ({known}:5): no such vector in the new set; remove it" in out
+    assert f"  ~ {SET_ONLY} ({known}:9): its expectation changed" in out
+
+
+def test_under_the_defaults_the_changed_alternative_changes_nothing(upgrade_sets, capsys):
+    old, new, _ = upgrade_sets
+    main(["diff", str(old), str(new), "--choose", "TADD-EXACT-24=carry-at-24"])
+    assert "vectors whose expectation changed for you: 0\n" in capsys.readouterr().out
+
+
+def test_a_declared_alternative_the_new_set_lacks_is_named(upgrade_sets, capsys):
+    old, new, _ = upgrade_sets
+    main(["diff", str(old), str(new), "--choose", "TADD-FLAGS-OFF=sometimes"])
+    assert "  ! TADD-FLAGS-OFF=sometimes" in capsys.readouterr().out
+
+
+def test_brief_names_a_new_interpretation_and_prints_no_empty_header_line(upgrade_sets, capsys):
+    old, new, _ = upgrade_sets
+    main(["diff", str(old), str(new), "--brief"])
+    out = capsys.readouterr().out
+    assert "  + TADD-ERROR-ORDER (fx5-time-add): When one execution meets both" in out
+    assert "  header:\n" not in out and "interpretations[" not in out

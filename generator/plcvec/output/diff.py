@@ -250,7 +250,8 @@ def compare(old, new, only=None):
                "added": sorted(set(b["vectors"]) - set(a["vectors"])),
                "removed": sorted(set(a["vectors"]) - set(b["vectors"])),
                "merged": {},
-               "changed": [], "header": [_entry(c) for c in changes(a["header"], b["header"])]}
+               "changed": [], "header": [_entry(c) for c in changes(a["header"], b["header"])],
+               "interpretation_changes": _interpretation_changes(a["header"], b["header"])}
         for vid in sorted(set(a["vectors"]) & set(b["vectors"])):
             found = changes(a["vectors"][vid], b["vectors"][vid])
             if found:
@@ -267,6 +268,16 @@ def compare(old, new, only=None):
     report["identical"] = not any(sum(f["counts"].values()) or f["header"] or len(f["present"]) < 2
                                   for f in report["families"].values())
     return report
+
+
+def _interpretation_changes(old_header, new_header):
+    from plcvec.output.upgrade import interpretation_changes
+
+    def by_id(header):
+        return {i["id"]: {"question": i.get("question", ""), "default": i["default"],
+                          "alternatives": [a["id"] for a in i["alternatives"]], "families": [header.get("family", "")]}
+                for i in header.get("interpretations", ())}
+    return interpretation_changes(by_id(old_header), by_id(new_header))
 
 
 def path_text(path):
@@ -322,6 +333,22 @@ def change_line(entry):
     return f"{entry['path']}: {value_text(entry, 'old')} -> {value_text(entry, 'new')}"
 
 
+def _header_lines(fam, brief):
+    """A family header's changes: interpretations by id (added with question and default), then, unless
+    brief, every other header field changed."""
+    from plcvec.output.upgrade import interpretation_lines
+
+    lines = interpretation_lines(fam.get("interpretation_changes", ()), "  ")
+    others = [e for e in fam["header"] if not e["path"].startswith("interpretations")]
+    if others:
+        if brief:
+            lines.append(f"  header: {', '.join(sorted({e['path'].split('.')[0].split('[')[0] for e in others}))} changed")
+        else:
+            lines.append("  header:")
+            lines += [f"      {change_line(e)}" for e in others]
+    return lines
+
+
 def render_text(report, brief=False):
     old_total = sum(f["old_count"] for f in report["families"].values())
     new_total = sum(f["new_count"] for f in report["families"].values())
@@ -338,9 +365,7 @@ def render_text(report, brief=False):
             if not brief:
                 lines += [f"      {change_line(e)}" for e in v["changes"]]
         if fam["header"]:
-            lines.append("  header:")
-            if not brief:
-                lines += [f"      {change_line(e)}" for e in fam["header"]]
+            lines += _header_lines(fam, brief)
     lines.append("summary:")
     lines += [f"  {name}: {counts_text(fam)} ({fam['old_count']} -> {fam['new_count']} vectors)"
               for name, fam in report["families"].items()]
