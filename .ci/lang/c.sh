@@ -53,9 +53,9 @@ set -e
 PLCVEC_WRITE_EXPECTATIONS="$out/written.toml" "$out/snippets/consumer/build/my_emulator_tests" >/dev/null
 [ "$(cat "$out/written.toml")" = "# Known failures: each passing entry fails the run as stale, so fix and delete." ]
 (cd "$out/snippets/consumer" && PKG_CONFIG_PATH="$prefix/lib/pkgconfig" bash pkgconfig.sh && ./my_emulator_tests >/dev/null)
-# The version file: 0.1 is found (the project above), 0.2 is not.
+# The version file: 0.2 is found (the project above), 0.3 is not.
 mkdir -p "$out/version"
-printf 'cmake_minimum_required(VERSION 3.16)\nproject(v NONE)\nfind_package(plcvec 0.2 QUIET)\nif(plcvec_FOUND)\n  message(FATAL_ERROR "0.2 found")\nendif()\n' \
+printf 'cmake_minimum_required(VERSION 3.16)\nproject(v NONE)\nfind_package(plcvec 0.3 QUIET)\nif(plcvec_FOUND)\n  message(FATAL_ERROR "0.3 found")\nendif()\n' \
     > "$out/version/CMakeLists.txt"
 cmake -S "$out/version" -B "$out/version/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 version=$(python3 -c 'import plcvec; print(plcvec.__version__)')

@@ -41,7 +41,7 @@ step "the README's emulator, extracted from the README and run as an outside cra
 readme=$(mktemp -d)
 trap 'rm -rf "$readme"' EXIT
 python3 .ci/readme_snippets.py extract "$crate/README.md" --out "$readme" >/dev/null
-# The README depends on plcvec = "0.1" from crates.io: this checkout's crate stands in for it.
+# The README depends on plcvec = "0.2" from crates.io: this checkout's crate stands in for it.
 printf '\n[workspace]\n\n[patch.crates-io]\nplcvec = { path = "%s" }\n' "$PWD/$crate" >> "$readme/emulator/Cargo.toml"
 (cd "$readme/emulator" && CARGO_TARGET_DIR="$OLDPWD/$crate/target/readme" bash -euo pipefail run.sh >/dev/null)
 

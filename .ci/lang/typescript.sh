@@ -56,7 +56,7 @@ git ls-files -z verifiers/typescript | tar --null -T - -cf - | tar -xf - -C "$cl
     fi
     npm pack --silent --pack-destination "$work" >/dev/null
 )
-tarball="$work/plcvec-0.1.0.tgz"
+tarball="$work/plcvec-0.2.0.tgz"
 listing=$(tar -tzf "$tarball")
 for f in package/LICENSE package/README.md package/dist/src/index.js package/dist/src/index.d.ts \
     package/bin/plcvec-reference-adapter.js package/dist/src/bin/reference-adapter.js package/src/index.ts \

@@ -7,7 +7,7 @@
 package spec
 
 // SuiteVersion is the version of the suite these names were exported from.
-const SuiteVersion = "0.1.0"
+const SuiteVersion = "0.2.0"
 
 // SchemaVersion is the vector files' schema version.
 const SchemaVersion = "1.0.0"

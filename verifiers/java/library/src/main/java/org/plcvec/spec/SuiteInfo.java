@@ -4,7 +4,7 @@ package org.plcvec.spec;
 /** Which suite the vectors in this jar are: a report means nothing without it. */
 public final class SuiteInfo {
     /** The generator version that wrote the vectors ({@code generator_version} in manifest.json). */
-    public static final String SUITE_VERSION = "0.1.0";
+    public static final String SUITE_VERSION = "0.2.0";
     /** The vector files' schema version; this verifier reads 1.x only. */
     public static final String SCHEMA_VERSION = "1.0.0";
     /** The major schema version this verifier understands. */
