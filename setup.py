@@ -27,6 +27,7 @@ COPIES = [
     ("verifiers/CONTRACT.md", "plcvec_verify", "verifiers/CONTRACT.md"),
     ("verifiers/PROTOCOL.md", "plcvec_verify", "verifiers/PROTOCOL.md"),
     ("LICENSE", "plcvec_verify", "LICENSE"),     # shipped inside every release bundle
+    ("CHANGES.md", "plcvec_verify", "CHANGES.md"),   # the changelog a release bundle carries
 ]
 SKIP = ("__pycache__", ".*", "*.pyc", "*.tmp")
 

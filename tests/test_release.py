@@ -41,7 +41,7 @@ def previous(tmp_path_factory):
                                    for k, v in changed["final"]["devices"].items()}
     path.write_text(json.dumps(data), encoding="utf-8")
     manifest = json.loads((folder / "manifest.json").read_text(encoding="utf-8"))
-    manifest["generator_version"] = "0.0.1"
+    manifest["suite_version"] = manifest["generator_version"] = "0.0.1"
     (folder / "manifest.json").write_text(json.dumps(manifest), encoding="utf-8")
     return folder, dropped["id"], changed["id"]
 
@@ -170,7 +170,7 @@ def test_changes_lists_what_differs_from_the_previous_release(runs, previous):
 def test_a_release_archive_can_be_the_previous_release(runs):
     found = changes.load_previous(str(runs[0] / f"{NAME}.tar.gz"))
     current = changes.load_previous(str(REPO / "vectors"))
-    assert found.manifest["generator_version"] == __version__
+    assert found.manifest["suite_version"] == found.manifest["generator_version"] == __version__
     assert {n: set(f["vectors"]) for n, f in found.families.items()} == \
         {n: set(f["vectors"]) for n, f in current.families.items()}
     zipped = changes.load_previous(str(runs[0] / f"{NAME}.zip"))
@@ -222,3 +222,21 @@ def test_first_release_says_so(tmp_path):
     text, report = changes.changes_text("9.9.9", current)
     assert report is None
     assert "The first release" in text and f"Total: {current.count()} vectors." in text
+
+
+def test_the_bundles_changes_carry_the_projects_changelog_and_its_vectors(runs):
+    """CHANGES.md in the bundle is the project's CHANGES.md as it is, this version's entry included,
+    then the vectors that changed since the previous release, by id."""
+    with tarfile.open(runs[0] / f"{NAME}.tar.gz") as tar:
+        text = tar.extractfile(f"{NAME}/CHANGES.md").read().decode()
+    project = (REPO / "CHANGES.md").read_text(encoding="utf-8")
+    assert text.startswith(project.rstrip("\n") + "\n")
+    assert f"## [{__version__}]" in text
+    assert f"# The vectors of {__version__}, by id" in text
+
+
+def test_a_version_without_its_changelog_entry_is_refused():
+    with pytest.raises(PlcvecError, match=r"no entry for 9\.9\.9"):
+        changes.changelog_entry("# Changes\n\n## [0.2.0] - 2026-11-27\n\n### Added\n- x\n", "9.9.9")
+    entry = changes.changelog_entry("# Changes\n\n## [0.2.0] - 2026-11-27\n\n### Added\n- x\n\n## [0.1.0]\n- y\n", "0.2.0")
+    assert entry == "## [0.2.0] - 2026-11-27\n\n### Added\n- x\n"

@@ -92,9 +92,33 @@ def check_version(version, previous_version, bump):
                           f"{bump} version (verifiers/CONTRACT.md, Suite version); raise the version and regenerate")
 
 
+# ---------------------------------------------------------------------------------------------- the changelog
+def changelog_entry(changelog: str, version: str, where: str = "CHANGES.md") -> str:
+    """The section of the project's CHANGES.md for `version` (from its `## [version]` heading to the
+    next `## ` heading); a PlcvecError when there is none: no release without its changelog entry."""
+    lines = changelog.split("\n")
+    start = next((i for i, line in enumerate(lines) if line.startswith(f"## [{version}]")), None)
+    if start is None:
+        raise PlcvecError(f"{where}: no entry for {version} (a heading `## [{version}] - DATE`); every release "
+                          "says what it changed (verifiers/CONTRACT.md, Compatibility policy)")
+    end = next((i for i in range(start + 1, len(lines)) if lines[i].startswith("## ")), len(lines))
+    return "\n".join(lines[start:end]).strip("\n") + "\n"
+
+
 # ---------------------------------------------------------------------------------------------- the text
-def changes_text(version, current, previous=None, previous_arg=None):
-    """CHANGES.md: the difference from the previous release by id, or the statement that there is none."""
+def changes_text(version, current, previous=None, previous_arg=None, changelog=None):
+    """The bundle's CHANGES.md: the project's changelog as it is (`changelog`, checked to hold this
+    version's entry), then the difference from the previous release by vector id, or the statement
+    that there is none."""
+    head = []
+    if changelog is not None:
+        changelog_entry(changelog, version)
+        head = [changelog.rstrip("\n"), "", f"# The vectors of {version}, by id", ""]
+    text, report = _vector_changes(version, current, previous, previous_arg)
+    return "\n".join(head) + text, report
+
+
+def _vector_changes(version, current, previous=None, previous_arg=None):
     title = f"# plcvec-vectors {version}"
     if previous is None:
         lines = [title, "", "The first release: no previous release was given (`plcvec release --previous`), so every",
@@ -103,7 +127,7 @@ def changes_text(version, current, previous=None, previous_arg=None):
         lines.append(f"\nTotal: {current.count()} vectors.")
         return "\n".join(lines) + "\n", None
     report = diff.compare(previous, current)
-    old_version = previous.manifest.get("generator_version", "?")
+    old_version = previous.manifest.get("suite_version") or previous.manifest.get("generator_version", "?")
     lines = [title, "", f"Changes since {old_version} ({previous_arg}), by vector id, as `plcvec diff` reports them:",
              "", "```", diff.render_text(report).rstrip("\n"), "```"]
     return "\n".join(lines) + "\n", report

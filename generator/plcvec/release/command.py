@@ -52,10 +52,16 @@ def run(args):
     families = load_spec(args.spec_dir)
     golden, by_family = bundle.golden_checked(families, vectors_dir, args.jobs)
     current = bundle.current_set(golden, __version__)
-    text, report = changes.changes_text(__version__, current, previous, args.previous)
+    try:
+        changelog_path = locate("plcvec_verify", ".", "CHANGES.md").path / "CHANGES.md"
+        changelog = changelog_path.read_text(encoding="utf-8")
+    except (VerifyError, OSError) as exc:
+        raise PlcvecError(f"release: the changelog to ship (CHANGES.md): {exc}") from None
+    text, report = changes.changes_text(__version__, current, previous, args.previous, changelog)
     if report is not None:
         old_schema = str(previous.manifest.get("schema_version", ""))
-        changes.check_version(__version__, previous.manifest.get("generator_version", ""),
+        changes.check_version(__version__, previous.manifest.get("suite_version")
+                              or previous.manifest.get("generator_version", ""),
                               changes.required_bump(report, old_schema, SCHEMA_VERSION))
     try:
         license_text = (locate("plcvec_verify", ".", "LICENSE").path / "LICENSE").read_bytes()
