@@ -7,7 +7,7 @@ wheel carries a copy of each as package data, where the commands find them with 
 
     plcvec/_data/spec/...            the spec, for generate --check, lint, review, fuzz, exhaustive
     plcvec_verify/_data/vectors/...  the golden vectors, for verify and the pytest plugin
-    plcvec_verify/_data/verifiers/   CONTRACT.md and PROTOCOL.md, for release
+    plcvec_verify/_data/verifiers/   CONTRACT.md, PROTOCOL.md and parity/ (TEXT.md, text/), for release
 
 An editable install copies nothing: it runs from the checkout, whose own folders are used.
 Everything else is declared in pyproject.toml.
@@ -26,6 +26,8 @@ COPIES = [
     ("vectors", "plcvec_verify", "vectors"),
     ("verifiers/CONTRACT.md", "plcvec_verify", "verifiers/CONTRACT.md"),
     ("verifiers/PROTOCOL.md", "plcvec_verify", "verifiers/PROTOCOL.md"),
+    ("verifiers/parity/TEXT.md", "plcvec_verify", "verifiers/parity/TEXT.md"),
+    ("verifiers/parity/text", "plcvec_verify", "verifiers/parity/text"),
     ("LICENSE", "plcvec_verify", "LICENSE"),     # shipped inside every release bundle
     ("CHANGES.md", "plcvec_verify", "CHANGES.md"),   # the changelog a release bundle carries
 ]

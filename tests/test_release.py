@@ -4,17 +4,19 @@ import hashlib
 import io
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
 import tarfile
 import zipfile
+from pathlib import Path
 
 import pytest
 
 from plcvec import __version__
 from plcvec.errors import PlcvecError
-from plcvec.release import changes
+from plcvec.release import bundle, changes
 
 from conftest import REPO
 
@@ -229,7 +231,7 @@ def test_the_bundles_changes_carry_the_projects_changelog_and_its_vectors(runs):
     then the vectors that changed since the previous release, by id."""
     with tarfile.open(runs[0] / f"{NAME}.tar.gz") as tar:
         text = tar.extractfile(f"{NAME}/CHANGES.md").read().decode()
-    project = (REPO / "CHANGES.md").read_text(encoding="utf-8")
+    project = bundle.relinked("CHANGES.md", (REPO / "CHANGES.md").read_text(encoding="utf-8"))
     assert text.startswith(project.rstrip("\n") + "\n")
     assert f"## [{__version__}]" in text
     assert f"# The vectors of {__version__}, by id" in text
@@ -240,3 +242,41 @@ def test_a_version_without_its_changelog_entry_is_refused():
         changes.changelog_entry("# Changes\n\n## [0.2.0] - 2026-11-27\n\n### Added\n- x\n", "9.9.9")
     entry = changes.changelog_entry("# Changes\n\n## [0.2.0] - 2026-11-27\n\n### Added\n- x\n\n## [0.1.0]\n- y\n", "0.2.0")
     assert entry == "## [0.2.0] - 2026-11-27\n\n### Added\n- x\n"
+
+
+def _slug(heading: str) -> str:
+    """GitHub's anchor of a Markdown heading: lower case, punctuation dropped, spaces as hyphens."""
+    text = re.sub(r"[^\w\- ]", "", heading.strip().lower())
+    return text.replace(" ", "-")
+
+
+def test_every_link_in_the_bundles_markdown_resolves_inside_it(runs):
+    """A consumer of the bundle alone meets no dead link: every relative link of every Markdown file
+    names a file or folder the bundle holds, and every #anchor a heading of its target."""
+    with tarfile.open(runs[0] / f"{NAME}.tar.gz") as tar:
+        files = {m.name[len(NAME) + 1:]: m for m in tar.getmembers()}
+        texts = {name: tar.extractfile(m).read().decode() for name, m in files.items()
+                 if name.endswith(".md") and m.isfile()}
+    folders = {str(Path(n).parent.as_posix()) + "/" for n in files} | {p for n in files for p in
+                                                                          [str(q.as_posix()) + "/" for q in Path(n).parents]}
+    dead = []
+    for name, text in texts.items():
+        text = re.sub(r"```.*?```", "", text, flags=re.S)           # links in code are not links
+        for target in re.findall(r"\]\(([^)\s]+)\)", text):
+            if re.match(r"[a-z]+:", target):                         # https://, mailto: leave the bundle
+                continue
+            path, _, anchor = target.partition("#")
+            where = (Path(name).parent / path).as_posix() if path else name
+            where = os.path.normpath(where)
+            if path and where not in files and where + "/" not in folders:
+                dead.append(f"{name}: {target}")
+                continue
+            if anchor:
+                target_text = texts.get(where, "")
+                anchors = {_slug(h) for h in re.findall(r"^#+ (.+)$", target_text, re.M)}
+                anchors |= set(re.findall(r'<a id="([^"]+)"', target_text))
+                if anchor not in anchors:
+                    dead.append(f"{name}: {target} (no such heading)")
+    assert not dead, dead
+    assert "parity/TEXT.md" in files and "parity/text/expected.txt" in files
+    assert "jsonl/schema/vector-file.schema.json" in files

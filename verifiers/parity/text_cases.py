@@ -57,7 +57,7 @@ def case_files() -> dict[str, str]:
     if found != ids:
         missing = ", ".join(sorted(ids - found))
         raise SystemExit(f"text_cases: {TEXT / 'answers.json'} answers vectors the golden set does not have: {missing}")
-    manifest = {k: golden[k] for k in ("generated", "generator_version", "schema_version", "spec_sha256")}
+    manifest = {k: golden[k] for k in ("generated", "suite_version", "generator_version", "schema_version", "spec_sha256")}
     manifest |= {"families": entries, "total": len(found)}
     files["manifest.json"] = json.dumps(manifest, indent=1, sort_keys=True) + "\n"
     return files

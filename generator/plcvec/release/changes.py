@@ -44,7 +44,9 @@ def _archive_members(path):
 
 def _from_archive(path):
     files = _archive_members(path)
-    manifests = sorted(n for n in files if n == "vectors/manifest.json" or n.endswith("/vectors/manifest.json"))
+    # The bundle's own vector folder, not one nested deeper (parity/text/vectors holds the shared cases).
+    manifests = sorted((n for n in files if n == "vectors/manifest.json" or n.endswith("/vectors/manifest.json")),
+                       key=lambda n: (n.count("/"), n))
     if not manifests:
         raise PlcvecError(f"--previous {path}: no vectors/manifest.json inside; is it a plcvec release archive?")
     return diff.load_source(_Archive(path, files, manifests[0][:-len("manifest.json")]), path.name)
