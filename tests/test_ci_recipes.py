@@ -4,12 +4,15 @@ The script is run as a CI job would run it, against the reference adapter and ag
 with one bug, from an empty folder; its exit code, reports and Markdown summary are checked against
 the vector files and the JSON-lines report (never against the script's own summary text alone).
 """
+import hashlib
 import importlib.util
 import json
 import os
+import re
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
+from pathlib import Path
 
 import pytest
 import yaml
@@ -17,16 +20,20 @@ import yaml
 from conftest import REPO
 
 GATE = REPO / "verifiers" / "ci" / "gate.sh"
-ACTION = REPO / "verifiers" / "ci" / "github" / "action.yml"
+ACTION = REPO / "action.yml"
+OLD_ACTION = REPO / "verifiers" / "ci" / "github" / "action.yml"
 GITLAB = REPO / "verifiers" / "ci" / "gitlab" / "plcvec-gate.yml"
 FAMILY = "fx5-time-add"
 REFERENCE = f"{sys.executable} -m plcvec_reference.adapter"
 MUTANT = "tadd-no-wrap-at-24"
 
 
-def gate(tmp_path, **settings):
-    """Run gate.sh in `tmp_path` with PLCVEC_* settings (the plcvec of this test run, no install)."""
-    env = {k: v for k, v in os.environ.items() if not k.startswith(("PLCVEC_", "GITHUB_"))}
+def gate(tmp_path, extra=None, **settings):
+    """Run gate.sh in `tmp_path` with PLCVEC_* settings (the plcvec of this test run, no install) and
+    `extra` variables (a CI system's own)."""
+    tmp_path.mkdir(parents=True, exist_ok=True)
+    env = {k: v for k, v in os.environ.items() if not k.startswith(("PLCVEC_", "GITHUB_", "CI_NODE_"))}
+    env.update(extra or {})
     env.update(PLCVEC_PYTHON=sys.executable, PLCVEC_PACKAGE="", PLCVEC_REPORT_DIR=str(tmp_path / "reports"))
     env.update({f"PLCVEC_{k.upper()}": v for k, v in settings.items() if k != "github_summary"})
     if "github_summary" in settings:
@@ -138,6 +145,8 @@ def _header_example(path):
     """The usage example in a recipe's comment header, as YAML (the lines indented under `#`)."""
     lines = []
     for line in path.read_text(encoding="utf-8").splitlines():
+        if line == "---":          # yamllint's document start
+            continue
         if not line.startswith("#"):
             break
         if line.startswith("#   "):
@@ -157,8 +166,11 @@ def _known_alternatives():
 def _example_settings():
     """(where, selection, alternatives, home URLs) of each recipe header's example and README block."""
     action = _header_example(ACTION)
-    step = next(s for s in action if "uses" in s and "verifiers/ci/github" in s["uses"])
+    step = next(s for s in action if "uses" in s and "plcvec/plcvec" in s["uses"])
     yield ("action.yml", step["with"]["selection"], step["with"]["alternatives"], [step["uses"]])
+    old = _header_example(OLD_ACTION)
+    step = next(s for s in old if "uses" in s and "verifiers/ci/github" in s["uses"])
+    yield ("verifiers/ci/github/action.yml", step["with"]["selection"], step["with"]["alternatives"], [step["uses"]])
     gitlab = _header_example(GITLAB)
     v = gitlab["plcvec"]["variables"]
     yield ("plcvec-gate.yml", v["PLCVEC_SELECTION"], v["PLCVEC_ALTERNATIVES"], [gitlab["include"][0]["remote"]])
@@ -169,7 +181,7 @@ def _example_settings():
     spec.loader.exec_module(snippets)
     blocks = {b.arg: b.text for b in snippets.blocks(REPO / "README.md")[0] if b.kind == "snippet"}
     github = yaml.safe_load(blocks["readme/github-job.yml"])
-    step = next(s for s in github["jobs"]["plcvec"]["steps"] if "verifiers/ci/github" in s.get("uses", ""))
+    step = next(s for s in github["jobs"]["plcvec"]["steps"] if s.get("uses", "").startswith("plcvec/plcvec"))
     yield ("README github", step["with"]["selection"], step["with"]["alternatives"], [step["uses"]])
     job = yaml.safe_load(blocks["readme/gitlab-job.yml"])
     v = job["plcvec"]["variables"]
@@ -208,3 +220,55 @@ def test_settings_left_empty_as_the_templates_default_them_mean_not_given(tmp_pa
     proc = gate(tmp_path, adapter=REFERENCE, selection=f"--family {FAMILY}", known_failures="", alternatives="",
                 timeout="", id="")
     assert proc.returncode == 0, proc.stdout + proc.stderr
+
+
+
+def test_the_root_action_is_the_old_paths_action_with_branding():
+    """The Marketplace lists only a root action.yml; 0.1.0's path stays the same action until 0.3.0."""
+    root, old = (yaml.safe_load(p.read_text(encoding="utf-8")) for p in (ACTION, OLD_ACTION))
+    assert root["branding"]["icon"] and root["branding"]["color"]
+    assert root["inputs"] == old["inputs"] and root["outputs"] == old["outputs"]
+    assert root["runs"]["steps"][1] == old["runs"]["steps"][1]
+    assert "$GITHUB_ACTION_PATH/verifiers/ci/gate.sh" in root["runs"]["steps"][0]["run"]
+    assert "$GITHUB_ACTION_PATH/../gate.sh" in old["runs"]["steps"][0]["run"]
+
+
+def test_the_gitlab_template_pins_the_gate_script_by_its_sha256(tmp_path):
+    job = yaml.safe_load(GITLAB.read_text(encoding="utf-8"))[".plcvec-gate"]
+    assert job["variables"]["PLCVEC_GATE_SHA256"] == hashlib.sha256(GATE.read_bytes()).hexdigest()
+    # The template's own download step, from a local HTTP server: the pinned script is written, another
+    # is refused.
+    import functools
+    import http.server
+    import threading
+
+    handler = functools.partial(http.server.SimpleHTTPRequestHandler, directory=str(GATE.parent))
+    handler.log_message = lambda *a: None
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    url = f"http://127.0.0.1:{server.server_address[1]}/{GATE.name}"
+    script = job["script"][0]
+    env = dict(os.environ, PLCVEC_GATE_SCRIPT=url, PLCVEC_GATE_SHA256=job["variables"]["PLCVEC_GATE_SHA256"])
+    out = Path("/tmp/plcvec-gate.sh")
+    out.unlink(missing_ok=True)
+    proc = subprocess.run(["bash", "-c", script], env=env, capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert out.read_bytes() == GATE.read_bytes()
+    out.unlink()
+    proc = subprocess.run(["bash", "-c", script], env={**env, "PLCVEC_GATE_SHA256": "0" * 64},
+                          capture_output=True, text=True, timeout=60)
+    server.shutdown()
+    assert proc.returncode != 0 and "has sha256" in proc.stderr and not out.exists()
+
+
+def test_a_parallel_gitlab_job_runs_its_shard(tmp_path):
+    whole = gate(tmp_path / "whole", adapter=REFERENCE, selection="--family fx5-time-add")
+    counts = []
+    for index in (1, 2):
+        proc = gate(tmp_path / f"node{index}", adapter=REFERENCE, selection="--family fx5-time-add",
+                    extra={"CI_NODE_INDEX": str(index), "CI_NODE_TOTAL": "2"})
+        assert proc.returncode == 0, proc.stdout + proc.stderr
+        assert f"--shard {index}/2" in proc.stdout
+        counts.append(int(re.search(r"^(\d+) vectors:", proc.stdout, re.M).group(1)))
+    total = int(re.search(r"^(\d+) vectors:", whole.stdout, re.M).group(1))
+    assert sum(counts) == total and all(counts)

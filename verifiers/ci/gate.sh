@@ -17,6 +17,9 @@
 #                        set, else $PLCVEC_REPORT_DIR/summary.md)
 #   PLCVEC_PYTHON        the Python that makes the virtual environment (default: python3)
 #
+# Under GitLab's `parallel: N` (CI_NODE_INDEX of CI_NODE_TOTAL) each job runs its shard of the vectors,
+# unless PLCVEC_SHARD or a --shard in PLCVEC_SELECTION chooses one.
+#
 # Exit status: that of `plcvec verify` (0 passed, 1 failures, 2 usage or harness error, 5 nothing
 # tested); the reports and the summary are written whatever it is.
 set -uo pipefail
@@ -54,6 +57,10 @@ for name in PLCVEC_ID PLCVEC_FAMILY PLCVEC_INSTRUCTION PLCVEC_TAG PLCVEC_INTERPR
             PLCVEC_KNOWN_FAILURES PLCVEC_WRITE_EXPECTATIONS PLCVEC_TIMEOUT; do
     [ -n "${!name:-}" ] || unset "$name"
 done
+if [ "${CI_NODE_TOTAL:-1}" -gt 1 ] 2>/dev/null && [ -z "${PLCVEC_SHARD:-}" ] \
+        && [[ " ${PLCVEC_SELECTION:-} " != *" --shard"* ]]; then
+    args+=(--shard "${CI_NODE_INDEX:?CI_NODE_TOTAL is set but CI_NODE_INDEX is not}/$CI_NODE_TOTAL")
+fi
 for choice in ${PLCVEC_ALTERNATIVES:-}; do
     args+=(--choose "$choice")
 done
