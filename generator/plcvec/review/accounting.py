@@ -8,12 +8,18 @@ an example's prose, or an entry of the spec's `accounting` list, which records w
     accounting:
       - {as: clause, clauses: [example.1], why: "...", texts: ["| (s1) | 6 | | (s2) | 7 | ..."]}
       - {as: not-normative, why: "The CPU models the page applies to.", texts: ["FX5S FX5UJ FX5U FX5UC"]}
-      - {as: wording, why: "...", instead: "what the rest of the page shows instead", texts: ["..."]}
+      - {as: wording, clauses: [sm700], says: "...", rule: "...", why: "...", texts: ["..."]}
       - {as: erratum, erratum: TADD-EXCEEDS-24, why: "...", texts: ["..."]}
 
-`plcvec review --check` names each unit nobody accounted for as `file:line` of the page. Like the
-quote check, matching ignores white space (the excerpts are PDF text copies whose line breaks fall
-anywhere), so a quote may run across lines and units.
+Accounting for a sentence is not agreeing with it. Where the words of the page say more or less than
+the rule they are filed under, or only touch it, the entry is a wording note: the `clauses` of the rule,
+what the words `says`, what the `rule` says and `why` the rule stands; the review lists the notes beside
+the errata. (An older wording entry gives only what the rest of the page shows `instead`.)
+
+`plcvec review --check` names each unit nobody accounted for as `file:line` of the page, and an entry
+that names a clause or an erratum the family does not have. Like the quote check, matching ignores
+white space (the excerpts are PDF text copies whose line breaks fall anywhere), so a quote may run
+across lines and units; the texts of every entry are quotes, so a text not on the page is a missing quote.
 """
 from __future__ import annotations
 
@@ -84,31 +90,52 @@ def family_quotes(fam) -> list[str]:
 
 
 def family_accounting(fam, page_text: str | None, page_path, problems, link):
-    """The accounting of one family's page: counts, the spec's entries, and a problem per unit left.
+    """The accounting of one family's page: counts, the spec's entries, its wording notes, and a problem per
+    unit left and per entry that names what the family does not have.
 
     page_text: the page as read from --manual-dir, or None when no manual folder was given.
     """
     entries = [{"as": e["as"], "texts": e["texts"], "why": e["why"], "clauses": e.get("clauses", []),
-                "erratum": e.get("erratum", ""), "instead": e.get("instead", ""), "line": fam.line_of("accounting", i)}
+                "erratum": e.get("erratum", ""), "says": e.get("says", ""), "rule": e.get("rule", ""),
+                "instead": e.get("instead", ""), "index": i, "line": fam.line_of("accounting", i), "note": ""}
                for i, e in enumerate(fam.doc.get("accounting", ()))]
-    errata = {e["id"] for e in fam.doc.get("errata", ())}
-    for e in entries:
-        if e["as"] == "erratum" and e.get("erratum") not in errata:
-            problems.add("accounting", fam, e["line"],
-                         f"accounting: erratum {e.get('erratum')!r} is not an erratum of this family", link("family", None))
-        for cid in e.get("clauses", ()):
-            if cid not in fam.clauses:
-                problems.add("accounting", fam, e["line"],
-                             f"accounting: clause {cid!r} is not a clause of this family", link("family", None))
+    _check_names(fam, entries, problems, link)
+    notes = wording_notes(fam, entries, link)
     if page_text is None:
-        return {"checked": False, "units": None, "left": [], "entries": entries}
+        return {"checked": False, "units": None, "left": [], "entries": entries, "notes": notes}
     every, left = unaccounted(fam.doc["manual"], page_text, family_quotes(fam))
     for unit in left:
         problems.add_at("accounting", f"{page_path}:{unit.line}", fam.doc["manual"], unit.line,
                         f"no clause, interpretation, erratum or accounting entry accounts for {_short(unit.text)!r}",
                         link("family", None))
     return {"checked": True, "units": len(every), "left": [{"line": u.line, "text": u.text} for u in left],
-            "entries": entries}
+            "entries": entries, "notes": notes}
+
+
+def _check_names(fam, entries, problems, link):
+    """An erratum entry names an erratum of the family, a clause or wording entry clauses of the family."""
+    errata = {e["id"] for e in fam.doc.get("errata", ())}
+    for e in entries:
+        what = "wording note" if e["as"] == "wording" else "accounting"
+        if e["as"] == "erratum" and e["erratum"] not in errata:
+            problems.add("accounting", fam, e["line"],
+                         f"accounting: erratum {e['erratum']!r} is not an erratum of this family", link("family", None))
+        for cid in e["clauses"]:
+            if cid not in fam.clauses:
+                problems.add("accounting", fam, e["line"],
+                             f"{what}: clause {cid!r} is not a clause of this family", link("family", None))
+
+
+def wording_notes(fam, entries, link):
+    """The wording entries, each with its anchor (also set as the entry's `note`) and the rule it is filed
+    under: its clauses with their `says`."""
+    notes = []
+    for e in (e for e in entries if e["as"] == "wording"):
+        e["note"] = link("wording", len(notes) + 1)
+        e["filed_under"] = [{"id": cid, "says": fam.clauses[cid]["says"], "anchor": link("clause", cid)}
+                            for cid in e["clauses"] if cid in fam.clauses]
+        notes.append(e)
+    return notes
 
 
 def _short(text, limit=120):

@@ -26,7 +26,8 @@ AUDIT_STALE_KIND = "erratum-stale"
 WORD_BITS = 16
 # Element ids of the report, stable across runs so that links, tests and reviewers can find an item.
 _ANCHOR_PREFIX = {"family": "family", "clause": "clause", "interpretation": "interp", "erratum": "erratum",
-                  "example": "example", "coverage": "coverage", "audit": "audit", "layout": "layout"}
+                  "example": "example", "coverage": "coverage", "audit": "audit", "layout": "layout",
+                  "wording": "wording"}
 
 
 def anchor(kind, family, ident=None):
@@ -100,6 +101,7 @@ def build_model(families, vectors_by_family, *, quotes=None, audit=None, cells=N
         "vector_categories": cov.category_counts(all_vectors),
         "interpretations": sum(len(fm["interpretations"]) for fm in fams),
         "errata": sum(len(fm["errata"]) for fm in fams),
+        "wording_notes": sum(len(fm["accounting"]["notes"]) for fm in fams),
         "quotes_checked": len(quotes[0]) if quotes is not None else None,
         "quotes_missing": len(quotes[1]) if quotes is not None else None,
         "covered": sum(r["status"] == "covered" for r in coverage_rows),
@@ -183,9 +185,17 @@ class _FamilyView:
             "coverage": self.coverage(coverage),
             "model": cov.model_coverage(fam, cells, self.problems, self.link) if cells is not None else None,
             "provenance": prov.family_provenance(fam, set(manuals) or {doc["manual"]}, self.problems, self.link),
-            "accounting": acc.family_accounting(fam, page[1] if page else None, page[0] if page else None,
-                                                self.problems, self.link),
+            "accounting": self.accounting(page),
         }
+
+    def accounting(self, page):
+        """The sentence accounting of the page; each wording note's texts shown as the quotes they are."""
+        found = acc.family_accounting(self.fam, page[1] if page else None, page[0] if page else None,
+                                      self.problems, self.link)
+        for note in found["notes"]:
+            note["words"] = [self.source(("accounting", note["index"], "texts", j), {"quote": text})
+                             for j, text in enumerate(note["texts"])]
+        return found
 
     def clauses(self, coverage):
         return [{"id": c["id"], "anchor": self.link("clause", c["id"]), "says": c["says"],
