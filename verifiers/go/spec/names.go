@@ -13,7 +13,7 @@ const SuiteVersion = "0.2.0"
 const SchemaVersion = "1.0.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "f5b44f0b594d28e3406f056a62a4beae273226bf908d084ae6e32f64b2b7ef95"
+const SpecSHA256 = "d7187f0199f68f6bfe8e62ac456a2460b98aa957b2e55a32c52b7e3fa262d174"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3526

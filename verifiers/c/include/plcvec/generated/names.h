@@ -8,7 +8,7 @@
 #define PLCVEC_SUITE_VERSION "0.2.0"
 #define PLCVEC_SCHEMA_VERSION "1.0.0"
 #define PLCVEC_SCHEMA_MAJOR 1
-#define PLCVEC_SPEC_SHA256 "f5b44f0b594d28e3406f056a62a4beae273226bf908d084ae6e32f64b2b7ef95"
+#define PLCVEC_SPEC_SHA256 "d7187f0199f68f6bfe8e62ac456a2460b98aa957b2e55a32c52b7e3fa262d174"
 #define PLCVEC_TOTAL_VECTORS 3526
 
 /* Instruction families, in the order of the manifest. */
