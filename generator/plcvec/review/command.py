@@ -20,14 +20,17 @@ def register(sub, spec_parent):
                        help="render the spec for a reviewer: rules beside manual quotes, audit, coverage",
                        description="Render the whole spec as one self-contained HTML file and as Markdown: "
                                    "layouts, every rule beside its manual quote, interpretations with the vectors "
-                                   "they affect, errata, the audit of the manual's tables, and the coverage matrix.")
+                                   "they affect, errata and wording notes, the audit of the manual's tables, and "
+                                   "the coverage matrix.")
     r.add_argument("--out", default=str(default_out()),
                    help="folder for review.html and review.md (default: %(default)s)")
     r.add_argument("--manual-dir", metavar="DIR",
                    help="the manual text files; every provenance quote of the spec must be found in them")
     r.add_argument("--check", action="store_true",
-                   help="exit 1 on a missing quote, an uncovered clause, a combination of the coverage model no "
-                        "vector exercises, or an audit disagreement no erratum records")
+                   help="exit 1 on a missing quote, an uncovered clause, a sentence of a page nothing accounts for "
+                        "(with --manual-dir), a wording note or accounting entry naming a clause or erratum the family "
+                        "does not have, a combination of the coverage model no vector exercises, or an audit "
+                        "disagreement no erratum records")
     r.add_argument("--no-write", action="store_true", help="with --check: only check, write no report")
     add_jobs_option(r)
     r.set_defaults(func=run)
