@@ -3,10 +3,13 @@
 The installed case (a built wheel or sdist in a fresh virtual environment, run from a temporary
 folder) is exercised end to end by .ci/package-check.sh; these tests cover the rules themselves.
 """
+import re
 import subprocess
 import sys
 import sysconfig
 from pathlib import Path
+
+import pytest
 
 from plcvec_verify import locate
 
@@ -67,12 +70,26 @@ def test_generate_refuses_to_write_into_site_packages(tmp_path):
     assert not target.exists()
 
 
+def _unwrapped(text: str) -> str:
+    """argparse's help with its wrapping undone: it breaks lines at spaces and after hyphens (a checkout
+    at /work/my-checkout may be printed as /work/my-<newline><indent>checkout)."""
+    return re.sub(r"(?<=-)\n\s+", "", re.sub(r"(?<![-\s])\n\s+", " ", text))
+
+
 def test_help_says_which_folders_are_used(tmp_path):
     out = plcvec("generate", "--help", cwd=REPO).stdout
-    assert str(REPO.resolve() / "vectors") in " ".join(out.split())
+    assert str(REPO.resolve() / "vectors") in _unwrapped(out)
     assert "the checkout" in out
     verify = plcvec("verify", "--help", cwd=REPO).stdout
-    assert str(REPO.resolve() / "vectors") in " ".join(verify.split())
+    assert str(REPO.resolve() / "vectors") in _unwrapped(verify)
+
+
+@pytest.mark.parametrize("text, want", [
+    ("folder (default: /work/my-\n                  checkout/vectors (the checkout))", "/work/my-checkout/vectors"),
+    ("folder (default: /tmp/a\n   b/vectors)", "/tmp/a b/vectors"),
+])
+def test_unwrapping_the_help_undoes_argparses_breaks(text, want):
+    assert want in _unwrapped(text)
 
 
 def test_version_prints_suite_spec_hash_and_schema(tmp_path):
