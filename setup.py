@@ -28,7 +28,6 @@ COPIES = [
     ("verifiers/PROTOCOL.md", "plcvec_verify", "verifiers/PROTOCOL.md"),
     ("verifiers/parity/TEXT.md", "plcvec_verify", "verifiers/parity/TEXT.md"),
     ("verifiers/parity/text", "plcvec_verify", "verifiers/parity/text"),
-    ("LICENSE", "plcvec_verify", "LICENSE"),     # shipped inside every release bundle
     ("CHANGES.md", "plcvec_verify", "CHANGES.md"),   # the changelog a release bundle carries
 ]
 SKIP = ("__pycache__", ".*", "*.pyc", "*.tmp")

@@ -13,7 +13,7 @@ step() { echo "== package-check [$((SECONDS - started)) s] $*"; }
 
 step "build tools"
 python3 -m venv "$work/tools"
-"$work/tools/bin/pip" install --quiet --disable-pip-version-check --no-compile build twine vermin
+"$work/tools/bin/pip" install --quiet --disable-pip-version-check --no-compile build twine vermin check-wheel-contents
 
 # requires-python says 3.10: nothing newer may be used (tomllib comes from tomli below 3.11). vermin
 # reads the code for the standard library's version history; it exits 1 on anything past 3.10.
@@ -25,6 +25,8 @@ step "build the sdist, then the wheel from it"
 sdist=$(ls "$work"/dist/plcvec-*.tar.gz)
 wheel=$(ls "$work"/dist/plcvec-*-py3-none-any.whl)
 "$work/tools/bin/twine" check --strict "$sdist" "$wheel"
+# As the wheel's users check it (its config, the three packages one install gives, is pyproject.toml's).
+"$work/tools/bin/check-wheel-contents" "$wheel"
 
 # Run a command of the installed package from $run, with nothing of the checkout reachable.
 installed() {
@@ -36,10 +38,10 @@ for artifact in "$wheel" "$sdist"; do
     venv="$work/venv-$kind"
     run="$work/run-$kind"
     mkdir -p "$run"
-    step "$kind: install into a fresh virtual environment (no extras, plus pytest)"
+    step "$kind: install into a fresh virtual environment (the pytest extra the README names)"
     python3 -m venv "$venv"
     # --no-compile: no .pyc written at install (they are made on first import anyway); saves CPU time.
-    "$venv/bin/pip" install --quiet --disable-pip-version-check --no-compile "$artifact" pytest
+    "$venv/bin/pip" install --quiet --disable-pip-version-check --no-compile "$artifact[pytest]"
 
     step "$kind: plcvec --version"
     installed plcvec --version | tee "$run/version.txt"
@@ -59,7 +61,10 @@ for artifact in "$wheel" "$sdist"; do
 
     step "$kind: the commands of the package's README (verifiers/python/README.md), as written there"
     python3 .ci/readme_snippets.py extract verifiers/python/README.md --out "$run/readme" >/dev/null
-    installed bash -euo pipefail "$run/readme/python-readme/gate.sh" >"$run/readme.txt" 2>&1 || { cat "$run/readme.txt"; exit 1; }
+    cp "$run/readme/python-readme/"*.py "$run/"
+    for script in "$run/readme/python-readme/"*.sh; do
+        installed bash -euo pipefail "$script" >"$run/readme.txt" 2>&1 || { cat "$run/readme.txt"; exit 1; }
+    done
     tail -2 "$run/readme.txt"
 
     step "$kind: a closed pipe on stdout gives no traceback"

@@ -358,3 +358,19 @@ def test_the_package_gives_every_public_name_from_its_module():
     assert set(plcvec_verify.__all__) <= set(space)
     with pytest.raises(AttributeError, match="no_such_name"):
         plcvec_verify.no_such_name
+
+
+def test_python_module_in_the_current_folder_is_found_and_a_failed_import_says_the_forms(tmp_path):
+    """`plcvec verify --python plcvec_adapter:SoftPLCAdapter` run from the module's own folder, as a user
+    runs it (the installed command's folder, not the current one, is on its path)."""
+    (tmp_path / "plcvec_adapter.py").write_text(
+        "from plcvec_reference.adapter import ReferenceAdapter as SoftPLCAdapter\n", encoding="utf-8")
+    cmd = [sys.executable, "-c", "import sys; sys.path.pop(0); from plcvec.cli import main; sys.exit(main())",
+           "verify", "--family", "fx5-time-add", "-q"]
+    proc = subprocess.run([*cmd, "--python", "plcvec_adapter:SoftPLCAdapter"], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    proc = subprocess.run([*cmd, "--python", "no_such_adapter:X"], cwd=tmp_path, capture_output=True, text=True,
+                          timeout=300)
+    assert proc.returncode == 2 and "Traceback" not in proc.stderr
+    assert "the forms are MODULE:CLASS" in proc.stderr and "path/to/file.py:CLASS" in proc.stderr

@@ -28,6 +28,26 @@ def register(sub, spec_parent):
     r.set_defaults(func=run)
 
 
+def _license_text() -> bytes:
+    """The LICENSE to ship: the checkout's, else the one the installed distribution's metadata carries
+    (a wheel holds it once, in its .dist-info, not again as package data)."""
+    from importlib import metadata
+
+    from plcvec_verify.locate import checkout
+
+    root = checkout()
+    try:
+        if root is not None:
+            return (root / "LICENSE").read_bytes()
+        files = metadata.distribution("plcvec").files or ()
+        found = next((f for f in files if f.name == "LICENSE" and ".dist-info" in str(f)), None)
+        if found is None:
+            raise OSError("the installed plcvec's metadata holds no LICENSE")
+        return found.read_binary()
+    except (OSError, metadata.PackageNotFoundError) as exc:
+        raise PlcvecError(f"release: the LICENSE to ship: {exc}") from None
+
+
 def run(args):
     from plcvec_verify.errors import VerifyError
     from plcvec_verify.locate import default_vectors, inside_installation, locate
@@ -63,10 +83,7 @@ def run(args):
         changes.check_version(__version__, previous.manifest.get("suite_version")
                               or previous.manifest.get("generator_version", ""),
                               changes.required_bump(report, old_schema, SCHEMA_VERSION))
-    try:
-        license_text = (locate("plcvec_verify", ".", "LICENSE").path / "LICENSE").read_bytes()
-    except (VerifyError, OSError) as exc:
-        raise PlcvecError(f"release: the LICENSE to ship: {exc}") from None
+    license_text = _license_text()
     files = bundle.bundle(__version__, golden, vectors_dir, _review(families, by_family, args.manual_dir), docs_dir,
                           text, license_text)
 

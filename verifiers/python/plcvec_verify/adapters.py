@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import importlib
 import json
+import os
 import signal
 import sys
 import threading
@@ -197,11 +198,17 @@ def load_python_adapter(spec: str, args=()):
                 raise VerifyError(f"--python {spec}: no such file {path}")
             sys.path.insert(0, str(path.parent))
             module_name = path.stem
+        elif os.getcwd() not in sys.path and "" not in sys.path:
+            # The current folder, as `python -m` has it: the `plcvec` command's own folder is on the path
+            # instead, so a module beside the user would not be found.
+            sys.path.insert(0, os.getcwd())
         module = importlib.import_module(module_name)
     except VerifyError:
         raise
     except ImportError as exc:
-        raise VerifyError(f"--python {spec}: cannot import {module_name}: {exc}")
+        raise VerifyError(f"--python {spec}: cannot import {module_name}: {exc}; the forms are MODULE:CLASS (a "
+                          f"module importable here or in the current folder, {os.getcwd()}) and "
+                          "path/to/file.py:CLASS")
     except Exception as exc:
         raise VerifyError(f"--python {spec}: importing {module_name} raised {type(exc).__name__}: {exc}")
     factory = getattr(module, attr, None)
