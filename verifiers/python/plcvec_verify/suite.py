@@ -39,10 +39,11 @@ class Suite:
     schema_version: str = ""
     spec_sha256: str = ""
     by_id: dict[str, dict] = field(default_factory=dict)
-    # Ids the generator merged into another vector (the index's `merged`), each with the id it became.
-    merged: dict[str, str] = field(default_factory=dict)
     # Each vector's request and expectation, made once for all the runs over this set.
     expectations: Expectations = field(default_factory=Expectations, repr=False, compare=False)
+    # Ids the generator merged into another vector (the index's `merged`), each with the id it became
+    # (last, so that a Suite built by position as in 0.1.0 still is).
+    merged: dict[str, str] = field(default_factory=dict)
 
     def __post_init__(self):
         self.by_id = {v["id"]: v for v in self.vectors}
