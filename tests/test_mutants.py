@@ -167,3 +167,21 @@ def test_only_its_dimensions_vectors_catch_the_mutant(name, in_process, cells):
             if not any(fnmatch.fnmatchcase(g, p) for g in got for p in patterns):
                 outside.append((r.id, dim, sorted(got)))
     assert not outside, f"{name}: caught by vectors outside {m.exercises}: {outside[:SHOW]}"
+
+
+@pytest.mark.parametrize("name", list(MUTANTS))
+def test_no_mutant_is_explained_away_by_a_reading(name, in_process):
+    """A mutant is a bug: where the roll-up proposes a declaration for its failures, every reading it
+    proposes is marked partial (TEXT.md, "The roll-up by reading"), so the bug is never declared away."""
+    from plcvec_verify.describe import rollup_lines
+    from plcvec_verify.infer import inference
+
+    report = in_process(name)
+    lines = rollup_lines(report, inference(report, frozenset(report.cpu_writes)))
+    if not any(line.startswith("    declare:") for line in lines):
+        return
+    start = lines.index(next(line for line in lines if line.startswith("READINGS:")))
+    groups = [line for line in lines[start + 1:] if re.match(r" {4} *\d+  ", line) and "=" in line]
+    unmarked = [line for line in groups if "(partial:" not in line]
+    assert groups and not unmarked, f"{name}: a reading proposed unmarked: {unmarked}"
+    assert any(line.startswith("    partial: ") for line in lines), name

@@ -25,6 +25,7 @@ else:  # the same parser, published as a backport (a dependency below 3.11 only)
 from .atomic import write_atomic
 from .errors import VerifyError
 from .files import check_regular
+from .verdict import ERROR, FAIL, FAILING, NOT_RUN, PASS, STALE, XFAIL, VectorResult
 
 SECTION = "known-failure"
 
@@ -81,8 +82,6 @@ class KnownFailures:
 
     def apply(self, results: list, suite) -> None:
         """Turn listed failures into xfail, listed passes into stale; add unknown ids as stale."""
-        from .runner import ERROR, FAIL, PASS, STALE, XFAIL, VectorResult
-
         for i, r in enumerate(results):
             entry = self.entries.get(r.id)
             if entry is None:
@@ -114,8 +113,6 @@ def _line_of(text: str, key: str) -> int:
 
 def write_expectations(path, results, reason: str) -> int:
     """Write the failing vectors of a run as a new expectations file (for adopting the suite)."""
-    from .runner import FAILING, NOT_RUN, XFAIL
-
     check_regular(path)
     lines = ["# Known failures: each passing entry fails the run as stale, so fix and delete.", ""]
     n = 0

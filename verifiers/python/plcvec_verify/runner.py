@@ -11,7 +11,6 @@ import time
 from dataclasses import dataclass, field
 from marshal import dumps
 from operator import itemgetter
-from typing import NamedTuple
 
 from .adapters import AdapterAbort, result_message
 from .compare import Problem, compare, passes, steps_pass_by_value
@@ -22,32 +21,14 @@ from .known import KnownFailures
 from .protocol import hello_request, result_errors, result_shape_ok
 from .stopping import Stopped
 from .suite import Selection, Suite
-
-# Result statuses. Only the first three let a run pass.
-PASS, SKIP, XFAIL = "pass", "skip", "xfail"
-FAIL, ERROR, STALE, NOT_RUN = "fail", "error", "stale", "not-run"
-STATUSES = (PASS, FAIL, ERROR, SKIP, XFAIL, STALE, NOT_RUN)
-FAILING = frozenset((FAIL, ERROR, STALE, NOT_RUN))
+# The statuses and the verdict type live in the leaf verdict.py (known.py needs them too); they are
+# named here as well, where 0.1.0's users import them from.
+from .verdict import (ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL,  # noqa: F401
+                      VectorResult)
 
 # The per-vector bookkeeping of a run is done with map() over these where it can: a run over the
 # golden set is a few microseconds a vector, and a Python-level loop is a good part of that.
 _ID, _FAMILY, _INSTRUCTION = itemgetter("id"), itemgetter("family"), itemgetter("instruction")
-
-
-class VectorResult(NamedTuple):
-    """The verdict on one vector. Immutable: a change (a known failure applied) makes a new one."""
-
-    id: str
-    family: str
-    instruction: str
-    status: str
-    problems: tuple = ()       # (Problem, ...) for fail
-    message: str = ""          # error/skip/xfail/stale reason
-    notes: tuple = ()          # e.g. what the adapter wrote to stderr
-    choices: dict = {}         # interpretation -> alternative the vector was judged by; never mutated
-    answer: list | None = None  # a failing vector's reported steps, for the inference (infer.py)
-
-
 
 
 @dataclass

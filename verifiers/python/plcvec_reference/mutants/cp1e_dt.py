@@ -3,17 +3,19 @@ from __future__ import annotations
 
 from ..cp1e_dt import ERROR_FLAG, FLAG_TABLE, CP1ETimeCompare
 from ..machine import operand_value
-from . import mutant, with_operand
+from .registry import mutant, with_operand
 
 FAMILY = ("cp1e-time-compare",)
 
 
 @mutant("cp1e-bcd-read-as-binary", FAMILY,
-        "The time bytes are taken as plain binary without checking that they are BCD, so a "
-        "byte such as 1AH is compared instead of turning P_ER on.",
+        "The BCD check looks at the byte's value instead of each digit: a byte up to 99H passes, so "
+        "1AH is compared instead of turning P_ER on, while A0H still turns it on.",
         exercises={"data": ["*.non-bcd"]})
 class BCDReadAsBinary(CP1ETimeCompare):
-    is_bcd = staticmethod(lambda byte: True)
+    # Until 0.2.0 this mutant checked no byte: that is the reading CP1E-NON-BCD=raw-bytes, which a
+    # declaration explains, so it was no bug.
+    is_bcd = staticmethod(lambda byte: byte <= 0x99)
 
 
 @mutant("cp1e-mask-bit-shifted", FAMILY,

@@ -2,7 +2,7 @@
 from __future__ import annotations
 
 from ..fc6a_hour import ERROR_FLAG, HourMeter, to_seconds
-from . import mutant
+from .registry import mutant
 
 FAMILY = ("fc6a-hour-meter",)
 
@@ -116,15 +116,16 @@ class StopsWhenOutputOn(HourMeter):
 
 
 @mutant("hour-error-flag-cleared", FAMILY,
-        "An execution with a valid preset turns M8004 off, as if the user program execution error "
-        "flag reported only the latest execution.",
+        "Every execution turns M8004 off before it runs, the input off included, as if the user "
+        "program execution error flag reported only the latest execution; an invalid preset at an "
+        "execution with the input on turns it on again.",
         exercises={"error-before": ["on"]})
 class ErrorFlagCleared(HourMeter):
+    # Until 0.2.0 this mutant cleared M8004 only where the preset was valid and the input on: that is
+    # the reading HOUR-M8004-OFF=valid-preset, which a declaration explains, so it was no bug.
     def execute(self, instruction, operands, step):
-        result = super().execute(instruction, operands, step)
-        if step["input"] and self.preset_valid(self.preset(operands["S1"])):
-            self.mem.write(ERROR_FLAG, False)
-        return result
+        self.mem.write(ERROR_FLAG, False)
+        return super().execute(instruction, operands, step)
 
 
 @mutant("hour-one-second-per-scan", FAMILY,

@@ -5,7 +5,7 @@ import calendar
 
 from ..fx5_compare import CONDITIONS, SM709, FX5CompareMachine, parse_mnemonic
 from ..machine import operand_value, to_signed16
-from . import DeviceRangeUnchecked, mutant, with_operand
+from .registry import DeviceRangeUnchecked, mutant, with_operand
 
 TIME, DATE = "fx5-time-compare", "fx5-date-compare"
 BOTH = (TIME, DATE)

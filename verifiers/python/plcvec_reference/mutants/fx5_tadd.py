@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from ..fx5_tadd import DAY, ZERO_FLAG, TADDMachine
 from ..machine import to_signed16
-from . import DeviceRangeUnchecked, mutant
+from .registry import DeviceRangeUnchecked, mutant
 
 FAMILY = ("fx5-time-add",)
 

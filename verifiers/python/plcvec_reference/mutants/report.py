@@ -4,7 +4,7 @@ from __future__ import annotations
 from plcvec_verify import InProcess, Selection, Suite, run
 
 from ..adapter import ReferenceAdapter
-from . import MUTANTS
+from .registry import MUTANTS
 
 EXAMPLES = 3   # vector ids shown per mutant in MUTANTS.md
 
