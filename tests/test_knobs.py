@@ -1,9 +1,10 @@
 """Resolving a spec under a set of choices: every {interpretation: ID} becomes the chosen alternative's
 value, whatever else the document holds is left as it is, and the document itself is not changed."""
 import copy
-import itertools
 
 import pytest
+
+from combinations import combinations_to_run
 
 from plcvec.spec.knobs import Resolver, resolve
 
@@ -20,9 +21,11 @@ def plain(node, alts, key=None):
 
 
 def combinations(doc):
-    interps = doc["interpretations"]
-    for combo in itertools.product(*([a["id"] for a in i["alternatives"]] for i in interps)):
-        yield {i["id"]: c for i, c in zip(interps, combo)}
+    """Every combination of a family's alternatives, or a pairwise set of them past the bound (each
+    choice is resolved where it stands, whatever the others are: a pair is all two choices can share)."""
+    interps = {i["id"]: [a["id"] for a in i["alternatives"]] for i in doc["interpretations"]}
+    for combo in combinations_to_run(interps):
+        yield dict(zip(interps, combo))
 
 
 def test_every_combination_of_every_family_resolves_as_a_full_copy_would(families):
