@@ -6,13 +6,17 @@ import pytest
 # The interpretations fixed for every implementation (id, family, alternatives with the default first).
 NAMED = [
     ("CP1E-ERROR-FLAGS", "cp1e-time-compare", ["kept", "off"]),
-    ("HOUR-FIRST-SCAN", "fc6a-hour-meter", ["counts", "from-next-scan"]),
+    ("HOUR-FIRST-SCAN", "fc6a-hour-meter", ["counts", "from-next-scan", "after-cpu-start"]),
     ("FX5-OR-ON-ERROR", "fx5-time-compare", ["contact-off", "result-off"]),
     ("FX5-OR-ON-ERROR", "fx5-date-compare", ["contact-off", "result-off"]),
     ("HOUR-PRESET-CHECK", "fc6a-hour-meter", ["input-on", "every-execution"]),
     ("HOUR-M8004-OFF", "fc6a-hour-meter", ["never", "valid-preset"]),
     ("TADD-ERROR-ORDER", "fx5-time-add", ["device-range-first", "field-range-first"]),
-    ("HOUR-D1-OUT-OF-RANGE", "fc6a-hour-meter", ["as-seconds", "error"]),
+    ("HOUR-D1-OUT-OF-RANGE", "fc6a-hour-meter", ["as-seconds", "error", "as-seconds-if-added", "by-field", "undefined"]),
+    ("HOUR-WRAP-REACH", "fc6a-hour-meter", ["after-wrap", "before-wrap"]),
+    ("HOUR-M8004-REPEAT", "fc6a-hour-meter", ["every-check", "once"]),
+    ("HOUR-D2-SPECIAL", "fc6a-hour-meter", ["accepted", "error", "undefined"]),
+    ("HOUR-S1-CONSTANT-RANGE", "fc6a-hour-meter", ["error", "as-is", "low-16-bits", "undefined"]),
 ]
 
 
@@ -115,3 +119,118 @@ def test_cp1e_operands_at_the_top_of_their_area(golden):
         v = vectors[f"cp1e-time-compare/LD >DT/device-range/{op}={head}"]
         assert v["initial"]["operands"][op] == {"device": head}
         assert v["steps"][0]["expect"]["result"] is True
+
+
+def _changes(entry):
+    return [e["devices"] for e in entry["expect"]]
+
+
+def test_hour_d1_out_of_range_counted_word_by_word(golden):
+    """HOUR-D1-OUT-OF-RANGE=by-field, worked from its `says`: the second word counts 60, 61, ... and
+    carries only when it becomes exactly 60; 65535 + 1 is 0 with no carry; S1 (1:00:00 here) is
+    compared hour first, so 0:75:xx stays below it and D2 stays off."""
+    vectors = by_id(golden, "fc6a-hour-meter")
+    base = "fc6a-hour-meter/HOUR/measured-out-of-range/"
+    worked = {
+        "second=60/1000ms": [{"D202": 61}],                  # 0:00:60 + 1 s = 0:00:61
+        "minute=75/1000ms": [{"D202": 1}],                   # 0:75:00 + 1 s = 0:75:01, below 1:00:00
+        "second=65535/2000ms": [{"D202": 1}],                # 65535 -> 0 (no carry) -> 1
+        "minute=65535/1000ms": [{"D202": 1}],                # 0:65535:00 + 1 s = 0:65535:01
+        "minute=75,second=59/1000ms": [{"D201": 76, "D202": 0}],   # the second carries into the minute
+        "second=75/500ms": [{}],                             # no whole second: nothing changes
+    }
+    for key, changes in worked.items():
+        v = vectors[base + key]
+        assert _changes(alternative(v, HOUR_D1_OUT_OF_RANGE="by-field", HOUR_FIRST_SCAN="counts")
+                        if "HOUR-FIRST-SCAN" in v["outcome"]["interpretations"]
+                        else alternative(v, HOUR_D1_OUT_OF_RANGE="by-field")) == changes, key
+    # as-seconds for the same words: 65535 s = 18:12:15, + 2 s = 18:12:17, past 1:00:00 (D2 on).
+    v = vectors[base + "second=65535/2000ms"]
+    assert v["steps"][0]["expect"]["devices"] == {"D200": 18, "D201": 12, "D202": 17, "M10": True}
+
+
+def test_hour_d1_out_of_range_written_only_when_a_second_is_added(golden):
+    vectors = by_id(golden, "fc6a-hour-meter")
+    v = vectors["fc6a-hour-meter/HOUR/measured-out-of-range/second=75/500ms"]
+    assert _changes(alternative(v, HOUR_D1_OUT_OF_RANGE="as-seconds-if-added")) == [{}]   # 0:00:75 stays
+    v = vectors["fc6a-hour-meter/HOUR/measured-out-of-range/second=60/1000ms"]
+    # 60 s + 1 s = 61 s = 0:01:01, written since a second was added.
+    assert _changes(alternative(v, HOUR_D1_OUT_OF_RANGE="as-seconds-if-added", HOUR_FIRST_SCAN="counts")) == [
+        {"D201": 1, "D202": 1}]
+
+
+def test_hour_wrap_that_passes_the_preset(golden):
+    """65535:59:58 + 2 s wraps to 0:00:00 in the execution that passes the preset 65535:59:59: after-wrap
+    compares 0:00:00 (below, D2 stays off); before-wrap compares the count before the wrap (D2 on)."""
+    v = by_id(golden, "fc6a-hour-meter")["fc6a-hour-meter/HOUR/wrap/reach-while-wrapping"]
+    assert _changes({"expect": [s["expect"] for s in v["steps"]]}) == [{"D200": 0, "D201": 0, "D202": 0}, {"D202": 1}]
+    before = alternative(v, HOUR_WRAP_REACH="before-wrap", HOUR_FIRST_SCAN="counts")
+    assert _changes(before) == [{"D200": 0, "D201": 0, "D202": 0, "M10": True}, {"D202": 1}]
+    # D2 was on when D1 wrapped: recompared keeps it on at 0:00:01.
+    assert before["final"]["devices"]["M10"] is True
+
+
+def test_hour_error_flag_reported_once(golden):
+    v = by_id(golden, "fc6a-hour-meter")["fc6a-hour-meter/HOUR/error-flag/minute=60/cleared-by-program"]
+    # every-check: on, on again after the program cleared it, still on.
+    assert [s["expect"]["devices"].get("M8004") for s in v["steps"]] == [True, True, None]
+    once = alternative(v, HOUR_M8004_REPEAT="once", HOUR_FIRST_SCAN="counts")
+    assert [e["devices"].get("M8004") for e in once["expect"]] == [True, None, None]
+    assert once["final"]["devices"]["M8004"] is False
+
+
+def test_hour_first_scan_after_cpu_start(golden):
+    """1.5 s on, 5 s off, 1.5 s on, preset 3 s: counts adds 1.5 + 1.5 (3 s, D2 on); from-next-scan adds
+    nothing at either turn-on; after-cpu-start nothing at step 0 and 1.5 s at step 2 (1 s whole)."""
+    v = by_id(golden, "fc6a-hour-meter")["fc6a-hour-meter/HOUR/input/off-on-off"]
+    assert v["final"]["devices"]["D202"] == 3 and v["final"]["devices"]["M10"] is True
+    later = alternative(v, HOUR_FIRST_SCAN="after-cpu-start", HOUR_INPUT_OFF="hold")
+    assert _changes(later) == [{}, {}, {"D202": 1}]
+    assert _changes(alternative(v, HOUR_FIRST_SCAN="from-next-scan", HOUR_INPUT_OFF="hold")) == [{}, {}, {}]
+
+
+def test_hour_constant_above_its_range(golden):
+    """65537 hours: an invalid preset (default), 65537:00:00 as it is (never reached), or 1 hour in
+    its low 16 bits (reached by 0:59:59 + 1 s)."""
+    v = by_id(golden, "fc6a-hour-meter")["fc6a-hour-meter/HOUR/constant/above-range/65537"]
+    assert v["initial"]["operands"]["S1"] == {"constant": 65537}
+    assert v["steps"][0]["expect"]["devices"] == {"D200": 1, "D201": 0, "D202": 0, "M8004": True}
+    low = alternative(v, HOUR_S1_CONSTANT_RANGE="low-16-bits", HOUR_FIRST_SCAN="counts")
+    assert _changes(low) == [{"D200": 1, "D201": 0, "D202": 0, "M10": True}, {"D202": 1}]
+    assert _changes(alternative(v, HOUR_S1_CONSTANT_RANGE="as-is", HOUR_FIRST_SCAN="counts")) == [
+        {"D200": 1, "D201": 0, "D202": 0}, {"D202": 1}]
+
+
+def test_hour_special_relay_as_d2(golden):
+    v = by_id(golden, "fc6a-hour-meter")["fc6a-hour-meter/HOUR/special-relay/reach"]
+    assert v["initial"]["operands"]["D2"] == {"device": "M8003"}
+    assert [s["expect"]["devices"].get("M8003") for s in v["steps"]] == [None, True, None]   # 2 s reached
+    error = alternative(v, HOUR_D2_SPECIAL="error", HOUR_FIRST_SCAN="counts")
+    assert _changes(error) == [{"D202": 1, "M8004": True}, {"D202": 2}, {"D202": 3}]        # never written
+    undefined = alternative(v, HOUR_D2_SPECIAL="undefined", HOUR_FIRST_SCAN="counts")
+    assert undefined["unjudged"] == {"HOUR-D2-SPECIAL": ["D200", "D201", "D202", "M8003", "M8004"]}
+
+
+NEW = ["HOUR-D1-OUT-OF-RANGE", "HOUR-WRAP-REACH", "HOUR-M8004-REPEAT", "HOUR-D2-SPECIAL",
+       "HOUR-S1-CONSTANT-RANGE", "HOUR-FIRST-SCAN"]
+
+
+@pytest.mark.parametrize("iid", NEW)
+def test_every_two_alternatives_are_told_apart_by_some_vector(iid, golden, families):
+    """Each pair of alternatives of the interpretation expects something different of some vector
+    (other interpretations at their defaults): a value, or a device one of them leaves unjudged."""
+    defaults = families["fc6a-hour-meter"].default_choices()
+    alternatives = [a["id"] for a in families["fc6a-hour-meter"].interpretations[iid]["alternatives"]]
+
+    def expectation(v, alt):
+        touched = v["outcome"].get("interpretations", [])
+        choice = {i: (alt if i == iid else defaults[i]) for i in touched}
+        if all(choice[i] == defaults[i] for i in touched):
+            return [s["expect"] for s in v["steps"]], v["final"]["devices"], {}
+        e = next(a for a in v["alternatives"] if a["choices"] == choice)
+        return e["expect"], e["final"]["devices"], e.get("unjudged", {})
+
+    vectors = [v for v in golden["fc6a-hour-meter"]["vectors"] if iid in v["outcome"].get("interpretations", [])]
+    for x, a in enumerate(alternatives):
+        for b in alternatives[x + 1:]:
+            assert any(expectation(v, a) != expectation(v, b) for v in vectors), (iid, a, b)

@@ -191,6 +191,17 @@ CASES = [
     ("model-unknown-strength", TC, replace(L('strength: pairwise'), "strength: pairwise", "strength: triples"), L('strength: pairwise'), "strength"),
     ("nonexistent-calendar-unknown-field", DC, replace(L('calendar: {year: yea'), "day: day}", "day: date}"), L('calendar: {year: yea'), "calendar day names no field 'date'"),
     ("model-duplicate-dimension", TC, replace(L('- {id: logic, derive'), "{id: logic,", "{id: form,"), L('- {id: logic, derive'), "dimension 'form' is defined twice"),
+    # An alternative that leaves devices unjudged (HOUR-D1-OUT-OF-RANGE=undefined and its like).
+    ("unjudged-unknown-operand", HM, replace(L('sets: {measured_invalid: undefined}'), "[D1, D2]", "[D1, D9]"),
+     L('sets: {measured_invalid: undefined}'), "unknown operand 'D9'"),
+    ("unjudged-unknown-flag", HM, replace(L('sets: {measured_invalid: undefined}'), "flags: [error]", "flags: [carry]"),
+     L('sets: {measured_invalid: undefined}'), "unknown flag 'carry' (known: error)"),
+    ("unjudged-without-undefined", HM, replace(L('sets: {measured_invalid: undefined}'), "measured_invalid: undefined}", "measured_invalid: error}"),
+     L('sets: {measured_invalid: undefined}'), "leaves devices unjudged but sets no parameter to 'undefined'"),
+    ("undefined-without-unjudged", HM, replace(L('sets: {constant_range: undefined}'), ", unjudged: {operands: [D1, D2], flags: [error]}", ""),
+     L('sets: {constant_range: undefined}'), "sets 'undefined' but does not say which devices it leaves unjudged"),
+    ("unjudged-default", HM, replace(L('    default: accepted'), "accepted", "undefined"), L('sets: {special_output: undefined}'),
+     "the default of 'HOUR-D2-SPECIAL' leaves devices unjudged"),
 ]
 
 IDS = [c[0] for c in CASES]

@@ -1,5 +1,6 @@
 """plcvec: conformance test vectors for PLC clock and calendar instructions."""
 
 __version__ = "0.2.0"
-# Bumped when the vector file format changes incompatibly (see verifiers/CONTRACT.md).
-SCHEMA_VERSION = "1.0.0"
+# The vector file format (semver): a minor version adds optional keys, a major one changes what a key
+# means (see verifiers/CONTRACT.md, Versioning).
+SCHEMA_VERSION = "1.1.0"

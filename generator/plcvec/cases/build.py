@@ -9,6 +9,7 @@ import functools
 import itertools
 from typing import NamedTuple
 
+from plcvec.cases.unjudged import Unjudged
 from plcvec.coverage.derive import CLASSIFIERS
 from plcvec.coverage.model import model_of
 from plcvec.engine import make_engine
@@ -48,6 +49,8 @@ class Run(NamedTuple):
     outcome: dict      # {"category": "value"} or {"category": "error", "errors": [...]}
     trace: set         # clause ids the engine cited
     consulted: frozenset  # interpretation ids whose chosen value the execution read
+    # {interpretation id: sorted devices} the choices leave unjudged, left out of expects and final
+    unjudged: dict = {}
 
 
 class VectorBuilder:
@@ -61,6 +64,7 @@ class VectorBuilder:
         self.executions = 0   # runs of a case under one set of choices, for the benchmark and its tests
         self.ids = set()
         self.defaults = fam.default_choices()
+        self._unjudged = Unjudged(fam)
         self.order = list(fam.interpretations)
         self.options = {i: [a["id"] for a in fam.interpretations[i]["alternatives"]] for i in self.order}
         coverage = fam.doc.get("coverage", {})
@@ -128,7 +132,22 @@ class VectorBuilder:
         final = {k: state[k] for k in shown}
         outcome = {"category": "error", "errors": errors} if errors else {"category": "value"}
         trace.discard(None)
-        return Run(expects, final, outcome, trace, frozenset(sink) | at_build)
+        unjudged = {}
+        if "undefined" in ctx:
+            unjudged = self.unjudged(ctx["undefined"], choices, operands, devices)
+            expects, final = leave_out(expects, final, {d for ds in unjudged.values() for d in ds})
+        return Run(expects, final, outcome, trace, frozenset(sink) | at_build, unjudged)
+
+    def unjudged(self, parameters, choices, operands, devices):
+        """{interpretation id: devices} the chosen alternatives leave unjudged, where an engine found the
+        rule `parameters` undefined: each device listed in the initial state (so a write to it is no
+        stray write), and never under the defaults."""
+        unjudged = self._unjudged.devices(parameters, choices, operands)
+        for iid, listed in unjudged.items():
+            if not listed or not set(listed) <= set(devices) or choices[iid] == self.defaults[iid]:
+                raise GeneratorBug(f"{iid}={choices[iid]} leaves {listed} unjudged, which is not a non-empty "
+                                   "list of the vector's initial devices under a reading other than the default")
+        return unjudged
 
     def runs(self, instr, operands, devices, steps, scratch):
         """[(choices, Run)]: the case under every combination of alternatives, in as few runs as it takes.
@@ -225,7 +244,8 @@ class VectorBuilder:
         # Runs with equal results share a class, so the grid compares small integers.
         classes, distinct = [], []
         for _, run in runs:
-            same = next((k for k, other in enumerate(distinct) if other[:3] == run[:3]), None)
+            same = next((k for k, other in enumerate(distinct)
+                         if other[:3] == run[:3] and other.unjudged == run.unjudged), None)
             if same is None:
                 same = len(distinct)
                 distinct.append(run)
@@ -251,8 +271,12 @@ class VectorBuilder:
                 continue
             run = grid[tuple(choice.get(i, defaults[i]) for i in consulted)][1]
             trace |= run.trace
-            alternatives.append({"choices": choice, "expect": run.expects, "final": {"devices": run.final},
-                                 "outcome": run.outcome})
+            entry = {"choices": choice, "expect": run.expects, "final": {"devices": run.final}, "outcome": run.outcome}
+            if run.unjudged:
+                if not set(run.unjudged) <= set(choice):
+                    raise GeneratorBug(f"{sorted(run.unjudged)} leave devices unjudged but are not all among {sorted(choice)}")
+                entry["unjudged"] = run.unjudged
+            alternatives.append(entry)
         return root.expects, root.final, root.outcome, trace, touched, alternatives
 
     def _shown(self, state, scratch):
@@ -280,6 +304,12 @@ class VectorBuilder:
         cited = {self.fam.doc["operands"][name]["clause"] for name in operands}
         cited |= {instr["naming_clause"]} if "naming_clause" in instr else set()
         return cited | self.every_vector | {self.by_tag[t] for t in tags if t in self.by_tag}
+
+
+def leave_out(expects, final, devices):
+    """(expects, final) without `devices`: what an entry that leaves them unjudged lists."""
+    expects = [dict(e, devices={k: v for k, v in e["devices"].items() if k not in devices}) for e in expects]
+    return expects, {k: v for k, v in final.items() if k not in devices}
 
 
 def _errors_in_code(operands):

@@ -50,6 +50,14 @@ class HourCases:
     def on(self, ms, n=1):
         return [{"input": True, "elapsed_ms": ms}] * n
 
+    def set_preset(self, values):
+        """A step's `set` that writes `values` into the preset's registers."""
+        return dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(values)))
+
+    def clock(self, values):
+        """Field values as the page writes a duration: 65535:59:58."""
+        return ":".join(str(values[n]) if k == 0 else f"{values[n]:02d}" for k, n in enumerate(self.names))
+
     def basics(self):
         five = self.seconds(5)
         yield self.case("reach/whole-seconds", tags=["scan-sequence"], preset=five, measured=self.hms(),
@@ -105,6 +113,56 @@ class HourCases:
                         steps=self.on(self.unit * 2 * per_top),
                         description=f"D1 at {start[self.names[0]]}:00:00 and one scan of {2 * per_top} s: D1 wraps and ends at 1:00:00, "
                                     "which reaches the preset of 1:00:00 in the new cycle.")
+        # One scan passes the preset and wraps (HOUR-WRAP-REACH): the largest preset, from two seconds below it.
+        start = self.ops.codec.from_units(self.ops.codec.modulus() - 2)
+        yield self.case("wrap/reach-while-wrapping", tags=["wrap", "scan-sequence"], preset=top, measured=start,
+                        steps=self.on(self.unit * 2) + self.on(self.unit),
+                        description=f"D1 at {self.clock(start)}, the preset {self.clock(top)}, one scan of 2 s and one of 1 s: "
+                                    "the first passes the preset and wraps D1 to 0:00:00 in the same execution; "
+                                    "compared after the wrap, D2 stays off.")
+
+    def forbidden_operands(self):
+        """Operands the page forbids: a constant above the range of its field (HOUR-S1-CONSTANT-RANGE), and
+        D2 a special internal relay (HOUR-D2-SPECIAL)."""
+        top = self.fields[0]
+        per_top = self.ops.codec.modulus() // (top["max"] + 1)
+        for value, start, scans in ((top["max"] + 1, 0, 1), (top["max"] + 2, per_top - 1, 2)):
+            yield self.case(f"constant/above-range/{value}", tags=["constant", "forbidden-operand"], preset=value,
+                            measured=self.seconds(start), steps=self.on(self.unit, scans),
+                            description=f"Constant preset {value}, above the {top['max']} a constant may hold, D1 from {start} s, "
+                                        f"{scans} scans of 1 s: read as an invalid preset, the error flag on, D1 still measured, D2 stays off.")
+        relay = self.doc["generation"]["special_relay"]
+        yield self.case("special-relay/reach", tags=["scan-sequence", "forbidden-operand"], preset=self.seconds(2),
+                        measured=self.hms(), steps=self.on(self.unit, 3), output_device=relay,
+                        description=f"D2 is the special internal relay {relay}, which the page forbids as D2: "
+                                    "written as any relay, it turns on when the preset of 2 s is reached.")
+        invalid = self.hms(**{self.names[1]: self.by_max(self.names[1]) + 1})
+        yield self.case("special-relay/invalid-preset", tags=["invalid-range", "forbidden-operand"], preset=self.seconds(1),
+                        measured=self.seconds(5), output=True, output_device=relay,
+                        steps=[{"input": True, "elapsed_ms": self.unit, "set": self.set_preset(invalid)}],
+                        description=f"D2 is the special internal relay {relay}, on; the preset is changed to an invalid one: "
+                                    f"written as any relay, {relay} turns off and the error flag turns on.")
+
+    def error_repeat(self):
+        """An invalid preset checked again after the program turned the error flag off (HOUR-M8004-REPEAT)."""
+        minute = self.names[1]
+        invalid = self.hms(**{minute: self.by_max(minute) + 1})
+        cleared = [{"input": True, "elapsed_ms": self.unit, "set": {self.error_device: False}}]
+        yield self.case(f"error-flag/{minute}={invalid[minute]}/cleared-by-program", tags=["invalid-range", "latch", "scan-sequence"],
+                        preset=invalid, measured=self.hms(), steps=self.on(self.unit) + cleared + self.on(self.unit),
+                        description=f"Preset {minute} = {invalid[minute]} for three scans of 1 s; the program turns the error flag off "
+                                    "before the second: the second check turns it on again.")
+        top = self.fields[0]["max"] + 2
+        yield self.case(f"error-flag/constant={top}/cleared-by-program", tags=["constant", "forbidden-operand", "latch", "scan-sequence"],
+                        preset=top, measured=self.hms(), steps=self.on(self.unit) + cleared + self.on(self.unit),
+                        description=f"Constant preset {top} for three scans of 1 s; the program turns the error flag off "
+                                    "before the second: read as an invalid preset, the second check turns it on again.")
+        valid_again = [{"input": True, "elapsed_ms": self.unit, "set": {self.error_device: False, **self.set_preset(self.seconds(5))}},
+                       {"input": True, "elapsed_ms": self.unit, "set": self.set_preset(invalid)}]
+        yield self.case(f"error-flag/{minute}={invalid[minute]}/valid-between", tags=["invalid-range", "latch", "scan-sequence"],
+                        preset=invalid, measured=self.hms(), steps=self.on(self.unit) + valid_again,
+                        description=f"Preset {minute} = {invalid[minute]}, then a valid preset with the error flag turned off by the program, "
+                                    f"then {minute} = {invalid[minute]} again: the third check turns the error flag on again.")
 
     def invalid_preset(self):
         for f in self.fields[1:]:
@@ -128,12 +186,19 @@ class HourCases:
         hour, minute, second = self.names
         preset = self.seconds(self.ops.codec.modulus() // (self.fields[0]["max"] + 1))   # 1:00:00
         for name, value, ms in ((minute, self.by_max(minute) + 16, self.unit), (second, self.by_max(second) + 1, self.unit),
-                                (second, self.by_max(second) + 16, self.unit // 2), (minute, 0xFFFF, self.unit)):
+                                (second, self.by_max(second) + 16, self.unit // 2), (minute, 0xFFFF, self.unit),
+                                (second, 0xFFFF, 2 * self.unit)):
             measured = self.hms(**{name: value})
             yield self.case(f"measured-out-of-range/{name}={value}/{ms}ms", tags=["invalid-range"], preset=preset,
                             measured=measured, steps=self.on(ms),
                             description=f"D1 {name} = {value} (over {self.by_max(name)}) and one scan of {ms} ms with the input on; "
                                         "the preset is 1:00:00.")
+        # A second in range carrying into a minute out of range.
+        measured = self.hms(**{minute: self.by_max(minute) + 16, second: self.by_max(second)})
+        yield self.case(f"measured-out-of-range/{minute}={measured[minute]},{second}={measured[second]}/{self.unit}ms",
+                        tags=["invalid-range"], preset=preset, measured=measured, steps=self.on(self.unit),
+                        description=f"D1 at {self.clock(measured)} ({minute} over {self.by_max(minute)}) and one scan of {self.unit} ms "
+                                    "with the input on: the second carries into the minute; the preset is 1:00:00.")
 
     def by_max(self, name):
         return self.ops.by_name[name]["max"]
@@ -179,6 +244,10 @@ class HourCases:
         yield self.case("input/off-after-reach", tags=["input-off", "scan-sequence"], preset=self.seconds(1), measured=self.hms(),
                         steps=self.on(self.unit) + [{"input": False, "elapsed_ms": self.unit}],
                         description="The input goes off after D2 turned on.")
+        yield self.case("input/off-then-on", tags=["input-off", "scan-sequence"], preset=self.seconds(2), measured=self.hms(),
+                        steps=[{"input": False, "elapsed_ms": self.unit}] + self.on(self.unit, 2),
+                        description="The input off for the first scan, then on for two scans of 1 s: "
+                                    "the preset of 2 s is reached at the third.")
         yield self.case("input/preset-raised-after-reach", tags=["scan-sequence"], preset=self.seconds(1), measured=self.hms(),
                         steps=self.on(self.unit) + [{"input": True, "elapsed_ms": self.unit,
                                                      "set": dict(zip(operand_words(self.place[self.preset], self.words[self.preset]), self.ops.words(self.seconds(self.ops.codec.modulus() // (self.fields[0]["max"] + 1)))))}],
@@ -202,7 +271,11 @@ class HourCases:
         constant = row.get("preset-operand") == "constant"
         preset = target // per_top if constant else self.seconds(target)
         validity = row.get("preset-validity")
-        if validity not in (None, "valid") and not constant:
+        if validity not in (None, "valid") and constant:
+            # Past the constant's range by a whole cycle of its field: cut to the field's bits it is the
+            # row's preset again (HOUR-S1-CONSTANT-RANGE=low-16-bits).
+            preset += self.fields[0]["max"] + 1
+        elif validity not in (None, "valid"):
             name = validity.split(".")[0]
             preset = dict(preset, **{name: self.ops.by_name[name]["max"] + 1})
         step = {"input": on, "elapsed_ms": whole * self.unit + (self.unit // 2 if whole == 0 else 0)}
@@ -220,7 +293,7 @@ class HourCases:
 def hour_meter_cases(fam, builder):
     c = HourCases(fam, builder)
     vectors = []
-    for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.error_flag, c.measured_out_of_range, c.output_relay,
-                   c.input_off, c.random):
+    for family in (c.basics, c.constants, c.wrap, c.invalid_preset, c.error_flag, c.error_repeat, c.measured_out_of_range,
+                   c.output_relay, c.forbidden_operands, c.input_off, c.random):
         vectors += family()
     return vectors + model_cases(builder, vectors, c.from_row, ())

@@ -8,10 +8,12 @@ def _role(doc, role):
 
 
 def preset_classes(doc):
-    """valid, or a field of the preset above its range (where its word can hold more)."""
+    """valid, or a field of the preset above its range: a register's field where its word can hold
+    more, and the field a constant gives (a constant is not held in that field's word)."""
+    constant = doc["data"]["constant_field"]["field"]
     out = ["valid"]
     for f in doc["data"]["fields"]:
-        if f["max"] < (1 << f["width"]) - 1:
+        if f["max"] < (1 << f["width"]) - 1 or f["name"] == constant:
             out.append(f"{f['name']}.above")
     return out
 
@@ -36,6 +38,8 @@ class HourClassifier:
         self.codec = FieldCodec(self.fields)
         self.preset, self.output = _role(doc, "preset"), _role(doc, "output")
         self.error_device = doc["error"]["device"]
+        name = doc["data"]["constant_field"]["field"]
+        self.constant_field = next(f for f in self.fields if f["name"] == name)
 
     def classify(self, instr, operands, before, step, record):
         """{derivation name: class} for one execution."""
@@ -47,6 +51,8 @@ class HourClassifier:
                 if not self.codec.in_range(f, values[f["name"]]):
                     validity = f"{f['name']}.above"
                     break
+        elif op["constant"] > self.constant_field["max"]:
+            validity = f"{self.constant_field['name']}.above"
         whole = record["whole"]
         return {
             "input": "on" if step.get("input") else "off",

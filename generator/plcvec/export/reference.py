@@ -12,6 +12,7 @@ import re
 from pathlib import Path
 
 from plcvec.errors import PlcvecError
+from plcvec.spec.flags import flag_groups
 
 BEGIN = "<!-- plcvec:reference-tables -->"
 END = "<!-- /plcvec:reference-tables -->"
@@ -33,29 +34,10 @@ def family_reference(fam) -> dict:
     fields = [{"name": f["name"], "word": f["word"], "bits": f"{f['lsb']}-{f['lsb'] + f['width'] - 1}",
                "encoding": f["encoding"], "min": f["min"], "max": f["max"], "clause": f["clause"]}
               for f in doc["data"]["fields"]]
-    return {"operands": operands, "fields": fields, "flags": _flags(doc),
+    return {"operands": operands, "fields": fields, "flags": flag_groups(doc),
             "interpretations": [{"id": i["id"], "question": i["question"], "default": i["default"],
                                  "alternatives": [{"id": a["id"], "says": a["says"]} for a in i["alternatives"]]}
                                 for i in doc["interpretations"]]}
-
-
-def _flags(doc) -> list[dict]:
-    """Every flag, error device and error register the family's vectors may list, with its meaning."""
-    out = []
-    flags = doc.get("flags") or {}
-    if doc["kind"] == "clock_add":
-        for name in ("carry", "zero"):
-            out.append({"name": name, "devices": flags[name]["devices"], "clause": flags[name]["clause"]})
-        out.append({"name": "error code", "devices": doc["errors"]["registers"]["devices"],
-                    "clause": doc["errors"]["registers"]["clause"]})
-    elif doc["kind"] == "masked_compare":
-        error = doc["validity"]["error"]
-        out.append({"name": "error", "devices": [error["device"]], "clause": error.get("clause", "")})
-        for symbol, device in (flags.get("devices") or {}).items():
-            out.append({"name": f"comparison {symbol}", "devices": [device], "clause": flags["clause"]})
-    elif doc["kind"] == "hour_meter":
-        out.append({"name": "error", "devices": [doc["error"]["device"]], "clause": doc["error"]["clause"]})
-    return out
 
 
 def replace_section(path: Path, text: str, tables: str) -> str:

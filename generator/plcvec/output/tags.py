@@ -6,6 +6,7 @@ TAGS = {
     "constant": "An operand given as a constant instead of a device.",
     "current-clock": "The comparison uses the current clock (injected per step) or the CPU's clock area.",
     "device-range": "An operand's words reach or pass the end of its device range.",
+    "forbidden-operand": "An operand the manual's device table or prose forbids (a special internal relay as a destination, a constant past its range): what the pages say of it is an interpretation.",
     "fuzz": "Found by `plcvec fuzz`: the minimal case of a disagreement between an implementation and the spec.",
     "input-off": "The input of a measuring instruction goes off during the sequence.",
     "invalid-bcd": "A field holds a nibble above 9, which is not BCD.",

@@ -223,7 +223,9 @@ class _FamilyView:
                  "quotes": [self.source(("interpretations", i, "quotes", j), q) for j, q in enumerate(it["quotes"])],
                  "default": it["default"], "why": it["why"],
                  "alternatives": [{"id": a["id"], "says": a["says"], "default": a["id"] == it["default"],
-                                   "sets": _text(a["sets"])} for a in it["alternatives"]],
+                                   "sets": _text(a["sets"]),
+                                   "unjudged": _text(a["unjudged"]) if "unjudged" in a else ""}
+                                  for a in it["alternatives"]],
                  "decides": _decided_by(self.doc, it["id"]),
                  "vectors": sum(1 for v in self.vectors if _touches(v, it["id"]))}
                 for i, it in enumerate(self.doc["interpretations"])]

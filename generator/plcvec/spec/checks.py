@@ -1,5 +1,7 @@
 """Consistency checks a JSON Schema cannot express: references, ranges, bit layouts, unique ids."""
+from plcvec.engine.undefined import UNDEFINED
 from plcvec.output.tags import TAGS
+from plcvec.spec.flags import flag_groups
 from plcvec.spec.model_checks import check_model
 
 # The value range each word encoding can hold at all, by field width; a field range outside it is a typo.
@@ -39,6 +41,7 @@ def check_family(fam):
     _check_coverage(fam)
     check_model(fam)
     _check_interpretations(fam)
+    _check_unjudged(fam)
     _check_fields(fam)
     if fam.kind == "masked_compare":
         _check_selector(fam)
@@ -55,6 +58,8 @@ def check_family(fam):
     for op in doc["operands"]:
         if op not in placement:
             raise fam.error(("generation", "placement"), f"no placement for operand {op!r}")
+    if "special_relay" in doc["generation"] and "special_relays" not in doc:
+        raise fam.error(("generation", "special_relay"), "a special relay for the vectors needs a special_relays section")
 
 
 def _check_references(fam):
@@ -117,6 +122,36 @@ def _check_interpretations(fam):
         used = any(n.get("interpretation") == interp["id"] for _, n in _walk(fam.doc) if len(n) == 1)
         if not used:
             raise fam.error(("interpretations", i), f"interpretation {interp['id']!r} is not referenced by any rule parameter")
+
+
+def _check_unjudged(fam):
+    """An alternative that leaves devices unjudged names operands and flag groups the family has, is
+    never the default (a vector's own expectation judges every device it lists), and is exactly an
+    alternative that sets a parameter to `undefined`, the value at which the engine says so."""
+    operands = fam.doc["operands"]
+    flags = [g["name"] for g in flag_groups(fam.doc)]
+    for i, interp in enumerate(fam.doc["interpretations"]):
+        for k, alt in enumerate(interp["alternatives"]):
+            where = ("interpretations", i, "alternatives", k)
+            unjudged = alt.get("unjudged")
+            sets_undefined = UNDEFINED in alt["sets"].values()
+            if unjudged is None:
+                if sets_undefined:
+                    raise fam.error(where + ("sets",), f"alternative {alt['id']!r} of {interp['id']!r} sets {UNDEFINED!r} "
+                                                       "but does not say which devices it leaves unjudged (unjudged:)")
+                continue
+            if not sets_undefined:
+                raise fam.error(where + ("unjudged",), f"alternative {alt['id']!r} of {interp['id']!r} leaves devices "
+                                                       f"unjudged but sets no parameter to {UNDEFINED!r}, so no execution says where")
+            if alt["id"] == interp["default"]:
+                raise fam.error(where + ("unjudged",), f"the default of {interp['id']!r} leaves devices unjudged; "
+                                                       "a default must judge every device a vector lists")
+            for j, name in enumerate(unjudged.get("operands", ())):
+                if name not in operands:
+                    raise fam.error(where + ("unjudged", "operands", j), f"unknown operand {name!r} (known: {', '.join(operands)})")
+            for j, name in enumerate(unjudged.get("flags", ())):
+                if name not in flags:
+                    raise fam.error(where + ("unjudged", "flags", j), f"unknown flag {name!r} (known: {', '.join(flags)})")
 
 
 def _check_fields(fam):

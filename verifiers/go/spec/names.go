@@ -10,13 +10,13 @@ package spec
 const SuiteVersion = "0.2.0"
 
 // SchemaVersion is the vector files' schema version.
-const SchemaVersion = "1.0.0"
+const SchemaVersion = "1.1.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "d7187f0199f68f6bfe8e62ac456a2460b98aa957b2e55a32c52b7e3fa262d174"
+const SpecSHA256 = "bdf31f93923c3228945b93e4f1ee8b2f8963186485d498e97483dfa461058e55"
 
 // Total is the number of vectors in the exported copy.
-const Total = 3526
+const Total = 3536
 
 // Families (one vector file each).
 
@@ -111,6 +111,9 @@ const TagCurrentClock = "current-clock"
 
 // TagDeviceRange: An operand's words reach or pass the end of its device range.
 const TagDeviceRange = "device-range"
+
+// TagForbiddenOperand: An operand the manual's device table or prose forbids (a special internal relay as a destination, a constant past its range): what the pages say of it is an interpretation.
+const TagForbiddenOperand = "forbidden-operand"
 
 // TagInputOff: The input of a measuring instruction goes off during the sequence.
 const TagInputOff = "input-off"
@@ -273,7 +276,7 @@ const HourPresetZeroImmediate = "immediate"
 // HourPresetZeroNever: A zero preset disables the comparison; D2 never turns on.
 const HourPresetZeroNever = "never"
 
-// InterpHourFirstScan: Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?
+// InterpHourFirstScan: Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time, and does that of the first execution after the CPU starts?
 const InterpHourFirstScan = "HOUR-FIRST-SCAN"
 
 // HourFirstScanCounts: Every execution with the input on adds its whole elapsed_ms to the ON duration, the execution at which the input turns on included. (the default)
@@ -281,6 +284,9 @@ const HourFirstScanCounts = "counts"
 
 // HourFirstScanFromNextScan: Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms.
 const HourFirstScanFromNextScan = "from-next-scan"
+
+// HourFirstScanAfterCpuStart: Only the first execution after the CPU starts (the vector's step 0) adds nothing, as if its elapsed_ms were 0, whatever its input; it does everything else an execution with the input on does (compare with S1, check S1). Every later execution with the input on adds its whole elapsed_ms, an execution at which the input turns on included. So step 0 with the input on is measured as under from-next-scan, and an execution after step 0 at which the input turns on as under counts.
+const HourFirstScanAfterCpuStart = "after-cpu-start"
 
 // InterpHourPresetCheck: Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?
 const InterpHourPresetCheck = "HOUR-PRESET-CHECK"
@@ -297,7 +303,7 @@ const InterpHourM8004Off = "HOUR-M8004-OFF"
 // HourM8004OffNever: No HOUR execution turns M8004 off; once on it stays on until something outside the instruction turns it off. (the default)
 const HourM8004OffNever = "never"
 
-// HourM8004OffValidPreset: An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off.
+// HourM8004OffValidPreset: An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 of 0 to 65,535 is always in range, so every execution that checks it turns M8004 off (one above 65,535 is valid or not as HOUR-S1-CONSTANT-RANGE says).
 const HourM8004OffValidPreset = "valid-preset"
 
 // InterpHourD1OutOfRange: What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?
@@ -308,6 +314,60 @@ const HourD1OutOfRangeAsSeconds = "as-seconds"
 
 // HourD1OutOfRangeError: It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read.
 const HourD1OutOfRangeError = "error"
+
+// HourD1OutOfRangeAsSecondsIfAdded: As as-seconds, except that D1 is written only by an execution that adds at least one whole second: D1 is read as the count hour x 3600 + minute x 60 + second seconds; an execution that adds whole seconds writes back the count plus them with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), while one that adds none leaves D1's three words as they are (second 75 stays 75). Either way S1 is compared with the count plus the seconds added (0:00:75 is 75 s), as with any D1.
+const HourD1OutOfRangeAsSecondsIfAdded = "as-seconds-if-added"
+
+// HourD1OutOfRangeByField: Each word of D1 counts as a counter of its own, one whole second at a time: the second is incremented; a second that becomes exactly 60 becomes 0 and increments the minute; a minute that becomes exactly 60 becomes 0 and increments the hour; an hour incremented from 65535 becomes 0 (D1 has passed 65535:59:59 and wraps, as usual). A word above 59 therefore goes on counting (60, 61, ...), carrying nothing, until it is incremented from 65535 to 0 (which carries nothing either); from 0 it counts and carries as usual. An out-of-range minute stays as it is until a carry increments it. S1 is compared with D1 word by word: the hours first, then the minutes, then the seconds, the first that differ deciding (0:75:00 is below 1:00:00); D1 reaches S1 when it is greater or all three are equal. M8004 is not written for it.
+const HourD1OutOfRangeByField = "by-field"
+
+// HourD1OutOfRangeUndefined: The pages define no behaviour for a D1 outside its ranges: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written (S1 is only read).
+const HourD1OutOfRangeUndefined = "undefined"
+
+// InterpHourWrapReach: When one execution carries D1 past 65535:59:59, so that the value it writes has wrapped below S1, is S1 compared with that value or with the count before it wrapped, which passed S1 on the way?
+const InterpHourWrapReach = "HOUR-WRAP-REACH"
+
+// HourWrapReachAfterWrap: D1 wraps first, and the value written to D1 is compared with S1: D2 turns on only if the wrapped value reaches S1. (the default)
+const HourWrapReachAfterWrap = "after-wrap"
+
+// HourWrapReachBeforeWrap: At an execution that wraps D1, S1 is compared with the count before the wrap (the value written plus 65,536 hours for each wrap), which is past 65535:59:59 and so reaches any S1 of at most 65535:59:59: D2 turns on; then D1 is written wrapped, and since D2 was on when D1 wrapped it stays on across that wrap (as HOUR-OUTPUT-OFF=recompared keeps it). An execution that does not wrap D1 compares as after-wrap does.
+const HourWrapReachBeforeWrap = "before-wrap"
+
+// InterpHourM8004Repeat: While S1 stays invalid, does every check that finds it invalid turn M8004 on again, after the program turned M8004 off?
+const InterpHourM8004Repeat = "HOUR-M8004-REPEAT"
+
+// HourM8004RepeatEveryCheck: Every execution that checks S1 (see HOUR-PRESET-CHECK) and finds it invalid turns M8004 on, whatever the previous check found: M8004 turned off by the program while S1 stays invalid is on again after the next check. (the default)
+const HourM8004RepeatEveryCheck = "every-check"
+
+// HourM8004RepeatOnce: A check that finds S1 invalid turns M8004 on only when the previous check found S1 valid, or when it is the first check since the CPU started: the error is reported once each time S1 becomes invalid, and M8004 turned off by the program stays off while S1 stays invalid. D2 is turned off at every check that finds S1 invalid, as under every-check.
+const HourM8004RepeatOnce = "once"
+
+// InterpHourD2Special: What does HOUR do when D2 is a special internal relay, which the page says cannot be designated as D2 (the vectors use M8003, see generation.special_relay)?
+const InterpHourD2Special = "HOUR-D2-SPECIAL"
+
+// HourD2SpecialAccepted: The relay is written as any internal relay would be: HOUR turns it on and off as it would M10, and nothing else changes. (the default)
+const HourD2SpecialAccepted = "accepted"
+
+// HourD2SpecialError: It is a user program execution error: every execution with the input on turns M8004 on (after everything else it does), and D2 is never written (neither turned on when D1 reaches S1 nor off by an invalid S1); D1 is measured and S1 checked as with any D2, as the page says of an invalid S1 ("but the input ON duration is measured"). An execution with the input off writes neither D2 nor, for this reason, M8004.
+const HourD2SpecialError = "error"
+
+// HourD2SpecialUndefined: A program the page forbids is outside what the pages define: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written (S1 is only read).
+const HourD2SpecialUndefined = "undefined"
+
+// InterpHourS1ConstantRange: What does HOUR do with a constant S1 above 65,535, outside the range the page gives a constant preset?
+const InterpHourS1ConstantRange = "HOUR-S1-CONSTANT-RANGE"
+
+// HourS1ConstantRangeError: It is an S1 out of range, exactly as a register S1 with a field out of range: a user program execution error at every check of S1 (M8004 on, D2 off, D1 still measured; see HOUR-PRESET-CHECK, HOUR-M8004-OFF and HOUR-M8004-REPEAT). (the default)
+const HourS1ConstantRangeError = "error"
+
+// HourS1ConstantRangeAsIs: The constant is accepted as it is: the preset is that many hours, minutes and seconds 0 (65,537 is 65537:00:00), valid (no M8004), and compared with D1 as any preset is; D1, at most 65535:59:59, stays below it.
+const HourS1ConstantRangeAsIs = "as-is"
+
+// HourS1ConstantRangeLow16Bits: The constant is cut to its low 16 bits (65,536 + n is n hours; 65,536 itself is 0:00:00, see HOUR-PRESET-ZERO) and is then a valid preset like any other.
+const HourS1ConstantRangeLow16Bits = "low-16-bits"
+
+// HourS1ConstantRangeUndefined: A program the page forbids is outside what the pages define: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written.
+const HourS1ConstantRangeUndefined = "undefined"
 
 // InterpFx5Sm709Scope: Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?
 const InterpFx5Sm709Scope = "FX5-SM709-SCOPE"
@@ -537,7 +597,7 @@ func InstructionOf(name string) (Instruction, bool) {
 // Families lists every family in the exported copy.
 var Families = []Family{
 	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags}},
-	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagInputOff, TagInvalidRange, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero, InterpHourFirstScan, InterpHourPresetCheck, InterpHourM8004Off, InterpHourD1OutOfRange}},
+	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagForbiddenOperand, TagInputOff, TagInvalidRange, TagLatch, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero, InterpHourFirstScan, InterpHourPresetCheck, InterpHourM8004Off, InterpHourD1OutOfRange, InterpHourWrapReach, InterpHourM8004Repeat, InterpHourD2Special, InterpHourS1ConstantRange}},
 	{Name: FamilyFx5DateCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 date comparison (LDDT\U000025a1, ANDDT\U000025a1, ORDT\U000025a1)", Instructions: []string{InstrAnddtLt, InstrAnddtLe, InstrAnddtNe, InstrAnddtEq, InstrAnddtGt, InstrAnddtGe, InstrLddtLt, InstrLddtLe, InstrLddtNe, InstrLddtEq, InstrLddtGt, InstrLddtGe, InstrOrdtLt, InstrOrdtLe, InstrOrdtNe, InstrOrdtEq, InstrOrdtGt, InstrOrdtGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagNonexistentDate, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
 	{Name: FamilyFx5TimeAdd, Kind: "clock_add", Title: "Mitsubishi MELSEC iQ-F FX5 clock data addition (TADD, TADDP)", Instructions: []string{InstrTadd, InstrTaddp}, Tags: []string{TagBoundary, TagDeviceRange, TagInvalidRange, TagManualExample, TagModel, TagPulse, TagRandom, TagRegression, TagSameDevice, TagWrap}, Interpretations: []string{InterpTaddFlagsOff, InterpTaddExact24, InterpTaddOnError, InterpTaddErrorOrder}},
 	{Name: FamilyFx5TimeCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 time comparison (LDTM\U000025a1, ANDTM\U000025a1, ORTM\U000025a1)", Instructions: []string{InstrAndtmLt, InstrAndtmLe, InstrAndtmNe, InstrAndtmEq, InstrAndtmGt, InstrAndtmGe, InstrLdtmLt, InstrLdtmLe, InstrLdtmNe, InstrLdtmEq, InstrLdtmGt, InstrLdtmGe, InstrOrtmLt, InstrOrtmLe, InstrOrtmNe, InstrOrtmEq, InstrOrtmGt, InstrOrtmGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
@@ -555,10 +615,14 @@ var Interpretations = []Interpretation{
 	{ID: InterpHourOutputOff, Question: "What turns D2 off, other than an invalid preset?", Default: HourOutputOffLatched, Alternatives: []string{HourOutputOffLatched, HourOutputOffRecompared}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourInputOff, Question: "Does D1 hold its value while the input is off, or is it cleared?", Default: HourInputOffHold, Alternatives: []string{HourInputOffHold, HourInputOffReset, HourInputOffHoldDropFraction}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourPresetZero, Question: "Does a preset of 0:00:00 turn D2 on?", Default: HourPresetZeroImmediate, Alternatives: []string{HourPresetZeroImmediate, HourPresetZeroNever}, Families: []string{"fc6a-hour-meter"}},
-	{ID: InterpHourFirstScan, Question: "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?", Default: HourFirstScanCounts, Alternatives: []string{HourFirstScanCounts, HourFirstScanFromNextScan}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourFirstScan, Question: "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time, and does that of the first execution after the CPU starts?", Default: HourFirstScanCounts, Alternatives: []string{HourFirstScanCounts, HourFirstScanFromNextScan, HourFirstScanAfterCpuStart}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourPresetCheck, Question: "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?", Default: HourPresetCheckInputOn, Alternatives: []string{HourPresetCheckInputOn, HourPresetCheckEveryExecution}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourM8004Off, Question: "Does an HOUR execution that checks the preset and finds it valid turn M8004 off?", Default: HourM8004OffNever, Alternatives: []string{HourM8004OffNever, HourM8004OffValidPreset}, Families: []string{"fc6a-hour-meter"}},
-	{ID: InterpHourD1OutOfRange, Question: "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?", Default: HourD1OutOfRangeAsSeconds, Alternatives: []string{HourD1OutOfRangeAsSeconds, HourD1OutOfRangeError}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourD1OutOfRange, Question: "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?", Default: HourD1OutOfRangeAsSeconds, Alternatives: []string{HourD1OutOfRangeAsSeconds, HourD1OutOfRangeError, HourD1OutOfRangeAsSecondsIfAdded, HourD1OutOfRangeByField, HourD1OutOfRangeUndefined}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourWrapReach, Question: "When one execution carries D1 past 65535:59:59, so that the value it writes has wrapped below S1, is S1 compared with that value or with the count before it wrapped, which passed S1 on the way?", Default: HourWrapReachAfterWrap, Alternatives: []string{HourWrapReachAfterWrap, HourWrapReachBeforeWrap}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourM8004Repeat, Question: "While S1 stays invalid, does every check that finds it invalid turn M8004 on again, after the program turned M8004 off?", Default: HourM8004RepeatEveryCheck, Alternatives: []string{HourM8004RepeatEveryCheck, HourM8004RepeatOnce}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourD2Special, Question: "What does HOUR do when D2 is a special internal relay, which the page says cannot be designated as D2 (the vectors use M8003, see generation.special_relay)?", Default: HourD2SpecialAccepted, Alternatives: []string{HourD2SpecialAccepted, HourD2SpecialError, HourD2SpecialUndefined}, Families: []string{"fc6a-hour-meter"}},
+	{ID: InterpHourS1ConstantRange, Question: "What does HOUR do with a constant S1 above 65,535, outside the range the page gives a constant preset?", Default: HourS1ConstantRangeError, Alternatives: []string{HourS1ConstantRangeError, HourS1ConstantRangeAsIs, HourS1ConstantRangeLow16Bits, HourS1ConstantRangeUndefined}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpFx5Sm709Scope, Question: "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?", Default: Fx5Sm709ScopeSelectedFields, Alternatives: []string{Fx5Sm709ScopeSelectedFields, Fx5Sm709ScopeAllWords, Fx5Sm709ScopeComparedOperands}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5AndOrWhenOff, Question: "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on?", Default: Fx5AndOrWhenOffAndSkipped, Alternatives: []string{Fx5AndOrWhenOffAndSkipped, Fx5AndOrWhenOffAlwaysExecuted, Fx5AndOrWhenOffShortCircuit}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5ClockS2DeviceRange, Question: "In current-date mode (s2) is dummy data; is its device range still checked?", Default: Fx5ClockS2DeviceRangeIgnored, Alternatives: []string{Fx5ClockS2DeviceRangeIgnored, Fx5ClockS2DeviceRangeChecked}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},

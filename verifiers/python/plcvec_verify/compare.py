@@ -1,7 +1,9 @@
 """Field-by-field comparison of what an adapter reported with what a vector expects.
 
 Everything must match exactly, including the JSON type: a bit device is true/false and a word
-is an integer, so a bit reported as 1 is wrong even though Python's 1 == True.
+is an integer, so a bit reported as 1 is wrong even though Python's 1 == True. Two kinds of listed
+device are never compared: the scratch words (the implementation's own work area) and the devices
+the followed alternatives leave unjudged (expect.py); writing either is no stray write.
 """
 from __future__ import annotations
 
@@ -114,8 +116,9 @@ def steps_pass(expected: Expected, steps) -> bool:
 
 
 def steps_pass_by_value(expected: Expected, steps) -> bool:
-    """`steps_pass` for steps whose bytes differ from the expectation's, or whose vector has scratch
-    devices (their values are the implementation's own, so there are no bytes to compare with).
+    """`steps_pass` for steps whose bytes differ from the expectation's, or whose vector has devices
+    that are not compared (scratch or unjudged: their values are the implementation's own, so there
+    are no bytes to compare with).
 
     Where the values are equal, a wrong type can only be a bool for an integer 0/1 or the other way
     round (checked on the devices expected to hold 0, 1, false or true, and on the result, whose true
@@ -123,7 +126,7 @@ def steps_pass_by_value(expected: Expected, steps) -> bool:
     the type of the devices' sum, which is int only if every value is an int or a bool).
     """
     if expected.wire is None:
-        return _steps_pass_with_scratch(expected, steps)
+        return _steps_pass_ignoring(expected, steps)
     if steps != expected.wire:
         return False
     for step, (want_result, keys, types) in zip(steps, expected.checks):
@@ -140,13 +143,14 @@ def _same_types(devices: dict, typed) -> bool:
     return type(sum(devices.values())) is int and tuple(map(type, map(devices.__getitem__, keys))) == types
 
 
-def _steps_pass_with_scratch(expected: Expected, steps) -> bool:
-    """`steps_pass` for a vector with scratch devices, whose reported values are the implementation's
-    own: left out of the comparison, but still words (else the long way, with the schema)."""
-    if type(steps) is not list or len(steps) != len(expected.states):
+def _steps_pass_ignoring(expected: Expected, steps) -> bool:
+    """`steps_pass` for a vector with devices that are not compared (scratch or unjudged), whose
+    reported values are the implementation's own: left out of the comparison, but still words or bits
+    (else the long way, with the schema)."""
+    if type(steps) is not list or len(steps) != len(expected.compared):
         return False
-    scratch = expected.scratch
-    for step, state, want_result, typed, packed in zip(steps, expected.states, expected.results, expected.typed,
+    scratch, left_out = expected.scratch, expected.left_out
+    for step, state, want_result, typed, packed in zip(steps, expected.compared, expected.results, expected.typed,
                                                        expected.packed_states):
         if type(step) is not dict or len(step) != (1 if want_result is None else 2) \
                 or step.get("result") is not want_result or type(step.get("devices")) is not dict:
@@ -155,6 +159,10 @@ def _steps_pass_with_scratch(expected: Expected, steps) -> bool:
         for key in scratch:
             word = got.pop(key, 0)      # a scratch device may go unreported
             if type(word) is not int or not 0 <= word <= WORD_MAX:
+                return False
+        for key in left_out:
+            value = got.pop(key, False)     # so may an unjudged one, a bit or a word
+            if type(value) is not bool and (type(value) is not int or not 0 <= value <= WORD_MAX):
                 return False
         try:
             if dumps(got, PACKED_FORMAT) == packed:
@@ -173,17 +181,17 @@ def compare(expected: Expected, steps: list, cpu_writes=frozenset()) -> list[Pro
     to one of them that the vector does not list is not a stray write. One the vector lists is
     compared like any other.
     """
-    if len(steps) != len(expected.states):
-        return [Problem(None, "steps", f"{len(expected.states)} steps", f"{len(steps)} steps")]
+    if len(steps) != len(expected.compared):
+        return [Problem(None, "steps", f"{len(expected.compared)} steps", f"{len(steps)} steps")]
     problems = []
-    scratch = expected.scratch
+    ignored = expected.ignored
     for i, (step, want_state, want_result, typed) in enumerate(
-            zip(steps, expected.states, expected.results, expected.typed)):
+            zip(steps, expected.compared, expected.results, expected.typed)):
         if want_result is not None and not _same(want_result, step.get("result", _MISSING)):
             problems.append(Problem(i, "result", want_result, step.get("result", _MISSING)))
         got = step["devices"]
-        if scratch:
-            got = {k: v for k, v in got.items() if k not in scratch}
+        if ignored:
+            got = {k: v for k, v in got.items() if k not in ignored}
         # Fast path: equal dicts, and the right type wherever 0/1 could pass for false/true. Most
         # vectors pass, and this is where a run spends its time.
         if got == want_state and _same_types(got, typed):

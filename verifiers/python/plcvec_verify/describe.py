@@ -118,6 +118,8 @@ def _differs(mine, other, p: Problem) -> bool:
         return False
     if p.field == "result":
         return mine.results[p.step] is not other.results[p.step]
+    if p.field in other.left_out:    # the other reading does not judge it at all
+        return True
     a = mine.states[p.step].get(p.field, UNLISTED)
     b = other.states[p.step].get(p.field, UNLISTED)
     return a != b or type(a) is not type(b)
@@ -133,6 +135,9 @@ def block(r: VectorResult, vector: dict | None, followed: dict, defaults: dict, 
         judged = deciding(vector, r.problems, followed, defaults, expectations)
         if judged:
             lines.append(f"{INDENT}judged by: " + ", ".join(f"{i}={followed[i]}" for i in judged))
+    if vector:
+        for interp, devices in expectations.expected(vector, followed, defaults).unjudged.items():
+            lines.append(f"{INDENT}not judged under {interp}={followed[interp]}: " + ", ".join(devices))
     shown = r.problems[:SHOW_PROBLEMS]
     step_shown = None
     for p in shown:

@@ -4,11 +4,17 @@ A vector stores, per step, only the devices that changed (`expect.devices`) and 
 the end (`final.devices`). Adapters report the full state after every step, which is simpler to
 produce for any emulator; so the expected full state after each step is worked out here once, and
 checked against the vector's own `final` so that an inconsistent vector file is caught, not trusted.
+
+An `alternatives` entry may leave devices unjudged (`unjudged`, schema 1.1): where the pages define
+nothing, that reading judges what they do define. Those devices are listed in `initial.devices` (a
+write to them is no stray write) and absent from the entry's steps and final; under that entry they
+keep, in `states`, the value they had before (what the failure text shows as the state before a
+step), and are left out of `compared`, the states an answer is held to.
 """
 from __future__ import annotations
 
 import marshal
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from .errors import VerifyError
 
@@ -45,6 +51,16 @@ class Expected:
     packed_answer: bytes | None = None
     # Per step: `states` in marshal's format 2, for compare.steps_pass on a vector with scratch devices.
     packed_states: tuple = ()
+    # {interpretation: devices} the followed entry leaves unjudged; `ignored` holds them and the scratch
+    # devices, which compare.py never compares; `compared` is `states` without the unjudged devices.
+    unjudged: dict = field(default_factory=dict)
+    ignored: frozenset = frozenset()
+    compared: tuple = ()
+
+    @property
+    def left_out(self) -> frozenset:
+        """The devices the followed alternatives leave unjudged."""
+        return self.ignored - self.scratch
 
     def before(self, step: int) -> dict:
         """The state step `step` started from (after its `set`): only a failure's message needs it."""
@@ -78,10 +94,12 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
     steps_expect = [s[_EXPECT] for s in vector["steps"]]
     final = vector["final"]["devices"]
     category = outcome.get("default", outcome) if touched else outcome
+    unjudged = {}
     if any(applied[i] != defaults.get(i) for i in touched):
         for alt in vector.get("alternatives", ()):
             if all(alt["choices"].get(i) == a for i, a in applied.items()):
                 steps_expect, final, category = alt["expect"], alt["final"]["devices"], alt["outcome"]
+                unjudged = {i: tuple(d) for i, d in sorted(alt.get("unjudged", {}).items())}
                 break
         else:
             raise VerifyError(f"vector {vector['id']}: no expectation for "
@@ -102,22 +120,26 @@ def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:
         results.append(expect.get("result"))
     if len(steps_expect) != len(vector["steps"]):
         raise VerifyError(f"vector {vector['id']}: {len(vector['steps'])} steps but {len(steps_expect)} expectations")
-    if states[-1] != final:
+    left_out = frozenset(d for devices in unjudged.values() for d in devices)
+    compared = [{k: v for k, v in st.items() if k not in left_out} for st in states] if left_out else states
+    if compared[-1] != final:
         raise VerifyError(f"vector {vector['id']}: the per-step changes do not add up to `final` "
                           "(the vector file is inconsistent; regenerate it)")
     # Python's 1 == True: of equal values, those equal to 0 or 1 can be of the wrong JSON type.
     typed = []
-    for st in states:
+    for st in compared:
         keys = tuple(k for k, v in st.items() if v in (0, 1))
         typed.append((keys, tuple(map(type, map(st.__getitem__, keys)))))
-    wire = None if scratch else [{"devices": st} if r is None else {"devices": st, "result": r}
-                                  for st, r in zip(states, results)]
+    ignored = scratch | left_out
+    wire = None if ignored else [{"devices": st} if r is None else {"devices": st, "result": r}
+                                 for st, r in zip(states, results)]
     return Expected(vector["id"], tuple(results), tuple(states), initial, tuple(sets), tuple(typed), scratch,
                     category, applied, wire, vector["family"], vector["instruction"],
                     tuple((r, *t) for r, t in zip(results, typed)),
                     None if wire is None else marshal.dumps(wire, PACKED_FORMAT),
                     None if wire is None else marshal.dumps({"steps": wire}, PACKED_FORMAT),
-                    tuple(marshal.dumps(st, PACKED_FORMAT) for st in states) if scratch else ())
+                    tuple(marshal.dumps(st, PACKED_FORMAT) for st in compared) if ignored else (),
+                    unjudged, ignored, tuple(compared))
 
 
 class Expectations:

@@ -60,11 +60,22 @@ def offered(vector: dict, defaults: dict) -> list[dict]:
     return combos
 
 
-def _same_expectation(a, b) -> bool:
-    """Two expectations of one vector equal value for value and JSON type for JSON type."""
-    if a.results != b.results or a.states != b.states:
+def _same_expectation(under, followed) -> bool:
+    """Whether an answer that passes under the `followed` expectation passes under `under` too, known
+    from the two expectations alone: every step's result is equal, and every device `under` judges is
+    expected alike (value and JSON type) by both. A device `under` judges but `followed` leaves
+    unjudged makes them differ: what the answer holds there is not known from `followed`."""
+    if under.results != followed.results:
         return False
-    return all(type(x[k]) is type(y[k]) for x, y in zip(a.states, b.states) for k in x)
+    if not under.unjudged and not followed.unjudged:
+        return under.states == followed.states and all(
+            type(x[k]) is type(y[k]) for x, y in zip(under.states, followed.states) for k in x)
+    hidden = followed.left_out
+    for x, y in zip(under.compared, followed.states):
+        for k, v in x.items():
+            if k in hidden or v != y[k] or type(v) is not type(y[k]):
+                return False
+    return True
 
 
 def judge_all(report: RunReport, cpu_writes=frozenset()) -> list[Judged]:

@@ -92,7 +92,12 @@ def _kind(value) -> str:
 def vector_problem(v: dict) -> str:
     """What the schema cannot say of one vector: each device keeps one JSON type (a bit is true/false
     everywhere, a word an integer everywhere) across initial, set, expect and final, alternatives
-    included. A bit holding 2 in `initial` would otherwise be blamed on the implementation."""
+    included. A bit holding 2 in `initial` would otherwise be blamed on the implementation. And an
+    entry's unjudged devices are the vector's own, under one of the entry's choices, and the entry
+    expects nothing of them."""
+    problem = _unjudged_problem(v)
+    if problem:
+        return problem
     seen: dict[str, tuple] = {}      # device -> (is a bit, the path where it was first met)
     places = [("initial/devices", v["initial"]["devices"]), ("final/devices", v["final"]["devices"])]
     for i, step in enumerate(v["steps"]):
@@ -130,6 +135,26 @@ def _refuse_repeated_keys(file: Path, raw: bytes, data: dict) -> None:
                 return v.get("id") if isinstance(v, dict) else None
             return None
         raise VerifyError(repeated_key_message(str(file), text, 0, vector_of))
+
+
+def _unjudged_problem(v: dict) -> str:
+    listed = v["initial"]["devices"]
+    for a, alt in enumerate(v.get("alternatives", ())):
+        for interp, devices in alt.get("unjudged", {}).items():
+            where = f"at alternatives/{a}/unjudged/{interp}"
+            if interp not in alt["choices"]:
+                return f"{where}: {interp} is not one of the entry's choices"
+            if list(devices) != sorted(devices):
+                return f"{where}: the devices are not sorted"
+            for device in devices:
+                if device not in listed:
+                    return f"{where}: {device} is not in initial/devices"
+                expected = [f"final/devices/{device}"] if device in alt["final"]["devices"] else []
+                expected += [f"expect/{i}/devices/{device}" for i, e in enumerate(alt["expect"]) if device in e["devices"]]
+                if expected:
+                    return (f"at alternatives/{a}/{expected[0]}: {device} is unjudged under {interp}={alt['choices'][interp]}, "
+                            "so the entry cannot expect a value of it")
+    return ""
 
 
 def _describe(error, data) -> str:

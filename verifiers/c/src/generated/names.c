@@ -218,6 +218,7 @@ const char *const plcvec_tag_names[PLCVEC_TAG_COUNT] = {
     "constant",
     "current-clock",
     "device-range",
+    "forbidden-operand",
     "input-off",
     "invalid-bcd",
     "invalid-range",
@@ -286,6 +287,7 @@ static const char *const alternatives_hour_preset_zero[] = {
 static const char *const alternatives_hour_first_scan[] = {
     "counts",
     "from-next-scan",
+    "after-cpu-start",
 };
 static const char *const alternatives_hour_preset_check[] = {
     "input-on",
@@ -298,6 +300,28 @@ static const char *const alternatives_hour_m8004_off[] = {
 static const char *const alternatives_hour_d1_out_of_range[] = {
     "as-seconds",
     "error",
+    "as-seconds-if-added",
+    "by-field",
+    "undefined",
+};
+static const char *const alternatives_hour_wrap_reach[] = {
+    "after-wrap",
+    "before-wrap",
+};
+static const char *const alternatives_hour_m8004_repeat[] = {
+    "every-check",
+    "once",
+};
+static const char *const alternatives_hour_d2_special[] = {
+    "accepted",
+    "error",
+    "undefined",
+};
+static const char *const alternatives_hour_s1_constant_range[] = {
+    "error",
+    "as-is",
+    "low-16-bits",
+    "undefined",
 };
 static const char *const alternatives_fx5_sm709_scope[] = {
     "selected-fields",
@@ -355,13 +379,21 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-PRESET-ZERO", "Does a preset of 0:00:00 turn D2 on\?", alternatives_hour_preset_zero, 2, PLCVEC_HOUR_PRESET_ZERO_IMMEDIATE,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
-    {"HOUR-FIRST-SCAN", "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time\?", alternatives_hour_first_scan, 2, PLCVEC_HOUR_FIRST_SCAN_COUNTS,
+    {"HOUR-FIRST-SCAN", "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time, and does that of the first execution after the CPU starts\?", alternatives_hour_first_scan, 3, PLCVEC_HOUR_FIRST_SCAN_COUNTS,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-PRESET-CHECK", "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution\?", alternatives_hour_preset_check, 2, PLCVEC_HOUR_PRESET_CHECK_INPUT_ON,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-M8004-OFF", "Does an HOUR execution that checks the preset and finds it valid turn M8004 off\?", alternatives_hour_m8004_off, 2, PLCVEC_HOUR_M8004_OFF_NEVER,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
-    {"HOUR-D1-OUT-OF-RANGE", "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)\?", alternatives_hour_d1_out_of_range, 2, PLCVEC_HOUR_D1_OUT_OF_RANGE_AS_SECONDS,
+    {"HOUR-D1-OUT-OF-RANGE", "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)\?", alternatives_hour_d1_out_of_range, 5, PLCVEC_HOUR_D1_OUT_OF_RANGE_AS_SECONDS,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-WRAP-REACH", "When one execution carries D1 past 65535:59:59, so that the value it writes has wrapped below S1, is S1 compared with that value or with the count before it wrapped, which passed S1 on the way\?", alternatives_hour_wrap_reach, 2, PLCVEC_HOUR_WRAP_REACH_AFTER_WRAP,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-M8004-REPEAT", "While S1 stays invalid, does every check that finds it invalid turn M8004 on again, after the program turned M8004 off\?", alternatives_hour_m8004_repeat, 2, PLCVEC_HOUR_M8004_REPEAT_EVERY_CHECK,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-D2-SPECIAL", "What does HOUR do when D2 is a special internal relay, which the page says cannot be designated as D2 (the vectors use M8003, see generation.special_relay)\?", alternatives_hour_d2_special, 3, PLCVEC_HOUR_D2_SPECIAL_ACCEPTED,
+     0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
+    {"HOUR-S1-CONSTANT-RANGE", "What does HOUR do with a constant S1 above 65,535, outside the range the page gives a constant preset\?", alternatives_hour_s1_constant_range, 4, PLCVEC_HOUR_S1_CONSTANT_RANGE_ERROR,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects\?", alternatives_fx5_sm709_scope, 3, PLCVEC_FX5_SM709_SCOPE_SELECTED_FIELDS,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
@@ -410,6 +442,7 @@ const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT] = {
     {"D8190", "D", 8190},
     {"D8191", "D", 8191},
     {"M10", "M", 10},
+    {"M8003", "M", 8003},
     {"M8004", "M", 8004},
     {"P_EQ", "P_EQ", -1},
     {"P_ER", "P_ER", -1},

@@ -372,12 +372,14 @@ public final class Alternatives {
         }
     }
 
-    /** HOUR-FIRST-SCAN: Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time? */
+    /** HOUR-FIRST-SCAN: Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time, and does that of the first execution after the CPU starts? */
     public enum HourFirstScan implements Alternative {
         /** Every execution with the input on adds its whole elapsed_ms to the ON duration, the execution at which the input turns on included. (the default) */
         COUNTS("counts", "Every execution with the input on adds its whole elapsed_ms to the ON duration, the execution at which the input turns on included."),
         /** Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms. */
-        FROM_NEXT_SCAN("from-next-scan", "Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms.");
+        FROM_NEXT_SCAN("from-next-scan", "Measuring starts at the execution at which the input turns on: that execution adds nothing (as if its elapsed_ms were 0) but does everything else an execution with the input on does (compare with S1, check S1); every later execution with the input still on adds its whole elapsed_ms."),
+        /** Only the first execution after the CPU starts (the vector's step 0) adds nothing, as if its elapsed_ms were 0, whatever its input; it does everything else an execution with the input on does (compare with S1, check S1). Every later execution with the input on adds its whole elapsed_ms, an execution at which the input turns on included. So step 0 with the input on is measured as under from-next-scan, and an execution after step 0 at which the input turns on as under counts. */
+        AFTER_CPU_START("after-cpu-start", "Only the first execution after the CPU starts (the vector's step 0) adds nothing, as if its elapsed_ms were 0, whatever its input; it does everything else an execution with the input on does (compare with S1, check S1). Every later execution with the input on adds its whole elapsed_ms, an execution at which the input turns on included. So step 0 with the input on is measured as under from-next-scan, and an execution after step 0 at which the input turns on as under counts.");
 
         private final String id;
         private final String says;
@@ -448,8 +450,8 @@ public final class Alternatives {
     public enum HourM8004Off implements Alternative {
         /** No HOUR execution turns M8004 off; once on it stays on until something outside the instruction turns it off. (the default) */
         NEVER("never", "No HOUR execution turns M8004 off; once on it stays on until something outside the instruction turns it off."),
-        /** An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off. */
-        VALID_PRESET("valid-preset", "An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 is always in range, so every execution that checks it turns M8004 off.");
+        /** An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 of 0 to 65,535 is always in range, so every execution that checks it turns M8004 off (one above 65,535 is valid or not as HOUR-S1-CONSTANT-RANGE says). */
+        VALID_PRESET("valid-preset", "An execution that checks S1 (see HOUR-PRESET-CHECK) and finds every field in range turns M8004 off; a constant S1 of 0 to 65,535 is always in range, so every execution that checks it turns M8004 off (one above 65,535 is valid or not as HOUR-S1-CONSTANT-RANGE says).");
 
         private final String id;
         private final String says;
@@ -485,7 +487,13 @@ public final class Alternatives {
         /** D1 is read as the count hour x 3600 + minute x 60 + second seconds; the execution adds its whole seconds to that count, writes the count back with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), so D1 is rewritten in range even when no whole second is added, and compares the count with S1 as with any D1. (the default) */
         AS_SECONDS("as-seconds", "D1 is read as the count hour x 3600 + minute x 60 + second seconds; the execution adds its whole seconds to that count, writes the count back with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), so D1 is rewritten in range even when no whole second is added, and compares the count with S1 as with any D1."),
         /** It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read. */
-        ERROR("error", "It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read.");
+        ERROR("error", "It is a user program execution error: M8004 turns on; D1, D2 and the fraction of a second are left as they were, the elapsed_ms of the execution is not counted, and S1 is not read."),
+        /** As as-seconds, except that D1 is written only by an execution that adds at least one whole second: D1 is read as the count hour x 3600 + minute x 60 + second seconds; an execution that adds whole seconds writes back the count plus them with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), while one that adds none leaves D1's three words as they are (second 75 stays 75). Either way S1 is compared with the count plus the seconds added (0:00:75 is 75 s), as with any D1. */
+        AS_SECONDS_IF_ADDED("as-seconds-if-added", "As as-seconds, except that D1 is written only by an execution that adds at least one whole second: D1 is read as the count hour x 3600 + minute x 60 + second seconds; an execution that adds whole seconds writes back the count plus them with minute and second within 0 to 59 (wrapping past 65535:59:59 as usual), while one that adds none leaves D1's three words as they are (second 75 stays 75). Either way S1 is compared with the count plus the seconds added (0:00:75 is 75 s), as with any D1."),
+        /** Each word of D1 counts as a counter of its own, one whole second at a time: the second is incremented; a second that becomes exactly 60 becomes 0 and increments the minute; a minute that becomes exactly 60 becomes 0 and increments the hour; an hour incremented from 65535 becomes 0 (D1 has passed 65535:59:59 and wraps, as usual). A word above 59 therefore goes on counting (60, 61, ...), carrying nothing, until it is incremented from 65535 to 0 (which carries nothing either); from 0 it counts and carries as usual. An out-of-range minute stays as it is until a carry increments it. S1 is compared with D1 word by word: the hours first, then the minutes, then the seconds, the first that differ deciding (0:75:00 is below 1:00:00); D1 reaches S1 when it is greater or all three are equal. M8004 is not written for it. */
+        BY_FIELD("by-field", "Each word of D1 counts as a counter of its own, one whole second at a time: the second is incremented; a second that becomes exactly 60 becomes 0 and increments the minute; a minute that becomes exactly 60 becomes 0 and increments the hour; an hour incremented from 65535 becomes 0 (D1 has passed 65535:59:59 and wraps, as usual). A word above 59 therefore goes on counting (60, 61, ...), carrying nothing, until it is incremented from 65535 to 0 (which carries nothing either); from 0 it counts and carries as usual. An out-of-range minute stays as it is until a carry increments it. S1 is compared with D1 word by word: the hours first, then the minutes, then the seconds, the first that differ deciding (0:75:00 is below 1:00:00); D1 reaches S1 when it is greater or all three are equal. M8004 is not written for it."),
+        /** The pages define no behaviour for a D1 outside its ranges: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written (S1 is only read). */
+        UNDEFINED("undefined", "The pages define no behaviour for a D1 outside its ranges: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written (S1 is only read).");
 
         private final String id;
         private final String says;
@@ -513,6 +521,156 @@ public final class Alternatives {
         @Override
         public String toString() {
             return Interpretation.HOUR_D1_OUT_OF_RANGE.id() + "=" + id;
+        }
+    }
+
+    /** HOUR-WRAP-REACH: When one execution carries D1 past 65535:59:59, so that the value it writes has wrapped below S1, is S1 compared with that value or with the count before it wrapped, which passed S1 on the way? */
+    public enum HourWrapReach implements Alternative {
+        /** D1 wraps first, and the value written to D1 is compared with S1: D2 turns on only if the wrapped value reaches S1. (the default) */
+        AFTER_WRAP("after-wrap", "D1 wraps first, and the value written to D1 is compared with S1: D2 turns on only if the wrapped value reaches S1."),
+        /** At an execution that wraps D1, S1 is compared with the count before the wrap (the value written plus 65,536 hours for each wrap), which is past 65535:59:59 and so reaches any S1 of at most 65535:59:59: D2 turns on; then D1 is written wrapped, and since D2 was on when D1 wrapped it stays on across that wrap (as HOUR-OUTPUT-OFF=recompared keeps it). An execution that does not wrap D1 compares as after-wrap does. */
+        BEFORE_WRAP("before-wrap", "At an execution that wraps D1, S1 is compared with the count before the wrap (the value written plus 65,536 hours for each wrap), which is past 65535:59:59 and so reaches any S1 of at most 65535:59:59: D2 turns on; then D1 is written wrapped, and since D2 was on when D1 wrapped it stays on across that wrap (as HOUR-OUTPUT-OFF=recompared keeps it). An execution that does not wrap D1 compares as after-wrap does.");
+
+        private final String id;
+        private final String says;
+
+        HourWrapReach(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_WRAP_REACH;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_WRAP_REACH.id() + "=" + id;
+        }
+    }
+
+    /** HOUR-M8004-REPEAT: While S1 stays invalid, does every check that finds it invalid turn M8004 on again, after the program turned M8004 off? */
+    public enum HourM8004Repeat implements Alternative {
+        /** Every execution that checks S1 (see HOUR-PRESET-CHECK) and finds it invalid turns M8004 on, whatever the previous check found: M8004 turned off by the program while S1 stays invalid is on again after the next check. (the default) */
+        EVERY_CHECK("every-check", "Every execution that checks S1 (see HOUR-PRESET-CHECK) and finds it invalid turns M8004 on, whatever the previous check found: M8004 turned off by the program while S1 stays invalid is on again after the next check."),
+        /** A check that finds S1 invalid turns M8004 on only when the previous check found S1 valid, or when it is the first check since the CPU started: the error is reported once each time S1 becomes invalid, and M8004 turned off by the program stays off while S1 stays invalid. D2 is turned off at every check that finds S1 invalid, as under every-check. */
+        ONCE("once", "A check that finds S1 invalid turns M8004 on only when the previous check found S1 valid, or when it is the first check since the CPU started: the error is reported once each time S1 becomes invalid, and M8004 turned off by the program stays off while S1 stays invalid. D2 is turned off at every check that finds S1 invalid, as under every-check.");
+
+        private final String id;
+        private final String says;
+
+        HourM8004Repeat(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_M8004_REPEAT;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_M8004_REPEAT.id() + "=" + id;
+        }
+    }
+
+    /** HOUR-D2-SPECIAL: What does HOUR do when D2 is a special internal relay, which the page says cannot be designated as D2 (the vectors use M8003, see generation.special_relay)? */
+    public enum HourD2Special implements Alternative {
+        /** The relay is written as any internal relay would be: HOUR turns it on and off as it would M10, and nothing else changes. (the default) */
+        ACCEPTED("accepted", "The relay is written as any internal relay would be: HOUR turns it on and off as it would M10, and nothing else changes."),
+        /** It is a user program execution error: every execution with the input on turns M8004 on (after everything else it does), and D2 is never written (neither turned on when D1 reaches S1 nor off by an invalid S1); D1 is measured and S1 checked as with any D2, as the page says of an invalid S1 ("but the input ON duration is measured"). An execution with the input off writes neither D2 nor, for this reason, M8004. */
+        ERROR("error", "It is a user program execution error: every execution with the input on turns M8004 on (after everything else it does), and D2 is never written (neither turned on when D1 reaches S1 nor off by an invalid S1); D1 is measured and S1 checked as with any D2, as the page says of an invalid S1 (\"but the input ON duration is measured\"). An execution with the input off writes neither D2 nor, for this reason, M8004."),
+        /** A program the page forbids is outside what the pages define: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written (S1 is only read). */
+        UNDEFINED("undefined", "A program the page forbids is outside what the pages define: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written (S1 is only read).");
+
+        private final String id;
+        private final String says;
+
+        HourD2Special(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_D2_SPECIAL;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_D2_SPECIAL.id() + "=" + id;
+        }
+    }
+
+    /** HOUR-S1-CONSTANT-RANGE: What does HOUR do with a constant S1 above 65,535, outside the range the page gives a constant preset? */
+    public enum HourS1ConstantRange implements Alternative {
+        /** It is an S1 out of range, exactly as a register S1 with a field out of range: a user program execution error at every check of S1 (M8004 on, D2 off, D1 still measured; see HOUR-PRESET-CHECK, HOUR-M8004-OFF and HOUR-M8004-REPEAT). (the default) */
+        ERROR("error", "It is an S1 out of range, exactly as a register S1 with a field out of range: a user program execution error at every check of S1 (M8004 on, D2 off, D1 still measured; see HOUR-PRESET-CHECK, HOUR-M8004-OFF and HOUR-M8004-REPEAT)."),
+        /** The constant is accepted as it is: the preset is that many hours, minutes and seconds 0 (65,537 is 65537:00:00), valid (no M8004), and compared with D1 as any preset is; D1, at most 65535:59:59, stays below it. */
+        AS_IS("as-is", "The constant is accepted as it is: the preset is that many hours, minutes and seconds 0 (65,537 is 65537:00:00), valid (no M8004), and compared with D1 as any preset is; D1, at most 65535:59:59, stays below it."),
+        /** The constant is cut to its low 16 bits (65,536 + n is n hours; 65,536 itself is 0:00:00, see HOUR-PRESET-ZERO) and is then a valid preset like any other. */
+        LOW_16_BITS("low-16-bits", "The constant is cut to its low 16 bits (65,536 + n is n hours; 65,536 itself is 0:00:00, see HOUR-PRESET-ZERO) and is then a valid preset like any other."),
+        /** A program the page forbids is outside what the pages define: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written. */
+        UNDEFINED("undefined", "A program the page forbids is outside what the pages define: D1's three words, D2 and M8004 are left unjudged; every other device is still judged, and nothing else may be written.");
+
+        private final String id;
+        private final String says;
+
+        HourS1ConstantRange(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.HOUR_S1_CONSTANT_RANGE;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.HOUR_S1_CONSTANT_RANGE.id() + "=" + id;
         }
     }
 

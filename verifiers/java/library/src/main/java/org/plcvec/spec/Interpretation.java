@@ -30,14 +30,22 @@ public enum Interpretation {
     HOUR_INPUT_OFF("HOUR-INPUT-OFF", "Does D1 hold its value while the input is off, or is it cleared?"),
     /** Does a preset of 0:00:00 turn D2 on? */
     HOUR_PRESET_ZERO("HOUR-PRESET-ZERO", "Does a preset of 0:00:00 turn D2 on?"),
-    /** Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time? */
-    HOUR_FIRST_SCAN("HOUR-FIRST-SCAN", "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time?"),
+    /** Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time, and does that of the first execution after the CPU starts? */
+    HOUR_FIRST_SCAN("HOUR-FIRST-SCAN", "Does the elapsed_ms of the execution at which the input turns on (off at the previous execution; before the first step the input counts as off) count as ON time, and does that of the first execution after the CPU starts?"),
     /** Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution? */
     HOUR_PRESET_CHECK("HOUR-PRESET-CHECK", "Is an invalid preset (an S1 minute or second above 59) reported (M8004 on, D2 off) only at executions with the input on, or at every execution?"),
     /** Does an HOUR execution that checks the preset and finds it valid turn M8004 off? */
     HOUR_M8004_OFF("HOUR-M8004-OFF", "Does an HOUR execution that checks the preset and finds it valid turn M8004 off?"),
     /** What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)? */
     HOUR_D1_OUT_OF_RANGE("HOUR-D1-OUT-OF-RANGE", "What does an execution with the input on do when D1 holds a minute or a second above 59 (the program wrote it there; the hour, 16 bits, is always in range)?"),
+    /** When one execution carries D1 past 65535:59:59, so that the value it writes has wrapped below S1, is S1 compared with that value or with the count before it wrapped, which passed S1 on the way? */
+    HOUR_WRAP_REACH("HOUR-WRAP-REACH", "When one execution carries D1 past 65535:59:59, so that the value it writes has wrapped below S1, is S1 compared with that value or with the count before it wrapped, which passed S1 on the way?"),
+    /** While S1 stays invalid, does every check that finds it invalid turn M8004 on again, after the program turned M8004 off? */
+    HOUR_M8004_REPEAT("HOUR-M8004-REPEAT", "While S1 stays invalid, does every check that finds it invalid turn M8004 on again, after the program turned M8004 off?"),
+    /** What does HOUR do when D2 is a special internal relay, which the page says cannot be designated as D2 (the vectors use M8003, see generation.special_relay)? */
+    HOUR_D2_SPECIAL("HOUR-D2-SPECIAL", "What does HOUR do when D2 is a special internal relay, which the page says cannot be designated as D2 (the vectors use M8003, see generation.special_relay)?"),
+    /** What does HOUR do with a constant S1 above 65,535, outside the range the page gives a constant preset? */
+    HOUR_S1_CONSTANT_RANGE("HOUR-S1-CONSTANT-RANGE", "What does HOUR do with a constant S1 above 65,535, outside the range the page gives a constant preset?"),
     /** Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects? */
     FX5_SM709_SCOPE("FX5-SM709-SCOPE", "Does the SM709 range check cover all three words of (s1) and (s2), or only the fields (s3) selects?"),
     /** Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on? */
@@ -103,6 +111,14 @@ public enum Interpretation {
                 return Alternatives.HourM8004Off.NEVER;
             case HOUR_D1_OUT_OF_RANGE:
                 return Alternatives.HourD1OutOfRange.AS_SECONDS;
+            case HOUR_WRAP_REACH:
+                return Alternatives.HourWrapReach.AFTER_WRAP;
+            case HOUR_M8004_REPEAT:
+                return Alternatives.HourM8004Repeat.EVERY_CHECK;
+            case HOUR_D2_SPECIAL:
+                return Alternatives.HourD2Special.ACCEPTED;
+            case HOUR_S1_CONSTANT_RANGE:
+                return Alternatives.HourS1ConstantRange.ERROR;
             case FX5_SM709_SCOPE:
                 return Alternatives.Fx5Sm709Scope.SELECTED_FIELDS;
             case FX5_AND_OR_WHEN_OFF:
@@ -155,6 +171,14 @@ public enum Interpretation {
                 return List.of(Alternatives.HourM8004Off.values());
             case HOUR_D1_OUT_OF_RANGE:
                 return List.of(Alternatives.HourD1OutOfRange.values());
+            case HOUR_WRAP_REACH:
+                return List.of(Alternatives.HourWrapReach.values());
+            case HOUR_M8004_REPEAT:
+                return List.of(Alternatives.HourM8004Repeat.values());
+            case HOUR_D2_SPECIAL:
+                return List.of(Alternatives.HourD2Special.values());
+            case HOUR_S1_CONSTANT_RANGE:
+                return List.of(Alternatives.HourS1ConstantRange.values());
             case FX5_SM709_SCOPE:
                 return List.of(Alternatives.Fx5Sm709Scope.values());
             case FX5_AND_OR_WHEN_OFF:
@@ -206,6 +230,14 @@ public enum Interpretation {
             case HOUR_M8004_OFF:
                 return List.of(Family.FC6A_HOUR_METER);
             case HOUR_D1_OUT_OF_RANGE:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_WRAP_REACH:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_M8004_REPEAT:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_D2_SPECIAL:
+                return List.of(Family.FC6A_HOUR_METER);
+            case HOUR_S1_CONSTANT_RANGE:
                 return List.of(Family.FC6A_HOUR_METER);
             case FX5_SM709_SCOPE:
                 return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);

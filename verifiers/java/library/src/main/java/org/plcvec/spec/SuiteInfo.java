@@ -6,13 +6,13 @@ public final class SuiteInfo {
     /** The generator version that wrote the vectors ({@code generator_version} in manifest.json). */
     public static final String SUITE_VERSION = "0.2.0";
     /** The vector files' schema version; this verifier reads 1.x only. */
-    public static final String SCHEMA_VERSION = "1.0.0";
+    public static final String SCHEMA_VERSION = "1.1.0";
     /** The major schema version this verifier understands. */
     public static final int SCHEMA_MAJOR = 1;
     /** sha256 of the spec the vectors were generated from. */
-    public static final String SPEC_SHA256 = "d7187f0199f68f6bfe8e62ac456a2460b98aa957b2e55a32c52b7e3fa262d174";
+    public static final String SPEC_SHA256 = "bdf31f93923c3228945b93e4f1ee8b2f8963186485d498e97483dfa461058e55";
     /** The number of vectors in the golden set. */
-    public static final int TOTAL = 3526;
+    public static final int TOTAL = 3536;
 
     private SuiteInfo() {
     }

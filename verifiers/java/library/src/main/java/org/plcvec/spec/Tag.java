@@ -13,6 +13,8 @@ public enum Tag {
     CURRENT_CLOCK("current-clock", "The comparison uses the current clock (injected per step) or the CPU's clock area."),
     /** An operand's words reach or pass the end of its device range. */
     DEVICE_RANGE("device-range", "An operand's words reach or pass the end of its device range."),
+    /** An operand the manual's device table or prose forbids (a special internal relay as a destination, a constant past its range): what the pages say of it is an interpretation. */
+    FORBIDDEN_OPERAND("forbidden-operand", "An operand the manual's device table or prose forbids (a special internal relay as a destination, a constant past its range): what the pages say of it is an interpretation."),
     /** The input of a measuring instruction goes off during the sequence. */
     INPUT_OFF("input-off", "The input of a measuring instruction goes off during the sequence."),
     /** A field holds a nibble above 9, which is not BCD. */
