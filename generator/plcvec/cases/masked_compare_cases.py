@@ -357,8 +357,18 @@ class CompareCases:
                         s1=bad, s2=good, sel=sel, steps=steps)
         yield self.case(self.load_form, eq_symbol, "latch/already-on-valid-data",
                         tags=["latch"], extra_devices={err["device"]: True},
-                        description=f"{err['device']} is already on and the data are valid: a normal execution leaves it as it is.",
+                        description=f"{err['device']} is already on and the data are valid: {self._latch_text(err)}.",
                         s1=good, s2=good, sel=sel)
+
+    def _latch_text(self, err):
+        """What a normal execution does to the error flag already on, under the default reading."""
+        latch = err.get("latch", True)
+        if not isinstance(latch, dict):
+            return "a normal execution leaves it as it is" if latch else "a normal execution turns it off"
+        interp = self.fam.interpretations[latch["interpretation"]]
+        default = next(a for a in interp["alternatives"] if a["id"] == interp["default"])
+        done = "leaves it as it is" if default["sets"]["latch"] else "turns it off"
+        return f"a normal execution {done} (the default of {interp['id']})"
 
     def clock_area(self):
         area = self.doc.get("clock_area")

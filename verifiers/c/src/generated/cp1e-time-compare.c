@@ -4940,7 +4940,7 @@ static const plcvec_vector vectors[] = {
     S(-1, -1, -1, -1, NULL, NONE, X(L(plcvec_cell, 6, B(P_EQ, 1), B(P_GE, 1), B(P_GT, 0), B(P_LE, 1), B(P_LT, 0), B(P_NE, 0)), 1))),
   O(VALUE), NONE,
   NONE},
-{"cp1e-time-compare/LD =DT/latch/already-on-valid-data", "P_ER is already on and the data are valid: a normal execution leaves it as it is.", PLCVEC_INSTR_LD_EQ_DT, PLCVEC_FAMILY_CP1E_TIME_COMPARE, 0 | T(LATCH),
+{"cp1e-time-compare/LD =DT/latch/already-on-valid-data", "P_ER is already on and the data are valid: a normal execution turns it off (the default of CP1E-ER-FLAG).", PLCVEC_INSTR_LD_EQ_DT, PLCVEC_FAMILY_CP1E_TIME_COMPARE, 0 | T(LATCH),
   clauses_625a72c0, 15, sizes_d28822ba, 2,
   L(plcvec_cell, 14, W(D100, 10537), W(D101, 5649), W(D102, 18694), W(D200, 10537), W(D201, 5649), W(D202, 18694), W(D300, 0), B(P_EQ, 0), B(P_ER, 1), B(P_GE, 0), B(P_GT, 1), B(P_LE, 0), B(P_LT, 1), B(P_NE, 1)),
   NONE,
