@@ -105,3 +105,16 @@ def test_infer_moves_one_interpretation_at_a_time_and_keeps_the_current_one_on_a
     # A move that would turn a pass into a failure for one explained failure is no gain: kept.
     judged = [_j("6", ("A",), {("a1",)}), _j("7", ("A",), {("a0",)}, False)]
     assert infer(judged, alternatives, followed) == followed
+
+
+def test_a_reading_that_judges_is_preferred_to_one_that_leaves_devices_unjudged(monkeypatch):
+    """An undeclared HOUR-FIRST-SCAN=after-cpu-start reader: its failures also pass under the `undefined`
+    alternatives (they judge nothing of D1, D2, M8004), whose ids come first. The search tries the
+    readings that judge first, so the choice is after-cpu-start alone (TEXT.md, "The inference")."""
+    suite = Suite.load(REPO / "vectors")
+    report = run(suite, InProcess(Undeclared("HOUR-FIRST-SCAN=after-cpu-start")),
+                 Selection(families=("fc6a-hour-meter",)))
+    assert report.counts["fail"] > 0
+    found = inference(report)
+    assert found.changes == {"HOUR-FIRST-SCAN": "after-cpu-start"}
+    assert not found.unexplained and not found.broken

@@ -129,7 +129,7 @@ def _answer_passes(expected, steps, cpu_writes) -> bool:
         return False
 
 
-def infer(judged: list[Judged], alternatives: dict, followed: dict) -> dict:
+def infer(judged: list[Judged], alternatives: dict, followed: dict, unjudging=frozenset()) -> dict:
     """The choice of alternatives (interpretation -> alternative) that explains the most vectors.
 
     Starting from `followed`, each interpretation in id order is given, of its alternatives in the
@@ -137,8 +137,21 @@ def infer(judged: list[Judged], alternatives: dict, followed: dict) -> dict:
     other interpretation held as it stands (the current one is kept on a tie); passes repeat until
     one changes nothing. A vector is explained when its answer passes under the choice restricted to
     the interpretations it touches. `alternatives`: interpretation -> its alternatives, in file order.
+
+    The search runs twice: first without the alternatives that leave devices unjudged (`unjudging`,
+    (interpretation, alternative) pairs), then from where it ended with every alternative. A reading
+    that judges nothing of a device explains any answer there, so it is taken only for what no reading
+    that judges explains; tried first, it would take the failures of another interpretation's reading
+    (its id comes first) and be proposed for them.
     """
-    choice = dict(followed)
+    judging = {i: [a for a in alts if (i, a) not in unjudging] for i, alts in alternatives.items()}
+    first = _search(judged, judging, followed)
+    return _search(judged, alternatives, first) if unjudging else first
+
+
+def _search(judged: list[Judged], alternatives: dict, start: dict) -> dict:
+    """infer()'s search from `start` over `alternatives` (interpretation -> those it may take)."""
+    choice = dict(start)
     by_interp: dict[str, list[Judged]] = {}
     for j in judged:
         for i in j.touched:
@@ -167,6 +180,12 @@ def infer(judged: list[Judged], alternatives: dict, followed: dict) -> dict:
     return choice
 
 
+def unjudging_alternatives(suite) -> frozenset:
+    """(interpretation, alternative) for each alternative some vector's entry leaves devices unjudged under."""
+    return frozenset((i, alt["choices"][i]) for v in suite.vectors for alt in v.get("alternatives", ())
+                     for i in alt.get("unjudged", ()))
+
+
 def inference(report: RunReport, cpu_writes=frozenset()) -> Inference:
     """The inference over one run: the choice, and what it explains of the run's failures."""
     known = report.suite.interpretations()
@@ -175,7 +194,7 @@ def inference(report: RunReport, cpu_writes=frozenset()) -> Inference:
         followed.setdefault(i, d["default"])
     alternatives = {i: known[i]["alternatives"] for i in report.interpretations}
     judged = judge_all(report, cpu_writes)
-    choice = infer(judged, alternatives, followed)
+    choice = infer(judged, alternatives, followed, unjudging_alternatives(report.suite))
     result = Inference(followed=followed, choice=choice, judged=len(judged))
     by_id = {j.id: j for j in judged}
     statuses = {r.id: r.status for r in report.results}
