@@ -83,9 +83,12 @@ def test_the_shared_cases_cover_what_text_md_promises():
                  "    steps: expected 1 steps, got 0 steps",
                  "    judged by: FX5-SM709-SCOPE=selected-fields",
                  "    the implementation reported an error: comparator fault at s2",
-                 "READINGS: 3 of 13 failing vectors pass under other alternatives:",
-                 "NOT EXPLAINED by any reading: 10 failing vectors, by the clauses they cite:",
-                 "SKIPPED 3 of 18 vectors (16.7%):",
+                 "READINGS: 3 of 14 failing vectors pass under other alternatives:",
+                 "NOT EXPLAINED by any reading: 11 failing vectors, by the clauses they cite:",
+                 "SKIPPED 3 of 19 vectors (15.8%):",
+                 # devices a declared alternative leaves unjudged: named, not compared; a stray write still is
+                 "    not judged under HOUR-D1-OUT-OF-RANGE=undefined: D200, D201, D202, M10, M8004",
+                 "    step 0 D999: expected <not in the vector>, got 1",
                  "cpu_writes: SD0, SM0"):
         assert line + "\n" in want, line
     # A declared cpu_writes device written outside the vector passes; each failure is printed once.
@@ -96,7 +99,7 @@ def test_the_shared_cases_cover_what_text_md_promises():
 def test_a_failure_block_is_printed_once_per_run():
     text = summary_text(shared_run())
     blocks = re.findall(r"^(?:FAIL|ERROR) (.+)$", text, flags=re.M)
-    assert len(blocks) == len(set(blocks)) == 13
+    assert len(blocks) == len(set(blocks)) == 14
 
 
 def test_the_shared_cases_are_the_golden_vectors():
