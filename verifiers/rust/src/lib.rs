@@ -25,12 +25,14 @@
 mod choices;
 mod compare;
 mod error;
+mod files;
 mod expect;
 // Rendered by `plcvec export --lang rust` (its folder holds nothing else; not formatted by hand).
 #[rustfmt::skip]
 mod generated {
     pub mod embedded;
     pub mod names;
+    pub mod settings;
 }
 pub mod harness;
 mod implementation;
@@ -41,8 +43,10 @@ mod memory;
 mod runner;
 mod select;
 pub mod serve;
+mod settings;
 mod small;
 mod suite;
+mod unique;
 mod value;
 mod vector;
 mod verdict;
