@@ -6,13 +6,15 @@
 //! or a schema major version other than 1 is refused with the file, the line or the vector id.
 
 use std::collections::{BTreeMap, HashMap};
-use std::fs;
+
 use std::path::Path;
 
 use serde::Deserialize;
 
 use crate::error::{Error, Result};
+use crate::files::{check_regular, read_bytes, read_text, utf8};
 use crate::generated::embedded;
+use crate::unique::{self, Unique};
 use crate::vector::{RawVector, Vector};
 
 /// The major schema version this crate reads (CONTRACT.md, "Versioning"): a 2.x file may mean
@@ -38,13 +40,18 @@ pub struct InterpretationInfo {
     pub alternatives: Vec<String>,
 }
 
+/// A map of names that holds no key twice (`unique`), kept as the `BTreeMap` the public field is.
+fn unique_map<'de, D: serde::Deserializer<'de>, V: Deserialize<'de>>(d: D) -> std::result::Result<BTreeMap<String, V>, D::Error> {
+    Ok(Unique::<V>::deserialize(d)?.0)
+}
+
 fn alternative_ids<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Result<Vec<String>, D::Error> {
     #[derive(Deserialize)]
     #[serde(deny_unknown_fields)]
     struct Alt {
         id: String,
         #[serde(default, rename = "says")]
-        _says: String,
+        _says: unique::NoRepeats,
     }
     Ok(Vec::<Alt>::deserialize(d)?.into_iter().map(|a| a.id).collect())
 }
@@ -73,7 +80,7 @@ pub struct FamilyInfo {
     #[serde(default)]
     pub instructions: Vec<String>,
     /// Every tag with its meaning.
-    #[serde(default)]
+    #[serde(default, deserialize_with = "unique_map")]
     pub tags: BTreeMap<String, String>,
     /// The family's interpretations.
     #[serde(default)]
@@ -99,7 +106,12 @@ pub struct Suite {
     families: Vec<FamilyInfo>,
     vectors: Vec<Vector>,
     by_id: HashMap<String, usize>,
+    /// Old id -> the id of the vector it was merged into (every family's `merged`).
+    merged: HashMap<String, String>,
 }
+
+/// Old id -> the id of the vector it was merged into, per family (`merged`).
+type Merged = Unique<Unique<String>>;
 
 #[derive(Deserialize)]
 struct Index {
@@ -107,7 +119,9 @@ struct Index {
     suite_version: String,
     #[serde(default)]
     spec_sha256: String,
-    families: BTreeMap<String, IndexEntry>,
+    families: Unique<IndexEntry>,
+    #[serde(default)]
+    merged: Merged,
 }
 
 #[derive(Deserialize)]
@@ -120,11 +134,16 @@ struct IndexEntry {
 
 #[derive(Deserialize)]
 struct Manifest {
+    /// The suite version; `generator_version` is its old name, written beside it until 0.3.0.
+    #[serde(default)]
+    suite_version: String,
     #[serde(default)]
     generator_version: String,
     #[serde(default)]
     spec_sha256: String,
-    families: BTreeMap<String, IndexEntry>,
+    families: Unique<IndexEntry>,
+    #[serde(default)]
+    merged: Merged,
 }
 
 impl Suite {
@@ -137,7 +156,7 @@ impl Suite {
             let count = index.families.get(*family).and_then(|e| e.count);
             parts.push(parse_jsonl(&format!("(embedded) {file}"), text, count)?);
         }
-        Suite::assemble("(embedded vectors)".into(), index.suite_version, index.spec_sha256, parts)
+        Suite::assemble("(embedded vectors)".into(), index.suite_version, index.spec_sha256, parts, index.merged)
     }
 
     /// The copy `PLCVEC_VECTORS` names, or the embedded one when it is unset or empty.
@@ -155,42 +174,20 @@ impl Suite {
     pub fn load(path: impl AsRef<Path>) -> Result<Suite> {
         let path = path.as_ref();
         let source = path.display().to_string();
+        // Whatever lies there (a named pipe, a loop of links) is the index, refused by its name.
+        let present = |p: &Path| std::fs::symlink_metadata(p).is_ok();
         if path.is_dir() {
-            let index_path = path.join("index.json");
-            let manifest_path = path.join("manifest.json");
-            if index_path.is_file() {
-                let index: Index = read_json(&index_path)?;
-                let mut parts = Vec::new();
-                for (family, entry) in &index.families {
-                    let file = path.join(&entry.file);
-                    let Some(sha256) = &entry.sha256 else {
-                        return Err(Error::new(format!(
-                            "{}: family {family} has no sha256 (a copy's files are checked against their index)",
-                            index_path.display()
-                        )));
-                    };
-                    let (text, seal) = read_sealed(&file, sha256, &index_path)?;
-                    parts.push(seal.check(parse_jsonl(&file.display().to_string(), &text, entry.count))?);
-                }
-                return Suite::assemble(source, index.suite_version, index.spec_sha256, parts);
+            if present(&path.join("index.json")) {
+                return Suite::load_index(path, source);
             }
-            if manifest_path.is_file() {
-                let manifest: Manifest = read_json(&manifest_path)?;
-                let mut parts = Vec::new();
-                for entry in manifest.families.values() {
-                    let file = path.join(&entry.file);
-                    let (text, seal) = match &entry.sha256 {
-                        Some(sha256) => read_sealed(&file, sha256, &manifest_path)?,
-                        None => (read_text(&file)?, Seal(None)),
-                    };
-                    parts.push(seal.check(parse_family_json(&file, &text, entry.count))?);
-                }
-                return Suite::assemble(source, manifest.generator_version, manifest.spec_sha256, parts);
+            if present(&path.join("manifest.json")) {
+                return Suite::load_manifest(path, source);
             }
             return Err(Error::new(format!(
                 "{source}: neither index.json nor manifest.json; is this a plcvec vector folder?"
             )));
         }
+        check_regular(path)?;
         if !path.exists() {
             return Err(Error::new(format!("{source}: no such vector folder or file")));
         }
@@ -199,7 +196,44 @@ impl Suite {
         } else {
             parse_family_json(path, &read_text(path)?, None)?
         };
-        Suite::assemble(source, String::new(), String::new(), vec![part])
+        Suite::assemble(source, String::new(), String::new(), vec![part], Merged::default())
+    }
+
+    /// A JSON-lines copy: `index.json` and a sealed `.jsonl` file per family.
+    fn load_index(path: &Path, source: String) -> Result<Suite> {
+        let index_path = path.join("index.json");
+        let index: Index = read_json(&index_path)?;
+        let mut parts = Vec::new();
+        for (family, entry) in index.families.iter() {
+            let file = path.join(&entry.file);
+            let Some(sha256) = &entry.sha256 else {
+                return Err(Error::new(format!(
+                    "{}: family {family} has no sha256 (a copy's files are checked against their index)",
+                    index_path.display()
+                )));
+            };
+            let (text, seal) = read_sealed(&file, sha256, &index_path)?;
+            parts.push(seal.check(parse_jsonl(&file.display().to_string(), &text, entry.count))?);
+        }
+        Suite::assemble(source, index.suite_version, index.spec_sha256, parts, index.merged)
+    }
+
+    /// The repository's form: `manifest.json` and a `.json` file per family.
+    fn load_manifest(path: &Path, source: String) -> Result<Suite> {
+        let manifest_path = path.join("manifest.json");
+        let manifest: Manifest = read_json(&manifest_path)?;
+        let mut parts = Vec::new();
+        for entry in manifest.families.values() {
+            let file = path.join(&entry.file);
+            let (text, seal) = match &entry.sha256 {
+                Some(sha256) => read_sealed(&file, sha256, &manifest_path)?,
+                None => (read_text(&file)?, Seal(None)),
+            };
+            parts.push(seal.check(parse_family_json(&file, &text, entry.count))?);
+        }
+        let version =
+            if manifest.suite_version.is_empty() { manifest.generator_version } else { manifest.suite_version };
+        Suite::assemble(source, version, manifest.spec_sha256, parts, manifest.merged)
     }
 
     fn assemble(
@@ -207,7 +241,9 @@ impl Suite {
         suite_version: String,
         spec_sha256: String,
         parts: Vec<(FamilyInfo, Vec<Vector>)>,
+        merged: Merged,
     ) -> Result<Suite> {
+        let merged = merged.into_iter().flat_map(|(_, ids)| ids).collect();
         let mut families = Vec::new();
         let mut vectors = Vec::new();
         let mut versions: Vec<String> = Vec::new();
@@ -230,8 +266,8 @@ impl Suite {
         } else {
             spec_sha256
         };
-        let suite =
-            Suite { source, suite_version, schema_version: versions.join(", "), spec_sha256, families, vectors, by_id };
+        let schema_version = versions.join(", ");
+        let suite = Suite { source, suite_version, schema_version, spec_sha256, families, vectors, by_id, merged };
         suite.interpretations()?;
         Ok(suite)
     }
@@ -269,6 +305,21 @@ impl Suite {
         self.by_id.get(id).map(|&i| &self.vectors[i])
     }
 
+    /// The id of the vector an id the suite no longer has was merged into, the vector files'
+    /// `merged` map followed to its end (a vector merged into one that was merged again is named
+    /// by the one it is now); `None` for an id that was never merged.
+    pub fn merged_into(&self, id: &str) -> Option<&str> {
+        let mut now = self.merged.get(id)?;
+        // A map that loops (a damaged file) ends after as many steps as it has entries.
+        for _ in 0..self.merged.len() {
+            match self.merged.get(now.as_str()) {
+                Some(next) if !self.by_id.contains_key(now.as_str()) => now = next,
+                _ => break,
+            }
+        }
+        Some(now)
+    }
+
     /// Every interpretation, each once (the FX5 time and date comparisons share theirs): id ->
     /// (its description, the families that share it). An interpretation must say the same in
     /// every family that has it.
@@ -296,25 +347,6 @@ impl Suite {
             .flat_map(|f| f.interpretations.iter().map(|i| (i.id.as_str(), i.default.as_str())))
             .collect()
     }
-}
-
-fn read_bytes(path: &Path) -> Result<Vec<u8>> {
-    fs::read(path).map_err(|e| Error::new(format!("{}: cannot read: {e}", path.display())))
-}
-
-/// The bytes as text, or the line and column of the first byte that is not UTF-8.
-fn utf8(path: &Path, bytes: Vec<u8>) -> Result<String> {
-    String::from_utf8(bytes).map_err(|e| {
-        let at = e.utf8_error().valid_up_to();
-        let before = &e.as_bytes()[..at];
-        let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
-        let column = at - before.iter().rposition(|&b| b == b'\n').map_or(0, |p| p + 1) + 1;
-        Error::new(format!("{}:{line}:{column}: a byte that is not UTF-8 (a damaged copy?)", path.display()))
-    })
-}
-
-fn read_text(path: &Path) -> Result<String> {
-    utf8(path, read_bytes(path)?)
 }
 
 /// Whether a file's bytes are those its index records: `Some` error when they differ.
@@ -351,9 +383,16 @@ fn read_sealed(path: &Path, sha256: &str, index: &Path) -> Result<(String, Seal)
     Ok((utf8(path, bytes)?, Seal(seal)))
 }
 
+/// An index (`index.json`, `manifest.json`): small, so checked whole for a repeated key first
+/// (its keys this crate does not read included), then read.
 fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T> {
-    serde_json::from_str(&read_text(path)?)
-        .map_err(|e| Error::new(format!("{}:{}: not a readable plcvec file ({e})", path.display(), e.line())))
+    let text = read_text(path)?;
+    let refused = |e: serde_json::Error| {
+        let what = if unique::is_repeated(&e) { unique::message(&e) } else { format!("not a readable plcvec file ({e})") };
+        Error::new(format!("{}:{}: {what}", path.display(), e.line()))
+    };
+    serde_json::from_str::<unique::NoRepeats>(&text).map_err(refused)?;
+    serde_json::from_str(&text).map_err(refused)
 }
 
 fn check_header(name: &str, header: &FamilyInfo) -> Result<()> {
@@ -399,17 +438,19 @@ fn check_count(name: &str, count: Option<usize>, found: usize) -> Result<()> {
 fn parse_jsonl(name: &str, text: &str, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, first) = lines.next().ok_or_else(|| Error::new(format!("{name}: empty file")))?;
-    let header: FamilyInfo =
-        serde_json::from_str(first).map_err(|e| Error::new(format!("{name}:1: not a plcvec family header ({e})")))?;
+    let header: FamilyInfo = serde_json::from_str(first).map_err(|e| {
+        let what = if unique::is_repeated(&e) { unique::message(&e) } else { format!("not a plcvec family header ({e})") };
+        Error::new(format!("{name}:1: {what}"))
+    })?;
     check_header(name, &header)?;
     let mut vectors = Vec::new();
     for (n, line) in lines {
         let where_ = format!("{name}:{}", n + 1);
         let raw: RawVector = serde_json::from_str(line).map_err(|e| {
-            let id = serde_json::from_str::<serde_json::Value>(line)
-                .ok()
-                .and_then(|v| v.get("id").and_then(|i| i.as_str()).map(|s| format!(" vector {s}:")))
-                .unwrap_or_default();
+            let id = id_of(line).map(|s| format!(" vector {s}:")).unwrap_or_default();
+            if unique::is_repeated(&e) {
+                return Error::new(format!("{where_}:{id} {}", unique::message(&e)));
+            }
             Error::new(format!("{where_}:{id} not a plcvec vector ({e})"))
         })?;
         vectors.push(check_vector(name, &where_, &header, raw)?);
@@ -418,9 +459,42 @@ fn parse_jsonl(name: &str, text: &str, count: Option<usize>) -> Result<(FamilyIn
     Ok((header, vectors))
 }
 
+/// The `id` of a vector's JSON text, read leniently (for a message about a vector that is refused).
+fn id_of(text: &str) -> Option<String> {
+    let v = serde_json::from_str::<serde_json::Value>(text).ok()?;
+    v.get("id").and_then(|i| i.as_str()).map(str::to_owned)
+}
+
+/// A repeated key anywhere in a family file of the repository's form, by line and vector id: the
+/// file is read whole into a tree (where the last of two values would silently win), so it is
+/// checked first (this form is not the one the crate embeds; the JSON-lines form is checked in its
+/// one parse).
+fn check_repeats(name: &str, text: &str) -> Result<()> {
+    let Err(e) = serde_json::from_str::<unique::NoRepeats>(text) else { return Ok(()) };
+    if !unique::is_repeated(&e) {
+        return Ok(()); // not JSON: said by the parse that follows, as before
+    }
+    #[derive(Deserialize)]
+    struct Vectors<'a> {
+        #[serde(borrow, default)]
+        vectors: Vec<&'a serde_json::value::RawValue>,
+    }
+    let line_of = |offset: usize| text[..offset].matches('\n').count() + 1;
+    let id = serde_json::from_str::<Vectors<'_>>(text).ok().and_then(|file| {
+        let inside = file.vectors.into_iter().find(|raw| {
+            let start = raw.get().as_ptr() as usize - text.as_ptr() as usize;
+            (line_of(start)..=line_of(start + raw.get().len())).contains(&e.line())
+        })?;
+        id_of(inside.get())
+    });
+    let id = id.map(|id| format!(" vector {id}:")).unwrap_or_default();
+    Err(Error::new(format!("{name}:{}:{id} {}", e.line(), unique::message(&e))))
+}
+
 /// One family file as `plcvec generate` writes it: a JSON object with `vectors`.
 fn parse_family_json(path: &Path, text: &str, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
     let name = path.display().to_string();
+    check_repeats(&name, text)?;
     let mut data: serde_json::Value = serde_json::from_str(text)
         .map_err(|e| Error::new(format!("{name}:{}: not a readable plcvec file ({e})", e.line())))?;
     let vectors = match data.as_object_mut().and_then(|o| o.remove("vectors")) {

@@ -527,9 +527,10 @@ fn kind_of(value: Value) -> &'static str {
 // The file shapes (vectors/schema/vector-file.schema.json). Every key must be one the schema
 // defines (CONTRACT.md, "Loading"): an unknown key means a damaged or hand-edited file, or one
 // of a schema this crate does not read, and is refused rather than silently dropped. Keys the
-// runner does not use are read as `IgnoredAny` (checked for presence, not kept).
+// runner does not use are read as `NoRepeats` (checked for presence and for repeated keys, not
+// kept); a key given twice anywhere is refused (`unique`).
 
-use serde::de::IgnoredAny;
+use crate::unique::{NoRepeats, Unique};
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -538,9 +539,9 @@ pub(crate) struct RawVector {
     pub family: String,
     instruction: String,
     #[serde(default, rename = "st")]
-    _st: Option<IgnoredAny>,
+    _st: Option<NoRepeats>,
     #[serde(default, rename = "printed")]
-    _printed: Option<IgnoredAny>,
+    _printed: Option<NoRepeats>,
     #[serde(default)]
     description: String,
     #[serde(default)]
@@ -562,14 +563,14 @@ pub(crate) struct RawVector {
 #[serde(deny_unknown_fields)]
 struct RawAssumes {
     #[serde(default)]
-    device_sizes: BTreeMap<String, u64>,
+    device_sizes: Unique<u64>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawInitial {
-    devices: BTreeMap<String, Json>,
-    operands: BTreeMap<String, RawOperand>,
+    devices: Unique<Json>,
+    operands: Unique<RawOperand>,
     #[serde(default)]
     scratch: Vec<String>,
 }
@@ -585,12 +586,12 @@ struct RawOperand {
 #[serde(deny_unknown_fields)]
 struct RawStep {
     #[serde(default)]
-    set: BTreeMap<String, Json>,
+    set: Unique<Json>,
     rlo_in: Option<bool>,
     en: Option<bool>,
     input: Option<bool>,
     elapsed_ms: Option<u64>,
-    clock: Option<BTreeMap<String, i64>>,
+    clock: Option<Unique<i64>>,
     expect: Option<RawExpect>,
 }
 
@@ -599,13 +600,13 @@ struct RawStep {
 struct RawExpect {
     result: Option<bool>,
     #[serde(default)]
-    devices: BTreeMap<String, Json>,
+    devices: Unique<Json>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawFinal {
-    devices: BTreeMap<String, Json>,
+    devices: Unique<Json>,
 }
 
 #[derive(Deserialize)]
@@ -613,7 +614,7 @@ struct RawFinal {
 struct RawCategory {
     category: String,
     #[serde(default, rename = "errors")]
-    _errors: Option<IgnoredAny>,
+    _errors: Option<NoRepeats>,
 }
 
 #[derive(Deserialize)]
@@ -624,15 +625,15 @@ struct RawOutcome {
     interpretations: Vec<String>,
     default: Option<RawCategory>,
     #[serde(default, rename = "errors")]
-    _errors: Option<IgnoredAny>,
+    _errors: Option<NoRepeats>,
     #[serde(default, rename = "reason")]
-    _reason: Option<IgnoredAny>,
+    _reason: Option<NoRepeats>,
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawAlternative {
-    choices: BTreeMap<String, String>,
+    choices: Unique<String>,
     expect: Vec<RawExpect>,
     #[serde(rename = "final")]
     final_: RawFinal,
