@@ -6,6 +6,7 @@ use std::collections::BTreeMap;
 
 use crate::compare::{compare, ReportedStep};
 use crate::expect::Expected;
+use crate::generated::names;
 use crate::vector::Vector;
 use crate::verdict::Status;
 
@@ -68,6 +69,10 @@ pub(crate) struct Inference {
     pub explained: Vec<(usize, Combination)>,
     /// Failing vectors no reading explains (indexes).
     pub unexplained: Vec<usize>,
+    /// Explained known failures (`xfail`) with their smallest change.
+    pub explained_known: Vec<(usize, Combination)>,
+    /// Known failures no reading explains.
+    pub unexplained_known: Vec<usize>,
     /// Passing vectors that would fail under the choice.
     pub broken: usize,
 }
@@ -126,43 +131,64 @@ pub(crate) fn infer(
             break;
         }
     }
-    let mut explained = Vec::new();
-    let mut unexplained = Vec::new();
-    let mut broken = 0;
     let passes_under = |k: usize, choice: &BTreeMap<String, String>| {
         judged.iter().find(|(j, _)| *j == k).is_some_and(|(_, j)| j.passes(choice, cpu_writes))
     };
+    let mut inference = Inference {
+        choice: BTreeMap::new(),
+        explained: Vec::new(),
+        unexplained: Vec::new(),
+        explained_known: Vec::new(),
+        unexplained_known: Vec::new(),
+        broken: 0,
+    };
     for (k, case) in cases.iter().enumerate() {
-        if case.status == Status::Pass {
-            if !passes_under(k, &choice) {
-                broken += 1;
-            }
-            continue;
-        }
-        if !failing(case.status) {
-            continue;
-        }
-        if case.status == Status::Fail && passes_under(k, &choice) {
-            let differing: Vec<(String, String)> = case
-                .expected
-                .choices
-                .iter()
-                .filter_map(|(i, a)| choice.get(i).filter(|c| *c != a).map(|c| (i.clone(), c.clone())))
-                .collect();
-            let smallest = (1..=differing.len())
-                .flat_map(|size| combinations(&differing, size))
-                .find(|subset| {
-                    let mut trial = followed.clone();
-                    trial.extend(subset.iter().cloned());
-                    passes_under(k, &trial)
-                })
-                .unwrap_or(differing);
-            explained.push((k, smallest));
-        } else {
-            unexplained.push(k);
+        // TEXT.md, "The inference", step 5: a failing vector is explained when it is judged (it
+        // failed: an error or a vector not run never is) and passes under the choice; so is a
+        // known failure whose vector failed (one whose vector errored has no answer).
+        let judged_failure = match case.status {
+            Status::Fail => true,
+            Status::XFail => case.answer.is_some(),
+            _ => false,
+        };
+        let explained = judged_failure && passes_under(k, &choice);
+        let smallest = || smallest_change(case, &choice, followed, |trial| passes_under(k, trial));
+        match case.status {
+            Status::Pass if !passes_under(k, &choice) => inference.broken += 1,
+            Status::XFail if explained => inference.explained_known.push((k, smallest())),
+            Status::XFail => inference.unexplained_known.push(k),
+            status if failing(status) && explained => inference.explained.push((k, smallest())),
+            status if failing(status) => inference.unexplained.push(k),
+            _ => {}
         }
     }
-    Inference { choice, explained, unexplained, broken }
+    inference.choice = choice;
+    inference
+}
+
+/// TEXT.md, "The inference", step 6: the first subset, by size then in lexicographic order, of
+/// the interpretations whose chosen alternative differs from the followed one under which the
+/// vector passes.
+fn smallest_change(
+    case: &Case<'_>,
+    choice: &BTreeMap<String, String>,
+    followed: &BTreeMap<String, String>,
+    passes: impl Fn(&BTreeMap<String, String>) -> bool,
+) -> Combination {
+    let differing: Combination = case
+        .expected
+        .choices
+        .iter()
+        .filter_map(|(i, a)| choice.get(i).filter(|c| *c != a).map(|c| (i.clone(), c.clone())))
+        .collect();
+    (1..=differing.len())
+        .flat_map(|size| combinations(&differing, size))
+        .find(|subset| {
+            let mut trial = followed.clone();
+            trial.extend(subset.iter().cloned());
+            passes(&trial)
+        })
+        .unwrap_or(differing)
 }
 
 /// The subsets of `items` of `size`, in lexicographic order (as itertools.combinations).
@@ -185,63 +211,152 @@ fn count_line(n: usize, text: &str) -> String {
     format!("    {n:>6}  {text}")
 }
 
-/// The roll-up's text (empty when no vector failed).
-pub(crate) fn rollup(cases: &[Case<'_>], inference: &Inference, followed: &BTreeMap<String, String>) -> String {
+/// How the roll-up writes a declaration (TEXT.md, "The declaration in each runner").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Syntax {
+    /// The crate's own: `plcvec::Choices::new().with(plcvec::names::TaddFlagsOff::SetOnly)`.
+    Rust,
+    /// `plcvec verify`'s: `--choose TADD-FLAGS-OFF=set-only` (the shared cases' expected text).
+    Choose,
+}
+
+/// `changes` (sorted by interpretation) declared in `syntax`.
+pub(crate) fn declaration(syntax: Syntax, changes: &[(String, String)]) -> String {
+    match syntax {
+        Syntax::Choose => changes.iter().map(|(i, a)| format!("--choose {i}={a}")).collect::<Vec<_>>().join(" "),
+        Syntax::Rust => {
+            let mut out = String::from("plcvec::Choices::new()");
+            for (i, a) in changes {
+                match names::declaration(i, a) {
+                    Some((interpretation, alternative)) => {
+                        out.push_str(&format!(".with(plcvec::names::{interpretation}::{alternative})"));
+                    }
+                    // An interpretation of a newer vector copy than this build's names know.
+                    None => out.push_str(&format!(".with(/* {i}={a}: not in this build's plcvec::names */)")),
+                }
+            }
+            out
+        }
+    }
+}
+
+/// What the roll-up is given besides the cases: the inference over them, the alternatives
+/// followed, the declaration syntax and the known-failures file's name as given.
+pub(crate) struct Rollup<'a> {
+    pub inference: &'a Inference,
+    pub followed: &'a BTreeMap<String, String>,
+    pub syntax: Syntax,
+    pub known_file: Option<&'a str>,
+}
+
+/// The roll-up's text (empty when no vector failed and none is a known failure).
+pub(crate) fn rollup(cases: &[Case<'_>], r: &Rollup<'_>) -> String {
     let failing_count = cases.iter().filter(|c| failing(c.status)).count();
-    if failing_count == 0 {
+    let known_count = cases.iter().filter(|c| c.status == Status::XFail).count();
+    if failing_count == 0 && known_count == 0 {
         return String::new();
     }
+    let inference = r.inference;
     let mut out = String::new();
     if !inference.explained.is_empty() {
         out.push_str(&format!(
             "READINGS: {} of {failing_count} failing vectors pass under other alternatives:\n",
             inference.explained.len()
         ));
-        let mut groups: BTreeMap<String, usize> = BTreeMap::new();
-        for (_, change) in &inference.explained {
-            let text: Vec<String> = change.iter().map(|(i, a)| format!("{i}={a}")).collect();
-            *groups.entry(text.join(", ")).or_default() += 1;
-        }
-        let mut groups: Vec<(String, usize)> = groups.into_iter().collect();
-        groups.sort_by(|a, b| b.1.cmp(&a.1).then_with(|| a.0.cmp(&b.0)));
-        for (text, n) in groups {
-            out.push_str(&count_line(n, &text));
-            out.push('\n');
-        }
-        let declare: Vec<String> = inference
-            .choice
-            .iter()
-            .filter(|(i, a)| followed.get(*i) != Some(a))
-            .map(|(i, a)| format!("--choose {i}={a}"))
-            .collect();
-        out.push_str(&format!("    declare: {}\n", declare.join(" ")));
+        let (lines, partial) = groups(cases, &inference.explained, &inference.unexplained, "failing vectors");
+        out.push_str(&lines);
+        let declare: Vec<(String, String)> =
+            inference.choice.iter().filter(|(i, a)| r.followed.get(*i) != Some(a)).map(|(i, a)| (i.clone(), a.clone())).collect();
+        out.push_str(&format!("    declare: {}\n", declaration(r.syntax, &declare)));
         if inference.broken > 0 {
             out.push_str(&format!("    (so declared, {} vectors that pass now would fail)\n", inference.broken));
         }
-    }
-    if !inference.unexplained.is_empty() {
-        out.push_str(&format!(
-            "NOT EXPLAINED by any reading: {} failing vectors, by the clauses they cite:\n",
-            inference.unexplained.len()
-        ));
-        let mut groups: BTreeMap<String, Vec<&str>> = BTreeMap::new();
-        for &k in &inference.unexplained {
-            let v = cases[k].vector;
-            let clauses = if v.clauses().is_empty() { "(no clauses)".to_owned() } else { v.clauses().join(", ") };
-            groups.entry(clauses).or_default().push(v.id());
+        if partial > 0 {
+            out.push_str(&format!(
+                "    partial: {partial} failing vectors that no reading explains are of the same families; \
+                 a declaration may hide part of a bug there\n"
+            ));
         }
-        let mut groups: Vec<(String, Vec<&str>)> = groups.into_iter().collect();
-        groups.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then_with(|| a.0.cmp(&b.0)));
-        for (clauses, mut ids) in groups {
-            ids.sort_unstable();
-            out.push_str(&count_line(ids.len(), &clauses));
-            out.push('\n');
-            for id in ids.iter().take(5) {
-                out.push_str(&format!("            {id}\n"));
-            }
-            if ids.len() > 5 {
-                out.push_str(&format!("            ... and {} more\n", ids.len() - 5));
-            }
+    }
+    out.push_str(&not_explained(cases, &inference.unexplained));
+    if !inference.explained_known.is_empty() {
+        out.push_str(&known_failures(cases, r, known_count));
+    }
+    out
+}
+
+/// The KNOWN FAILURES part: the known failures another reading explains, grouped as READINGS is,
+/// the declaration of their changes, and the file to remove them from.
+fn known_failures(cases: &[Case<'_>], r: &Rollup<'_>, known_count: usize) -> String {
+    let inference = r.inference;
+    let k = inference.explained_known.len();
+    let mut out = format!("KNOWN FAILURES: {k} of {known_count} known failures pass under other alternatives:\n");
+    let unexplained: Vec<usize> =
+        inference.unexplained.iter().chain(&inference.unexplained_known).copied().collect();
+    let what = "failing vectors and known failures";
+    out.push_str(&groups(cases, &inference.explained_known, &unexplained, what).0);
+    let changed: std::collections::BTreeSet<&String> =
+        inference.explained_known.iter().flat_map(|(_, change)| change.iter().map(|(i, _)| i)).collect();
+    let declare: Vec<(String, String)> =
+        changed.into_iter().filter_map(|i| inference.choice.get(i).map(|a| (i.clone(), a.clone()))).collect();
+    out.push_str(&format!("    declare: {}\n", declaration(r.syntax, &declare)));
+    out.push_str(&format!("    then remove those {k} known failures from {}\n", r.known_file.unwrap_or("")));
+    out
+}
+
+/// The group lines of explained vectors (by their smallest change, largest group first, then by
+/// text), each marked partial when an unexplained vector (`unexplained`, worded as `what`) is of a
+/// family the group's vectors are of; and how many unexplained vectors the partial groups reach.
+fn groups(cases: &[Case<'_>], explained: &[(usize, Combination)], unexplained: &[usize], what: &str) -> (String, usize) {
+    let mut by_change: BTreeMap<String, Vec<usize>> = BTreeMap::new();
+    for (k, change) in explained {
+        let text: Vec<String> = change.iter().map(|(i, a)| format!("{i}={a}")).collect();
+        by_change.entry(text.join(", ")).or_default().push(*k);
+    }
+    let mut sorted: Vec<(String, Vec<usize>)> = by_change.into_iter().collect();
+    sorted.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then_with(|| a.0.cmp(&b.0)));
+    let family = |k: usize| cases[k].vector.family();
+    let mut reached: std::collections::BTreeSet<usize> = Default::default();
+    let mut out = String::new();
+    for (text, members) in sorted {
+        let families: std::collections::BTreeSet<&str> = members.iter().map(|&k| family(k)).collect();
+        let hits: Vec<usize> = unexplained.iter().copied().filter(|&k| families.contains(family(k))).collect();
+        out.push_str(&count_line(members.len(), &text));
+        if !hits.is_empty() {
+            let named: std::collections::BTreeSet<&str> = hits.iter().map(|&k| family(k)).collect();
+            let named: Vec<&str> = named.into_iter().collect();
+            out.push_str(&format!(" (partial: {} {what} of {} not explained)", hits.len(), named.join(", ")));
+            reached.extend(hits);
+        }
+        out.push('\n');
+    }
+    (out, reached.len())
+}
+
+/// The NOT EXPLAINED part: unexplained failing vectors grouped by the clauses they cite.
+fn not_explained(cases: &[Case<'_>], unexplained: &[usize]) -> String {
+    if unexplained.is_empty() {
+        return String::new();
+    }
+    let mut out =
+        format!("NOT EXPLAINED by any reading: {} failing vectors, by the clauses they cite:\n", unexplained.len());
+    let mut groups: BTreeMap<String, Vec<&str>> = BTreeMap::new();
+    for &k in unexplained {
+        let v = cases[k].vector;
+        let clauses = if v.clauses().is_empty() { "(no clauses)".to_owned() } else { v.clauses().join(", ") };
+        groups.entry(clauses).or_default().push(v.id());
+    }
+    let mut groups: Vec<(String, Vec<&str>)> = groups.into_iter().collect();
+    groups.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then_with(|| a.0.cmp(&b.0)));
+    for (clauses, mut ids) in groups {
+        ids.sort_unstable();
+        out.push_str(&count_line(ids.len(), &clauses));
+        out.push('\n');
+        for id in ids.iter().take(5) {
+            out.push_str(&format!("            {id}\n"));
+        }
+        if ids.len() > 5 {
+            out.push_str(&format!("            ... and {} more\n", ids.len() - 5));
         }
     }
     out

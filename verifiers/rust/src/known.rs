@@ -14,6 +14,7 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use crate::error::{Error, Result};
+use crate::files::check_regular;
 use crate::verdict::{Status, Verdict};
 
 const SECTION: &str = "known-failure";
@@ -34,12 +35,15 @@ pub struct KnownFailure {
 pub struct KnownFailures {
     path: String,
     entries: BTreeMap<String, KnownFailure>,
+    /// The ids in the file's order (stale ids are reported in it).
+    order: Vec<String>,
 }
 
 impl KnownFailures {
     /// Read and check a file.
     pub fn load(path: impl AsRef<Path>) -> Result<KnownFailures> {
         let path = path.as_ref();
+        check_regular(path)?;
         let text = std::fs::read_to_string(path)
             .map_err(|e| Error::new(format!("{}: cannot read the expectations file: {e}", path.display())))?;
         KnownFailures::parse(&path.display().to_string(), &text)
@@ -70,6 +74,7 @@ impl KnownFailures {
             .map(|(n, _)| n + 1)
             .collect();
         let mut entries = BTreeMap::new();
+        let mut order = Vec::new();
         let list = match data.get(SECTION) {
             None => Vec::new(),
             Some(toml::Value::Array(items)) => items.clone(),
@@ -101,9 +106,10 @@ impl KnownFailures {
                 let first: &KnownFailure = first;
                 return Err(Error::new(format!("{path}:{line}: {id} is listed twice (first at line {})", first.line)));
             }
+            order.push(id.clone());
             entries.insert(id.clone(), KnownFailure { id, reason, line });
         }
-        Ok(KnownFailures { path: path.to_owned(), entries })
+        Ok(KnownFailures { path: path.to_owned(), entries, order })
     }
 
     /// The file's path.
@@ -121,12 +127,12 @@ impl KnownFailures {
         self.entries.values()
     }
 
-    /// Listed ids for which `exists` says the suite has no vector.
+    /// Listed ids for which `exists` says the suite has no vector, in the file's order.
     pub fn unknown_ids<'a>(
         &'a self,
         exists: impl Fn(&str) -> bool + 'a,
     ) -> impl Iterator<Item = &'a KnownFailure> + 'a {
-        self.entries.values().filter(move |e| !exists(&e.id))
+        self.order.iter().filter_map(|id| self.entries.get(id)).filter(move |e| !exists(&e.id))
     }
 
     /// A listed failure becomes `xfail`, a listed pass `stale`.
@@ -134,15 +140,14 @@ impl KnownFailures {
         let Some(entry) = self.entries.get(id) else { return verdict };
         let at = format!("{}:{}", self.path, entry.line);
         match verdict.status {
+            // The differing fields stay: the block shows them (--verbose), and the roll-up judges
+            // the known failure under the other readings.
             Status::Fail | Status::Error => {
                 let mut message = format!("known failure ({at}): {}", entry.reason);
-                for p in &verdict.problems {
-                    message.push_str(&format!("; {p}"));
-                }
                 if !verdict.message.is_empty() {
                     message.push_str(&format!("; {}", verdict.message));
                 }
-                Verdict { status: Status::XFail, problems: Vec::new(), message }
+                Verdict { status: Status::XFail, problems: verdict.problems, message }
             }
             Status::Pass => Verdict {
                 status: Status::Stale,
@@ -158,10 +163,21 @@ impl KnownFailures {
 
     /// The message for a listed id the suite does not have.
     pub fn unknown_message(&self, entry: &KnownFailure) -> String {
-        format!(
-            "listed as a known failure ({}:{}) but the suite has no such vector; remove it from the expectations file",
-            self.path, entry.line
-        )
+        self.stale_message(entry, None)
+    }
+
+    /// The message for a listed id the suite does not have, naming the vector it was merged into
+    /// when the vector files' `merged` map names one (TEXT.md, "Known-failure messages").
+    pub fn stale_message(&self, entry: &KnownFailure, merged_into: Option<&str>) -> String {
+        let at = format!("{}:{}", self.path, entry.line);
+        match merged_into {
+            Some(new) => format!(
+                "listed as a known failure ({at}) but the suite has no such vector: it was merged into {new}; list that id instead"
+            ),
+            None => format!(
+                "listed as a known failure ({at}) but the suite has no such vector; remove it from the expectations file"
+            ),
+        }
     }
 }
 
@@ -176,6 +192,9 @@ pub fn write_expectations<'a>(path: &Path, ids: impl IntoIterator<Item = &'a str
         text.push_str(&format!("[[{SECTION}]]\nid = {}\nreason = {}\n\n", toml_str(id), toml_str(reason)));
     }
     text.pop();
+    // A named pipe or a device where the file goes is refused, not written through (a write could
+    // wait for ever); a rename would replace it, which is not what was asked either.
+    check_regular(path)?;
     let name = path.file_name().map_or_else(|| "known-failures".into(), |n| n.to_string_lossy().into_owned());
     let partial = path.with_file_name(format!(".{name}.{}.partial", std::process::id()));
     let written = std::fs::write(&partial, text).and_then(|()| std::fs::rename(&partial, path));

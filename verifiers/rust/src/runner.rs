@@ -11,6 +11,7 @@ use crate::error::Result;
 use crate::expect::{check_choices, Expected};
 use crate::generated::names::Instruction;
 use crate::implementation::{Implementation, Refusal};
+use crate::infer::{Rollup, Syntax};
 use crate::known::KnownFailures;
 use crate::select::Selection;
 use crate::vector::Vector;
@@ -182,6 +183,7 @@ pub fn run<'s, I: Implementation + ?Sized>(
     selection: &Selection,
     known: Option<&KnownFailures>,
 ) -> Result<Report<'s>> {
+    crate::settings::warn_once();
     let vectors = selection.select(suite)?;
     let choices = implementation.interpretations();
     let plan = Plan::new(suite, vectors, &choices)?;
@@ -231,7 +233,10 @@ pub fn run<'s, I: Implementation + ?Sized>(
 
 /// `<id>: <message>` of each listed known failure the suite has no vector for.
 pub(crate) fn unknown_known(known: &KnownFailures, suite: &Suite) -> Vec<String> {
-    known.unknown_ids(|id| suite.get(id).is_some()).map(|e| format!("{}: {}", e.id, known.unknown_message(e))).collect()
+    known
+        .unknown_ids(|id| suite.get(id).is_some())
+        .map(|e| format!("{}: {}", e.id, known.stale_message(e, suite.merged_into(&e.id))))
+        .collect()
 }
 
 /// Judge every vector of a plan (the benchmark's loop): unsupported instructions are skipped.
@@ -309,11 +314,12 @@ impl Report<'_> {
         self.plan.vectors().iter().position(|v| v.id() == id).map(|i| &self.verdicts[i])
     }
 
-    /// Whether the run passed: nothing failed, and something was judged (an implementation that
-    /// skips every vector does not pass).
+    /// Whether the run passed: nothing failed, and something passed (an implementation that
+    /// skips every vector, or fails only its known failures, proves nothing).
     pub fn passed(&self) -> bool {
-        let judged = self.count(Status::Pass) + self.count(Status::XFail);
-        judged > 0 && self.unknown_known.is_empty() && !self.verdicts.iter().any(|v| v.status.is_failing())
+        self.count(Status::Pass) > 0
+            && self.unknown_known.is_empty()
+            && !self.verdicts.iter().any(|v| v.status.is_failing())
     }
 
     /// The summary a person reads: the run's text with its header line, without the time.
@@ -326,6 +332,11 @@ impl Report<'_> {
     /// header line (which names the machine's paths) only with `header`, and the totals with
     /// ` in <t> s` only given the seconds.
     pub fn text(&self, header: bool, seconds: Option<f64>) -> String {
+        self.blocks() + &self.text_after_blocks(header, seconds)
+    }
+
+    /// The failure blocks of the run's text, stale known failures the suite lacks last.
+    fn blocks(&self) -> String {
         let mut out = String::new();
         for ((v, e), verdict) in self.plan.iter().zip(&self.verdicts) {
             if verdict.status.is_failing() {
@@ -337,14 +348,40 @@ impl Report<'_> {
             let (id, message) = line.split_once(": ").unwrap_or((line, ""));
             out.push_str(&format!("STALE {id}\n    {message}\n"));
         }
-        out.push_str(&self.text_after_blocks(header, seconds));
         out
     }
 
     /// The run's text after the failure blocks: the roll-up by reading, skips by reason and the
     /// summary lines (for a test harness that printed each block with its test).
     pub fn text_after_blocks(&self, header: bool, seconds: Option<f64>) -> String {
-        let mut out = String::new();
+        self.text_ending(header, seconds, None)
+    }
+
+    /// [`Report::text_after_blocks`] with the line that says why a run without a failure did not
+    /// pass (`NOT PASSED (exit 5): nothing passed ...`), printed where `ABORTED:` would be.
+    pub(crate) fn text_ending(&self, header: bool, seconds: Option<f64>, not_passed: Option<&str>) -> String {
+        self.ending(header, seconds, not_passed, Syntax::Rust)
+    }
+
+    /// The run's text with the roll-up's declarations written as `plcvec verify`'s `--choose`
+    /// options, the form of the shared cases' expected text (verifiers/parity/text); for the
+    /// project's own test of that text, not part of the API.
+    #[doc(hidden)]
+    pub fn text_as_plcvec_verify(&self, header: bool, seconds: Option<f64>) -> String {
+        self.blocks() + &self.ending(header, seconds, None, Syntax::Choose)
+    }
+
+    /// The roll-up's declaration of `changes` (interpretation id, alternative) in this crate's
+    /// syntax, as TEXT.md's table of declarations gives it; not part of the API.
+    #[doc(hidden)]
+    pub fn declaration(changes: &[(&str, &str)]) -> String {
+        let changes: Vec<(String, String)> = changes.iter().map(|(i, a)| ((*i).to_owned(), (*a).to_owned())).collect();
+        crate::infer::declaration(Syntax::Rust, &changes)
+    }
+
+    /// The roll-up by reading of this run (empty when nothing failed and nothing is a known
+    /// failure).
+    fn rollup(&self, syntax: Syntax) -> String {
         let followed: BTreeMap<String, String> =
             self.interpretations.iter().map(|f| (f.interpretation.clone(), f.alternative.clone())).collect();
         let alternatives: crate::infer::Alternatives = self
@@ -364,16 +401,25 @@ impl Report<'_> {
                 answer: answer.as_deref(),
             })
             .collect();
-        // The inference only has something to explain when a vector failed.
-        if cases.iter().any(|c| matches!(c.status, Status::Fail | Status::Error | Status::NotRun)) {
-            let inference = crate::infer::infer(&cases, &followed, &alternatives, &self.cpu_writes);
-            out.push_str(&crate::infer::rollup(&cases, &inference, &followed));
+        // The inference only has something to explain when a vector failed or is a known failure.
+        if !cases.iter().any(|c| matches!(c.status, Status::Fail | Status::Error | Status::NotRun | Status::XFail)) {
+            return String::new();
         }
+        let inference = crate::infer::infer(&cases, &followed, &alternatives, &self.cpu_writes);
+        let known_file = self.verdicts.iter().find(|v| v.status == Status::XFail).and_then(|v| known_file(&v.message));
+        let r = Rollup { inference: &inference, followed: &followed, syntax, known_file };
+        crate::infer::rollup(&cases, &r)
+    }
+
+    fn ending(&self, header: bool, seconds: Option<f64>, not_passed: Option<&str>, syntax: Syntax) -> String {
+        let mut out = self.rollup(syntax);
         let skipped: Vec<&str> =
             self.verdicts.iter().filter(|v| v.status == Status::Skip).map(|v| v.message.as_str()).collect();
         out.push_str(&crate::infer::skips(&skipped, self.verdicts.len()));
         if let Some(why) = &self.aborted {
             out.push_str(&format!("ABORTED: {why}\n"));
+        } else if let Some(line) = not_passed {
+            out.push_str(&format!("{line}\n"));
         }
         out.push('\n');
         if header {
@@ -414,4 +460,11 @@ impl Report<'_> {
         out.push('\n');
         out
     }
+}
+
+/// The known-failures file's name as a known failure's message gives it
+/// (`known failure (<file>:<line>): <reason>`).
+fn known_file(message: &str) -> Option<&str> {
+    let at = message.strip_prefix("known failure (")?.split_once("): ")?.0;
+    Some(at.rsplit_once(':')?.0)
 }

@@ -24,22 +24,65 @@ const NAMES: &[&str] = &[
     "skips-everything",
     "bad-choice",
     "cpu-writes",
+    "closes-fds",
+    "child-holds-stdout",
+    "follows-alternative",
 ];
+
+/// Named by the table of faults but not built here: a Rust word is a `u16`, so an implementation
+/// cannot report 65536 or a NaN (the rows are exempt, README.md "The table of faults").
+const CANNOT: &[&str] = &["word-65536", "not-a-number"];
 
 fn main() -> ExitCode {
     let name = std::env::var("PLCVEC_HOSTILE").ok().filter(|n| !n.is_empty()).unwrap_or_else(|| "reference".into());
     let Some(&hostile) = NAMES.iter().find(|&&n| n == name) else {
-        eprintln!("faults: PLCVEC_HOSTILE={name}: no such hostile implementation; known: {}", NAMES.join(", "));
+        let why = if CANNOT.contains(&name.as_str()) { "its value does not fit a Rust word (u16)" } else { "no such hostile implementation" };
+        eprintln!("faults: PLCVEC_HOSTILE={name}: {why}; known: {}", NAMES.join(", "));
         return ExitCode::from(2);
     };
     let on = std::env::var("PLCVEC_HOSTILE_ON").unwrap_or_default();
-    plcvec::harness::run(move || Hostile { hostile, on: on.clone(), reference: Reference::new() })
+    // follows-alternative: the reference following `ID=alternative`, declared nowhere.
+    let followed = match std::env::var("PLCVEC_HOSTILE_CHOICE").ok().filter(|_| hostile == "follows-alternative") {
+        Some(choice) => match choice.split_once('=') {
+            Some((id, alternative)) => [(id, alternative)].into_iter().collect(),
+            None => {
+                eprintln!("faults: PLCVEC_HOSTILE_CHOICE={choice}: not ID=alternative");
+                return ExitCode::from(2);
+            }
+        },
+        None => Choices::new(),
+    };
+    plcvec::harness::run(move || Hostile {
+        hostile,
+        on: on.clone(),
+        reference: Reference::with_choices(followed.clone()),
+    })
 }
 
 struct Hostile {
     hostile: &'static str,
     on: String,
+    /// The reference (following `PLCVEC_HOSTILE_CHOICE` for follows-alternative).
     reference: Reference,
+}
+
+/// Close every descriptor from 3 to 1023, whatever opened it (the harness, the test runner).
+fn close_inherited_descriptors() {
+    for fd in 3..1024 {
+        // SAFETY: the hostile's whole point is to pull descriptors from under the runner; nothing
+        // in this process that reads or writes one may rely on it surviving.
+        unsafe {
+            libc::close(fd);
+        }
+    }
+}
+
+/// Start a process that inherits stdout and stderr and outlives the vector (300 s).
+fn start_child_holding_stdout() {
+    let child = std::process::Command::new("sleep").arg("300").stdin(std::process::Stdio::null()).spawn();
+    if let Err(e) = child {
+        eprintln!("faults: cannot start `sleep 300`: {e}");
+    }
 }
 
 impl Implementation for Hostile {
@@ -81,6 +124,8 @@ impl Implementation for Hostile {
                 "exit-zero" => std::process::exit(0),
                 "exit-nonzero" => std::process::exit(3),
                 "crash" => std::process::abort(),
+                "closes-fds" => close_inherited_descriptors(),
+                "child-holds-stdout" => start_child_holding_stdout(),
                 _ => {}
             }
         }
@@ -105,7 +150,7 @@ impl Implementation for Hostile {
             let bit = (0..vector.devices().len()).find(|&i| memory.values()[i].bit().is_some());
             let mut image: Vec<(String, Value)> = memory.image().map(|(name, v)| (name.to_owned(), v)).collect();
             match self.hostile {
-                "wrong-result" => match result {
+                "wrong-result" | "closes-fds" => match result {
                     Some(r) => result = Some(!r),
                     None => {
                         let i = word.expect("a vector with a word device");

@@ -64,7 +64,9 @@ fn the_shared_cases_read_byte_for_byte_as_the_expected_text() {
     };
     let report = plcvec::run(&suite, &mut implementation, &Selection::all(), None).unwrap();
     let expected = std::fs::read_to_string(text.join("expected.txt")).unwrap();
-    let got = report.text(false, None);
+    // The shared text carries `plcvec verify`'s declarations (`--choose`); this crate's own form
+    // is checked against TEXT.md's table below.
+    let got = report.text_as_plcvec_verify(false, None);
     assert!(got.len() > 1000 && got.contains("READINGS: 3 of 13"), "{got}");
     if got != expected {
         let first = got.lines().zip(expected.lines()).position(|(g, e)| g != e);
@@ -73,4 +75,17 @@ fn the_shared_cases_read_byte_for_byte_as_the_expected_text() {
             first.map(|n| n + 1)
         );
     }
+}
+
+#[test]
+fn the_declaration_is_the_one_text_md_gives_for_rust() {
+    // TEXT.md, "The declaration in each runner": the row for Rust, read from the page itself.
+    let page = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../parity/TEXT.md");
+    let page = std::fs::read_to_string(&page).unwrap_or_else(|e| panic!("{}: {e}", page.display()));
+    let row = page.lines().find(|l| l.starts_with("| Rust |")).expect("TEXT.md has a row for Rust");
+    let cell = row.trim_start_matches("| Rust |").trim().trim_end_matches('|').trim();
+    let declared = cell.trim_matches('`');
+    assert!(declared.starts_with("plcvec::Choices::new()"), "{row}");
+    let ours = plcvec::Report::declaration(&[("FX5-SM709-SCOPE", "all-words"), ("TADD-FLAGS-OFF", "set-only")]);
+    assert_eq!(ours, declared);
 }

@@ -1793,3 +1793,61 @@ impl Alternative for TaddErrorOrder {
         }
     }
 }
+
+/// The enum and the variant that declare `id=alternative` (`("Fx5Sm709Scope", "AllWords")`): the
+/// roll-up writes a declaration in the crate's own syntax (TEXT.md, "The declaration in each
+/// runner").
+pub(crate) fn declaration(id: &str, alternative: &str) -> Option<(&'static str, &'static str)> {
+    match (id, alternative) {
+        ("CP1E-NON-BCD", "error") => Some(("Cp1eNonBcd", "Error")),
+        ("CP1E-NON-BCD", "raw-bytes") => Some(("Cp1eNonBcd", "RawBytes")),
+        ("CP1E-OUT-OF-RANGE", "compared") => Some(("Cp1eOutOfRange", "Compared")),
+        ("CP1E-OUT-OF-RANGE", "error") => Some(("Cp1eOutOfRange", "Error")),
+        ("CP1E-ALL-MASKED", "error") => Some(("Cp1eAllMasked", "Error")),
+        ("CP1E-ALL-MASKED", "equal") => Some(("Cp1eAllMasked", "Equal")),
+        ("CP1E-ALL-MASKED", "not-compared") => Some(("Cp1eAllMasked", "NotCompared")),
+        ("CP1E-C-HIGH-BITS", "ignored") => Some(("Cp1eCHighBits", "Ignored")),
+        ("CP1E-C-HIGH-BITS", "error") => Some(("Cp1eCHighBits", "Error")),
+        ("CP1E-AND-OR-WHEN-OFF", "always-executed") => Some(("Cp1eAndOrWhenOff", "AlwaysExecuted")),
+        ("CP1E-AND-OR-WHEN-OFF", "and-skipped") => Some(("Cp1eAndOrWhenOff", "AndSkipped")),
+        ("CP1E-AND-OR-WHEN-OFF", "short-circuit") => Some(("Cp1eAndOrWhenOff", "ShortCircuit")),
+        ("CP1E-ER-FLAG", "reflects-each-execution") => Some(("Cp1eErFlag", "ReflectsEachExecution")),
+        ("CP1E-ER-FLAG", "held") => Some(("Cp1eErFlag", "Held")),
+        ("CP1E-ERROR-FLAGS", "kept") => Some(("Cp1eErrorFlags", "Kept")),
+        ("CP1E-ERROR-FLAGS", "off") => Some(("Cp1eErrorFlags", "Off")),
+        ("HOUR-OUTPUT-OFF", "latched") => Some(("HourOutputOff", "Latched")),
+        ("HOUR-OUTPUT-OFF", "recompared") => Some(("HourOutputOff", "Recompared")),
+        ("HOUR-INPUT-OFF", "hold") => Some(("HourInputOff", "Hold")),
+        ("HOUR-INPUT-OFF", "reset") => Some(("HourInputOff", "Reset")),
+        ("HOUR-INPUT-OFF", "hold-drop-fraction") => Some(("HourInputOff", "HoldDropFraction")),
+        ("HOUR-PRESET-ZERO", "immediate") => Some(("HourPresetZero", "Immediate")),
+        ("HOUR-PRESET-ZERO", "never") => Some(("HourPresetZero", "Never")),
+        ("HOUR-FIRST-SCAN", "counts") => Some(("HourFirstScan", "Counts")),
+        ("HOUR-FIRST-SCAN", "from-next-scan") => Some(("HourFirstScan", "FromNextScan")),
+        ("HOUR-PRESET-CHECK", "input-on") => Some(("HourPresetCheck", "InputOn")),
+        ("HOUR-PRESET-CHECK", "every-execution") => Some(("HourPresetCheck", "EveryExecution")),
+        ("HOUR-M8004-OFF", "never") => Some(("HourM8004Off", "Never")),
+        ("HOUR-M8004-OFF", "valid-preset") => Some(("HourM8004Off", "ValidPreset")),
+        ("HOUR-D1-OUT-OF-RANGE", "as-seconds") => Some(("HourD1OutOfRange", "AsSeconds")),
+        ("HOUR-D1-OUT-OF-RANGE", "error") => Some(("HourD1OutOfRange", "Error")),
+        ("FX5-SM709-SCOPE", "selected-fields") => Some(("Fx5Sm709Scope", "SelectedFields")),
+        ("FX5-SM709-SCOPE", "all-words") => Some(("Fx5Sm709Scope", "AllWords")),
+        ("FX5-SM709-SCOPE", "compared-operands") => Some(("Fx5Sm709Scope", "ComparedOperands")),
+        ("FX5-AND-OR-WHEN-OFF", "and-skipped") => Some(("Fx5AndOrWhenOff", "AndSkipped")),
+        ("FX5-AND-OR-WHEN-OFF", "always-executed") => Some(("Fx5AndOrWhenOff", "AlwaysExecuted")),
+        ("FX5-AND-OR-WHEN-OFF", "short-circuit") => Some(("Fx5AndOrWhenOff", "ShortCircuit")),
+        ("FX5-CLOCK-S2-DEVICE-RANGE", "ignored") => Some(("Fx5ClockS2DeviceRange", "Ignored")),
+        ("FX5-CLOCK-S2-DEVICE-RANGE", "checked") => Some(("Fx5ClockS2DeviceRange", "Checked")),
+        ("FX5-OR-ON-ERROR", "contact-off") => Some(("Fx5OrOnError", "ContactOff")),
+        ("FX5-OR-ON-ERROR", "result-off") => Some(("Fx5OrOnError", "ResultOff")),
+        ("TADD-FLAGS-OFF", "written-each-execution") => Some(("TaddFlagsOff", "WrittenEachExecution")),
+        ("TADD-FLAGS-OFF", "set-only") => Some(("TaddFlagsOff", "SetOnly")),
+        ("TADD-EXACT-24", "carry-at-24") => Some(("TaddExact24", "CarryAt24")),
+        ("TADD-EXACT-24", "carry-above-24") => Some(("TaddExact24", "CarryAbove24")),
+        ("TADD-ON-ERROR", "not-executed") => Some(("TaddOnError", "NotExecuted")),
+        ("TADD-ON-ERROR", "computed") => Some(("TaddOnError", "Computed")),
+        ("TADD-ERROR-ORDER", "device-range-first") => Some(("TaddErrorOrder", "DeviceRangeFirst")),
+        ("TADD-ERROR-ORDER", "field-range-first") => Some(("TaddErrorOrder", "FieldRangeFirst")),
+        _ => None,
+    }
+}
