@@ -112,9 +112,9 @@ impl<'a> Steps<'a> {
                     return;
                 }
                 if got != want {
-                    let scratch = self.vector.scratch();
+                    let skip = expected.passed_over(self.vector);
                     for (i, (g, w)) in got.iter().zip(want).enumerate() {
-                        if g != w && !scratch[i] {
+                        if g != w && !skip[i] {
                             let p = device_problem(self.vector, expected, previous.as_ref(), step, i, Field::Value(*g));
                             problems.push(p);
                         }
@@ -168,9 +168,9 @@ impl<'a> Steps<'a> {
                         None => problems.push(Problem::new(Some(step), name, Field::Unlisted, Field::Value(v), None)),
                     }
                 }
-                let scratch = self.vector.scratch();
+                let skip = expected.passed_over(self.vector);
                 for (i, (g, w)) in got.iter().zip(want).enumerate() {
-                    if scratch[i] || *g == Some(*w) || twice.contains(&i) {
+                    if skip[i] || *g == Some(*w) || twice.contains(&i) {
                         continue;
                     }
                     let actual = g.map_or(Field::Missing, Field::Value);

@@ -33,6 +33,14 @@ pub struct Expected {
     pub(crate) defaults: Vec<(String, String)>,
     /// The outcome category under these alternatives (`value`, `error`, `implementation-defined`).
     pub category: String,
+    /// Per interpretation whose followed alternative leaves devices unjudged, their slots
+    /// (unjudged.md); empty for most vectors.
+    pub(crate) unjudged: Vec<(String, Vec<usize>)>,
+    /// Per slot, whether it is left unjudged (empty when none is).
+    unjudged_slots: Vec<bool>,
+    /// Per slot, whether a comparison passes it over: scratch or unjudged (empty when nothing is
+    /// unjudged: the vector's scratch table says it).
+    passed_over: Vec<bool>,
 }
 
 impl Expected {
@@ -80,8 +88,20 @@ impl Expected {
             results.push(expect.result);
         }
         let last = &state;
-        let scratch = vector.scratch();
-        let listed = vector.devices().iter().zip(last).zip(scratch).filter(|(_, &s)| !s);
+        let mut unjudged_slots = Vec::new();
+        if !chosen.unjudged.is_empty() {
+            unjudged_slots = vec![false; state.len()];
+            for &slot in chosen.unjudged.iter().flat_map(|(_, slots)| slots) {
+                unjudged_slots[slot] = true;
+            }
+        }
+        let passed_over: Vec<bool> = if unjudged_slots.is_empty() {
+            Vec::new()
+        } else {
+            vector.scratch().iter().zip(&unjudged_slots).map(|(s, u)| *s || *u).collect()
+        };
+        let skip = if passed_over.is_empty() { vector.scratch() } else { &passed_over };
+        let listed = vector.devices().iter().zip(last).zip(skip).filter(|(_, &s)| !s);
         let consistent = listed.clone().count() == chosen.final_devices.len()
             && listed.clone().all(|((a, v), _)| chosen.final_devices.get(a.name()) == Some(v));
         if !consistent {
@@ -97,7 +117,26 @@ impl Expected {
             choices: applied,
             defaults: touched_defaults,
             category: chosen.category.clone(),
+            unjudged: chosen.unjudged.clone(),
+            unjudged_slots,
+            passed_over,
         })
+    }
+
+    /// Whether the expectation leaves a slot unjudged (an alternative's `unjudged`).
+    #[inline]
+    pub(crate) fn is_unjudged(&self, slot: usize) -> bool {
+        self.unjudged_slots.get(slot).copied().unwrap_or(false)
+    }
+
+    /// Per slot of `vector`, whether a comparison passes it over: scratch, or unjudged.
+    #[inline]
+    pub(crate) fn passed_over<'a>(&'a self, vector: &'a Vector) -> &'a [bool] {
+        if self.passed_over.is_empty() {
+            vector.scratch()
+        } else {
+            &self.passed_over
+        }
     }
 
     /// How many steps the vector has.
@@ -153,9 +192,21 @@ pub fn check_choices(suite: &Suite, choices: &Choices) -> Result<()> {
 }
 
 impl Expected {
-    /// Whether `other` expects the same of every step (each result and the full state).
+    /// Whether a vector that passes under `self` passes under `other` (unjudged.md): every step's
+    /// result equal, and every device `other` judges expected alike (value and type) by both; a
+    /// device `other` judges but `self` leaves unjudged is not known to be equal.
     pub(crate) fn same_outcome(&self, other: &Expected) -> bool {
-        self.results == other.results && self.states == other.states
+        if self.results != other.results {
+            return false;
+        }
+        if self.unjudged_slots.is_empty() && other.unjudged_slots.is_empty() {
+            return self.states == other.states;
+        }
+        let slots = self.slots.max(1);
+        self.states.iter().zip(other.states.iter()).enumerate().all(|(n, (a, b))| {
+            let slot = n % slots;
+            other.is_unjudged(slot) || (!self.is_unjudged(slot) && a == b)
+        })
     }
 
     /// The combinations of alternatives the vector offers an expectation for: its own (every

@@ -48,17 +48,42 @@ fn kind(t: &fs::FileType) -> &'static str {
         if t.is_socket() {
             return "a socket";
         }
-        if t.is_char_device() || t.is_block_device() {
-            return "a device";
+        if t.is_char_device() {
+            return "a character device";
+        }
+        if t.is_block_device() {
+            return "a block device";
         }
     }
     "not a file"
 }
 
-/// A regular file's bytes.
+/// A regular file's bytes. The file is opened without waiting (a named pipe put there after the
+/// look would otherwise block the open) and looked at again through the descriptor.
 pub(crate) fn read_bytes(path: &Path) -> Result<Vec<u8>> {
+    use std::io::Read;
     check_regular(path)?;
-    fs::read(path).map_err(|e| Error::new(format!("{}: cannot read: {e}", path.display())))
+    let cannot = |e: std::io::Error| Error::new(format!("{}: cannot read: {e}", path.display()));
+    let mut file = open_without_waiting(path).map_err(cannot)?;
+    if !file.metadata().map_err(cannot)?.is_file() {
+        return Err(Error::new(format!("{}: not a regular file", path.display())));
+    }
+    let mut bytes = Vec::new();
+    file.read_to_end(&mut bytes).map_err(cannot)?;
+    Ok(bytes)
+}
+
+fn open_without_waiting(path: &Path) -> std::io::Result<fs::File> {
+    let mut options = fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        // O_NONBLOCK (no libc in this crate): a regular file reads as ever with it.
+        const O_NONBLOCK: i32 = if cfg!(any(target_os = "linux", target_os = "android")) { 0o4000 } else { 0x0004 };
+        options.custom_flags(O_NONBLOCK);
+    }
+    options.open(path)
 }
 
 /// The bytes as text, or the line and column of the first byte that is not UTF-8.
@@ -93,7 +118,7 @@ mod tests {
         assert_eq!(message(&dir), format!("{}: not a regular file (a folder)", dir.display()));
         let device = dir.join("zero.json");
         std::os::unix::fs::symlink("/dev/zero", &device).unwrap();
-        assert_eq!(message(&device), format!("{}: not a regular file (a device)", device.display()));
+        assert_eq!(message(&device), format!("{}: not a regular file (a character device)", device.display()));
         let looped = dir.join("loop.json");
         std::os::unix::fs::symlink("loop.json", &looped).unwrap();
         assert_eq!(message(&looped), format!("{}: a loop of symbolic links", looped.display()));

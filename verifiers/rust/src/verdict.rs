@@ -158,6 +158,7 @@ pub fn describe(vector: &Vector, expected: Option<&Expected>, verdict: &Verdict)
             let list: Vec<String> = deciding.iter().map(|(i, a)| format!("{i}={a}")).collect();
             lines.push(format!("{INDENT}judged by: {}", list.join(", ")));
         }
+        lines.extend(not_judged(vector, e));
     }
     let mut shown_step = None;
     for p in verdict.problems.iter().take(SHOW_PROBLEMS) {
@@ -202,8 +203,9 @@ pub(crate) fn judged_by(vector: &Vector, expected: &Expected, problems: &[Proble
             if p.field == "result" {
                 return expected.results().get(step) != other.results().get(step);
             }
+            // unjudged.md: it decides a field the other reading leaves unjudged, too.
             match (vector.slot(&p.field), expected.state(step), other.state(step)) {
-                (Some(slot), Some(a), Some(b)) => a[slot] != b[slot],
+                (Some(slot), Some(a), Some(b)) => a[slot] != b[slot] || other.is_unjudged(slot),
                 _ => false,
             }
         });
@@ -214,6 +216,24 @@ pub(crate) fn judged_by(vector: &Vector, expected: &Expected, problems: &[Proble
     }
     out.sort();
     out
+}
+
+/// `not judged under <ID>=<alternative>: <device>, ...`, one line per interpretation whose
+/// followed alternative leaves devices unjudged, sorted by ID (unjudged.md, "The failure block").
+fn not_judged(vector: &Vector, expected: &Expected) -> Vec<String> {
+    let mut lines: Vec<(&str, String)> = expected
+        .unjudged
+        .iter()
+        .map(|(interpretation, slots)| {
+            let alternative = expected.choices.iter().find(|(i, _)| i == interpretation).map_or("", |(_, a)| a.as_str());
+            let mut devices: Vec<&str> = slots.iter().map(|&s| vector.devices()[s].name()).collect();
+            devices.sort_unstable();
+            let line = format!("{INDENT}not judged under {interpretation}={alternative}: {}", devices.join(", "));
+            (interpretation.as_str(), line)
+        })
+        .collect();
+    lines.sort();
+    lines.into_iter().map(|(_, line)| line).collect()
 }
 
 /// A step's inputs: `clock=4:02:41, rlo_in=true`, then its `set`.

@@ -5,7 +5,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use plcvec::{Choices, Implementation, Refusal, Selection, Steps, Suite, Value, Vector};
+use plcvec::{Choices, Implementation, KnownFailures, Refusal, Selection, Steps, Suite, Value, Vector};
 
 /// Answers each vector as `answers.json` says, declaring what its `hello` declares.
 struct Answers {
@@ -48,11 +48,11 @@ impl Implementation for Answers {
     }
 }
 
-#[test]
-fn the_shared_cases_read_byte_for_byte_as_the_expected_text() {
-    // The shared cases are the repository's (verifiers/parity/text): this test lives in the
-    // unpublished reference crate for that reason. Without them there is nothing to compare,
-    // which is a failure, not a pass.
+/// The shared cases' run (verifiers/parity/text), with the known failures of `known.toml` when
+/// `known`, in the text of that run that does not depend on the machine.
+fn shared_text(known: bool) -> (String, String) {
+    // The shared cases are the repository's: this test lives in the unpublished reference crate
+    // for that reason. Without them there is nothing to compare, which is a failure, not a pass.
     let text = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../parity/text");
     assert!(text.is_dir(), "{}: the shared cases are not there", text.display());
     let suite = Suite::load(text.join("vectors")).unwrap();
@@ -62,12 +62,19 @@ fn the_shared_cases_read_byte_for_byte_as_the_expected_text() {
         hello: answers["hello"].clone(),
         answers: answers["answers"].as_object().unwrap().clone().into_iter().collect(),
     };
-    let report = plcvec::run(&suite, &mut implementation, &Selection::all(), None).unwrap();
-    let expected = std::fs::read_to_string(text.join("expected.txt")).unwrap();
+    // The file as the expected text names it: `known.toml`, from the folder of the cases.
+    let known = known.then(|| {
+        KnownFailures::parse("known.toml", &std::fs::read_to_string(text.join("known.toml")).unwrap()).unwrap()
+    });
+    let report = plcvec::run(&suite, &mut implementation, &Selection::all(), known.as_ref()).unwrap();
+    let expected = if known.is_some() { "expected-known.txt" } else { "expected.txt" };
+    let expected = std::fs::read_to_string(text.join(expected)).unwrap();
     // The shared text carries `plcvec verify`'s declarations (`--choose`); this crate's own form
     // is checked against TEXT.md's table below.
-    let got = report.text_as_plcvec_verify(false, None);
-    assert!(got.len() > 1000 && got.contains("READINGS: 3 of 13"), "{got}");
+    (report.text_as_plcvec_verify(false, None), expected)
+}
+
+fn assert_same(got: &str, expected: &str) {
     if got != expected {
         let first = got.lines().zip(expected.lines()).position(|(g, e)| g != e);
         panic!(
@@ -75,6 +82,20 @@ fn the_shared_cases_read_byte_for_byte_as_the_expected_text() {
             first.map(|n| n + 1)
         );
     }
+}
+
+#[test]
+fn the_shared_cases_read_byte_for_byte_as_the_expected_text() {
+    let (got, expected) = shared_text(false);
+    assert!(got.len() > 1000 && got.contains("READINGS: 3 of 13"), "{got}");
+    assert_same(&got, &expected);
+}
+
+#[test]
+fn the_shared_cases_with_their_known_failures_read_as_the_expected_text() {
+    let (got, expected) = shared_text(true);
+    assert!(got.contains("KNOWN FAILURES: 1 of 2 known failures"), "{got}");
+    assert_same(&got, &expected);
 }
 
 #[test]
