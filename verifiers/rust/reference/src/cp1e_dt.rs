@@ -67,10 +67,7 @@ fn bcd_value(b: u8) -> u8 {
 
 impl Cp1eTimeCompare {
     pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> Cp1eTimeCompare {
-        let mut er_flag = choices.get::<Cp1eErFlag>();
-        if mutant == Some(Mutant::Cp1eErFlagHeld) {
-            er_flag = Cp1eErFlag::Held; // declared as it is, implemented otherwise
-        }
+        let er_flag = choices.get::<Cp1eErFlag>();
         Cp1eTimeCompare {
             non_bcd: choices.get(),
             out_of_range: choices.get(),
@@ -126,8 +123,11 @@ impl Cp1eTimeCompare {
         // execution without a comparison result: the six flags keep their values, or
         // (CP1E-ERROR-FLAGS=off) are all written off.
         let error_flags = self.error_flags;
+        let sets_error_flag = !self.bug(Mutant::Cp1eErFlagNotSet);
         let error = |mem: &mut Memory<'_>| {
-            mem.set_bit(ERROR_FLAG, true);
+            if sets_error_flag {
+                mem.set_bit(ERROR_FLAG, true);
+            }
             if error_flags == Cp1eErrorFlags::Off {
                 for flag in FLAGS {
                     mem.set_bit(flag, false);
@@ -160,8 +160,9 @@ impl Cp1eTimeCompare {
         let mut order = Ordering::Equal;
         for f in unmasked {
             let (a, b) = (byte(&s1, f), byte(&s2, f));
-            for raw in [a, b] {
-                if !is_bcd(raw) && !self.bug(Mutant::Cp1eBcdReadAsBinary) {
+            for (k, raw) in [a, b].into_iter().enumerate() {
+                let unchecked = k == 1 && self.bug(Mutant::Cp1eS2BcdUnchecked);
+                if !is_bcd(raw) && !unchecked {
                     // "Second (00 to 59, BCD)" ... (CP1E-NON-BCD)
                     if self.non_bcd == Cp1eNonBcd::Error {
                         return error(mem);

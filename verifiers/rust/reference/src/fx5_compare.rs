@@ -63,10 +63,7 @@ enum Contact {
 
 impl Fx5Compare {
     pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> Fx5Compare {
-        let mut logic = choices.get::<Fx5AndOrWhenOff>();
-        if mutant == Some(Mutant::Fx5AndExecutedWhenOff) {
-            logic = Fx5AndOrWhenOff::AlwaysExecuted; // declared as it is, implemented otherwise
-        }
+        let logic = choices.get::<Fx5AndOrWhenOff>();
         Fx5Compare { scope: choices.get(), logic, clock_s2: choices.get(), or_on_error: choices.get(), mutant }
     }
 
@@ -92,6 +89,9 @@ impl Fx5Compare {
             Form::Ld => self.contact(kind, condition, vector, step, mem),
             Form::And => {
                 let rlo = rlo_in(step)?;
+                if !rlo && self.bug(Mutant::Fx5AndAsLdWhenOff) {
+                    return self.contact(kind, condition, vector, step, mem);
+                }
                 if !rlo && matches!(logic, Fx5AndOrWhenOff::AndSkipped | Fx5AndOrWhenOff::ShortCircuit) {
                     return Ok(false);
                 }

@@ -15,8 +15,8 @@ pub enum Mutant {
     Fx5Sm709NotLatched,
     /// (s1)..(s1)+2 and (s2)..(s2)+2 are not checked against the device range.
     Fx5DeviceRangeUnchecked,
-    /// Declares FX5-AND-OR-WHEN-OFF=and-skipped but executes AND while the preceding logic is off.
-    Fx5AndExecutedWhenOff,
+    /// An AND form while the preceding logic is off passes on its own comparison, as LD would.
+    Fx5AndAsLdWhenOff,
     /// A sum of exactly 24:00:00 is stored as 24:00:00 with neither flag.
     TaddNoWrapAt24,
     /// Only SM700 is written as the carry flag; SM8022 is left alone.
@@ -31,14 +31,14 @@ pub enum Mutant {
     HourDropsFraction,
     /// D2 is turned off when D1 wraps to 0:00:00, instead of remaining on.
     HourWrapClearsD2,
-    /// The time bytes are compared as binary without checking that they are BCD.
-    Cp1eBcdReadAsBinary,
+    /// Only S1 is checked for BCD: a non-BCD byte of S2 is compared as binary.
+    Cp1eS2BcdUnchecked,
     /// AND =DT ... AND >=DT combine with the preceding logic as OR does.
     Cp1eAndAsOr,
     /// The arithmetic flags (=, <>, <, <=, >, >=) are left alone.
     Cp1eFlagsNotReflected,
-    /// Declares CP1E-ER-FLAG=reflects-each-execution but never turns P_ER off.
-    Cp1eErFlagHeld,
+    /// An execution that ends in error does not turn P_ER on (the rest of the error is handled).
+    Cp1eErFlagNotSet,
 }
 
 impl Mutant {
@@ -48,7 +48,7 @@ impl Mutant {
         Mutant::Fx5ReservedBitsIgnored,
         Mutant::Fx5Sm709NotLatched,
         Mutant::Fx5DeviceRangeUnchecked,
-        Mutant::Fx5AndExecutedWhenOff,
+        Mutant::Fx5AndAsLdWhenOff,
         Mutant::TaddNoWrapAt24,
         Mutant::TaddSm8022NotWritten,
         Mutant::TaddpEveryScan,
@@ -56,10 +56,10 @@ impl Mutant {
         Mutant::HourOutputAbovePreset,
         Mutant::HourDropsFraction,
         Mutant::HourWrapClearsD2,
-        Mutant::Cp1eBcdReadAsBinary,
+        Mutant::Cp1eS2BcdUnchecked,
         Mutant::Cp1eAndAsOr,
         Mutant::Cp1eFlagsNotReflected,
-        Mutant::Cp1eErFlagHeld,
+        Mutant::Cp1eErFlagNotSet,
     ];
 
     /// The mutant's name (`tadd-no-wrap-at-24`), as the adapter's `--mutant` takes it.
@@ -69,7 +69,7 @@ impl Mutant {
             Mutant::Fx5ReservedBitsIgnored => "fx5-reserved-bits-ignored",
             Mutant::Fx5Sm709NotLatched => "fx5-sm709-not-latched",
             Mutant::Fx5DeviceRangeUnchecked => "fx5-device-range-unchecked",
-            Mutant::Fx5AndExecutedWhenOff => "fx5-and-executed-when-off",
+            Mutant::Fx5AndAsLdWhenOff => "fx5-and-as-ld-when-off",
             Mutant::TaddNoWrapAt24 => "tadd-no-wrap-at-24",
             Mutant::TaddSm8022NotWritten => "tadd-sm8022-not-written",
             Mutant::TaddpEveryScan => "taddp-every-scan",
@@ -77,10 +77,10 @@ impl Mutant {
             Mutant::HourOutputAbovePreset => "hour-output-above-preset",
             Mutant::HourDropsFraction => "hour-drops-fraction",
             Mutant::HourWrapClearsD2 => "hour-wrap-clears-d2",
-            Mutant::Cp1eBcdReadAsBinary => "cp1e-bcd-read-as-binary",
+            Mutant::Cp1eS2BcdUnchecked => "cp1e-s2-bcd-unchecked",
             Mutant::Cp1eAndAsOr => "cp1e-and-as-or",
             Mutant::Cp1eFlagsNotReflected => "cp1e-flags-not-reflected",
-            Mutant::Cp1eErFlagHeld => "cp1e-er-flag-held",
+            Mutant::Cp1eErFlagNotSet => "cp1e-er-flag-not-set",
         }
     }
 
@@ -91,7 +91,7 @@ impl Mutant {
             | Mutant::Fx5ReservedBitsIgnored
             | Mutant::Fx5Sm709NotLatched
             | Mutant::Fx5DeviceRangeUnchecked
-            | Mutant::Fx5AndExecutedWhenOff => &[Family::Fx5TimeCompare, Family::Fx5DateCompare],
+            | Mutant::Fx5AndAsLdWhenOff => &[Family::Fx5TimeCompare, Family::Fx5DateCompare],
             Mutant::TaddNoWrapAt24
             | Mutant::TaddSm8022NotWritten
             | Mutant::TaddpEveryScan
@@ -99,10 +99,10 @@ impl Mutant {
             Mutant::HourOutputAbovePreset | Mutant::HourDropsFraction | Mutant::HourWrapClearsD2 => {
                 &[Family::Fc6aHourMeter]
             }
-            Mutant::Cp1eBcdReadAsBinary
+            Mutant::Cp1eS2BcdUnchecked
             | Mutant::Cp1eAndAsOr
             | Mutant::Cp1eFlagsNotReflected
-            | Mutant::Cp1eErFlagHeld => &[Family::Cp1eTimeCompare],
+            | Mutant::Cp1eErFlagNotSet => &[Family::Cp1eTimeCompare],
         }
     }
 
