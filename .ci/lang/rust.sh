@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # The Rust verifier (verifiers/rust/, the `plcvec` crate): lint, build and test it with cargo,
-# run the README's example, and gate its reference implementation through `plcvec verify`.
+# run the README's blocks as written, check the public API against the 0.1.0 release, and gate its
+# reference implementation through `plcvec verify` and the shared table of faults.
 # Run from the repository root by .ci/run, after the Python package is installed.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 cd "$(dirname "$0")/../.."
 crate=verifiers/rust
 export CARGO_BUILD_JOBS=2 CARGO_TERM_COLOR=never
+# The release the public API is checked against (the crate's 0.1.0).
+api_baseline=9ebc6da
 started=$SECONDS
 step() { echo "-- rust: $* ($((SECONDS - started)) s)"; }
 
@@ -20,30 +23,34 @@ for component in rustfmt clippy; do
         rustup component add "$component"
     fi
 done
+scratch=$(mktemp -d)
+cleanup() {
+    git worktree remove --force "$scratch/baseline" >/dev/null 2>&1 || true
+    rm -rf "$scratch"
+}
+trap cleanup EXIT
 
 step "fetch (Cargo.lock is committed: the same dependency versions on every run)"
-cargo fetch --locked --manifest-path "$crate/Cargo.toml"
+cargo fetch --locked --manifest-path "$crate/Cargo.toml" -q
 
 step "cargo fmt --check"
 cargo fmt --manifest-path "$crate/Cargo.toml" --all --check
 
 step "cargo clippy --all-targets -D warnings"
-cargo clippy --locked --manifest-path "$crate/Cargo.toml" --workspace --all-targets -- -D warnings
+cargo clippy --locked --quiet --manifest-path "$crate/Cargo.toml" --workspace --all-targets -- -D warnings
 
 # Release: the reference adapter below and the benchmark reuse the same build.
-step "cargo test (one test per vector under the reference, mutants, loading, the harness)"
+step "cargo test (one test per vector under the reference, mutants, loading, the harness, no import circle)"
 cargo test --locked --release --manifest-path "$crate/Cargo.toml" --workspace
 
 step "the crate's LICENSE is the repository's (MIT asks for the notice in every copy)"
 cmp LICENSE "$crate/LICENSE"
 
-step "the README's emulator, extracted from the README and run as an outside crate"
-readme=$(mktemp -d)
-trap 'rm -rf "$readme"' EXIT
-python3 .ci/readme_snippets.py extract "$crate/README.md" --out "$readme" >/dev/null
-# The README depends on plcvec = "0.2" from crates.io: this checkout's crate stands in for it.
-printf '\n[workspace]\n\n[patch.crates-io]\nplcvec = { path = "%s" }\n' "$PWD/$crate" >> "$readme/emulator/Cargo.toml"
-(cd "$readme/emulator" && CARGO_TARGET_DIR="$OLDPWD/$crate/target/readme" bash -euo pipefail run.sh >/dev/null)
+step "the README's blocks as written: the emulator, from an empty folder, as an outside crate"
+python3 .ci/readme_snippets.py extract "$crate/README.md" --out "$scratch/readme" >/dev/null
+# The README depends on plcvec from crates.io: this checkout's crate stands in for it.
+printf '\n[workspace]\n\n[patch.crates-io]\nplcvec = { path = "%s" }\n' "$PWD/$crate" >> "$scratch/readme/emulator/Cargo.toml"
+(cd "$scratch/readme/emulator" && CARGO_TARGET_DIR="$OLDPWD/$crate/target/readme" bash -euo pipefail run.sh >/dev/null)
 
 step "the published crate holds neither the reference implementation nor its mutants"
 # They are the unpublished plcvec-reference crate (verifiers/rust/reference), an outside user of
@@ -64,20 +71,50 @@ if echo "$published" | grep '^warning:' | grep -v 'aborting upload due to dry ru
     exit 1
 fi
 
-step "the declared rust-version (1.82) builds the committed Cargo.lock"
+step "the declared rust-version (1.82) builds the committed Cargo.lock and packages the crate without a warning"
 # Cargo.lock is resolved with CARGO_RESOLVER_INCOMPATIBLE_RUST_VERSIONS=fallback (stable cargo),
-# which keeps every dependency at a version whose rust-version is 1.82 or older.
+# which keeps every dependency at a version whose rust-version is 1.82 or older. The package is
+# not built again by 1.82 (--no-verify): cargo 1.82 resolves a packaged library afresh, to
+# versions that need 1.85 (README, "Rust 1.82 to 1.84"); the check above builds it with the lock.
 rustup toolchain install 1.82 --profile minimal >/dev/null 2>&1 || {
     echo "rust.sh: cannot install the 1.82 toolchain with rustup" >&2; exit 1; }
-CARGO_TARGET_DIR="$crate/target/msrv" cargo +1.82 check --locked --manifest-path "$crate/Cargo.toml" --workspace --all-targets
+CARGO_TARGET_DIR="$crate/target/msrv" cargo +1.82 check --quiet --locked --manifest-path "$crate/Cargo.toml" --workspace --all-targets
+packaged=$(CARGO_TARGET_DIR="$crate/target/msrv" cargo +1.82 package --locked --no-verify --allow-dirty \
+    --manifest-path "$crate/Cargo.toml" -p plcvec 2>&1) || { echo "$packaged"; exit 1; }
+if echo "$packaged" | grep -i '^warning'; then
+    echo "rust.sh: cargo +1.82 package warns (above)" >&2
+    exit 1
+fi
+
+step "the public API against the 0.1.0 release ($api_baseline): every breaking change listed under Breaking"
+# rustdoc's JSON of both, compared by verifiers/rust/api/public_api.py (why not cargo-semver-checks:
+# its docstring). Built on stable, as rustdoc writes JSON there with RUSTC_BOOTSTRAP=1.
+rustdoc_json() {  # <crate folder> <target dir>
+    RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="$2" cargo rustdoc --quiet --locked --manifest-path "$1/Cargo.toml" \
+        -p plcvec --lib -- -Z unstable-options --output-format json
+}
+git worktree add --quiet --detach "$scratch/baseline" "$api_baseline"
+rustdoc_json "$scratch/baseline/$crate" "$crate/target/api-baseline"
+rustdoc_json "$crate" "$crate/target/api"
+version=$(sed -n 's/^version = "\(.*\)"$/\1/p' "$crate/Cargo.toml" | head -1)
+api=(python3 "$crate/api/public_api.py")
+"${api[@]}" diff "$crate/target/api-baseline/doc/plcvec.json" "$crate/target/api/doc/plcvec.json" \
+    --changes CHANGES.md --version "$version" --fragments changes.d
+# The check fails on a rename nobody listed: `shard_of` renamed in a copy of today's API.
+sed 's/"name":"shard_of"/"name":"shard_number"/' "$crate/target/api/doc/plcvec.json" > "$scratch/renamed.json"
+if "${api[@]}" diff "$crate/target/api/doc/plcvec.json" "$scratch/renamed.json" \
+    --changes "$scratch/none" --version "$version" 2> "$scratch/renamed.txt"; then
+    echo "rust.sh: public_api.py passed a rename of shard_of that no Breaking section lists" >&2
+    exit 1
+fi
+grep -q 'shard_of: removed' "$scratch/renamed.txt" || { cat "$scratch/renamed.txt" >&2; exit 1; }
 
 step "the shared table of faults (verifiers/parity/faults.toml) through the cargo test harness"
 verifiers/rust/faults-entry --build
 python3 verifiers/parity/run.py --lang rust --no-build
 
-step "the reference over the stdio protocol: plcvec verify (built first, as the README says)"
-"$crate/reference-adapter" --build
-python3 -m plcvec verify --adapter "$crate/reference-adapter" -q
+step "the README's reference over the stdio protocol, from the repository root as written"
+bash -euo pipefail "$scratch/readme/repo/reference-adapter.sh"
 step "the gate rejects a mutant of the reference served over stdio"
 gate_rejects rust "$crate/reference-adapter --mutant tadd-device-range-unchecked" --family fx5-time-add
 step "done"

@@ -24,7 +24,8 @@ fn is_loop(e: &std::io::Error) -> bool {
     // ErrorKind::FilesystemLoop is not stable on the crate's rust-version: the OS's own code.
     #[cfg(unix)]
     {
-        const ELOOP: i32 = if cfg!(any(target_os = "macos", target_os = "ios", target_os = "freebsd")) { 62 } else { 40 };
+        const ELOOP: i32 =
+            if cfg!(any(target_os = "macos", target_os = "ios", target_os = "freebsd")) { 62 } else { 40 };
         e.raw_os_error() == Some(ELOOP)
     }
     #[cfg(not(unix))]

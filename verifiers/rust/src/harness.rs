@@ -78,9 +78,9 @@ mod watchdog;
 use record::Record;
 use session::Shared;
 use supervisor::{supervise, Progress, EACH_VECTOR_ENV, PROGRESS_ENV};
-use watchdog::Watch;
 #[doc(hidden)]
 pub use watchdog::Guard;
+use watchdog::Watch;
 
 /// Run every selected vector as its own test with implementations `factory` builds (one per
 /// vector, so nothing carries over), and return the process's exit code.
@@ -240,6 +240,12 @@ where
     pub fn known_failures(mut self, path: impl Into<PathBuf>) -> Self {
         self.known_failures = Some(path.into());
         self
+    }
+
+    /// Read known failures from this file: the name [`Harness::known_failures`] had in plcvec 0.1.
+    #[deprecated(since = "0.2.0", note = "renamed `known_failures`, after the known-failures file it reads")]
+    pub fn expectations(self, path: impl Into<PathBuf>) -> Self {
+        self.known_failures(path)
     }
 
     /// Write the run's failures to this file as known failures (instead of

@@ -265,8 +265,12 @@ pub(crate) fn rollup(cases: &[Case<'_>], r: &Rollup<'_>) -> String {
         ));
         let (lines, partial) = groups(cases, &inference.explained, &inference.unexplained, "failing vectors");
         out.push_str(&lines);
-        let declare: Vec<(String, String)> =
-            inference.choice.iter().filter(|(i, a)| r.followed.get(*i) != Some(a)).map(|(i, a)| (i.clone(), a.clone())).collect();
+        let declare: Vec<(String, String)> = inference
+            .choice
+            .iter()
+            .filter(|(i, a)| r.followed.get(*i) != Some(a))
+            .map(|(i, a)| (i.clone(), a.clone()))
+            .collect();
         out.push_str(&format!("    declare: {}\n", declaration(r.syntax, &declare)));
         if inference.broken > 0 {
             out.push_str(&format!("    (so declared, {} vectors that pass now would fail)\n", inference.broken));
@@ -291,8 +295,7 @@ fn known_failures(cases: &[Case<'_>], r: &Rollup<'_>, known_count: usize) -> Str
     let inference = r.inference;
     let k = inference.explained_known.len();
     let mut out = format!("KNOWN FAILURES: {k} of {known_count} known failures pass under other alternatives:\n");
-    let unexplained: Vec<usize> =
-        inference.unexplained.iter().chain(&inference.unexplained_known).copied().collect();
+    let unexplained: Vec<usize> = inference.unexplained.iter().chain(&inference.unexplained_known).copied().collect();
     let what = "failing vectors and known failures";
     out.push_str(&groups(cases, &inference.explained_known, &unexplained, what).0);
     let changed: std::collections::BTreeSet<&String> =
@@ -307,7 +310,12 @@ fn known_failures(cases: &[Case<'_>], r: &Rollup<'_>, known_count: usize) -> Str
 /// The group lines of explained vectors (by their smallest change, largest group first, then by
 /// text), each marked partial when an unexplained vector (`unexplained`, worded as `what`) is of a
 /// family the group's vectors are of; and how many unexplained vectors the partial groups reach.
-fn groups(cases: &[Case<'_>], explained: &[(usize, Combination)], unexplained: &[usize], what: &str) -> (String, usize) {
+fn groups(
+    cases: &[Case<'_>],
+    explained: &[(usize, Combination)],
+    unexplained: &[usize],
+    what: &str,
+) -> (String, usize) {
     let mut by_change: BTreeMap<String, Vec<usize>> = BTreeMap::new();
     for (k, change) in explained {
         let text: Vec<String> = change.iter().map(|(i, a)| format!("{i}={a}")).collect();

@@ -25,8 +25,8 @@
 mod choices;
 mod compare;
 mod error;
-mod files;
 mod expect;
+mod files;
 // Rendered by `plcvec export --lang rust` (its folder holds nothing else; not formatted by hand).
 #[rustfmt::skip]
 mod generated {

@@ -143,7 +143,9 @@ mod tests {
         for (text, ms) in [("10", 10_000), ("2.5", 2_500), ("0.5", 500), ("86400", 86_400_000), ("007.250", 7_250)] {
             assert_eq!(seconds("PLCVEC_TIMEOUT", text), Ok(Duration::from_millis(ms)), "{text}");
         }
-        for text in ["0", "0.0", "86400.5", "86401", "1e9", "1e12", "-1", "+2", " 2", "2.", ".5", "inf", "NaN", "", "1_0"] {
+        for text in
+            ["0", "0.0", "86400.5", "86401", "1e9", "1e12", "-1", "+2", " 2", "2.", ".5", "inf", "NaN", "", "1_0"]
+        {
             let e = seconds("PLCVEC_TIMEOUT", text).unwrap_err();
             assert_eq!(
                 e.message(),
@@ -170,14 +172,17 @@ mod tests {
         assert_eq!(warn(&["PLCVEC_TAGG"]), ["warning: PLCVEC_TAGG is not a plcvec setting; did you mean PLCVEC_TAG?"]);
         let colour = warn(&["PLCVEC_COLOUR"]);
         assert!(
-            colour[0].starts_with("warning: PLCVEC_COLOUR is not a plcvec setting; the settings are PLCVEC_VECTORS, PLCVEC_ID, "),
+            colour[0].starts_with(
+                "warning: PLCVEC_COLOUR is not a plcvec setting; the settings are PLCVEC_VECTORS, PLCVEC_ID, "
+            ),
             "{colour:?}"
         );
     }
 
     #[test]
     fn settings_reserved_names_and_other_variables_earn_nothing() {
-        let quiet = ["PLCVEC_TAG", "PLCVEC_HOSTILE", "PLCVEC_HARNESS_PROGRESS", "PLCVEC_TEST_ANYTHING", "HOME", "plcvec_tag"];
+        let quiet =
+            ["PLCVEC_TAG", "PLCVEC_HOSTILE", "PLCVEC_HARNESS_PROGRESS", "PLCVEC_TEST_ANYTHING", "HOME", "plcvec_tag"];
         assert_eq!(warn(&quiet), Vec::<String>::new());
     }
 

@@ -41,7 +41,9 @@ pub struct InterpretationInfo {
 }
 
 /// A map of names that holds no key twice (`unique`), kept as the `BTreeMap` the public field is.
-fn unique_map<'de, D: serde::Deserializer<'de>, V: Deserialize<'de>>(d: D) -> std::result::Result<BTreeMap<String, V>, D::Error> {
+fn unique_map<'de, D: serde::Deserializer<'de>, V: Deserialize<'de>>(
+    d: D,
+) -> std::result::Result<BTreeMap<String, V>, D::Error> {
     Ok(Unique::<V>::deserialize(d)?.0)
 }
 
@@ -388,7 +390,8 @@ fn read_sealed(path: &Path, sha256: &str, index: &Path) -> Result<(String, Seal)
 fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T> {
     let text = read_text(path)?;
     let refused = |e: serde_json::Error| {
-        let what = if unique::is_repeated(&e) { unique::message(&e) } else { format!("not a readable plcvec file ({e})") };
+        let what =
+            if unique::is_repeated(&e) { unique::message(&e) } else { format!("not a readable plcvec file ({e})") };
         Error::new(format!("{}:{}: {what}", path.display(), e.line()))
     };
     serde_json::from_str::<unique::NoRepeats>(&text).map_err(refused)?;
@@ -439,7 +442,8 @@ fn parse_jsonl(name: &str, text: &str, count: Option<usize>) -> Result<(FamilyIn
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, first) = lines.next().ok_or_else(|| Error::new(format!("{name}: empty file")))?;
     let header: FamilyInfo = serde_json::from_str(first).map_err(|e| {
-        let what = if unique::is_repeated(&e) { unique::message(&e) } else { format!("not a plcvec family header ({e})") };
+        let what =
+            if unique::is_repeated(&e) { unique::message(&e) } else { format!("not a plcvec family header ({e})") };
         Error::new(format!("{name}:1: {what}"))
     })?;
     check_header(name, &header)?;

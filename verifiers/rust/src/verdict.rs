@@ -225,7 +225,8 @@ fn not_judged(vector: &Vector, expected: &Expected) -> Vec<String> {
         .unjudged
         .iter()
         .map(|(interpretation, slots)| {
-            let alternative = expected.choices.iter().find(|(i, _)| i == interpretation).map_or("", |(_, a)| a.as_str());
+            let alternative =
+                expected.choices.iter().find(|(i, _)| i == interpretation).map_or("", |(_, a)| a.as_str());
             let mut devices: Vec<&str> = slots.iter().map(|&s| vector.devices()[s].name()).collect();
             devices.sort_unstable();
             let line = format!("{INDENT}not judged under {interpretation}={alternative}: {}", devices.join(", "));

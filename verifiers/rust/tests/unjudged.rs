@@ -100,6 +100,14 @@ fn the_inference_explains_an_answer_that_follows_the_reading_undeclared() {
     assert_eq!(status, Status::Fail, "{text}");
     assert!(text.contains("    judged by: HOUR-D1-OUT-OF-RANGE=as-seconds\n"), "{text}");
     assert!(!text.contains("not judged under"), "the default leaves nothing unjudged: {text}");
-    assert!(text.contains("READINGS: 1 of 1 failing vectors pass under other alternatives:\n         1  HOUR-D1-OUT-OF-RANGE=error\n"), "{text}");
-    assert!(text.contains("    declare: plcvec::Choices::new().with(plcvec::names::HourD1OutOfRange::Error)\n"), "{text}");
+    assert!(
+        text.contains(
+            "READINGS: 1 of 1 failing vectors pass under other alternatives:\n         1  HOUR-D1-OUT-OF-RANGE=error\n"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("    declare: plcvec::Choices::new().with(plcvec::names::HourD1OutOfRange::Error)\n"),
+        "{text}"
+    );
 }

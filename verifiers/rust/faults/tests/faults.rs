@@ -36,7 +36,11 @@ const CANNOT: &[&str] = &["word-65536", "not-a-number"];
 fn main() -> ExitCode {
     let name = std::env::var("PLCVEC_HOSTILE").ok().filter(|n| !n.is_empty()).unwrap_or_else(|| "reference".into());
     let Some(&hostile) = NAMES.iter().find(|&&n| n == name) else {
-        let why = if CANNOT.contains(&name.as_str()) { "its value does not fit a Rust word (u16)" } else { "no such hostile implementation" };
+        let why = if CANNOT.contains(&name.as_str()) {
+            "its value does not fit a Rust word (u16)"
+        } else {
+            "no such hostile implementation"
+        };
         eprintln!("faults: PLCVEC_HOSTILE={name}: {why}; known: {}", NAMES.join(", "));
         return ExitCode::from(2);
     };

@@ -33,7 +33,11 @@ fn check(mutant: Mutant, caught_by: &[(&str, &str)]) {
     if let Some(readings) = text.split("\nREADINGS: ").nth(1) {
         let groups = readings.lines().skip(1).take_while(|l| !l.trim_start().starts_with("declare:"));
         for line in groups {
-            assert!(line.ends_with(" not explained)"), "{}: a reading explains the bug without the partial mark: {line}", mutant.name());
+            assert!(
+                line.ends_with(" not explained)"),
+                "{}: a reading explains the bug without the partial mark: {line}",
+                mutant.name()
+            );
         }
     }
     let mut reference = OnMemory(Reference::new());

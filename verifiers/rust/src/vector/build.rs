@@ -50,7 +50,9 @@ impl<'a> Slots<'a> {
         }
         slots.scratch = vec![false; slots.devices.len()];
         for name in &initial.scratch {
-            let i = slots.slot(name).ok_or_else(|| slots.bad(format!("scratch device {name} is not in initial.devices")))?;
+            let i = slots
+                .slot(name)
+                .ok_or_else(|| slots.bad(format!("scratch device {name} is not in initial.devices")))?;
             slots.scratch[i] = true;
         }
         Ok(slots)
@@ -171,7 +173,10 @@ fn unjudged(
 ) -> Result<Vec<(String, Vec<usize>)>> {
     let at = |path: String, what: String| slots.bad(format!("at alternatives/{k}/unjudged{path}: {what}"));
     if map.is_empty() {
-        return Err(at(String::new(), "{} should be non-empty (an entry that leaves nothing unjudged has no `unjudged`)".into()));
+        return Err(at(
+            String::new(),
+            "{} should be non-empty (an entry that leaves nothing unjudged has no `unjudged`)".into(),
+        ));
     }
     let mut out = Vec::with_capacity(map.len());
     for (interpretation, list) in map.iter() {
@@ -190,7 +195,10 @@ fn unjudged(
                 return Err(item(format!("{} is not a device name", list[n])));
             }
             if n > 0 && names[n - 1] >= *name {
-                return Err(item(format!("{name:?} is not after {:?}: the list is sorted, without repeats", names[n - 1])));
+                return Err(item(format!(
+                    "{name:?} is not after {:?}: the list is sorted, without repeats",
+                    names[n - 1]
+                )));
             }
             let slot = slots.slot(name).ok_or_else(|| item(format!("{name} is not in initial.devices")))?;
             let expected = expects.iter().any(|e| e.devices.iter().any(|&(i, _)| i == slot));
@@ -222,11 +230,13 @@ impl Vector {
         let operands = operands(&slots, std::mem::take(&mut raw.initial.operands))?;
         let mut device_sizes = Vec::new();
         for (kind, n) in std::mem::take(&mut raw.assumes.device_sizes) {
-            let n = u32::try_from(n).map_err(|_| slots.bad(format!("assumes.device_sizes.{kind}: {n} is too large")))?;
+            let n =
+                u32::try_from(n).map_err(|_| slots.bad(format!("assumes.device_sizes.{kind}: {n} is too large")))?;
             device_sizes.push((kind, n));
         }
         let (steps, own) = steps(&slots, std::mem::take(&mut raw.steps), with_expectations)?;
-        let expectations = if with_expectations { Some(expectations(&slots, &mut raw, own, steps.len())?) } else { None };
+        let expectations =
+            if with_expectations { Some(expectations(&slots, &mut raw, own, steps.len())?) } else { None };
         let Slots { devices, initial, scratch, .. } = slots;
         Ok(Vector::laid_out(Parts { id, raw, devices, initial, scratch, operands, device_sizes, steps, expectations }))
     }
@@ -330,12 +340,25 @@ mod tests {
         let refused = |map: &str| with(map).unwrap_err().message().to_owned();
         let at = "vector f/HOUR/x: at alternatives/0/unjudged";
         assert!(refused("{}").starts_with(&format!("{at}: {{}} should be non-empty")));
-        assert_eq!(refused(r#"{"TADD-ON-ERROR": ["M10"]}"#), format!("{at}/TADD-ON-ERROR: TADD-ON-ERROR is not one of the entry's choices"));
-        assert!(refused(r#"{"HOUR-D1-OUT-OF-RANGE": []}"#).starts_with(&format!("{at}/HOUR-D1-OUT-OF-RANGE: [] is not")));
-        assert_eq!(refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["D 1"]}"#), format!("{at}/HOUR-D1-OUT-OF-RANGE/0: \"D 1\" is not a device name"));
-        assert!(refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["M10", "D200"]}"#).starts_with(&format!("{at}/HOUR-D1-OUT-OF-RANGE/1: \"D200\" is not after \"M10\"")));
-        assert!(refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["M10", "M10"]}"#).starts_with(&format!("{at}/HOUR-D1-OUT-OF-RANGE/1: \"M10\" is not after")));
-        assert_eq!(refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["D300"]}"#), format!("{at}/HOUR-D1-OUT-OF-RANGE/0: D300 is not in initial.devices"));
+        assert_eq!(
+            refused(r#"{"TADD-ON-ERROR": ["M10"]}"#),
+            format!("{at}/TADD-ON-ERROR: TADD-ON-ERROR is not one of the entry's choices")
+        );
+        assert!(
+            refused(r#"{"HOUR-D1-OUT-OF-RANGE": []}"#).starts_with(&format!("{at}/HOUR-D1-OUT-OF-RANGE: [] is not"))
+        );
+        assert_eq!(
+            refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["D 1"]}"#),
+            format!("{at}/HOUR-D1-OUT-OF-RANGE/0: \"D 1\" is not a device name")
+        );
+        assert!(refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["M10", "D200"]}"#)
+            .starts_with(&format!("{at}/HOUR-D1-OUT-OF-RANGE/1: \"D200\" is not after \"M10\"")));
+        assert!(refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["M10", "M10"]}"#)
+            .starts_with(&format!("{at}/HOUR-D1-OUT-OF-RANGE/1: \"M10\" is not after")));
+        assert_eq!(
+            refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["D300"]}"#),
+            format!("{at}/HOUR-D1-OUT-OF-RANGE/0: D300 is not in initial.devices")
+        );
         assert_eq!(
             refused(r#"{"HOUR-D1-OUT-OF-RANGE": ["M8004"]}"#),
             format!("{at}/HOUR-D1-OUT-OF-RANGE/0: M8004 is unjudged, yet the entry's expect or final lists it")

@@ -12,7 +12,6 @@ type Json = serde_json::Value;
 // runner does not use are read as `NoRepeats` (checked for presence and for repeated keys, not
 // kept); a key given twice anywhere is refused (`unique`).
 
-
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct RawVector {
