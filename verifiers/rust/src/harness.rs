@@ -49,16 +49,15 @@ use std::process::ExitCode;
 use std::sync::{Arc, Mutex, OnceLock};
 use std::time::{Duration, Instant};
 
+use libtest_mimic::Trial;
 pub use libtest_mimic::{Arguments, Conclusion, FormatSetting};
-use libtest_mimic::{Failed, Trial};
 
 use crate::error::{Error, Result};
 use crate::implementation::Implementation;
 use crate::known::{write_expectations, KnownFailures};
 use crate::runner::Plan;
-use crate::select::{known_names, Kind, Selection};
+use crate::selection::{known_names, Kind, Selection};
 use crate::settings;
-use crate::verdict::{Status, Verdict};
 use crate::Suite;
 
 /// Exit status of a usage error: a bad environment, vector file or known-failures file.
@@ -304,21 +303,7 @@ where
             Some(p) if p.each_vector => None,
             _ => self.write_expectations.or_else(|| env_path("PLCVEC_WRITE_EXPECTATIONS")),
         };
-        let unknown = selection.unknown_names(suite);
-        if !unknown.is_empty() {
-            return Err(Stop::Usage(Error::new(format!(
-                "the selection names what the suite does not have: {}",
-                unknown.join("; ")
-            ))));
-        }
-        let vectors = selection.apply(suite.vectors());
-        if vectors.is_empty() {
-            return Err(Stop::Empty(format!(
-                "the selection keeps none of the {} vectors of {}: nothing would be judged",
-                suite.vectors().len(),
-                suite.source()
-            )));
-        }
+        let vectors = selected(suite, &selection)?;
         let probe = (self.factory)();
         let plan = Plan::new(suite, vectors, &probe.interpretations())?;
         let supported: Vec<bool> = plan.vectors().iter().map(|v| probe.supports(v.instruction())).collect();
@@ -330,23 +315,7 @@ where
         }
         let (name, choices, cpu_writes) = (probe.name(), probe.interpretations(), probe.cpu_writes());
         drop(probe);
-        let (progress, record) = match progress {
-            Some(Progress { path, file, each_vector: true }) => {
-                let record = Record::create(file, plan.vectors().iter().map(|v| v.id()))
-                    .map_err(|e| Error::new(format!("cannot write the harness's progress file: {e}")))?;
-                (Some(path), Some(record))
-            }
-            Some(Progress { path, each_vector: false, .. }) => (Some(path), None),
-            None => (None, None),
-        };
-        let watch = Arc::new(Watch::new(plan.len(), timeout, progress, record));
-        let mut trials = Vec::new();
-        if let Some(k) = &known {
-            for e in k.unknown_ids(|id| suite.get(id).is_some()) {
-                let message = format!("STALE {}\n    {}", e.id, k.stale_message(e, suite.merged_into(&e.id)));
-                trials.push(Trial::test(e.id.clone(), move || Err(Failed::from(message))));
-            }
-        }
+        let watch = Arc::new(watch(&plan, timeout, progress)?);
         let shared = Arc::new(Shared {
             factory: self.factory,
             suite,
@@ -362,20 +331,7 @@ where
             choices,
             cpu_writes,
         });
-        *shared.results.lock().unwrap_or_else(|e| e.into_inner()) = vec![None; shared.plan.len()];
-        for (index, v) in shared.plan.vectors().iter().enumerate() {
-            let trial = if supported[index] {
-                let shared = Arc::clone(&shared);
-                Trial::ignorable_test(v.id(), move || shared.judge_one(index))
-            } else {
-                let why = format!("the implementation does not support {}", v.instruction());
-                *shared.skips.lock().unwrap_or_else(|e| e.into_inner()).entry(why.clone()).or_default() += 1;
-                let skip = Verdict { status: Status::Skip, problems: Vec::new(), message: why };
-                shared.results.lock().unwrap_or_else(|e| e.into_inner())[index] = Some((skip, None));
-                Trial::test(v.id(), || Ok(())).with_ignored_flag(true)
-            };
-            trials.push(trial);
-        }
+        let trials = shared.trials(&supported);
         Ok((trials, shared))
     }
 
@@ -483,6 +439,39 @@ where
         shared.start_watchdog();
         Ok(libtest_mimic::run(&args, trials))
     }
+}
+
+/// The vectors `selection` keeps, refused when it names what the suite lacks or keeps none.
+fn selected<'s>(suite: &'s Suite, selection: &Selection) -> std::result::Result<Vec<&'s crate::Vector>, Stop> {
+    let unknown = selection.unknown_names(suite);
+    if !unknown.is_empty() {
+        let names = unknown.join("; ");
+        return Err(Stop::Usage(Error::new(format!("the selection names what the suite does not have: {names}"))));
+    }
+    let vectors = selection.apply(suite.vectors());
+    if vectors.is_empty() {
+        return Err(Stop::Empty(format!(
+            "the selection keeps none of the {} vectors of {}: nothing would be judged",
+            suite.vectors().len(),
+            suite.source()
+        )));
+    }
+    Ok(vectors)
+}
+
+/// The watchdog's states for `plan`, with the supervised child's record when this child runs the
+/// vectors again to find the one a run ended on.
+fn watch(plan: &Plan<'_>, timeout: Duration, progress: Option<Progress>) -> Result<Watch> {
+    let (progress, record) = match progress {
+        Some(Progress { path, file, each_vector: true }) => {
+            let record = Record::create(file, plan.vectors().iter().map(|v| v.id()))
+                .map_err(|e| Error::new(format!("cannot write the harness's progress file: {e}")))?;
+            (Some(path), Some(record))
+        }
+        Some(Progress { path, each_vector: false, .. }) => (Some(path), None),
+        None => (None, None),
+    };
+    Ok(Watch::new(plan.len(), timeout, progress, record))
 }
 
 /// Whether a run judged nothing: no test passed or failed, and some were skipped or ignored.

@@ -94,43 +94,7 @@ pub(crate) fn infer(
         .filter(|(_, c)| matches!(c.status, Status::Pass | Status::Fail | Status::XFail))
         .map(|(k, c)| (k, Judged { case: c, memo: Default::default() }))
         .collect();
-    let mut choice = followed.clone();
-    let touched: Vec<String> = {
-        let mut t: Vec<String> = judged.iter().flat_map(|(_, j)| j.touched().cloned()).collect();
-        t.sort();
-        t.dedup();
-        t
-    };
-    let score = |choice: &BTreeMap<String, String>, interpretation: &str| {
-        judged.iter().filter(|(_, j)| j.touched().any(|i| i == interpretation) && j.passes(choice, cpu_writes)).count()
-    };
-    loop {
-        let mut changed = false;
-        for interpretation in &touched {
-            let current = score(&choice, interpretation);
-            let mut best: Option<(usize, String)> = None;
-            for alternative in alternatives.get(interpretation).into_iter().flatten() {
-                if choice.get(interpretation) == Some(alternative) {
-                    continue;
-                }
-                let mut trial = choice.clone();
-                trial.insert(interpretation.clone(), alternative.clone());
-                let s = score(&trial, interpretation);
-                if best.as_ref().is_none_or(|(b, _)| s > *b) {
-                    best = Some((s, alternative.clone()));
-                }
-            }
-            if let Some((s, alternative)) = best {
-                if s > current {
-                    choice.insert(interpretation.clone(), alternative);
-                    changed = true;
-                }
-            }
-        }
-        if !changed {
-            break;
-        }
-    }
+    let choice = choose(&judged, followed, alternatives, cpu_writes);
     let passes_under = |k: usize, choice: &BTreeMap<String, String>| {
         judged.iter().find(|(j, _)| *j == k).is_some_and(|(_, j)| j.passes(choice, cpu_writes))
     };
@@ -164,6 +128,49 @@ pub(crate) fn infer(
     }
     inference.choice = choice;
     inference
+}
+
+/// TEXT.md, "The inference", step 4: from the followed alternatives, each interpretation a judged
+/// vector touches (in ID order) moves to the first of its alternatives with the highest score,
+/// when that is above the current one, until a round changes nothing.
+fn choose(
+    judged: &[(usize, Judged<'_>)],
+    followed: &BTreeMap<String, String>,
+    alternatives: &Alternatives,
+    cpu_writes: &[String],
+) -> BTreeMap<String, String> {
+    let mut choice = followed.clone();
+    let mut touched: Vec<String> = judged.iter().flat_map(|(_, j)| j.touched().cloned()).collect();
+    touched.sort();
+    touched.dedup();
+    let score = |choice: &BTreeMap<String, String>, interpretation: &str| {
+        judged.iter().filter(|(_, j)| j.touched().any(|i| i == interpretation) && j.passes(choice, cpu_writes)).count()
+    };
+    loop {
+        let mut changed = false;
+        for interpretation in &touched {
+            let current = score(&choice, interpretation);
+            let mut best: Option<(usize, String)> = None;
+            for alternative in alternatives.get(interpretation).into_iter().flatten() {
+                if choice.get(interpretation) == Some(alternative) {
+                    continue;
+                }
+                let mut trial = choice.clone();
+                trial.insert(interpretation.clone(), alternative.clone());
+                let s = score(&trial, interpretation);
+                if best.as_ref().is_none_or(|(b, _)| s > *b) {
+                    best = Some((s, alternative.clone()));
+                }
+            }
+            if let Some((_, alternative)) = best.filter(|(s, _)| *s > current) {
+                choice.insert(interpretation.clone(), alternative);
+                changed = true;
+            }
+        }
+        if !changed {
+            return choice;
+        }
+    }
 }
 
 /// TEXT.md, "The inference", step 6: the first subset, by size then in lexicographic order, of

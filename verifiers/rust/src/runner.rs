@@ -13,7 +13,7 @@ use crate::generated::names::Instruction;
 use crate::implementation::{Implementation, Refusal};
 use crate::infer::{Rollup, Syntax};
 use crate::known::KnownFailures;
-use crate::select::Selection;
+use crate::selection::Selection;
 use crate::vector::Vector;
 use crate::verdict::{describe, Status, Verdict};
 use crate::Suite;

@@ -71,6 +71,8 @@ impl Fc6aHourMeter {
         result
     }
 
+    // Over 80 lines, kept whole: one execution of HOUR read top to bottom in the order the page
+    // and its interpretations take its steps (input off, the preset, D1, the ON time, D2).
     fn measure(&mut self, vector: &Vector, step: &Step, mem: &mut Memory<'_>) -> Result<(), Refusal> {
         let d1 = device(vector, "D1")?;
         let d2 = device(vector, "D2")?;

@@ -152,6 +152,8 @@ impl Fx5Compare {
         }
     }
 
+    // Over 80 lines, kept whole: the checks of one comparison in the order the page makes them
+    // ((s3)'s reserved bits, the device range, the data, then the fields), each beside its quote.
     fn evaluate(
         &self,
         kind: Kind,

@@ -49,9 +49,38 @@ pub(super) struct Shared<F> {
 
 impl<I, F> Shared<F>
 where
-    I: Implementation,
-    F: Fn() -> I,
+    I: Implementation + 'static,
+    F: Fn() -> I + Send + Sync + 'static,
 {
+    /// The tests: one per known failure the suite has no vector for (stale, named by the listed
+    /// id), then one per vector of the plan (ignored when the implementation does not support its
+    /// instruction, `supported` says).
+    pub(super) fn trials(self: &Arc<Self>, supported: &[bool]) -> Vec<Trial> {
+        let mut trials = Vec::new();
+        if let Some(k) = &self.known {
+            let suite = self.suite;
+            for e in k.unknown_ids(|id| suite.get(id).is_some()) {
+                let message = format!("STALE {}\n    {}", e.id, k.stale_message(e, suite.merged_into(&e.id)));
+                trials.push(Trial::test(e.id.clone(), move || Err(Failed::from(message))));
+            }
+        }
+        *self.results.lock().unwrap_or_else(|e| e.into_inner()) = vec![None; self.plan.len()];
+        for (index, v) in self.plan.vectors().iter().enumerate() {
+            let trial = if supported[index] {
+                let shared = Arc::clone(self);
+                Trial::ignorable_test(v.id(), move || shared.judge_one(index))
+            } else {
+                let why = format!("the implementation does not support {}", v.instruction());
+                *self.skips.lock().unwrap_or_else(|e| e.into_inner()).entry(why.clone()).or_default() += 1;
+                let skip = Verdict { status: Status::Skip, problems: Vec::new(), message: why };
+                self.results.lock().unwrap_or_else(|e| e.into_inner())[index] = Some((skip, None));
+                Trial::test(v.id(), || Ok(())).with_ignored_flag(true)
+            };
+            trials.push(trial);
+        }
+        trials
+    }
+
     pub(super) fn judge_one(&self, index: usize) -> std::result::Result<Completion, Failed> {
         let (vector, expected) = self.plan.get(index).expect("index within the plan");
         // Everything of the implementation's runs under the guard: building it, judging, the
