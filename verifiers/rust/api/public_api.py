@@ -7,8 +7,8 @@
 `diff` lists every change a user of OLD can trip over (an item removed, renamed or moved; a changed
 signature; a field added to a struct a user can build; a variant added to an enum a user can match
 exhaustively; a method a trait's implementers must now write), and exits 1 when one of them is not
-named in the Breaking section of that version in CHANGES.md (or, before the coordinator has written
-that section, in the `### Breaking` sections of the news fragments in DIR): each change must be
+named in the Breaking section of that version in CHANGES.md or in the `### Breaking` section of a
+news fragment in DIR not yet folded into it: each change must be
 named by its item's own name (`shard_of`, `reference`), as a word of that text; what goes with a removed
 item (the functions of a removed module) is named by that item.
 
@@ -211,14 +211,15 @@ def breaking(old: Api, new: Api) -> list[tuple[str, str]]:
 
 
 def breaking_text(changes: Path, version: str, fragments: Path | None) -> str:
-    """The Breaking section of `version` in CHANGES.md, else the fragments' Breaking sections."""
+    """The Breaking section of `version` in CHANGES.md, with the Breaking sections of the news
+    fragments the coordinator has not folded into it yet."""
+    out = []
     if changes.is_file():
         text = changes.read_text(encoding="utf-8")
         section = re.search(rf"^##+ [^\n]*\b{re.escape(version)}\b[^\n]*\n(.*?)(?=^## |\Z)", text, re.M | re.S)
         if section:
             breaking = re.search(r"^###+ Breaking\s*\n(.*?)(?=^##|\Z)", section.group(1), re.M | re.S)
-            return breaking.group(1) if breaking else ""
-    out = []
+            out.append(breaking.group(1) if breaking else "")
     for fragment in sorted(fragments.glob("*.md")) if fragments and fragments.is_dir() else []:
         m = re.search(r"^###+ Breaking\s*\n(.*?)(?=^##|\Z)", fragment.read_text(encoding="utf-8"), re.M | re.S)
         if m:
