@@ -2,7 +2,7 @@
 //! implementation's answers follow, the failures another reading explains, grouped by the
 //! smallest change that explains each, and the failures no reading explains, by their clauses.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use crate::compare::{compare, ReportedStep};
 use crate::expect::Expected;
@@ -74,7 +74,7 @@ pub(crate) struct Inference {
     /// Known failures no reading explains.
     pub unexplained_known: Vec<usize>,
     /// Passing vectors that would fail under the choice.
-    pub broken: usize,
+    pub broken: Vec<usize>,
 }
 
 fn failing(status: Status) -> bool {
@@ -104,7 +104,7 @@ pub(crate) fn infer(
         unexplained: Vec::new(),
         explained_known: Vec::new(),
         unexplained_known: Vec::new(),
-        broken: 0,
+        broken: Vec::new(),
     };
     for (k, case) in cases.iter().enumerate() {
         // TEXT.md, "The inference", step 5: a failing vector is explained when it is judged (it
@@ -118,7 +118,7 @@ pub(crate) fn infer(
         let explained = judged_failure && passes_under(k, &choice);
         let smallest = || smallest_change(case, &choice, followed, |trial| passes_under(k, trial));
         match case.status {
-            Status::Pass if !passes_under(k, &choice) => inference.broken += 1,
+            Status::Pass if !passes_under(k, &choice) => inference.broken.push(k),
             Status::XFail if explained => inference.explained_known.push((k, smallest())),
             Status::XFail => inference.unexplained_known.push(k),
             status if failing(status) && explained => inference.explained.push((k, smallest())),
@@ -270,8 +270,7 @@ pub(crate) fn rollup(cases: &[Case<'_>], r: &Rollup<'_>) -> String {
             "READINGS: {} of {failing_count} failing vectors pass under other alternatives:\n",
             inference.explained.len()
         ));
-        let (lines, partial) = groups(cases, &inference.explained, &inference.unexplained, "failing vectors");
-        out.push_str(&lines);
+        out.push_str(&groups(cases, &inference.explained, &inference.unexplained, &inference.broken));
         let declare: Vec<(String, String)> = inference
             .choice
             .iter()
@@ -279,13 +278,18 @@ pub(crate) fn rollup(cases: &[Case<'_>], r: &Rollup<'_>) -> String {
             .map(|(i, a)| (i.clone(), a.clone()))
             .collect();
         out.push_str(&format!("    declare: {}\n", declaration(r.syntax, &declare)));
-        if inference.broken > 0 {
-            out.push_str(&format!("    (so declared, {} vectors that pass now would fail)\n", inference.broken));
+        if !inference.broken.is_empty() {
+            out.push_str(&format!("    (so declared, {} vectors that pass now would fail)\n", inference.broken.len()));
         }
-        if partial > 0 {
+        // The vectors of the explained vectors' families that no reading explains, or that pass now
+        // and the declaration would break.
+        let families: BTreeSet<&str> = inference.explained.iter().map(|&(k, _)| cases[k].vector.family()).collect();
+        let of = |list: &[usize]| list.iter().filter(|&&k| families.contains(cases[k].vector.family())).count();
+        let (near, lost) = (of(&inference.unexplained), of(&inference.broken));
+        if near + lost > 0 {
             out.push_str(&format!(
-                "    partial: {partial} failing vectors that no reading explains are of the same families; \
-                 a declaration may hide part of a bug there\n"
+                "    partial: {near} vectors no reading explains and {lost} vectors that pass now are of the same \
+                 families; the declaration may hide part of a bug there\n"
             ));
         }
     }
@@ -303,9 +307,8 @@ fn known_failures(cases: &[Case<'_>], r: &Rollup<'_>, known_count: usize) -> Str
     let k = inference.explained_known.len();
     let mut out = format!("KNOWN FAILURES: {k} of {known_count} known failures pass under other alternatives:\n");
     let unexplained: Vec<usize> = inference.unexplained.iter().chain(&inference.unexplained_known).copied().collect();
-    let what = "failing vectors and known failures";
-    out.push_str(&groups(cases, &inference.explained_known, &unexplained, what).0);
-    let changed: std::collections::BTreeSet<&String> =
+    out.push_str(&groups(cases, &inference.explained_known, &unexplained, &inference.broken));
+    let changed: BTreeSet<&String> =
         inference.explained_known.iter().flat_map(|(_, change)| change.iter().map(|(i, _)| i)).collect();
     let declare: Vec<(String, String)> =
         changed.into_iter().filter_map(|i| inference.choice.get(i).map(|a| (i.clone(), a.clone()))).collect();
@@ -315,14 +318,10 @@ fn known_failures(cases: &[Case<'_>], r: &Rollup<'_>, known_count: usize) -> Str
 }
 
 /// The group lines of explained vectors (by their smallest change, largest group first, then by
-/// text), each marked partial when an unexplained vector (`unexplained`, worded as `what`) is of a
-/// family the group's vectors are of; and how many unexplained vectors the partial groups reach.
-fn groups(
-    cases: &[Case<'_>],
-    explained: &[(usize, Combination)],
-    unexplained: &[usize],
-    what: &str,
-) -> (String, usize) {
+/// text), each marked partial when a vector of `unexplained` (not explained) or of `broken` (passes
+/// now, would fail so declared) is of a family the group's vectors are of: the reading does not
+/// account for everything the implementation does there.
+fn groups(cases: &[Case<'_>], explained: &[(usize, Combination)], unexplained: &[usize], broken: &[usize]) -> String {
     let mut by_change: BTreeMap<String, Vec<usize>> = BTreeMap::new();
     for (k, change) in explained {
         let text: Vec<String> = change.iter().map(|(i, a)| format!("{i}={a}")).collect();
@@ -331,21 +330,25 @@ fn groups(
     let mut sorted: Vec<(String, Vec<usize>)> = by_change.into_iter().collect();
     sorted.sort_by(|a, b| b.1.len().cmp(&a.1.len()).then_with(|| a.0.cmp(&b.0)));
     let family = |k: usize| cases[k].vector.family();
-    let mut reached: std::collections::BTreeSet<usize> = Default::default();
     let mut out = String::new();
     for (text, members) in sorted {
-        let families: std::collections::BTreeSet<&str> = members.iter().map(|&k| family(k)).collect();
-        let hits: Vec<usize> = unexplained.iter().copied().filter(|&k| families.contains(family(k))).collect();
+        let families: BTreeSet<&str> = members.iter().map(|&k| family(k)).collect();
+        let near: Vec<usize> = unexplained.iter().copied().filter(|&k| families.contains(family(k))).collect();
+        let lost: Vec<usize> = broken.iter().copied().filter(|&k| families.contains(family(k))).collect();
         out.push_str(&count_line(members.len(), &text));
-        if !hits.is_empty() {
-            let named: std::collections::BTreeSet<&str> = hits.iter().map(|&k| family(k)).collect();
+        if !near.is_empty() || !lost.is_empty() {
+            let named: BTreeSet<&str> = near.iter().chain(&lost).map(|&k| family(k)).collect();
             let named: Vec<&str> = named.into_iter().collect();
-            out.push_str(&format!(" (partial: {} {what} of {} not explained)", hits.len(), named.join(", ")));
-            reached.extend(hits);
+            out.push_str(&format!(
+                " (partial: {} not explained, {} would fail, in {})",
+                near.len(),
+                lost.len(),
+                named.join(", ")
+            ));
         }
         out.push('\n');
     }
-    (out, reached.len())
+    out
 }
 
 /// The NOT EXPLAINED part: unexplained failing vectors grouped by the clauses they cite.
