@@ -33,13 +33,19 @@ pub struct Expected {
     pub(crate) defaults: Vec<(String, String)>,
     /// The outcome category under these alternatives (`value`, `error`, `implementation-defined`).
     pub category: String,
-    /// Per interpretation whose followed alternative leaves devices unjudged, their slots
-    /// (unjudged.md); empty for most vectors.
-    pub(crate) unjudged: Vec<(String, Vec<usize>)>,
-    /// Per slot, whether it is left unjudged (empty when none is).
-    unjudged_slots: Vec<bool>,
-    /// Per slot, whether a comparison passes it over: scratch or unjudged (empty when nothing is
-    /// unjudged: the vector's scratch table says it).
+    /// The devices the followed alternative leaves unjudged (unjudged.md); `None` for most
+    /// vectors, and one pointer beside the tables a run reads.
+    unjudged: Option<Box<Unjudged>>,
+}
+
+/// What an expectation leaves unjudged.
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct Unjudged {
+    /// Per interpretation whose followed alternative leaves devices unjudged, their slots.
+    by: Vec<(String, Vec<usize>)>,
+    /// Per slot, whether it is left unjudged.
+    slots: Vec<bool>,
+    /// Per slot, whether a comparison passes it over: scratch or unjudged.
     passed_over: Vec<bool>,
 }
 
@@ -88,19 +94,15 @@ impl Expected {
             results.push(expect.result);
         }
         let last = &state;
-        let mut unjudged_slots = Vec::new();
-        if !chosen.unjudged.is_empty() {
-            unjudged_slots = vec![false; state.len()];
+        let unjudged = (!chosen.unjudged.is_empty()).then(|| {
+            let mut slots = vec![false; state.len()];
             for &slot in chosen.unjudged.iter().flat_map(|(_, slots)| slots) {
-                unjudged_slots[slot] = true;
+                slots[slot] = true;
             }
-        }
-        let passed_over: Vec<bool> = if unjudged_slots.is_empty() {
-            Vec::new()
-        } else {
-            vector.scratch().iter().zip(&unjudged_slots).map(|(s, u)| *s || *u).collect()
-        };
-        let skip = if passed_over.is_empty() { vector.scratch() } else { &passed_over };
+            let passed_over = vector.scratch().iter().zip(&slots).map(|(s, u)| *s || *u).collect();
+            Box::new(Unjudged { by: chosen.unjudged.clone(), slots, passed_over })
+        });
+        let skip = unjudged.as_ref().map_or(vector.scratch(), |u| &u.passed_over);
         let listed = vector.devices().iter().zip(last).zip(skip).filter(|(_, &s)| !s);
         let consistent = listed.clone().count() == chosen.final_devices.len()
             && listed.clone().all(|((a, v), _)| chosen.final_devices.get(a.name()) == Some(v));
@@ -117,25 +119,27 @@ impl Expected {
             choices: applied,
             defaults: touched_defaults,
             category: chosen.category.clone(),
-            unjudged: chosen.unjudged.clone(),
-            unjudged_slots,
-            passed_over,
+            unjudged,
         })
     }
 
     /// Whether the expectation leaves a slot unjudged (an alternative's `unjudged`).
     #[inline]
     pub(crate) fn is_unjudged(&self, slot: usize) -> bool {
-        self.unjudged_slots.get(slot).copied().unwrap_or(false)
+        self.unjudged.as_ref().is_some_and(|u| u.slots.get(slot).copied().unwrap_or(false))
+    }
+
+    /// Per interpretation whose followed alternative leaves devices unjudged, their slots.
+    pub(crate) fn unjudged(&self) -> &[(String, Vec<usize>)] {
+        self.unjudged.as_ref().map_or(&[], |u| &u.by)
     }
 
     /// Per slot of `vector`, whether a comparison passes it over: scratch, or unjudged.
     #[inline]
     pub(crate) fn passed_over<'a>(&'a self, vector: &'a Vector) -> &'a [bool] {
-        if self.passed_over.is_empty() {
-            vector.scratch()
-        } else {
-            &self.passed_over
+        match &self.unjudged {
+            None => vector.scratch(),
+            Some(u) => &u.passed_over,
         }
     }
 
@@ -199,7 +203,7 @@ impl Expected {
         if self.results != other.results {
             return false;
         }
-        if self.unjudged_slots.is_empty() && other.unjudged_slots.is_empty() {
+        if self.unjudged.is_none() && other.unjudged.is_none() {
             return self.states == other.states;
         }
         let slots = self.slots.max(1);

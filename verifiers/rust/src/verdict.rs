@@ -222,7 +222,7 @@ pub(crate) fn judged_by(vector: &Vector, expected: &Expected, problems: &[Proble
 /// followed alternative leaves devices unjudged, sorted by ID (unjudged.md, "The failure block").
 fn not_judged(vector: &Vector, expected: &Expected) -> Vec<String> {
     let mut lines: Vec<(&str, String)> = expected
-        .unjudged
+        .unjudged()
         .iter()
         .map(|(interpretation, slots)| {
             let alternative =
