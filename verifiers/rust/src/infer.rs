@@ -132,27 +132,51 @@ pub(crate) fn infer(
 
 /// TEXT.md, "The inference", step 4: from the followed alternatives, each interpretation a judged
 /// vector touches (in ID order) moves to the first of its alternatives with the highest score,
-/// when that is above the current one, until a round changes nothing.
+/// when that is above the current one, until a round changes nothing. The rounds run twice: first
+/// without the alternatives that leave devices unjudged (such a reading explains any answer there,
+/// so it is taken only for what no reading that judges explains), then with every alternative.
 fn choose(
     judged: &[(usize, Judged<'_>)],
     followed: &BTreeMap<String, String>,
     alternatives: &Alternatives,
     cpu_writes: &[String],
 ) -> BTreeMap<String, String> {
-    let mut choice = followed.clone();
     let mut touched: Vec<String> = judged.iter().flat_map(|(_, j)| j.touched().cloned()).collect();
     touched.sort();
     touched.dedup();
+    let leaving: BTreeSet<(&str, &str)> = judged
+        .iter()
+        .filter_map(|(_, j)| j.case.vector.expectations.as_ref())
+        .flat_map(|e| &e.alternatives)
+        .flat_map(|alt| {
+            alt.unjudged.iter().filter_map(|(i, _)| {
+                alt.choices.iter().find(|(ci, _)| ci == i).map(|(ci, ca)| (ci.as_str(), ca.as_str()))
+            })
+        })
+        .collect();
+    let first = rounds(judged, followed.clone(), &touched, alternatives, cpu_writes, |i, a| !leaving.contains(&(i, a)));
+    rounds(judged, first, &touched, alternatives, cpu_writes, |_, _| true)
+}
+
+/// The rounds of step 4 from `choice`, over the alternatives `allowed` admits.
+fn rounds(
+    judged: &[(usize, Judged<'_>)],
+    mut choice: BTreeMap<String, String>,
+    touched: &[String],
+    alternatives: &Alternatives,
+    cpu_writes: &[String],
+    allowed: impl Fn(&str, &str) -> bool,
+) -> BTreeMap<String, String> {
     let score = |choice: &BTreeMap<String, String>, interpretation: &str| {
         judged.iter().filter(|(_, j)| j.touched().any(|i| i == interpretation) && j.passes(choice, cpu_writes)).count()
     };
     loop {
         let mut changed = false;
-        for interpretation in &touched {
+        for interpretation in touched {
             let current = score(&choice, interpretation);
             let mut best: Option<(usize, String)> = None;
             for alternative in alternatives.get(interpretation).into_iter().flatten() {
-                if choice.get(interpretation) == Some(alternative) {
+                if choice.get(interpretation) == Some(alternative) || !allowed(interpretation, alternative) {
                     continue;
                 }
                 let mut trial = choice.clone();
