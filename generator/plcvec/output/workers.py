@@ -20,6 +20,7 @@ import select
 import signal
 import sys
 import time
+from contextlib import closing
 
 from plcvec.errors import PlcvecError
 
@@ -69,27 +70,40 @@ def map_families(function, families, jobs, cost=None):
     jobs = min(jobs, len(families))
     if jobs <= 1 or not can_fork():
         return [function(fam) for fam in families]
-    waiting = sorted(range(len(families)), key=lambda k: -cost(families[k])) if cost else list(range(len(families)))
+    order = sorted(range(len(families)), key=lambda k: -cost(families[k])) if cost else range(len(families))
+    results = {}
+    with closing(each_in_a_worker(function, families, jobs, order, FAMILY_TIMEOUT_S)) as ended:
+        for worker, finished in ended:
+            if not finished:
+                raise PlcvecError(f"a worker process took more than {FAMILY_TIMEOUT_S} s over "
+                                  f"{worker.name}; try again with --jobs 1")
+            results[worker.index] = worker.result()
+    return [results[k] for k in range(len(families))]
+
+
+def each_in_a_worker(function, items, jobs, order, timeout):
+    """(worker, finished) as the worker of each item (by `order`, a list of indices) ends, up to `jobs`
+    at a time: finished (its result() is then ready), or not within `timeout` seconds (then already
+    killed and reaped). Closed early (the caller raised, or ^C here), it kills and reaps the workers still
+    at work: close it explicitly (contextlib.closing), since a traceback keeps an open generator alive.
+    """
+    waiting = list(order)
     waiting.reverse()   # popped from the end
     running = {}        # read end of a worker's pipe -> _Worker
-    results = {}
     try:
         while waiting or running:
             while waiting and len(running) < jobs:
-                worker = _Worker.start(function, families, waiting.pop())
+                worker = _Worker.start(function, items, waiting.pop(), timeout)
                 running[worker.fd] = worker
             deadline = min(w.deadline for w in running.values())
             ready, _, _ = select.select(list(running), [], [], max(0.0, deadline - time.monotonic()))
             for fd in ready:
-                worker = running[fd]
-                if worker.read():
-                    del running[fd]
-                    results[worker.index] = worker.result()
-            for worker in list(running.values()):
-                if time.monotonic() >= worker.deadline:
-                    raise PlcvecError(f"a worker process took more than {FAMILY_TIMEOUT_S} s over "
-                                      f"{worker.name}; try again with --jobs 1")
-        return [results[k] for k in range(len(families))]
+                if running[fd].read():
+                    yield running.pop(fd), True
+            for worker in [w for w in running.values() if time.monotonic() >= w.deadline]:
+                del running[worker.fd]
+                worker.stop()
+                yield worker, False
     finally:
         for worker in running.values():
             worker.stop()
@@ -98,20 +112,20 @@ def map_families(function, families, jobs, cost=None):
 class _Worker:
     """One forked process building one family, and what it has sent back so far."""
 
-    def __init__(self, index, name, pid, fd):
+    def __init__(self, index, name, pid, fd, timeout):
         self.index, self.name, self.pid, self.fd = index, name, pid, fd
         self.chunks = []
-        self.deadline = time.monotonic() + FAMILY_TIMEOUT_S
+        self.deadline = time.monotonic() + timeout
 
     @classmethod
-    def start(cls, function, families, index):
+    def start(cls, function, families, index, timeout):
         read_end, write_end = os.pipe()
         pid = os.fork()
         if pid == 0:   # the worker: never returns
             os.close(read_end)
             _work_and_exit(function, families[index], write_end)
         os.close(write_end)
-        return cls(index, families[index].name, pid, read_end)
+        return cls(index, families[index].name, pid, read_end, timeout)
 
     def read(self):
         """Take what the pipe holds; True once the worker has closed it."""
