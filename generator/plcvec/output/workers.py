@@ -7,7 +7,9 @@ process forked for it (it starts with the spec loaded and the code imported; not
 at most `jobs` at a time, the costliest first, and sends its result back pickled through a pipe of its
 own. The parent waits on those pipes alone, with a deadline, and uses no thread: a worker that dies
 is seen at once (its pipe closes early) and one that hangs is killed at the deadline. Workers ignore
-^C; the parent, interrupted, kills them and waits for them before it goes on.
+^C; the parent, interrupted, kills them and waits for them before it goes on. each_in_a_worker is
+the same loop for any items with a name (the mutation run's mutants) and a timeout of the caller's,
+reporting each item that passes it instead of giving up on the whole map.
 
 Where the platform does not fork safely (anything but Linux) the work is done in this process, one
 family after another. A worker runs only the build and writes to its own pipe, so it is forked even
