@@ -19,6 +19,7 @@ _STAGE_COMMANDS = [
     "plcvec.release.command",
     "plcvec.export.command",
     "plcvec.native_bench",
+    "plcvec.mutation.command",
 ]
 
 
