@@ -1,17 +1,19 @@
 """The decision inventory (generator/plcvec/review/decisions.yaml): each point where the engine decides
 an observable outcome cites a clause or an interpretation, and flipping it changes some vector.
 
-Like the mutants of the references, each flip is a one-line change of the engine's source, built as a
-module of its own; the expectation it must change is the committed golden vectors (vectors/), not the
-engine under test.
+Like a mutant of `plcvec mutation`, each flip is judged in a process of its own that imports the engine
+file with the flip in place of the real one (plcvec.mutation.oracle), so that every module that uses
+it, the cases and the coverage model too, sees the flip; the expectation it must change is the
+committed golden vectors (vectors/) of the decision's family, not the engine under test.
 """
-import json
-import types
+import dataclasses
 
 import pytest
 
-import plcvec.engine as engine
-from plcvec.output.golden import family_vectors
+from plcvec.mutation.mutants import Mutant, engine_sources
+from plcvec.mutation.oracle import CHANGED
+from plcvec.mutation.run import committed_vectors, judge_in_workers
+from plcvec.output.workers import can_fork
 from plcvec.review.decisions import ENGINE, inventory, load_inventory
 
 from conftest import REPO
@@ -19,30 +21,31 @@ from conftest import REPO
 DECISIONS = load_inventory()
 
 
-def _flipped_engine(monkeypatch, decision):
-    """Install the engine module of `decision` with its text flipped, for this test only."""
-    name = "plcvec.engine." + decision["engine"].removesuffix(".py")
-    module = __import__(name, fromlist=["_"])
-    source = (ENGINE / decision["engine"]).read_text(encoding="utf-8")
-    assert source.count(decision["old"]) == 1, decision["id"]
-    flipped = types.ModuleType(name)
-    flipped.__file__ = module.__file__
-    exec(compile(source.replace(decision["old"], decision["new"]), module.__file__, "exec"), flipped.__dict__)
-    for attr, value in vars(flipped).items():
-        if not attr.startswith("__"):
-            monkeypatch.setattr(module, attr, value)
-    for kind, cls in list(engine.KINDS.items()):
-        if cls.__module__ == name:
-            monkeypatch.setitem(engine.KINDS, kind, getattr(flipped, cls.__name__))
+@dataclasses.dataclass(frozen=True)
+class Flip(Mutant):
+    """A decision's flip as a mutant: its `old` text replaced by its `new`."""
+
+    old: str = ""
+    new: str = ""
+
+    def mutated(self, source):
+        assert source.count(self.old) == 1, self.name
+        return source.replace(self.old, self.new)
 
 
+@pytest.fixture(scope="module")
+def committed():
+    return committed_vectors(REPO / "vectors", REPO / "spec", ENGINE, engine_sources(ENGINE))
+
+
+@pytest.mark.skipif(not can_fork(), reason="a flip is judged in a forked process (Linux)")
 @pytest.mark.parametrize("decision", DECISIONS, ids=[d["id"] for d in DECISIONS])
-def test_flipping_a_decision_changes_a_vector(decision, families, golden, monkeypatch):
-    _flipped_engine(monkeypatch, decision)
-    got = {v["id"]: v for v in json.loads(json.dumps(family_vectors(families[decision["family"]])))}
-    committed = {v["id"]: v for v in golden[decision["family"]]["vectors"]}
-    changed = [k for k in committed if got.get(k) != committed[k]] + sorted(set(got) - set(committed))
-    assert changed, f"{decision['id']}: flipping {decision['old']!r} changes no vector of {decision['family']}"
+def test_flipping_a_decision_changes_a_vector(decision, committed):
+    family_only = dataclasses.replace(committed, targets={decision["engine"]: [decision["family"]]})
+    flip = Flip(decision["engine"], "flip", 0, (1, 0), (1, 0), old=decision["old"], new=decision["new"])
+    outcome = judge_in_workers([flip], family_only, 1, 60)[0]
+    assert outcome.status == CHANGED, (f"{decision['id']}: flipping {decision['old']!r} changes no vector of "
+                                       f"{decision['family']} ({outcome.status} {outcome.error})")
 
 
 def test_the_inventory_holds_against_the_spec_and_the_engine(families):

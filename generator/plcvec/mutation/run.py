@@ -112,14 +112,14 @@ def run_mutants(selected, committed, decisions, jobs, timeout=None, progress=Non
         raise PlcvecError("the mutation run forks a process per mutant, which needs Linux")
     decision_places = places(decisions, committed.sources)
     started = time.monotonic()
-    baseline = _judge_all([_Unmutated()], committed, 1, None)[0]
+    baseline = judge_in_workers([_Unmutated()], committed, 1, None)[0]
     run = Run(total=0, unmutated_cpu_seconds=baseline.cpu_seconds)
     if baseline.status != UNCHANGED:
         raise PlcvecError("the unmutated engine does not give the committed vectors ("
                           + (baseline.error or f"{baseline.change}: {', '.join(baseline.ids)}")
                           + "); run `plcvec generate --check` and mend that first")
     run.timeout = timeout or max(TIMEOUT_FLOOR_S, TIMEOUT_FACTOR * baseline.cpu_seconds)
-    outcomes = _judge_all(selected, committed, jobs, run.timeout, progress)
+    outcomes = judge_in_workers(selected, committed, jobs, run.timeout, progress)
     for mutant, outcome in zip(selected, outcomes):
         touches = touched(mutant, decision_places)
         run.judged.append(Judged(mutant, outcome, touches, verdict(outcome, touches)))
@@ -127,9 +127,10 @@ def run_mutants(selected, committed, decisions, jobs, timeout=None, progress=Non
     return run
 
 
-def _judge_all(items, committed, jobs, cpu_seconds, progress=None):
+def judge_in_workers(items, committed, jobs, cpu_seconds, progress=None):
     """[Outcome of each item], each judged in a forked process within `cpu_seconds` of CPU time (None:
-    unbounded but for the build's own deadline), `judge(None)` judging the engine as it is."""
+    unbounded but for the build's own deadline), `judge(None)` judging the engine as it is. An item is a
+    Mutant, or anything with its `file`, `name` and `mutated(source)`."""
     from plcvec.output.workers import FAMILY_TIMEOUT_S, each_in_a_worker
 
     def work(item):
