@@ -19,8 +19,8 @@ def register(sub, spec_parent):
                    help="only the mutants on this line of an engine file, e.g. hour_meter.py:57 (repeatable): to "
                         "judge again a line a report named")
     p.add_argument("--timeout", type=float, metavar="S",
-                   help="CPU seconds a mutant may use before it is stopped and counted as a timeout (default: ten "
-                        "times the unmutated engine's, at least 20)")
+                   help="CPU seconds a mutant may use before it is stopped and counted as a timeout (default: five "
+                        "times the unmutated engine's, at least 10)")
     p.add_argument("--vectors", metavar="DIR", help="the committed vectors to judge by (default: the checkout's vectors/)")
     p.add_argument("--json", metavar="FILE", help="also write every mutant's record here")
     add_jobs_option(p)

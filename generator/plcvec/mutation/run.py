@@ -19,8 +19,8 @@ from plcvec.mutation.touch import places, touched, verdict
 
 # The default timeout of a mutant, in CPU seconds (see oracle.judge): this many times the CPU time of
 # the unmutated engine, and never below the floor.
-TIMEOUT_FACTOR = 10
-TIMEOUT_FLOOR_S = 20.0
+TIMEOUT_FACTOR = 5
+TIMEOUT_FLOOR_S = 10.0
 # The last bound, by the clock, for a mutant's process that the CPU-time limit did not stop (one that
 # waits rather than computes): this many times its CPU time, for a machine shared with other work.
 CLOCK_FACTOR = 20
