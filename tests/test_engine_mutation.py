@@ -11,7 +11,7 @@ from plcvec.errors import PlcvecError
 from plcvec.mutation.mutants import Mutant, engine_sources, mutants_of
 from plcvec.mutation.oracle import CHANGED, TIMEOUT, UNCHANGED, Outcome
 from plcvec.mutation.run import committed_vectors, run_mutants, select
-from plcvec.mutation.touch import COVERED, MISSING, places, touched, verdict
+from plcvec.mutation.touch import COVERED, MISSING, RECORD, places, touched, verdict
 from plcvec.output.workers import can_fork
 from plcvec.review.decisions import ENGINE, load_inventory
 
@@ -43,7 +43,10 @@ def test_a_mutant_touches_a_decision_when_they_share_a_line_of_one_file():
 
 def test_a_mutant_that_changes_vectors_is_covered_on_a_decision_and_missing_elsewhere():
     assert verdict(Outcome(CHANGED, counts={"expectation": 1}), ["two"]) == COVERED
-    assert verdict(Outcome(CHANGED, counts={"metadata": 2}), []) == MISSING
+    assert verdict(Outcome(CHANGED, counts={"inputs": 2}), []) == MISSING
+    # Only the clauses cited, or which coverage-model rows get a vector: the engine's record, no outcome.
+    assert verdict(Outcome(CHANGED, counts={"metadata": 2}, record_only=True), []) == RECORD
+    assert verdict(Outcome(CHANGED, counts={"metadata": 2}, record_only=True), ["two"]) == COVERED
     assert verdict(Outcome(UNCHANGED), []) == UNCHANGED
     assert verdict(Outcome(TIMEOUT), []) == TIMEOUT
 
@@ -114,6 +117,15 @@ def test_a_mutant_on_a_decision_is_covered_and_one_elsewhere_that_changes_vector
 
 
 @forking
+def test_a_mutant_that_changes_only_the_clauses_cited_is_no_missing_decision(committed):
+    # `if len(selected) < len(self.fields):` only decides whether the vector cites the clause of fields
+    # left out of the comparison.
+    masking = _mutant("masked_compare.py", "if len(selected) < len(self.fields):", "AddNot")
+    judged = run_mutants([masking], committed, load_inventory(), jobs=1).judged[0]
+    assert (judged.verdict, judged.touches, judged.outcome.change) == (RECORD, [], "metadata")
+
+
+@forking
 def test_a_mutant_that_changes_nothing_is_counted_so(committed):
     memo = _mutant("words.py", "_MEMO_SIZE = 4096", "NumberReplacer")   # the size of a cache
     judged = run_mutants([memo], committed, load_inventory(), jobs=1).judged[0]
@@ -139,12 +151,14 @@ def test_the_command_exits_1_naming_a_missing_decision_by_file_and_line(tmp_path
     monkeypatch.setattr(decisions, "INVENTORY", inventory)
     monkeypatch.setattr(decisions.load_inventory, "__defaults__", (inventory,))
     zero_line = engine_sources(ENGINE)["clock_add.py"].split("zero = result == 0")[0].count("\n") + 1
-    code = cli.main(["mutation", "--line", f"clock_add.py:{zero_line}", "--json", str(tmp_path / "run.json"),
-                     "--jobs", "2"])
+    line = f"clock_add.py:{zero_line}"
+    code = cli.main(["mutation", "--line", line, "--line", line, "--json", str(tmp_path / "run.json"), "--jobs", "2"])
     out = capsys.readouterr().out
     record = json.loads((tmp_path / "run.json").read_text())
     assert code == 1
     assert record["mutants"] and {tuple(m["lines"]) for m in record["mutants"]} == {(zero_line, zero_line)}
+    names = [m["name"] for m in record["mutants"]]
+    assert len(names) == len(set(names))   # a line named twice is judged once
     missing = [m for m in record["mutants"] if m["verdict"] == MISSING]
     # `zero = result != 0` and the like change the zero flag; `zero = result is 0` may not (small ints).
     assert any(m["operator"].endswith("_Eq_NotEq") for m in missing)

@@ -36,6 +36,7 @@ STATUSES = (UNCHANGED, CHANGED, FAILS, TIMEOUT)
 # plcvec.output.diff's classes of a changed vector, and the two of a vector present on one side only.
 CHANGE_CLASSES = ("expectation", "inputs", "metadata", "added", "removed")
 SHOWN_IDS = 3   # vector ids kept per mutant for the report
+MODEL_TAG = "model"   # the tag of the vectors the coverage model adds (plcvec.cases.model_cases)
 
 # The most a mutant's process may map: a mutant that allocates without end (a table of 2**32 entries)
 # fails with MemoryError instead of taking the machine's memory from everything else on it.
@@ -54,6 +55,11 @@ class Outcome:
     ids: list = field(default_factory=list)      # a few changed vector ids, the most telling class first
     error: str = ""
     cpu_seconds: float = 0.0                     # the CPU time the judging took
+    # A change of the engine's record alone: the clauses, tags or descriptions of vectors (metadata) or
+    # which rows of the coverage model get a vector (model vectors added or removed), never what any
+    # vector sets up or expects. The engine's trace and its record for the coverage model make these;
+    # no observable outcome is decided there.
+    record_only: bool = False
 
     @property
     def change(self):
@@ -116,7 +122,7 @@ def judge(mutant, committed: Committed, cpu_seconds=None) -> Outcome:
                             merged={fam.name: committed.merged.get(fam.name, {})})
             new = VectorSet("mutant", single=False, merged={fam.name: merged}, families={
                 fam.name: {"header": committed.families[fam.name]["header"], "vectors": {v["id"]: v for v in built}}})
-            outcome = _outcome(fam.name, compare(old, new), merged != old.merged[fam.name])
+            outcome = _outcome(fam.name, compare(old, new), merged != old.merged[fam.name], old, new)
             if outcome.status == CHANGED:
                 break
         outcome.cpu_seconds = time.process_time()
@@ -127,8 +133,8 @@ def judge(mutant, committed: Committed, cpu_seconds=None) -> Outcome:
         return Outcome(FAILS, error=f"{type(exc).__name__}: {exc}"[:300])
 
 
-def _outcome(family, report, merged_differs):
-    """The Outcome of one family's comparison (plcvec.output.diff.compare)."""
+def _outcome(family, report, merged_differs, old, new):
+    """The Outcome of one family's comparison (plcvec.output.diff.compare of `old` and `new`)."""
     counts = {c: report["totals"][c] for c in CHANGE_CLASSES if report["totals"][c]}
     if merged_differs and not counts:
         counts["metadata"] = 1   # only which ids went into which vector: what a vector is called
@@ -137,7 +143,11 @@ def _outcome(family, report, merged_differs):
     fam = report["families"][family]
     ids = [vid for cls in CHANGE_CLASSES
            for vid in (fam[cls] if cls in ("added", "removed") else [v["id"] for v in fam["changed"] if v["class"] == cls])]
-    return Outcome(CHANGED, family=family, counts=counts, ids=ids[:SHOWN_IDS])
+    rows = [new.families[family]["vectors"][vid] for vid in fam["added"]] + [
+        old.families[family]["vectors"][vid] for vid in fam["removed"]]
+    record_only = (not counts.get("expectation") and not counts.get("inputs")
+                   and all(MODEL_TAG in v.get("tags", ()) for v in rows))
+    return Outcome(CHANGED, family=family, counts=counts, ids=ids[:SHOWN_IDS], record_only=record_only)
 
 
 def _limit_resources(cpu_seconds):

@@ -6,12 +6,13 @@ import json
 from collections import Counter
 
 from plcvec.mutation.oracle import CHANGE_CLASSES, FAILS, TIMEOUT, UNCHANGED
-from plcvec.mutation.touch import COVERED, MISSING
+from plcvec.mutation.touch import COVERED, MISSING, RECORD, VERDICTS
 
 COUNT_LINES = (
-    ("changed vectors", (COVERED, MISSING)),
+    ("changed vectors", (COVERED, MISSING, RECORD)),
     ("  covered by a decision", (COVERED,)),
     ("  missing decision", (MISSING,)),
+    ("  clauses or model rows", (RECORD,)),
     ("no change", (UNCHANGED,)),
     ("generator fails", (FAILS,)),
     ("timeout", (TIMEOUT,)),
@@ -22,7 +23,7 @@ SHOWN_FAILURES = 5
 def counts(run):
     """{verdict: mutants}, every verdict present (0 where none)."""
     found = Counter(j.verdict for j in run.judged)
-    return {v: found.get(v, 0) for v in (COVERED, MISSING, UNCHANGED, FAILS, TIMEOUT)}
+    return {v: found.get(v, 0) for v in VERDICTS}
 
 
 def text(run, sources):

@@ -75,7 +75,7 @@ def enumerate_mutants(sources, files=None):
         if unknown:
             raise PlcvecError(f"no engine file {', '.join(unknown)}; the engine's files are {', '.join(sources)}")
     out = []
-    for name in sorted(files or sources):
+    for name in sorted(set(files or sources)):
         out += mutants_module.mutants_of(name, sources[name])
     return sorted(out, key=lambda m: (m.file, m.start, m.end, m.operator, m.occurrence))
 

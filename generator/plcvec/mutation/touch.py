@@ -6,7 +6,10 @@ A mutant's place is the line(s) of the node cosmic-ray changes, from its start t
 
 **A mutant touches a decision when both are in the same engine file and their lines share at least
 one line.** A mutant that changes the committed vectors and touches no decision is a missing
-decision: the engine decides something observable on a line the inventory does not list.
+decision: the engine decides something observable on a line the inventory does not list. Except when
+it changes only the engine's record (oracle.Outcome.record_only): the clauses a vector cites, or which
+rows of the coverage model get a vector of their own. The trace and the coverage record decide no
+outcome of the instruction; such a mutant is counted apart (RECORD), not as a missing decision.
 
 Lines, not characters: a decision's `old` is the text its flip replaces, often a part of a condition,
 and the rest of that line (the other operand of an `and`, the value compared with) belongs to the same
@@ -22,8 +25,9 @@ from plcvec.mutation.oracle import CHANGED, FAILS, TIMEOUT, UNCHANGED
 
 # A mutant's verdict: what its outcome says of the inventory.
 COVERED = "covered"     # changes vectors, on a decision's line
-MISSING = "missing"     # changes vectors, on no decision's line
-VERDICTS = (COVERED, MISSING, UNCHANGED, FAILS, TIMEOUT)
+MISSING = "missing"     # changes what vectors set up or expect, on no decision's line
+RECORD = "record"       # changes only the engine's record (clauses, model rows), on no decision's line
+VERDICTS = (COVERED, MISSING, RECORD, UNCHANGED, FAILS, TIMEOUT)
 
 
 @dataclass(frozen=True)
@@ -59,7 +63,9 @@ def touched(mutant, decision_places):
 
 
 def verdict(outcome, touches):
-    """COVERED, MISSING, or the outcome's own status when it changed no vector."""
+    """COVERED, MISSING, RECORD, or the outcome's own status when it changed no vector."""
     if outcome.status != CHANGED:
         return outcome.status
-    return COVERED if touches else MISSING
+    if touches:
+        return COVERED
+    return RECORD if outcome.record_only else MISSING
