@@ -14,17 +14,16 @@
  */
 import { inspect } from "node:util";
 
-import { resolveChoices, type Followed } from "./choices.js";
-import { judge, prepare } from "./compare.js";
 import { VerifyError } from "./errors.js";
 import type { Implementation } from "./implementation.js";
-import { applyKnown, loadKnownFailures, unknownIds, writeExpectations, type KnownFailures } from "./known.js";
+import { unknownIds, writeExpectations, type KnownFailures } from "./known.js";
 import { summaryText } from "./reports.js";
-import { summarize, type Report } from "./runner.js";
-import { selectWithEnvironment, type Selection } from "./selection.js";
-import { loadSuite, type Suite } from "./suite.js";
+import { planRun, reportWith, runOne, summarize, type Plan, type Report } from "./runner.js";
+import type { Selection } from "./selection.js";
+import { setting } from "./settings.js";
+import type { Suite } from "./suite.js";
 import { describe, FAILING, type Verdict } from "./verdict.js";
-import { enter, leave, register, timeoutSeconds } from "./watchdog.js";
+import { enter, inProgress, leave, register } from "./watchdog.js";
 
 /** A vector the implementation does not pass; its message is the whole field-level diff, with no stack to read past. */
 export class VectorFailure extends Error {
@@ -66,12 +65,9 @@ export interface Case {
 /** What a list of cases shares: the run's verdicts so far and what it was made with. */
 interface Run {
   readonly impl: Implementation;
-  readonly suite: Suite;
-  readonly followed: Followed;
+  readonly plan: Plan;
   readonly options: CaseOptions;
   readonly started: number;
-  readonly known: KnownFailures | undefined;
-  readonly selected: number;
   readonly verdicts: Verdict[];
 }
 
@@ -79,23 +75,19 @@ const runs = new WeakMap<readonly Case[], Run>();
 
 /** One case per selected vector; expectations are worked out lazily, when a case runs. */
 export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
-  timeoutSeconds(); // a malformed PLCVEC_TIMEOUT is refused before anything runs
-  const suite = options.suite ?? loadSuite();
-  const vectors = selectWithEnvironment(suite, options.selection);
-  if (vectors.length === 0 && !options.allowEmpty) {
+  const plan = planRun(impl, options);
+  if (plan.vectors.length === 0 && !options.allowEmpty) {
     throw new VerifyError("the selection holds no vector: a gate that runs nothing would pass by accident (allowEmpty to accept that)");
   }
-  const followed = resolveChoices(suite, impl.choices);
-  const knownFile = process.env["PLCVEC_KNOWN_FAILURES"];
-  const known = options.known ?? (knownFile ? loadKnownFailures(knownFile) : undefined);
-  const first = register(vectors.map((v) => v.id));
+  const first = register(plan.vectors.map((v) => v.id));
   const verdicts: Verdict[] = [];
-  const list = vectors.map((vector, i): Case => {
+  const reading = { followed: plan.followed.choices, defaults: plan.followed.defaults };
+  const list = plan.vectors.map((vector, i): Case => {
     const run = (): Verdict => {
       let verdict: Verdict;
       enter(first + i);
       try {
-        verdict = applyKnown(judge(prepare(vector, followed), impl), known);
+        verdict = runOne(plan, impl, i);
       } finally {
         leave();
       }
@@ -110,37 +102,44 @@ export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
       run,
       check(): Verdict {
         const verdict = run();
-        if (FAILING.has(verdict.status)) throw new VectorFailure(describe(verdict, vector, { followed: followed.choices, defaults: followed.defaults }));
+        if (FAILING.has(verdict.status)) throw new VectorFailure(describe(verdict, vector, reading));
         return verdict;
       },
     };
   });
-  runs.set(list, { impl, suite, followed, options, started: performance.now(), known, selected: vectors.length, verdicts });
+  runs.set(list, { impl, plan, options, started: performance.now(), verdicts });
   return list;
 }
 
 /**
  * The run of these cases as a whole: the verdicts of the cases that ran, the known failures the
  * suite does not have (stale), and why the run fails though no case did. When no case ran at all
- * although the selection held some, the test runner's own filter left none: that is a failure too.
- * Writes PLCVEC_WRITE_EXPECTATIONS when it is set.
+ * although the selection held some, and no vector ended the process half way, the test runner's
+ * own filter left none: that is a failure too. Writes PLCVEC_WRITE_EXPECTATIONS when it is set.
  */
 export function runReport(list: readonly Case[]): Report {
   const run = runs.get(list);
   if (run === undefined) throw new VerifyError("runReport takes the list cases() returned");
-  const verdicts = [...run.verdicts, ...unknownIds(run.known, run.suite)];
-  const report = summarize(run.impl, verdicts, run.suite, run.followed, {
+  const { plan } = run;
+  const verdicts = [...run.verdicts, ...unknownIds(plan.known, plan.suite)];
+  const report = summarize(run.impl, verdicts, plan.suite, plan.followed, {
     ...run.options,
     selected: run.verdicts.length,
     seconds: (performance.now() - run.started) / 1000,
+    ...(plan.knownFile !== undefined ? { knownFile: plan.knownFile } : {}),
   });
-  const write = process.env["PLCVEC_WRITE_EXPECTATIONS"];
-  if (write) writeExpectations(write, verdicts);
-  if (run.verdicts.length === 0 && run.selected > 0) {
+  const write = setting("PLCVEC_WRITE_EXPECTATIONS");
+  if (write !== undefined) writeExpectations(write, verdicts);
+  const ended = inProgress();
+  if (ended !== undefined) {
+    // The process is ending inside a vector: the implementation ended it; no filter is to blame.
+    return reportWith(report, [`the implementation ended the process while running ${ended}; the vectors after it did not run`], 1);
+  }
+  if (run.verdicts.length === 0 && plan.vectors.length > 0) {
     const filtered =
-      `none of the ${run.selected} selected vectors ran: the test runner's own filter (--test-name-pattern, ` +
+      `none of the ${plan.vectors.length} selected vectors ran: the test runner's own filter (--test-name-pattern, ` +
       "vitest -t, jest -t) matched none of them; choose vectors with PLCVEC_ID=<id or glob>[,...] instead";
-    return { ...report, passed: false, runProblems: [filtered, ...report.runProblems.filter((p) => !p.startsWith("the selection holds"))] };
+    return reportWith(report, [filtered], 5);
   }
   return report;
 }

@@ -44,4 +44,4 @@ export { defaultVectorsPath, interpretationsOf, loadSuite, PACKAGED_VECTORS, SCH
 export { describe, FAILING, NOT_IN_VECTOR, NOT_REPORTED, problemLine, type Problem, type Status, type Verdict } from "./verdict.js";
 export { requestOf } from "./vector.js";
 export type { AlternativeExpectation, Devices, FamilyHeader, Initial, InterpretationHeader, Operand, Outcome, Step, StepExpect, StepInputs, Value, Vector, VectorRequest } from "./vector.js";
-export { DEFAULT_TIMEOUT_SECONDS, timeoutSeconds } from "./watchdog.js";
+export { DEFAULT_TIMEOUT_SECONDS, timeoutSeconds } from "./settings.js";

@@ -9,11 +9,12 @@
  * `xfail`; a listed vector that passes is `stale` and fails the run, and so does an id the suite
  * does not have: the list can only shrink. Ids are exact, never patterns.
  */
-import { readFileSync, renameSync, writeFileSync } from "node:fs";
+import { renameSync, writeFileSync } from "node:fs";
 
 import { parse, TomlError } from "smol-toml";
 
 import { VerifyError } from "./errors.js";
+import { checkRegular, readRegular } from "./files.js";
 import type { Suite } from "./suite.js";
 import { ERROR, FAIL, FAILING, PASS, STALE, XFAIL, type Verdict } from "./verdict.js";
 
@@ -30,12 +31,8 @@ export type KnownFailures = ReadonlyMap<string, KnownFailure>;
 
 /** Read an expectations file; every mistake in it is named with its file and line. */
 export function loadKnownFailures(path: string): KnownFailures {
-  let text: string;
-  try {
-    text = readFileSync(path, "utf8");
-  } catch (err) {
-    throw new VerifyError(`${path}: cannot read the expectations file: ${(err as NodeJS.ErrnoException).code ?? String(err)}`);
-  }
+  // A named pipe nobody writes would hold the run before it starts: refused by name.
+  const text = readRegular(path, "cannot read the expectations file").toString("utf8");
   return parseKnownFailures(text, path);
 }
 
@@ -100,16 +97,21 @@ export function applyKnown(verdict: Verdict, known: KnownFailures | undefined): 
 /** The judgedBy of a verdict for an id the suite does not have. */
 const NO_VECTOR: Readonly<Record<string, string>> = Object.freeze({});
 
-/** A stale verdict for each listed id the suite does not have (one merely not selected is not stale). */
+/**
+ * A stale verdict for each listed id the suite does not have (one merely not selected is not
+ * stale), in the file's order; an id the suite merged into another names the vector it is now.
+ */
 export function unknownIds(known: KnownFailures | undefined, suite: Suite): Verdict[] {
   const out: Verdict[] = [];
-  for (const [id, entry] of [...(known ?? [])].sort(([a], [b]) => (a < b ? -1 : a > b ? 1 : 0))) {
+  for (const [id, entry] of known ?? []) {
     if (suite.byId.has(id)) continue;
+    const now = suite.merged?.get(id);
+    const why = now !== undefined ? `: it was merged into ${now}; list that id instead` : "; remove it from the expectations file";
     out.push({
       id,
       status: STALE,
       problems: [],
-      message: `listed as a known failure (${entry.where}) but the suite has no such vector; remove it from the expectations file`,
+      message: `listed as a known failure (${entry.where}) but the suite has no such vector${why}`,
       judgedBy: NO_VECTOR,
       clauses: [],
     });
@@ -134,6 +136,7 @@ export function writeExpectations(path: string, verdicts: readonly Verdict[], re
     lines.push(`[[${SECTION}]]`, `id = ${tomlString(v.id)}`, `reason = ${tomlString(reason)}`, "");
     n++;
   }
+  checkRegular(path);
   const temporary = `${path}.${process.pid}.tmp`;
   try {
     writeFileSync(temporary, lines.join("\n"));

@@ -29,8 +29,7 @@ export interface VectorTestOptions extends CaseOptions {
   readonly name?: string;
 }
 
-/** The exit status of a run that fails as a whole, and of a mistake in the set-up (as `plcvec verify`: 1 and 2). */
-const RUN_FAILS = 1;
+/** The exit status of a mistake in the set-up (as `plcvec verify`'s); a run's own is its report's exitCode. */
 const USAGE = 2;
 
 function complain(lines: readonly string[], status: number): void {
@@ -74,9 +73,9 @@ export function vectorTests(impl: Implementation, options: VectorTestOptions = {
     if (report.passed) return;
     const stale = report.verdicts.filter((v) => v.status === "stale" && !report.suite.byId.has(v.id)).map((v) => describeVerdict(v));
     if (stale.length || report.runProblems.length) {
-      complain([...stale, ...report.runProblems.map((p) => `RUN FAILS: ${p}`)], RUN_FAILS);
+      complain([...stale, ...report.runProblems.map((p) => `RUN FAILS: ${p}`)], report.exitCode);
     } else if (!process.exitCode) {
-      process.exitCode = RUN_FAILS; // a failing vector: its test says so already
+      process.exitCode = report.exitCode; // a failing vector: its test says so already
     }
   });
 }

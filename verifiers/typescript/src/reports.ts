@@ -4,12 +4,11 @@
  */
 import { inference } from "./infer.js";
 import type { Report } from "./runner.js";
-import { describe, ERROR, FAIL, FAILING, INDENT, SKIP, type Status, type Verdict } from "./verdict.js";
+import { describe, ERROR, FAIL, FAILING, INDENT, SKIP, STATUS_ORDER, type Verdict } from "./verdict.js";
 
 /** Vector ids shown under each group of the roll-up; skip reasons shown. */
 const SHOW_IDS = 5;
 const SHOW_REASONS = 12;
-const STATUS_ORDER: readonly Status[] = ["pass", "fail", "error", "skip", "xfail", "stale"];
 const byCodePoint = (a: string, b: string): number => (a < b ? -1 : a > b ? 1 : 0);
 const pad6 = (n: number): string => String(n).padStart(6);
 
@@ -102,7 +101,7 @@ export function summaryText(report: Report, options: { readonly blocks?: boolean
   if (options.blocks !== false) for (const v of report.verdicts) if (FAILING.has(v.status)) lines.push(block(report, v));
   lines.push(...rollupLines(report), ...skippedLines(report));
   if (!report.verdicts.some((v) => FAILING.has(v.status)) && report.runProblems.length) {
-    lines.push(`NOT PASSED: ${report.runProblems.join("; ")}`);
+    lines.push(`NOT PASSED (exit ${report.exitCode}): ${report.runProblems.join("; ")}`);
   }
   const summary = summaryLines(report);
   summary[summary.length - 1] += ` in ${report.seconds.toFixed(2)} s`;

@@ -4,6 +4,7 @@
  * errors that list the known ones: a typo in a CI file must not quietly turn the gate off.
  */
 import { VerifyError } from "./errors.js";
+import { setting } from "./settings.js";
 import { interpretationsOf, type Suite } from "./suite.js";
 import type { Vector } from "./vector.js";
 
@@ -131,16 +132,16 @@ const VARIABLES = [
 export function environmentSelection(env: NodeJS.ProcessEnv = process.env): Selection {
   const out: { -readonly [K in keyof Selection]: Selection[K] } = {};
   for (const [variable, key] of VARIABLES) {
-    const text = env[variable];
-    if (text === undefined || text === "") continue;
+    const text = setting(variable, env);
+    if (text === undefined) continue;
     const items = text.split(",").map((s) => s.trim());
     if (items.some((s) => s === "")) {
       throw new VerifyError(`${variable}=${JSON.stringify(text)}: an empty name in the list (names are separated by commas)`);
     }
     out[key] = items;
   }
-  const shard = env["PLCVEC_SHARD"];
-  if (shard !== undefined && shard !== "") {
+  const shard = setting("PLCVEC_SHARD", env);
+  if (shard !== undefined) {
     try {
       out.shard = parseShard(shard);
     } catch (err) {

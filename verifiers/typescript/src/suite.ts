@@ -8,11 +8,13 @@
  * instead of failing half-way through a run.
  */
 import { createHash } from "node:crypto";
-import { existsSync, readFileSync, statSync } from "node:fs";
+import { existsSync, statSync } from "node:fs";
 import { join } from "node:path";
 import { fileURLToPath } from "node:url";
 
 import { VerifyError } from "./errors.js";
+import { mayRepeatKeys, notRegular, readRegular, repeatedKey } from "./files.js";
+import { setting } from "./settings.js";
 import { headerProblem, vectorProblem } from "./validate.js";
 import type { FamilyHeader, InterpretationHeader, Vector } from "./vector.js";
 
@@ -30,6 +32,8 @@ export interface Suite {
   readonly suiteVersion: string;
   readonly schemaVersion: string;
   readonly specSha256: string;
+  /** Ids the suite merged into another vector (the index's `merged`), each with the id it is now. */
+  readonly merged?: ReadonlyMap<string, string>;
 }
 
 export interface InterpretationInfo {
@@ -41,8 +45,7 @@ export interface InterpretationInfo {
 
 /** Where vectors come from when nothing is said: `PLCVEC_VECTORS`, else the packaged copy. */
 export function defaultVectorsPath(): string {
-  const env = process.env["PLCVEC_VECTORS"];
-  return env !== undefined && env !== "" ? env : PACKAGED_VECTORS;
+  return setting("PLCVEC_VECTORS") ?? PACKAGED_VECTORS;
 }
 
 const cache = new Map<string, Suite>();
@@ -58,22 +61,26 @@ export function loadSuite(path: string = defaultVectorsPath()): Suite {
 }
 
 function readSuite(path: string): Suite {
-  if (!existsSync(path)) throw new VerifyError(`${path}: no such vector folder or file`);
+  if (!existsSync(path) && !notRegular(path)) throw new VerifyError(`${path}: no such vector folder or file`);
   let files: string[];
   let suiteVersion = "";
   let setHash = "";
+  let merged: ReadonlyMap<string, string> = new Map();
   const sums = new Map<string, string>();
   const counts = new Map<string, number>();
-  if (statSync(path).isDirectory()) {
+  if (isFolder(path)) {
     const index = join(path, "index.json");
     const manifest = join(path, "manifest.json");
-    const listing = existsSync(index) ? index : manifest;
-    if (!existsSync(listing)) throw new VerifyError(`${path}: no index.json (a folder written by plcvec export) nor manifest.json (the repository's vectors/)`);
-    const data = readJson(listing) as {
+    const listing = existsSync(index) || notRegular(index) ? index : manifest;
+    if (!existsSync(listing) && !notRegular(listing)) {
+      throw new VerifyError(`${path}: no index.json (a folder written by plcvec export) nor manifest.json (the repository's vectors/)`);
+    }
+    const data = readIndex(listing) as {
       families?: Record<string, { file?: string; sha256?: string; count?: number }>;
       suite_version?: string;
       generator_version?: string;
       spec_sha256?: string;
+      merged?: unknown;
     };
     if (typeof data.families !== "object" || data.families === null) {
       throw new VerifyError(`${listing}: no \`families\`; is this a plcvec vector folder?`);
@@ -88,6 +95,7 @@ function readSuite(path: string): Suite {
     }
     suiteVersion = String(data.suite_version ?? data.generator_version ?? "");
     setHash = String(data.spec_sha256 ?? "");
+    merged = mergedIds(data.merged);
   } else {
     files = [path];
   }
@@ -96,7 +104,7 @@ function readSuite(path: string): Suite {
   const byId = new Map<string, Vector>();
   const schemaVersions = new Set<string>();
   for (const file of files) {
-    const bytes = readBytes(file);
+    const bytes = readRegular(file);
     const { header, entries } = file.endsWith(".jsonl") ? readJsonl(file, bytes) : readFamilyJson(file, bytes);
     const version = String(header.schema_version ?? "");
     if (version.split(".")[0] !== String(SCHEMA_MAJOR)) {
@@ -144,21 +152,47 @@ function readSuite(path: string): Suite {
     suiteVersion,
     schemaVersion: [...schemaVersions].sort().join(", "),
     specSha256: setHash || [...new Set(hashes)].sort().join(", "),
+    merged,
   };
+}
+
+/** Whether a folder is at `path` (a loop of symbolic links is no folder: reading it names the loop). */
+function isFolder(path: string): boolean {
+  try {
+    return statSync(path).isDirectory();
+  } catch {
+    return false;
+  }
+}
+
+/**
+ * {old id: the id it is now} from an index's {family: {old id: the id it went to}}, each chain of
+ * merges followed to its end (a vector merged into one that was merged again).
+ */
+function mergedIds(merged: unknown): Map<string, string> {
+  const flat = new Map<string, string>();
+  if (typeof merged === "object" && merged !== null) {
+    for (const ids of Object.values(merged as Record<string, unknown>)) {
+      if (typeof ids !== "object" || ids === null) continue;
+      for (const [old, now] of Object.entries(ids as Record<string, unknown>)) if (typeof now === "string") flat.set(old, now);
+    }
+  }
+  const out = new Map<string, string>();
+  for (const [old, first] of flat) {
+    const seen = new Set([old]);
+    let now = first;
+    while (flat.has(now) && !seen.has(now)) {
+      seen.add(now);
+      now = flat.get(now)!;
+    }
+    out.set(old, now);
+  }
+  return out;
 }
 
 interface Entry {
   readonly value: unknown;
   readonly where: string;
-}
-
-function readBytes(file: string): Buffer {
-  try {
-    return readFileSync(file);
-  } catch (err) {
-    const code = (err as NodeJS.ErrnoException).code;
-    throw new VerifyError(`${file}: cannot read${code === "ENOENT" ? " (no such file)" : ""}: ${code ?? String(err)}`);
-  }
 }
 
 const UTF8 = new TextDecoder("utf-8", { fatal: true });
@@ -182,14 +216,38 @@ function decode(file: string, bytes: Buffer): string {
   }
 }
 
-function readJson(file: string, bytes: Buffer = readBytes(file)): unknown {
+function readJson(file: string, bytes: Buffer = readRegular(file)): { text: string; value: unknown } {
   const text = decode(file, bytes);
   try {
-    return JSON.parse(text);
+    return { text, value: JSON.parse(text) };
   } catch (err) {
     throw new VerifyError(`${file}: not valid JSON (${(err as Error).message})`);
   }
 }
+
+/** An index (index.json or manifest.json): small, so checked for a repeated key at every load. */
+function readIndex(file: string): unknown {
+  const { text, value } = readJson(file);
+  refuseRepeatedKey(file, text, value, 0, () => undefined);
+  return value;
+}
+
+/**
+ * Refuse a repeated key in `text` (parsed as `value`), naming `file`, the line (counted from
+ * `firstLine`) and, where `vectorAt` finds one for the key's path, the vector it is in.
+ */
+function refuseRepeatedKey(file: string, text: string, value: unknown, firstLine: number, vectorAt: (path: readonly (string | number)[]) => string | undefined): void {
+  if (!mayRepeatKeys(text, value)) return;
+  const found = repeatedKey(text);
+  if (found === undefined) return;
+  const vector = vectorAt(found.path);
+  throw new VerifyError(`${file}:${found.line + firstLine}: ${vector !== undefined ? `vector ${vector}: ` : ""}repeated key ${JSON.stringify(found.key)}`);
+}
+
+const idOf = (value: unknown): string | undefined => {
+  const id = (value as { id?: unknown } | null)?.id;
+  return typeof id === "string" ? id : undefined;
+};
 
 function checkHeader(value: unknown, where: string): FamilyHeader {
   const problem = headerProblem(value);
@@ -213,6 +271,7 @@ function readJsonl(file: string, bytes: Buffer): { header: FamilyHeader; entries
     } catch (err) {
       throw new VerifyError(`${where}: not valid JSON (${(err as Error).message})`);
     }
+    refuseRepeatedKey(file, line, value, i, () => (i === 0 ? undefined : idOf(value)));
     if (i === 0) header = checkHeader(value, where);
     else entries.push({ value, where });
   });
@@ -221,7 +280,11 @@ function readJsonl(file: string, bytes: Buffer): { header: FamilyHeader; entries
 }
 
 function readFamilyJson(file: string, bytes: Buffer): { header: FamilyHeader; entries: Entry[] } {
-  const data = readJson(file, bytes) as Record<string, unknown> | null;
+  const { text, value } = readJson(file, bytes);
+  const data = value as Record<string, unknown> | null;
+  refuseRepeatedKey(file, text, value, 0, (path) =>
+    path[0] === "vectors" && typeof path[1] === "number" ? idOf((data?.["vectors"] as unknown[] | undefined)?.[path[1]]) : undefined,
+  );
   if (typeof data !== "object" || data === null || !Array.isArray(data["vectors"])) {
     throw new VerifyError(`${file}: not a plcvec vector file (no \`family\` and \`vectors\`)`);
   }

@@ -14,6 +14,8 @@ export const SKIP = "skip";
 export const XFAIL = "xfail";
 export const STALE = "stale";
 export type Status = typeof PASS | typeof FAIL | typeof ERROR | typeof SKIP | typeof XFAIL | typeof STALE;
+/** The statuses in the order counts are shown (TEXT.md, "The summary lines"). */
+export const STATUS_ORDER: readonly Status[] = [PASS, FAIL, ERROR, SKIP, XFAIL, STALE];
 /** The statuses that fail a run. */
 export const FAILING: ReadonlySet<Status> = new Set([FAIL, ERROR, STALE]);
 
@@ -60,7 +62,8 @@ export interface Verdict {
 /** A value as the failure text shows it: JSON's spelling (true, 13, "x"), or a <...> marker. */
 export function show(value: unknown): string {
   if (value === NOT_REPORTED || value === NOT_IN_VECTOR) return value;
-  if (typeof value === "number" && Number.isInteger(value)) return String(value);
+  // An integer as its digits; NaN and the infinities (which JSON cannot hold) by their names.
+  if (typeof value === "number" && (Number.isInteger(value) || !Number.isFinite(value))) return String(value);
   return stableJson(value) ?? String(value);
 }
 

@@ -17,21 +17,7 @@
 import { writeSync } from "node:fs";
 import { Worker } from "node:worker_threads";
 
-import { VerifyError } from "./errors.js";
-
-/** The bound per vector when PLCVEC_TIMEOUT says none. */
-export const DEFAULT_TIMEOUT_SECONDS = 10;
-
-/** PLCVEC_TIMEOUT: seconds per vector, a positive number (default 10); anything else is a usage error. */
-export function timeoutSeconds(env: NodeJS.ProcessEnv = process.env): number {
-  const text = env["PLCVEC_TIMEOUT"];
-  if (text === undefined || text === "") return DEFAULT_TIMEOUT_SECONDS;
-  const seconds = Number(text.trim());
-  if (text.trim() === "" || !Number.isFinite(seconds) || seconds <= 0) {
-    throw new VerifyError(`PLCVEC_TIMEOUT=${JSON.stringify(text)}: seconds per vector, a positive number (default ${DEFAULT_TIMEOUT_SECONDS})`);
-  }
-  return seconds;
-}
+import { timeoutSeconds } from "./settings.js";
 
 // The watchdog thread: CommonJS source, run with `eval`, so that it needs no file of its own.
 const WATCHDOG = `
@@ -109,6 +95,11 @@ export function register(list: readonly string[]): number {
 export function enter(n: number): void {
   beat[0] = n + 1;
   beat[1]! += 1;
+}
+
+/** The id of the vector in progress (the process ends inside it when this is read at exit), or undefined. */
+export function inProgress(): string | undefined {
+  return beat[0] === 0 ? undefined : ids[beat[0]! - 1];
 }
 
 /** The vector in progress is done. */
