@@ -12,11 +12,13 @@
  * PLCVEC_ID, PLCVEC_FAMILY, PLCVEC_INSTRUCTION, PLCVEC_TAG, PLCVEC_INTERPRETATION, PLCVEC_SHARD,
  * PLCVEC_KNOWN_FAILURES, PLCVEC_WRITE_EXPECTATIONS and PLCVEC_TIMEOUT.
  */
+import { writeSync } from "node:fs";
 import { inspect } from "node:util";
 
 import { VerifyError } from "./errors.js";
 import type { Implementation } from "./implementation.js";
 import { unknownIds, writeExpectations, type KnownFailures } from "./known.js";
+import { descriptorsClosed } from "./leftovers.js";
 import { summaryText } from "./reports.js";
 import { planRun, reportWith, runOne, summarize, type Plan, type Report } from "./runner.js";
 import type { Selection } from "./selection.js";
@@ -102,7 +104,11 @@ export function cases(impl: Implementation, options: CaseOptions = {}): Case[] {
       run,
       check(): Verdict {
         const verdict = run();
-        if (FAILING.has(verdict.status)) throw new VectorFailure(describe(verdict, vector, reading));
+        if (!FAILING.has(verdict.status)) return verdict;
+        const block = describe(verdict, vector, reading);
+        // Descriptors the process uses were closed: it may not live to report this; say it now.
+        if (descriptorsClosed()) writeSync(2, `${block}\n`);
+        throw new VectorFailure(block);
         return verdict;
       },
     };

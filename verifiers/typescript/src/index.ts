@@ -27,7 +27,7 @@ export {
   type KnownFailures,
 } from "./known.js";
 export { Memory, MemoryStep } from "./memory.js";
-export { summaryText } from "./reports.js";
+export { declaration, summaryText, type DeclarationSyntax } from "./reports.js";
 export { runVectors, summarize, type Report, type RunOptions } from "./runner.js";
 export {
   crc32,

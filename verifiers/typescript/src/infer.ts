@@ -31,6 +31,10 @@ export interface Inference {
   readonly explained: ReadonlyMap<string, readonly (readonly [string, string])[]>;
   /** Failing ids no offered reading explains, in run order. */
   readonly unexplained: readonly string[];
+  /** Known failure (xfail) id -> its smallest change. */
+  readonly knownExplained: ReadonlyMap<string, readonly (readonly [string, string])[]>;
+  /** Known failures no offered reading explains, in run order. */
+  readonly knownUnexplained: readonly string[];
   /** Passing ids that would fail under `choice`. */
   readonly broken: readonly string[];
   readonly judged: number;
@@ -154,13 +158,16 @@ export function inference(
   const byId = new Map(judged.map((j) => [j.id, j]));
   const explained = new Map<string, [string, string][]>();
   const unexplained: string[] = [];
+  const knownExplained = new Map<string, [string, string][]>();
+  const knownUnexplained: string[] = [];
   const statuses = new Map(verdicts.map((v) => [v.id, v.status]));
   for (const v of verdicts) {
-    if (v.status !== FAIL && v.status !== ERROR) continue;
+    if (v.status !== FAIL && v.status !== ERROR && v.status !== XFAIL) continue;
+    const known = v.status === XFAIL;
     const j = byId.get(v.id);
-    if (j === undefined || !j.passing.has(keyOf(j.touched, choice))) unexplained.push(v.id);
-    else explained.set(v.id, smallestChange(j, followed, choice));
+    if (j === undefined || !j.passing.has(keyOf(j.touched, choice))) (known ? knownUnexplained : unexplained).push(v.id);
+    else (known ? knownExplained : explained).set(v.id, smallestChange(j, followed, choice));
   }
   const broken = judged.filter((j) => statuses.get(j.id) === PASS && !j.passing.has(keyOf(j.touched, choice))).map((j) => j.id);
-  return { followed, choice, explained, unexplained, broken, judged: judged.length };
+  return { followed, choice, explained, unexplained, knownExplained, knownUnexplained, broken, judged: judged.length };
 }

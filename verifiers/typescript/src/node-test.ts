@@ -22,6 +22,7 @@ import { cases, runReport, type Case, type CaseOptions } from "./cases.js";
 import { summaryText } from "./reports.js";
 import { VerifyError } from "./errors.js";
 import type { Implementation } from "./implementation.js";
+import { endChildrenHoldingOutput } from "./leftovers.js";
 import { describe as describeVerdict } from "./verdict.js";
 
 export interface VectorTestOptions extends CaseOptions {
@@ -60,6 +61,8 @@ export function vectorTests(impl: Implementation, options: VectorTestOptions = {
     }
   });
   process.on("exit", () => {
+    // Under node --test, which reads this process's output until every holder has closed it.
+    if (process.env["NODE_TEST_CONTEXT"] !== undefined) endChildrenHoldingOutput();
     let report;
     try {
       report = runReport(list);

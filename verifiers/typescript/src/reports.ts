@@ -4,7 +4,7 @@
  */
 import { inference } from "./infer.js";
 import type { Report } from "./runner.js";
-import { describe, ERROR, FAIL, FAILING, INDENT, SKIP, STATUS_ORDER, type Verdict } from "./verdict.js";
+import { describe, ERROR, FAIL, FAILING, INDENT, SKIP, STATUS_ORDER, XFAIL, type Verdict } from "./verdict.js";
 
 /** Vector ids shown under each group of the roll-up; skip reasons shown. */
 const SHOW_IDS = 5;
@@ -24,39 +24,90 @@ export function block(report: Report, v: Verdict): string {
   return describe(v, report.suite.byId.get(v.id), { followed: report.choices, defaults: report.defaults });
 }
 
-/** The failing vectors grouped by what would explain them (TEXT.md, "The roll-up by reading"). */
-export function rollupLines(report: Report): string[] {
+/** How an implementer of each runner declares alternatives (TEXT.md, "The declaration in each runner"). */
+export type DeclarationSyntax = "typescript" | "verify";
+
+/** The declaration of these alternatives, sorted by interpretation, in a runner's syntax. */
+export function declaration(changes: Readonly<Record<string, string>>, syntax: DeclarationSyntax = "typescript"): string {
+  const ids = Object.keys(changes).sort(byCodePoint);
+  if (syntax === "verify") return ids.map((i) => `--choose ${i}=${changes[i]}`).join(" ");
+  return `choices: { ${ids.map((i) => `${JSON.stringify(i)}: ${JSON.stringify(changes[i])}`).join(", ")} }`;
+}
+
+type Changes = ReadonlyMap<string, readonly (readonly [string, string])[]>;
+
+const readingOf = (change: readonly (readonly [string, string])[]): string => change.map(([i, a]) => `${i}=${a}`).join(", ");
+
+/**
+ * One line per smallest change, largest group first, each marked partial when a vector of `others`
+ * (not explained) is of a family some vector of the group is of.
+ */
+function groupLines(explained: Changes, others: readonly string[], familyOf: (id: string) => string, what: string): string[] {
+  const groups = new Map<string, string[]>();
+  for (const [id, change] of explained) {
+    const text = readingOf(change);
+    (groups.get(text) ?? groups.set(text, []).get(text)!).push(id);
+  }
+  const lines: string[] = [];
+  for (const [text, ids] of [...groups].sort(([a, x], [b, y]) => y.length - x.length || byCodePoint(a, b))) {
+    const families = new Set(ids.map(familyOf));
+    const near = others.filter((id) => families.has(familyOf(id)));
+    const named = [...new Set(near.map(familyOf))].sort(byCodePoint).join(", ");
+    lines.push(`${INDENT}${pad6(ids.length)}  ${text}${near.length ? ` (partial: ${near.length} ${what} of ${named} not explained)` : ""}`);
+  }
+  return lines;
+}
+
+/** The failing vectors no reading explains, grouped by the clauses they cite. */
+function unexplainedLines(report: Report, unexplained: readonly string[]): string[] {
+  const lines = [`NOT EXPLAINED by any reading: ${unexplained.length} failing vectors, by the clauses they cite:`];
+  const groups = new Map<string, string[]>();
+  for (const id of unexplained) {
+    const key = report.suite.byId.get(id)?.clauses.join(", ") || "(no clauses)";
+    (groups.get(key) ?? groups.set(key, []).get(key)!).push(id);
+  }
+  for (const [key, ids] of [...groups].sort(([a, x], [b, y]) => y.length - x.length || byCodePoint(a, b))) {
+    lines.push(`${INDENT}${pad6(ids.length)}  ${key}`);
+    for (const id of [...ids].sort(byCodePoint).slice(0, SHOW_IDS)) lines.push(`${INDENT}${" ".repeat(6)}  ${id}`);
+    if (ids.length > SHOW_IDS) lines.push(`${INDENT}${" ".repeat(6)}  ... and ${ids.length - SHOW_IDS} more`);
+  }
+  return lines;
+}
+
+/**
+ * The failing vectors and the known failures grouped by what would explain them (TEXT.md, "The
+ * roll-up by reading"): the readings, each marked partial where failures of its families stay
+ * unexplained; the failures no reading explains; the known failures another reading explains.
+ */
+export function rollupLines(report: Report, syntax: DeclarationSyntax = "typescript"): string[] {
   const failing = report.verdicts.filter((v) => v.status === FAIL || v.status === ERROR);
-  if (failing.length === 0) return [];
+  const known = report.verdicts.filter((v) => v.status === XFAIL);
+  if (failing.length === 0 && known.length === 0) return [];
   const inferred = inference(report.verdicts, report.suite, report.interpretations, report.choices, report.defaults, new Set(report.cpuWrites));
+  const familyOf = (id: string): string => report.suite.byId.get(id)?.family ?? "";
   const lines: string[] = [];
   if (inferred.explained.size) {
-    const groups = new Map<string, number>();
-    for (const change of inferred.explained.values()) {
-      const text = change.map(([i, a]) => `${i}=${a}`).join(", ");
-      groups.set(text, (groups.get(text) ?? 0) + 1);
-    }
     lines.push(`READINGS: ${inferred.explained.size} of ${failing.length} failing vectors pass under other alternatives:`);
-    for (const [text, n] of [...groups].sort(([a, m], [b, n]) => n - m || byCodePoint(a, b))) lines.push(`${INDENT}${pad6(n)}  ${text}`);
-    const changes = Object.keys(inferred.choice)
-      .sort(byCodePoint)
-      .filter((i) => inferred.choice[i] !== inferred.followed[i])
-      .map((i) => `--choose ${i}=${inferred.choice[i]}`);
-    lines.push(`${INDENT}declare: ${changes.join(" ")}`);
+    lines.push(...groupLines(inferred.explained, inferred.unexplained, familyOf, "failing vectors"));
+    const changes: Record<string, string> = {};
+    for (const i of Object.keys(inferred.choice)) if (inferred.choice[i] !== inferred.followed[i]) changes[i] = inferred.choice[i]!;
+    lines.push(`${INDENT}declare: ${declaration(changes, syntax)}`);
     if (inferred.broken.length) lines.push(`${INDENT}(so declared, ${inferred.broken.length} vectors that pass now would fail)`);
+    const explainedFamilies = new Set([...inferred.explained.keys()].map(familyOf));
+    const partial = inferred.unexplained.filter((id) => explainedFamilies.has(familyOf(id)));
+    if (partial.length) {
+      lines.push(`${INDENT}partial: ${partial.length} failing vectors that no reading explains are of the same families; a declaration may hide part of a bug there`);
+    }
   }
-  if (inferred.unexplained.length) {
-    lines.push(`NOT EXPLAINED by any reading: ${inferred.unexplained.length} failing vectors, by the clauses they cite:`);
-    const groups = new Map<string, string[]>();
-    for (const id of inferred.unexplained) {
-      const key = report.suite.byId.get(id)?.clauses.join(", ") || "(no clauses)";
-      (groups.get(key) ?? groups.set(key, []).get(key)!).push(id);
-    }
-    for (const [key, ids] of [...groups].sort(([a, x], [b, y]) => y.length - x.length || byCodePoint(a, b))) {
-      lines.push(`${INDENT}${pad6(ids.length)}  ${key}`);
-      for (const id of [...ids].sort(byCodePoint).slice(0, SHOW_IDS)) lines.push(`${INDENT}${" ".repeat(6)}  ${id}`);
-      if (ids.length > SHOW_IDS) lines.push(`${INDENT}${" ".repeat(6)}  ... and ${ids.length - SHOW_IDS} more`);
-    }
+  if (inferred.unexplained.length) lines.push(...unexplainedLines(report, inferred.unexplained));
+  if (inferred.knownExplained.size) {
+    lines.push(`KNOWN FAILURES: ${inferred.knownExplained.size} of ${known.length} known failures pass under other alternatives:`);
+    const others = [...inferred.unexplained, ...inferred.knownUnexplained];
+    lines.push(...groupLines(inferred.knownExplained, others, familyOf, "failing vectors and known failures"));
+    const changes: Record<string, string> = {};
+    for (const change of inferred.knownExplained.values()) for (const [i, a] of change) changes[i] = a;
+    lines.push(`${INDENT}declare: ${declaration(changes, syntax)}`);
+    lines.push(`${INDENT}then remove those ${inferred.knownExplained.size} known failures from ${report.knownFile ?? "the known-failures file"}`);
   }
   return lines;
 }
@@ -94,12 +145,14 @@ export function summaryLines(report: Report): string[] {
 /**
  * The run's text (TEXT.md, "The run's text"): a failure block for each failing vector (`blocks:
  * false` when the test runner has printed each already), the roll-up, the skips, why the run fails
- * as a whole, an empty line and the summary lines, the totals with the run's seconds.
+ * as a whole, an empty line and the summary lines, the totals with the run's seconds. The roll-up
+ * declares alternatives as a TypeScript implementation does (`choices: { ... }`), or as
+ * `plcvec verify` takes them (`declaration: "verify"`, the form of the shared text cases).
  */
-export function summaryText(report: Report, options: { readonly blocks?: boolean } = {}): string {
+export function summaryText(report: Report, options: { readonly blocks?: boolean; readonly declaration?: DeclarationSyntax } = {}): string {
   const lines: string[] = [];
   if (options.blocks !== false) for (const v of report.verdicts) if (FAILING.has(v.status)) lines.push(block(report, v));
-  lines.push(...rollupLines(report), ...skippedLines(report));
+  lines.push(...rollupLines(report, options.declaration), ...skippedLines(report));
   if (!report.verdicts.some((v) => FAILING.has(v.status)) && report.runProblems.length) {
     lines.push(`NOT PASSED (exit ${report.exitCode}): ${report.runProblems.join("; ")}`);
   }

@@ -17,6 +17,7 @@
 import { writeSync } from "node:fs";
 import { Worker } from "node:worker_threads";
 
+import { noteDescriptors } from "./leftovers.js";
 import { timeoutSeconds } from "./settings.js";
 
 // The watchdog thread: CommonJS source, run with `eval`, so that it needs no file of its own.
@@ -81,6 +82,7 @@ function say(what: string): void {
 /** Number these vectors for the watchdog; returns the number of the first. */
 export function register(list: readonly string[]): number {
   watchdog ??= start();
+  noteDescriptors();
   const first = ids.length;
   ids.push(...list);
   watchdog.postMessage(list);

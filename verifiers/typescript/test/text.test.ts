@@ -9,7 +9,7 @@ import { dirname, join } from "node:path";
 import { test } from "node:test";
 import { fileURLToPath } from "node:url";
 
-import { loadSuite, runVectors, summaryText, type Implementation, type RunOutcome } from "../src/index.js";
+import { declaration, loadKnownFailures, loadSuite, runVectors, summaryText, type Implementation, type RunOutcome } from "../src/index.js";
 
 const cases = join(dirname(fileURLToPath(import.meta.url)), "..", "..", "..", "parity", "text");
 
@@ -23,9 +23,10 @@ interface Answers {
   readonly answers: Readonly<Record<string, RunOutcome>>;
 }
 
-test("the shared failure text: every block, the roll-up, the skips and the summary, byte for byte", () => {
+/** The implementation the shared cases describe: it declares `hello` and answers from `answers`. */
+function replay(): Implementation {
   const { hello, answers } = JSON.parse(readFileSync(join(cases, "answers.json"), "utf8")) as Answers;
-  const impl: Implementation = {
+  return {
     name: hello.adapter.name,
     ...(hello.adapter.version !== undefined ? { version: hello.adapter.version } : {}),
     instructions: hello.instructions,
@@ -37,12 +38,39 @@ test("the shared failure text: every block, the roll-up, the skips and the summa
       return answer;
     },
   };
-  const report = runVectors(impl, { suite: loadSuite(join(cases, "vectors")) });
-  // What depends on the machine goes: the header line, and the time after the totals.
-  const text = summaryText(report)
+}
+
+/** The run's text without what depends on the machine: the header line, and the time after the totals. */
+function machineFree(text: string): string {
+  return text
     .split("\n")
     .filter((line) => !line.startsWith("plcvec verify: "))
     .join("\n")
     .replace(/ in \d+\.\d\d s\n$/, "\n");
-  assert.equal(text, readFileSync(join(cases, "expected.txt"), "utf8"));
+}
+
+test("the shared failure text: every block, the roll-up, the skips and the summary, byte for byte", () => {
+  const report = runVectors(replay(), { suite: loadSuite(join(cases, "vectors")) });
+  // The shared cases hold the declaration as plcvec verify writes it.
+  assert.equal(machineFree(summaryText(report, { declaration: "verify" })), readFileSync(join(cases, "expected.txt"), "utf8"));
+});
+
+test("the shared failure text with its known failures: the KNOWN FAILURES part names the file as given", () => {
+  const here = process.cwd();
+  process.chdir(cases); // the file is given as the shared cases name it: `known.toml`, from its own folder
+  try {
+    const report = runVectors(replay(), { suite: loadSuite(join(cases, "vectors")), known: loadKnownFailures("known.toml") });
+    assert.equal(machineFree(summaryText(report, { declaration: "verify" })), readFileSync(join(cases, "expected-known.txt"), "utf8"));
+  } finally {
+    process.chdir(here);
+  }
+});
+
+test("the declaration in this runner's syntax is TEXT.md's TypeScript row, and the roll-up uses it by default", () => {
+  const table = readFileSync(join(cases, "..", "TEXT.md"), "utf8");
+  const row = /^\| TypeScript \| `([^`]+)` \|$/m.exec(table);
+  assert.ok(row !== null, "TEXT.md has no TypeScript row in its table of declarations");
+  assert.equal(declaration({ "TADD-FLAGS-OFF": "set-only", "FX5-SM709-SCOPE": "all-words" }), row[1]);
+  const report = runVectors(replay(), { suite: loadSuite(join(cases, "vectors")) });
+  assert.match(summaryText(report), /^ {4}declare: choices: \{ "FX5-SM709-SCOPE": "all-words", "TADD-FLAGS-OFF": "set-only" \}$/m);
 });
