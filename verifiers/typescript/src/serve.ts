@@ -8,9 +8,15 @@
 import { createInterface } from "node:readline";
 
 import type { Implementation, RunOutcome } from "./implementation.js";
+import { requestProblem } from "./validate.js";
 import type { VectorRequest } from "./vector.js";
 
 const PROTOCOL = 1;
+
+/** A request as the implementation interface gives it: `assumes` may be left out on the wire. */
+function withDefaults(request: VectorRequest): VectorRequest {
+  return request.assumes === undefined ? { ...request, assumes: { device_sizes: {} } } : request;
+}
 
 /** Serve `impl` on this process's stdin and stdout until `bye` or the end of input. */
 export function serve(impl: Implementation, version = "1.0"): void {
@@ -50,9 +56,15 @@ export function serve(impl: Implementation, version = "1.0"): void {
   function runOne(request: unknown): void {
     const id = typeof (request as { id?: unknown })?.id === "string" ? (request as { id: string }).id : undefined;
     if (id === undefined) fatal("a vector in a run request has no id");
+    // A request of the wrong shape is answered as an error naming it, never run (PROTOCOL.md).
+    const problem = requestProblem(request);
+    if (problem !== undefined) {
+      send({ type: "result", id, error: `the request for ${id} is not a vector the protocol sends: at ${problem}` });
+      return;
+    }
     let answer: RunOutcome;
     try {
-      answer = impl.run(request as VectorRequest);
+      answer = impl.run(withDefaults(request as VectorRequest));
     } catch (err) {
       answer = { error: err instanceof Error ? `${err.name}: ${err.message}` : String(err) };
     }

@@ -228,3 +228,31 @@ export function vectorProblem(v: Json, family: string): string | undefined {
     () => mixedTypes(v),
   );
 }
+
+const REQUEST_STEP_KEYS = new Set(["set", "rlo_in", "clock", "en", "input", "elapsed_ms"]);
+
+/**
+ * The first thing wrong with `r` as a vector of a protocol run request (PROTOCOL.md: a vector without
+ * its expectations), or undefined: what an adapter must refuse rather than run (a word of 70000
+ * would be echoed back, a request without steps would fail inside the implementation).
+ */
+export function requestProblem(r: Json): string | undefined {
+  if (!isObject(r)) return "not a JSON object";
+  for (const key of ["id", "family", "instruction"]) {
+    if (typeof r[key] !== "string" || r[key] === "") return `${key}: missing or not a string`;
+  }
+  const initial = r["initial"];
+  if (!isObject(initial)) return "initial: missing";
+  const problem = devices(initial["devices"], "initial/devices");
+  if (problem !== undefined) return problem;
+  if (!isObject(initial["operands"])) return "initial/operands: missing";
+  if (r["assumes"] !== undefined && !(isObject(r["assumes"]) && isObject(r["assumes"]["device_sizes"]))) return "assumes/device_sizes: not an object";
+  const steps = r["steps"];
+  if (!Array.isArray(steps) || steps.length === 0) return "steps: missing or empty";
+  for (const [i, step] of steps.entries()) {
+    if (!isObject(step)) return `steps/${i}: not an object`;
+    const p = unknownKey(step, REQUEST_STEP_KEYS, `steps/${i}`) ?? (step["set"] !== undefined ? devices(step["set"], `steps/${i}/set`) : undefined);
+    if (p !== undefined) return p;
+  }
+  return undefined;
+}

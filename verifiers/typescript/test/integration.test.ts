@@ -102,19 +102,33 @@ const RUN = JSON.stringify({
       steps: [{ en: true }],
     },
     { id: "broken", family: "fx5-time-add", instruction: "TADD", initial: {}, steps: [{ en: true }] },
+    { id: "no-steps", family: "fx5-time-add", instruction: "TADD", initial: { devices: {}, operands: {} } },
+    {
+      id: "word-70000",
+      family: "fx5-time-add",
+      instruction: "TADD",
+      initial: { devices: { D10: 70000 }, operands: { d: { device: "D30" }, s1: { device: "D10" }, s2: { device: "D20" } } },
+      steps: [{ en: true }],
+    },
   ],
 });
 
 test("the adapter answers hello, run and bye as PROTOCOL.md shows", () => {
   const run = adapterRun([HELLO, RUN, '{"type":"bye"}'].join("\n") + "\n", ["--choose", "TADD-EXACT-24=carry-above-24"]);
   assert.equal(run.status, 0, run.stderr);
-  const [hello, result, broken] = run.stdout.trim().split("\n").map((l) => JSON.parse(l) as Record<string, unknown>);
+  const [hello, result, broken, noSteps, word] = run.stdout.trim().split("\n").map((l) => JSON.parse(l) as Record<string, unknown>);
   assert.deepEqual(hello!["instructions"], ["TADD", "TADDP"]);
   assert.deepEqual(hello!["interpretations"], { "TADD-EXACT-24": "carry-above-24" });
   const devices = (result!["steps"] as { devices: Record<string, unknown> }[])[0]!.devices;
   assert.deepEqual([devices["D30"], devices["D31"], devices["D32"]], [13, 40, 15]);
-  assert.equal(broken!["id"], "broken");
-  assert.match(String(broken!["error"]), /TypeError|Error/);
+  // A request of the wrong shape is answered as an error naming it and where, never run nor echoed.
+  assert.deepEqual(broken, { type: "result", id: "broken", error: "the request for broken is not a vector the protocol sends: at initial/devices: not an object of devices" });
+  assert.deepEqual(noSteps, { type: "result", id: "no-steps", error: "the request for no-steps is not a vector the protocol sends: at steps: missing or empty" });
+  assert.deepEqual(word, {
+    type: "result",
+    id: "word-70000",
+    error: "the request for word-70000 is not a vector the protocol sends: at initial/devices/D10: 70000 is not a word (an integer 0..65535) nor a bit",
+  });
 });
 
 test("the adapter survives malformed input with a fatal answer and a non-zero exit, never a crash", () => {

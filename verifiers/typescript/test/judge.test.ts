@@ -136,13 +136,14 @@ test("the gate never passes by accident: empty selection, all skipped, too many 
   const nothing = { families: ["fx5-time-add"], ids: ["fx5-time-compare/*"] };
   const empty = runVectors(ref, { suite, selection: nothing });
   assert.equal(empty.passed, false);
-  assert.match(summaryText(empty), /NOT PASSED: the selection holds no vector/);
+  assert.match(summaryText(empty), /NOT PASSED \(exit 5\): no vector selected: the selection matches nothing/);
+  assert.equal(empty.exitCode, 5);
   assert.equal(runVectors(ref, { suite, selection: nothing, allowEmpty: true }).passed, true);
 
   const skipper: Implementation = { name: "skipper", run: () => ({ skip: "not yet" }) };
   const skipped = runVectors(skipper, { suite, selection: { families: ["fx5-time-add"] } });
   assert.equal(skipped.passed, false);
-  assert.match(summaryText(skipped), /nothing passed: all \d+ selected vectors were skipped/);
+  assert.match(summaryText(skipped), /nothing passed \(\d+ skipped\): the run proves nothing/);
 
   const tadOnly: Implementation = { ...ref, name: "TADD only", instructions: ["TADD"] };
   const some = runVectors(tadOnly, { suite, selection: { families: ["fx5-time-add"] } });
@@ -155,7 +156,7 @@ test("the gate never passes by accident: empty selection, all skipped, too many 
 test("known failures: a listed failure is xfail, a listed pass is stale, an unknown id is stale", () => {
   const broken = edited(MANUAL_TADD, (s) => { s[0]!.devices["D31"] = 41; });
   const known = parseKnownFailures(`[[known-failure]]\nid = "${MANUAL_TADD}"\nreason = "minutes off by one (#7)"\n`, "known.toml");
-  const xfail = runVectors(broken, { ...only(MANUAL_TADD), known });
+  const xfail = runVectors(broken, { suite, selection: { families: ["fx5-time-add"] }, known });
   assert.equal(xfail.counts.xfail, 1);
   assert.equal(xfail.passed, true);
   const stale = runVectors(ref, { ...only(MANUAL_TADD), known });
@@ -165,6 +166,24 @@ test("known failures: a listed failure is xfail, a listed pass is stale, an unkn
   const r = runVectors(ref, { ...only(MANUAL_TADD), known: ghost });
   assert.equal(r.passed, false);
   assert.match(summaryText(r), /STALE fx5-time-add\/no\/such\n {4}listed as a known failure \(k\.toml:1\) but the suite has no such vector; remove it/);
+});
+
+test("a run of known failures alone proves nothing: not green, exit 5, 'nothing passed' (CONTRACT.md)", () => {
+  const broken = edited(MANUAL_TADD, (s) => { s[0]!.devices["D31"] = 41; });
+  const known = parseKnownFailures(`[[known-failure]]\nid = "${MANUAL_TADD}"\nreason = "minutes off by one"\n`, "known.toml");
+  const report = runVectors(broken, { ...only(MANUAL_TADD), known });
+  assert.deepEqual([report.counts.xfail, report.passed, report.exitCode], [1, false, 5]);
+  assert.match(summaryText(report), /^NOT PASSED \(exit 5\): nothing passed \(1 known failures\): the run proves nothing/m);
+  // Deprecated since 0.2.0: the 0.1.0 name of verdicts, not shown by a spread or JSON.
+  assert.equal(report.results, report.verdicts);
+  assert.equal(JSON.stringify(Object.keys(report)).includes('"results"'), false);
+});
+
+test("a value that is not a finite number is shown by its name, never as null (TEXT.md's values)", () => {
+  for (const [value, shown] of [[NaN, "NaN"], [Infinity, "Infinity"], [-Infinity, "-Infinity"]] as const) {
+    const r = runVectors(edited(MANUAL_TADD, (s) => { s[0]!.devices["D30"] = value; }), only(MANUAL_TADD));
+    assert.match(summaryText(r), new RegExp(`step 0 D30: expected 13, got ${shown.replace("-", "\\-")} \\(before the step: 65535\\)`));
+  }
 });
 
 test("a bad expectations file is named with its line", () => {
@@ -181,7 +200,7 @@ test("a bad expectations file is named with its line", () => {
     writeFileSync(file, text);
     assert.throws(() => loadKnownFailures(file), (err: unknown) => err instanceof VerifyError && pattern.test(err.message), text);
   }
-  assert.throws(() => loadKnownFailures(join(dir, "missing.toml")), /cannot read the expectations file: ENOENT/);
+  assert.throws(() => loadKnownFailures(join(dir, "missing.toml")), /missing\.toml: cannot read the expectations file \(no such file\): ENOENT/);
 });
 
 test("declared alternatives are checked against the suite", () => {

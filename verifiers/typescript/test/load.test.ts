@@ -1,11 +1,14 @@
 /** Loading refuses, by file, line and vector id, what the contract cannot run. */
 import assert from "node:assert/strict";
-import { writeFileSync } from "node:fs";
+import { spawnSync } from "node:child_process";
+import { cpSync, mkdtempSync, readFileSync, symlinkSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
 import { join, dirname } from "node:path";
 import { test } from "node:test";
 import { fileURLToPath } from "node:url";
 
-import { loadSuite, VerifyError, SUITE } from "../src/index.js";
+import { loadKnownFailures, loadSuite, PACKAGED_VECTORS, parseKnownFailures, runVectors, summaryText, VerifyError, SUITE } from "../src/index.js";
+import { reference } from "../src/reference/index.js";
 import { editedFamily, familyLines, writeFamily } from "./helpers.js";
 
 test("the packaged copy holds the whole suite the names were generated with", () => {
@@ -76,4 +79,77 @@ test("a folder that is not a vector set, and a missing path, are named", () => {
   const file = writeFamily("x", ["{}"]);
   writeFileSync(join(dirname(file), "index.json"), "{}");
   refuses(dirname(file), /index\.json: no `families`/);
+});
+
+const escaped = (s: string): string => s.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
+
+/** A copy of the packaged vector folder, with `edit` applied to its index.json text. */
+function copiedSet(edit: (index: string) => string = (i) => i): string {
+  const dir = join(mkdtempSync(join(tmpdir(), "plcvec-ts-set-")), "vectors");
+  cpSync(PACKAGED_VECTORS, dir, { recursive: true });
+  writeFileSync(join(dir, "index.json"), edit(readFileSync(join(dir, "index.json"), "utf8")));
+  return dir;
+}
+
+test("what is not a regular file is refused by name before it is opened: a named pipe, a folder, a loop of links", () => {
+  const dir = mkdtempSync(join(tmpdir(), "plcvec-ts-odd-"));
+  const fifo = join(dir, "fx5-time-add.jsonl");
+  assert.equal(spawnSync("mkfifo", [fifo]).status, 0);
+  refuses(fifo, new RegExp(`^${escaped(fifo)}: not a regular file \\(a named pipe\\)$`));
+  const loop = join(dir, "loop.jsonl");
+  symlinkSync(join(dir, "loop2.jsonl"), loop);
+  symlinkSync(loop, join(dir, "loop2.jsonl"));
+  refuses(loop, new RegExp(`^${escaped(loop)}: a loop of symbolic links$`));
+  // A family file the index names that is a folder, and an index that is a named pipe.
+  const set = copiedSet();
+  const family = join(set, "fx5-time-add.jsonl");
+  spawnSync("rm", [family]);
+  spawnSync("mkdir", [family]);
+  refuses(set, new RegExp(`^${escaped(family)}: not a regular file \\(a folder\\)$`));
+  const pipeIndex = copiedSet();
+  spawnSync("rm", [join(pipeIndex, "index.json")]);
+  assert.equal(spawnSync("mkfifo", [join(pipeIndex, "index.json")]).status, 0);
+  refuses(pipeIndex, new RegExp(`^${escaped(join(pipeIndex, "index.json"))}: not a regular file \\(a named pipe\\)$`));
+  // The known-failures file too.
+  const knownPipe = join(dir, "known.toml");
+  assert.equal(spawnSync("mkfifo", [knownPipe]).status, 0);
+  assert.throws(() => loadKnownFailures(knownPipe), (err: unknown) => err instanceof VerifyError && err.message === `${knownPipe}: not a regular file (a named pipe)`);
+});
+
+test("a repeated key is refused by file, line and vector id, in a vector and in the index", () => {
+  const lines = familyLines("fx5-time-add").slice(0, 4);
+  const id = (JSON.parse(lines[2]!) as { id: string }).id;
+  // The second "description" of the vector on line 3, with another value (JSON.parse keeps the last).
+  lines[2] = lines[2]!.replace(/^\{/, '{"description": "first", ');
+  const file = writeFamily("fx5-time-add", lines);
+  refuses(file, new RegExp(`^${escaped(file)}:3: vector ${escaped(id)}: repeated key "description"$`));
+  // A repeat in a nested object (a step's devices) is found as well.
+  const nested = familyLines("fx5-time-add").slice(0, 3);
+  assert.ok(nested[1]!.includes('"devices":{'));
+  nested[1] = nested[1]!.replace('"devices":{', '"devices":{"D7":1,"D7":2,');
+  const nestedFile = writeFamily("fx5-time-add", nested);
+  refuses(nestedFile, new RegExp(`^${escaped(nestedFile)}:2: vector .*: repeated key "D7"$`));
+  const set = copiedSet((index) => index.replace('"families": {', '"families": {\n  "fx5-time-add": {},'));
+  refuses(set, new RegExp(`^${escaped(join(set, "index.json"))}:\\d+: repeated key "fx5-time-add"$`));
+  // An escaped quote before a colon inside a string is no key: such a file loads.
+  const quoted = familyLines("fx5-time-add").slice(0, 2);
+  assert.match(quoted[1]!, /"description":"[^"]*"/);
+  quoted[1] = quoted[1]!.replace(/"description":"[^"]*"/, '"description":"say \\"x\\": y"');
+  assert.equal(loadSuite(writeFamily("fx5-time-add", quoted)).vectors[0]!.description, 'say "x": y');
+});
+
+test("a known failure whose id was merged names the vector it became, the index's map followed to its end", () => {
+  const target = "fx5-time-add/TADD/manual-example/program";
+  const set = copiedSet((index) => {
+    const data = JSON.parse(index) as Record<string, unknown>;
+    data["merged"] = { "fx5-time-add": { "fx5-time-add/TADD/old": "fx5-time-add/TADD/older", "fx5-time-add/TADD/older": target } };
+    return JSON.stringify(data, null, 1) + "\n";
+  });
+  const known = parseKnownFailures('[[known-failure]]\nid = "fx5-time-add/TADD/old"\nreason = "listed before the merge"\n', "k.toml");
+  const report = runVectors(reference(), { suite: loadSuite(set), selection: { ids: [target] }, known });
+  assert.equal(report.counts.stale, 1);
+  assert.match(
+    summaryText(report),
+    new RegExp(`^STALE fx5-time-add/TADD/old\\n {4}listed as a known failure \\(k\\.toml:1\\) but the suite has no such vector: it was merged into ${escaped(target)}; list that id instead$`, "m"),
+  );
 });
