@@ -9,7 +9,7 @@
 import { VerifyError } from "./errors.js";
 import { interned, internedResults } from "./intern.js";
 import { layoutOf, type Layout } from "./layout.js";
-import type { Devices, Outcome, StepExpect, Value, Vector } from "./vector.js";
+import type { AlternativeExpectation, Devices, Outcome, StepExpect, Value, Vector } from "./vector.js";
 
 export interface Expected {
   // What judging a passing vector reads comes first, so that it shares a cache line.
@@ -19,15 +19,19 @@ export interface Expected {
   readonly layout: Layout;
   /** The value expected in each slot after each step, step after step (undefined: not listed yet). */
   readonly image: readonly (Value | undefined)[];
-  /** The slots compared: all but scratch. */
+  /** The slots compared: all but scratch and the unjudged devices. */
   readonly checked: readonly number[];
   readonly scratch: ReadonlySet<string>;
+  /** Never compared: scratch, and the devices the alternatives followed leave unjudged. */
+  readonly ignored: ReadonlySet<string>;
+  /** Interpretation -> the devices its followed alternative leaves unjudged (sorted lists; empty: none). */
+  readonly unjudged: Readonly<Record<string, readonly string[]>>;
   /** The alternative applied for each interpretation the vector depends on. */
   readonly applied: Readonly<Record<string, string>>;
   readonly id: string;
-  /** Per step: every listed device after the step, scratch left out. */
+  /** Per step: every listed device after the step, scratch and unjudged devices left out. */
   readonly states: readonly Devices[];
-  /** Per step: the state the step started from (after `set`), for messages. */
+  /** Per step: the state the step started from (after `set`; an unjudged device keeps its value), for messages. */
   readonly befores: readonly Devices[];
   /** Per step: its `set` (scratch left out), or undefined: what the implementation held before a step is its own report with this written over it. */
   readonly sets: readonly (Devices | undefined)[];
@@ -36,6 +40,7 @@ export interface Expected {
 
 const NO_SCRATCH: ReadonlySet<string> = new Set();
 const NONE_APPLIED: Readonly<Record<string, string>> = Object.freeze({});
+const NONE_UNJUDGED: Readonly<Record<string, readonly string[]>> = Object.freeze({});
 
 /** The slots of a layout compared: all but scratch (one list per layout and scratch list). */
 function checkedSlots(layout: Layout, scratch: readonly string[]): readonly number[] {
@@ -52,28 +57,19 @@ function checkedSlots(layout: Layout, scratch: readonly string[]): readonly numb
 
 const checkedByLayout = new WeakMap<Layout, Map<string, readonly number[]>>();
 
-export function expectedOf(
-  vector: Vector,
-  choices: Readonly<Record<string, string>>,
-  defaults: Readonly<Record<string, string>>,
-): Expected {
-  const touched = vector.outcome.interpretations ?? [];
-  const applied: Record<string, string> = {};
-  for (const i of touched) applied[i] = choices[i] ?? (defaults[i] as string);
-  let stepsExpect: readonly StepExpect[] = vector.steps.map((s) => s.expect);
-  let final: Devices = vector.final.devices;
-  let outcome: Outcome = touched.length ? (vector.outcome.default ?? vector.outcome) : vector.outcome;
-  if (touched.some((i) => applied[i] !== defaults[i])) {
-    const alt = (vector.alternatives ?? []).find((a) => touched.every((i) => a.choices[i] === applied[i]));
-    if (alt === undefined) {
-      const wanted = Object.entries(applied).map(([i, a]) => `${i}=${a}`).sort().join(", ");
-      throw new VerifyError(`vector ${vector.id}: no expectation for ${wanted} (the vector file lists no such alternative)`);
-    }
-    stepsExpect = alt.expect;
-    final = alt.final.devices;
-    outcome = alt.outcome;
+/** The expectation a vector gives for `applied`: its own steps for the defaults, else the matching alternatives entry. */
+function entryFor(vector: Vector, touched: readonly string[], applied: Readonly<Record<string, string>>, defaults: Readonly<Record<string, string>>): AlternativeExpectation | undefined {
+  if (!touched.some((i) => applied[i] !== defaults[i])) return undefined;
+  const alt = (vector.alternatives ?? []).find((a) => touched.every((i) => a.choices[i] === applied[i]));
+  if (alt === undefined) {
+    const wanted = Object.entries(applied).map(([i, a]) => `${i}=${a}`).sort().join(", ");
+    throw new VerifyError(`vector ${vector.id}: no expectation for ${wanted} (the vector file lists no such alternative)`);
   }
-  const scratch = new Set(vector.initial.scratch ?? []);
+  return alt;
+}
+
+/** The state after each step and before it (after `set`), never holding scratch; `states` without the unjudged devices either. */
+function statesOf(vector: Vector, stepsExpect: readonly StepExpect[], scratch: ReadonlySet<string>, unjudged: ReadonlySet<string>) {
   const state: Record<string, boolean | number> = {};
   for (const [k, v] of Object.entries(vector.initial.devices)) if (!scratch.has(k)) state[k] = v;
   const states: Devices[] = [];
@@ -87,9 +83,29 @@ export function expectedOf(
     befores.push({ ...state });
     const expect = stepsExpect[i] as StepExpect;
     Object.assign(state, expect.devices);
-    states.push({ ...state });
+    const judged: Devices = { ...state };
+    for (const d of unjudged) delete judged[d];
+    states.push(judged);
     results.push(expect.result);
   });
+  return { states, befores, sets, results };
+}
+
+export function expectedOf(
+  vector: Vector,
+  choices: Readonly<Record<string, string>>,
+  defaults: Readonly<Record<string, string>>,
+): Expected {
+  const touched = vector.outcome.interpretations ?? [];
+  const applied: Record<string, string> = {};
+  for (const i of touched) applied[i] = choices[i] ?? (defaults[i] as string);
+  const alt = entryFor(vector, touched, applied, defaults);
+  const outcome: Outcome = alt?.outcome ?? (touched.length ? (vector.outcome.default ?? vector.outcome) : vector.outcome);
+  const final: Devices = alt?.final.devices ?? vector.final.devices;
+  const scratch = new Set(vector.initial.scratch ?? []);
+  const unjudged = alt?.unjudged ?? NONE_UNJUDGED;
+  const unjudgedSet = new Set(Object.values(unjudged).flat());
+  const { states, befores, sets, results } = statesOf(vector, alt?.expect ?? vector.steps.map((s) => s.expect), scratch, unjudgedSet);
   if (!sameDevices(states[states.length - 1] as Devices, final)) {
     throw new VerifyError(
       `vector ${vector.id}: the per-step changes do not add up to \`final\` (the vector file is inconsistent; regenerate it)`,
@@ -99,13 +115,15 @@ export function expectedOf(
   const has = Object.prototype.hasOwnProperty;
   const image: (Value | undefined)[] = [];
   for (const state of states) for (const name of layout.names) image.push(has.call(state, name) ? state[name] : undefined);
-  const checked = checkedSlots(layout, vector.initial.scratch ?? []);
+  const ignored = unjudgedSet.size === 0 ? scratch : new Set([...scratch, ...unjudgedSet]);
   return {
     results: internedResults(results),
     layout,
     image,
-    checked,
+    checked: checkedSlots(layout, [...ignored]),
     scratch: scratch.size === 0 ? NO_SCRATCH : scratch,
+    ignored: ignored.size === 0 ? NO_SCRATCH : ignored,
+    unjudged,
     applied: touched.length === 0 ? NONE_APPLIED : interned(applied),
     id: vector.id,
     states,
@@ -150,12 +168,12 @@ function namedDevices(vector: Vector): string[] {
 
 /**
  * Whether `got` holds exactly the devices expected after step `step` (the slots of `expected.image`
- * for that step, scratch left out), with the same values and JSON types (true is not 1). This runs
+ * for that step, scratch and unjudged devices left out), with the same values and JSON types (true is not 1). This runs
  * once per step of every vector an implementation reports as plain objects: no key arrays, no
  * allocation.
  */
 export function holds(got: Devices, expected: Expected, step: number): boolean {
-  const { layout, image, checked, scratch } = expected;
+  const { layout, image, checked, ignored } = expected;
   const names = layout.names;
   const from = step * names.length;
   let listed = 0;
@@ -166,8 +184,8 @@ export function holds(got: Devices, expected: Expected, step: number): boolean {
     if (want !== undefined) listed++;
   }
   let n = 0;
-  if (scratch.size === 0) for (const _ in got) n++;
-  else for (const k in got) if (!scratch.has(k)) n++;
+  if (ignored.size === 0) for (const _ in got) n++;
+  else for (const k in got) if (!ignored.has(k)) n++;
   return n === listed;
 }
 

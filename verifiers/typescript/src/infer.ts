@@ -42,13 +42,20 @@ export interface Inference {
 
 const keyOf = (touched: readonly string[], combo: Readonly<Record<string, string>>): string => touched.map((i) => combo[i]).join("\u0000");
 
-/** Two expectations of one vector equal, value for value and JSON type for JSON type. */
-function sameExpectation(a: Expected, b: Expected): boolean {
-  if (a.results.length !== b.results.length || a.results.some((r, i) => r !== b.results[i])) return false;
-  return a.states.every((s, i) => {
-    const t = b.states[i]!;
-    const keys = Object.keys(s);
-    return keys.length === Object.keys(t).length && keys.every((k) => Object.prototype.hasOwnProperty.call(t, k) && s[k] === t[k]);
+/**
+ * Whether a vector that passes under the followed expectation also passes under `c`: the same
+ * result at every step, and every device judged under `c` expected alike (value and JSON type)
+ * under both; a device judged under `c` but unjudged under the followed one makes them differ
+ * (its answer is not known to the expectation). A device `c` leaves unjudged is not compared.
+ */
+export function sameExpectation(c: Expected, followed: Expected): boolean {
+  if (c.results.length !== followed.results.length || c.results.some((r, i) => r !== followed.results[i])) return false;
+  const has = Object.prototype.hasOwnProperty;
+  return c.states.every((s, i) => {
+    const t = followed.states[i]!;
+    for (const k in s) if (!has.call(t, k) || s[k] !== t[k]) return false;
+    for (const k in t) if (!has.call(s, k) && !c.ignored.has(k)) return false;
+    return true;
   });
 }
 

@@ -72,7 +72,23 @@ const ASSUMES_KEYS = new Set(["device_sizes"]);
 const OUTCOME_KEYS = new Set(["category", "errors"]);
 const DEFINED_KEYS = new Set(["category", "interpretations", "default", "reason"]);
 const ERROR_KEYS = new Set(["step", "code", "device"]);
-const ALTERNATIVE_KEYS = new Set(["choices", "expect", "final", "outcome"]);
+const ALTERNATIVE_KEYS = new Set(["choices", "expect", "final", "outcome", "unjudged"]);
+const INTERPRETATION_ID = /^[A-Za-z0-9][A-Za-z0-9_.<>=-]*$/;
+
+/** An alternatives entry's `unjudged` map (schema 1.1): interpretation id -> a non-empty list of distinct device names. */
+function unjudged(value: Json, path: string): string | undefined {
+  if (value === undefined) return undefined;
+  if (!isObject(value) || Object.keys(value).length === 0) return `${path}: not a non-empty object of interpretation ids`;
+  for (const [id, list] of Object.entries(value)) {
+    if (!INTERPRETATION_ID.test(id)) return `${path}: ${JSON.stringify(id)} is not an interpretation id`;
+    if (!Array.isArray(list) || list.length === 0) return `${path}/${id}: not a non-empty list of devices`;
+    for (const [k, d] of list.entries()) {
+      if (typeof d !== "string" || !DEVICE_NAME.test(d)) return `${path}/${id}/${k}: ${JSON.stringify(d)} is not a device name`;
+      if (list.indexOf(d) !== k) return `${path}/${id}/${k}: ${JSON.stringify(d)} is listed twice`;
+    }
+  }
+  return undefined;
+}
 const HEADER_KEYS = new Set(["count", "family", "generated", "instructions", "interpretations", "kind", "schema_version", "spec_file", "spec_sha256", "tags", "title"]);
 const INTERPRETATION_KEYS = new Set(["id", "question", "default", "alternatives"]);
 const ALTERNATIVE_HEADER_KEYS = new Set(["id", "says"]);
@@ -220,7 +236,7 @@ export function vectorProblem(v: Json, family: string): string | undefined {
           ? (unknownKey(altFinal, FINAL_KEYS, `${path}/final`) ?? devices(altFinal["devices"], `${path}/final/devices`))
           : `${path}/final: missing`;
         if (problem !== undefined) return problem;
-        const o = outcome(alt["outcome"], `${path}/outcome`);
+        const o = outcome(alt["outcome"], `${path}/outcome`) ?? unjudged(alt["unjudged"], `${path}/unjudged`);
         if (o !== undefined) return o;
       }
       return undefined;

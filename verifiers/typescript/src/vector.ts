@@ -48,6 +48,11 @@ export interface Outcome {
 
 export interface AlternativeExpectation {
   readonly choices: Readonly<Record<string, string>>;
+  /**
+   * Interpretation id (one of `choices`) -> the devices its alternative leaves unjudged (schema
+   * 1.1): listed in `initial.devices`, absent from this entry's `expect` and `final`, never compared.
+   */
+  readonly unjudged?: Readonly<Record<string, readonly string[]>>;
   readonly expect: readonly StepExpect[];
   readonly final: { readonly devices: Devices };
   readonly outcome: Outcome;

@@ -227,7 +227,10 @@ export function describe(v: Verdict, vector?: Vector, reading?: Reading): string
     const judged = deciding(vector, v.problems, reading);
     if (judged.length) lines.push(`${INDENT}judged by: ${judged.map((i) => `${i}=${reading.followed[i]}`).join(", ")}`);
   }
-  let expected: Expected | undefined;
+  let expected = vector !== undefined && reading !== undefined && vector.alternatives?.some((a) => a.unjudged) ? expectedOf(vector, reading.followed, reading.defaults) : undefined;
+  for (const id of Object.keys(expected?.unjudged ?? {}).sort(byCodePoint)) {
+    lines.push(`${INDENT}not judged under ${id}=${reading!.followed[id]}: ${[...expected!.unjudged[id]!].sort(byCodePoint).join(", ")}`);
+  }
   let stepShown: number | undefined;
   for (const p of v.problems.slice(0, SHOW_PROBLEMS)) {
     if (p.step !== undefined && p.step !== stepShown && vector !== undefined && reading !== undefined) {
