@@ -18,7 +18,8 @@ import {
   type Status,
   type Verdict,
 } from "./verdict.js";
-import { requestOf, type Devices, type Vector, type VectorRequest } from "./vector.js";
+import { requestOf } from "./request.js";
+import type { Devices, Vector, VectorRequest } from "./vector.js";
 
 const NO_CPU_WRITES: ReadonlySet<string> = new Set();
 const byCodePoint = (a: string, b: string): number => (a < b ? -1 : a > b ? 1 : 0);
@@ -105,8 +106,12 @@ export interface Prepared {
   readonly clauses: readonly string[];
 }
 
-export function prepare(vector: Vector, followed: Followed): Prepared {
-  return { vector, request: requestOf(vector), expected: expectedOf(vector, followed.choices, followed.defaults), clauses: vector.clauses };
+export function prepare(vector: Vector, followed: Followed): Prepared;
+/** @deprecated since 0.2.0, until 0.3.0: pass the `Followed` that `resolveChoices` gives. */
+export function prepare(vector: Vector, choices: Readonly<Record<string, string>>, defaults: Readonly<Record<string, string>>): Prepared;
+export function prepare(vector: Vector, followed: Followed | Readonly<Record<string, string>>, defaults?: Readonly<Record<string, string>>): Prepared {
+  const { choices, defaults: all } = defaults === undefined ? (followed as Followed) : { choices: followed as Readonly<Record<string, string>>, defaults };
+  return { vector, request: requestOf(vector), expected: expectedOf(vector, choices, all), clauses: vector.clauses };
 }
 
 /** The devices an implementation declares its CPU writes, as a set (one per implementation). */

@@ -83,9 +83,7 @@ function statesOf(vector: Vector, stepsExpect: readonly StepExpect[], scratch: R
     befores.push({ ...state });
     const expect = stepsExpect[i] as StepExpect;
     Object.assign(state, expect.devices);
-    const judged: Devices = { ...state };
-    for (const d of unjudged) delete judged[d];
-    states.push(judged);
+    states.push(unjudged.size === 0 ? { ...state } : Object.fromEntries(Object.entries(state).filter(([d]) => !unjudged.has(d))));
     results.push(expect.result);
   });
   return { states, befores, sets, results };

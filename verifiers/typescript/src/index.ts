@@ -42,6 +42,16 @@ export {
 export { serve } from "./serve.js";
 export { defaultVectorsPath, interpretationsOf, loadSuite, PACKAGED_VECTORS, SCHEMA_MAJOR, type InterpretationInfo, type Suite } from "./suite.js";
 export { describe, FAILING, NOT_IN_VECTOR, NOT_REPORTED, problemLine, type Problem, type Status, type Verdict } from "./verdict.js";
-export { requestOf } from "./vector.js";
+export { requestOf } from "./request.js";
 export type { AlternativeExpectation, Devices, FamilyHeader, Initial, InterpretationHeader, Operand, Outcome, Step, StepExpect, StepInputs, Value, Vector, VectorRequest } from "./vector.js";
 export { DEFAULT_TIMEOUT_SECONDS, timeoutSeconds } from "./settings.js";
+export {
+  describeResult,
+  executeOnMemory,
+  formatReport,
+  PlcvecError,
+  withEnvironmentShard,
+  type Interpretation,
+  type MemoryImplementation,
+  type VectorResult,
+} from "./deprecated.js";

@@ -7,7 +7,8 @@ import { inspect } from "node:util";
 import { deviceOffset, InitialImage, layoutOf, parseAddress, type Layout } from "./layout.js";
 import type { StepResult } from "./implementation.js";
 import { SAME_SLOTS, type SlotStep } from "./layout.js";
-import { initialImageOf, type Devices, type Operand, type Value, type VectorRequest } from "./vector.js";
+import { initialImageOf } from "./request.js";
+import type { Devices, Operand, Value, VectorRequest } from "./vector.js";
 
 /** A device's value read as a word: a bit is 1 or 0, a device holding nothing reads 0. */
 function asWord(v: Value | undefined): number {

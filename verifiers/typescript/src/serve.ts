@@ -18,6 +18,27 @@ function withDefaults(request: VectorRequest): VectorRequest {
   return request.assumes === undefined ? { ...request, assumes: { device_sizes: {} } } : request;
 }
 
+type Families = Record<string, { instructions?: unknown; interpretations?: Record<string, { default?: unknown }> }>;
+
+/** The answer to a hello: every instruction of the families offered, each interpretation declared or at its default. */
+function helloAnswer(impl: Implementation, version: string, msg: Record<string, unknown>): object {
+  const families = (typeof msg["families"] === "object" && msg["families"] !== null ? msg["families"] : {}) as Families;
+  const instructions = new Set<string>();
+  const interpretations: Record<string, string> = {};
+  for (const family of Object.values(families)) {
+    if (Array.isArray(family.instructions)) for (const i of family.instructions) if (typeof i === "string") instructions.add(i);
+    for (const [id, interp] of Object.entries(family.interpretations ?? {})) interpretations[id] = impl.choices?.[id] ?? String(interp.default);
+  }
+  return {
+    type: "hello",
+    protocol: PROTOCOL,
+    adapter: { name: impl.name, version },
+    instructions: [...instructions].sort(),
+    interpretations,
+    ...(impl.cpuWrites?.length ? { cpu_writes: [...impl.cpuWrites] } : {}),
+  };
+}
+
 /** Serve `impl` on this process's stdin and stdout until `bye` or the end of input. */
 export function serve(impl: Implementation, version = "1.0"): void {
   const out: string[] = [];
@@ -35,23 +56,6 @@ export function serve(impl: Implementation, version = "1.0"): void {
     process.stdout.end();
     process.exit(1);
   };
-
-  type Families = Record<string, { instructions?: unknown; interpretations?: Record<string, { default?: unknown }> }>;
-
-  function hello(msg: Record<string, unknown>): void {
-    if (msg["protocol"] !== PROTOCOL) fatal(`this adapter speaks protocol ${PROTOCOL}, not ${JSON.stringify(msg["protocol"])}`);
-    const families = (typeof msg["families"] === "object" && msg["families"] !== null ? msg["families"] : {}) as Families;
-    const instructions = new Set<string>();
-    const interpretations: Record<string, string> = {};
-    for (const family of Object.values(families)) {
-      if (Array.isArray(family.instructions)) for (const i of family.instructions) if (typeof i === "string") instructions.add(i);
-      for (const [id, interp] of Object.entries(family.interpretations ?? {})) {
-        const declared = impl.choices?.[id];
-        interpretations[id] = declared ?? String(interp.default);
-      }
-    }
-    send({ type: "hello", protocol: PROTOCOL, adapter: { name: impl.name, version }, instructions: [...instructions].sort(), interpretations, ...(impl.cpuWrites?.length ? { cpu_writes: [...impl.cpuWrites] } : {}) });
-  }
 
   function runOne(request: unknown): void {
     const id = typeof (request as { id?: unknown })?.id === "string" ? (request as { id: string }).id : undefined;
@@ -84,7 +88,8 @@ export function serve(impl: Implementation, version = "1.0"): void {
     const m = msg as Record<string, unknown>;
     switch (m["type"]) {
       case "hello":
-        hello(m);
+        if (m["protocol"] !== PROTOCOL) fatal(`this adapter speaks protocol ${PROTOCOL}, not ${JSON.stringify(m["protocol"])}`);
+        send(helloAnswer(impl, version, m));
         break;
       case "run":
         if (!Array.isArray(m["vectors"])) fatal("a run request needs `vectors`");

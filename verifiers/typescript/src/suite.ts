@@ -60,45 +60,56 @@ export function loadSuite(path: string = defaultVectorsPath()): Suite {
   return suite;
 }
 
-function readSuite(path: string): Suite {
-  if (!existsSync(path) && !notRegular(path)) throw new VerifyError(`${path}: no such vector folder or file`);
-  let files: string[];
-  let suiteVersion = "";
-  let setHash = "";
-  let merged: ReadonlyMap<string, string> = new Map();
+/** What a vector folder's index (index.json, else manifest.json) lists, or a lone family file as its own listing. */
+interface Listing {
+  readonly files: readonly string[];
+  readonly sums: ReadonlyMap<string, string>;
+  readonly counts: ReadonlyMap<string, number>;
+  readonly suiteVersion: string;
+  readonly setHash: string;
+  readonly merged: ReadonlyMap<string, string>;
+}
+
+function listingOf(path: string): Listing {
+  if (!isFolder(path)) return { files: [path], sums: new Map(), counts: new Map(), suiteVersion: "", setHash: "", merged: new Map() };
+  const index = join(path, "index.json");
+  const listing = existsSync(index) || notRegular(index) ? index : join(path, "manifest.json");
+  if (!existsSync(listing) && !notRegular(listing)) {
+    throw new VerifyError(`${path}: no index.json (a folder written by plcvec export) nor manifest.json (the repository's vectors/)`);
+  }
+  const data = readIndex(listing) as {
+    families?: Record<string, { file?: string; sha256?: string; count?: number }>;
+    suite_version?: string;
+    generator_version?: string;
+    spec_sha256?: string;
+    merged?: unknown;
+  };
+  if (typeof data.families !== "object" || data.families === null) {
+    throw new VerifyError(`${listing}: no \`families\`; is this a plcvec vector folder?`);
+  }
+  const files: string[] = [];
   const sums = new Map<string, string>();
   const counts = new Map<string, number>();
-  if (isFolder(path)) {
-    const index = join(path, "index.json");
-    const manifest = join(path, "manifest.json");
-    const listing = existsSync(index) || notRegular(index) ? index : manifest;
-    if (!existsSync(listing) && !notRegular(listing)) {
-      throw new VerifyError(`${path}: no index.json (a folder written by plcvec export) nor manifest.json (the repository's vectors/)`);
-    }
-    const data = readIndex(listing) as {
-      families?: Record<string, { file?: string; sha256?: string; count?: number }>;
-      suite_version?: string;
-      generator_version?: string;
-      spec_sha256?: string;
-      merged?: unknown;
-    };
-    if (typeof data.families !== "object" || data.families === null) {
-      throw new VerifyError(`${listing}: no \`families\`; is this a plcvec vector folder?`);
-    }
-    files = [];
-    for (const [family, entry] of Object.entries(data.families)) {
-      if (typeof entry?.file !== "string") throw new VerifyError(`${listing}: family ${family} names no \`file\``);
-      const file = join(path, entry.file);
-      files.push(file);
-      if (typeof entry.sha256 === "string") sums.set(file, entry.sha256);
-      if (typeof entry.count === "number") counts.set(file, entry.count);
-    }
-    suiteVersion = String(data.suite_version ?? data.generator_version ?? "");
-    setHash = String(data.spec_sha256 ?? "");
-    merged = mergedIds(data.merged);
-  } else {
-    files = [path];
+  for (const [family, entry] of Object.entries(data.families)) {
+    if (typeof entry?.file !== "string") throw new VerifyError(`${listing}: family ${family} names no \`file\``);
+    const file = join(path, entry.file);
+    files.push(file);
+    if (typeof entry.sha256 === "string") sums.set(file, entry.sha256);
+    if (typeof entry.count === "number") counts.set(file, entry.count);
   }
+  return {
+    files,
+    sums,
+    counts,
+    suiteVersion: String(data.suite_version ?? data.generator_version ?? ""),
+    setHash: String(data.spec_sha256 ?? ""),
+    merged: mergedIds(data.merged),
+  };
+}
+
+function readSuite(path: string): Suite {
+  if (!existsSync(path) && !notRegular(path)) throw new VerifyError(`${path}: no such vector folder or file`);
+  const { files, sums, counts, suiteVersion, setHash, merged } = listingOf(path);
   const headers = new Map<string, FamilyHeader>();
   const vectors: Vector[] = [];
   const byId = new Map<string, Vector>();

@@ -2,13 +2,9 @@
  * The shapes of a vector file (verifiers/CONTRACT.md; schema vectors/schema/vector-file.schema.json).
  * A word is an integer 0..65535 (the raw 16 bits); a bit is true/false, never 1.
  *
- * `requestOf` gives what an implementation receives: the vector without its expectations, prepared
- * once per vector with what running it needs resolved.
+ * Types only, a leaf every module may import: `requestOf` (request.ts) prepares what an
+ * implementation receives.
  */
-import { expectedLayout } from "./expect.js";
-import { internString, interned } from "./intern.js";
-import { InitialImage, layoutOf } from "./layout.js";
-
 export type Value = number | boolean;
 export type Devices = Record<string, Value>;
 
@@ -109,56 +105,4 @@ export interface VectorRequest {
   readonly assumes: { readonly device_sizes: Readonly<Record<string, number>> };
   readonly initial: Initial;
   readonly steps: readonly StepInputs[];
-}
-
-/**
- * A request prepared from a vector. Its fields are the contract's and nothing else (it prints,
- * serializes and spreads as them); it is also, privately, the vector's initial device image, whose
- * layout covers every device the vector names, so that Memory.forRequest copies an array.
- * The parts equal across vectors (operands, steps, device sizes) are shared; all but the vector's
- * own `initial.devices` is frozen.
- */
-class PreparedRequest extends InitialImage implements VectorRequest {
-  readonly id: string;
-  readonly family: string;
-  readonly instruction: string;
-  readonly assumes: VectorRequest["assumes"];
-  readonly initial: Initial;
-  readonly steps: readonly StepInputs[];
-
-  constructor(vector: Vector) {
-    const image = InitialImage.of(expectedLayout(vector), vector.initial.devices);
-    super(image.layout, image.values);
-    this.id = vector.id;
-    this.family = internString(vector.family);
-    this.instruction = internString(vector.instruction);
-    this.assumes = interned(vector.assumes);
-    const { devices, operands, scratch } = vector.initial;
-    this.initial = scratch === undefined ? { devices, operands: interned(operands) } : { devices, operands: interned(operands), scratch: interned(scratch) };
-    this.steps = interned(vector.steps.map(({ expect: _expect, ...inputs }) => inputs));
-    Object.freeze(this.initial);
-    Object.freeze(this);
-  }
-}
-
-/**
- * The part of a vector an implementation receives: everything needed to run it, no expectation.
- * Frozen, so one request per vector serves every run of it in a process.
- */
-export function requestOf(vector: Vector): VectorRequest {
-  let request = requests.get(vector);
-  if (request === undefined) {
-    request = new PreparedRequest(vector);
-    requests.set(vector, request);
-  }
-  return request;
-}
-
-const requests = new WeakMap<Vector, VectorRequest>();
-
-/** The initial image of a request: the one it was prepared with, or one worked out now (a request from elsewhere). */
-export function initialImageOf(request: VectorRequest): InitialImage {
-  if (request instanceof PreparedRequest) return request;
-  const devices = request.initial.devices;
-  return InitialImage.of(layoutOf(Object.keys(devices)), devices);
 }
