@@ -83,40 +83,32 @@ for (const f of fs.readdirSync(path.join(root, "dist/src"), { recursive: true })
 }
 if (n === 0) { console.error("no source map checked"); process.exit(1); }' "$work/package"
 
-# The README's code blocks, as an outside project: every block is marked, the runnable ones are
-# extracted (never retyped), compiled against the tarball's type declarations and run.
+# The README's code blocks, as an outside project in an empty folder, run as written: every block is
+# marked, the runnable ones are extracted (never retyped) and run in order. The one difference from a
+# newcomer's machine: `npm install plcvec` installs the tarball `npm pack` made (the package is not
+# taken from the registry), and vitest at the version this folder pins.
 python3 .ci/readme_snippets.py check verifiers/typescript/README.md
 outside="$work/outside"
 python3 .ci/readme_snippets.py extract verifiers/typescript/README.md --out "$outside"
-version() { node -p "require('$root/verifiers/typescript/node_modules/$1/package.json').version"; }
-cat >"$outside/package.json" <<EOF
-{
-  "name": "an-outside-emulator",
-  "private": true,
-  "type": "module",
-  "devDependencies": {
-    "plcvec": "file:$tarball",
-    "typescript": "$(version typescript)",
-    "@types/node": "$(version @types/node)",
-    "vitest": "$(version vitest)"
-  }
+vitest_version=$(node -p "require('$root/verifiers/typescript/node_modules/vitest/package.json').version")
+npm() {
+    local args=() a
+    for a in "$@"; do
+        case "$a" in plcvec) a="$tarball" ;; vitest) a="vitest@$vitest_version" ;; esac
+        args+=("$a")
+    done
+    command npm "${args[@]}"
 }
-EOF
-cat >"$outside/tsconfig.json" <<'EOF'
-{
-  "compilerOptions": {
-    "target": "ES2022", "module": "NodeNext", "moduleResolution": "NodeNext", "types": ["node"],
-    "strict": true, "noUncheckedIndexedAccess": true, "exactOptionalPropertyTypes": true,
-    "outDir": "dist", "rootDir": "src"
-  },
-  "include": ["src"],
-  "exclude": ["src/vitest"]
-}
-EOF
+export -f npm
+export tarball vitest_version npm_config_audit=false npm_config_fund=false npm_config_loglevel=error
 (
     cd "$outside"
-    npm install --no-audit --no-fund --loglevel=error
-    npx tsc -p .
+    bash -euo pipefail setup.sh
+    # Before compiling, node --test finds no test file: plcvec's reporter must not call that green.
+    if node --test --test-reporter=plcvec/reporter >"$work/uncompiled.log" 2>&1; then
+        cat "$work/uncompiled.log"; echo "node --test on uncompiled TypeScript passed" >&2; exit 1
+    fi
+    grep -q "no plcvec vector ran" "$work/uncompiled.log"
     bash -euo pipefail node-test.sh
     grep -q "fx5-time-add/TADD/manual-example/program" plcvec.xml
     bash -euo pipefail known.sh
@@ -124,7 +116,11 @@ EOF
     # The command the package installs serves the protocol (hello, then bye).
     printf '%s\n' '{"type":"hello","protocol":1,"families":{}}' '{"type":"bye"}' | npx plcvec-reference-adapter | grep -q '"type":"hello"'
     bash -euo pipefail vitest.sh
-)
+    # Vitest's -t matching no test: green for Vitest alone, not with plcvec's reporter.
+    if npx vitest run --reporter=default --reporter=plcvec/vitest-reporter -t "no test is named this" src/vitest >"$work/vitest-t.log" 2>&1; then
+        cat "$work/vitest-t.log"; echo "vitest -t matching nothing passed" >&2; exit 1
+    fi
+) >"$work/outside.log" 2>&1 || { cat "$work/outside.log"; exit 1; }
 
 python3 -m plcvec verify --adapter verifiers/typescript/reference-adapter -q
 # A mutant served the same way is rejected (exit 1): the gate is not passing by accident.

@@ -1,11 +1,11 @@
 /**
- * The suite as a plain list of test cases, for any test runner: `test.each` in Vitest or Jest,
+ * The suite as a plain list of test cases, for any test runner: a loop of `test` in Vitest or Jest,
  * or a loop of your own. Each case is named by its vector id; `check()` throws a VectorFailure
  * carrying the field-level diff when the implementation disagrees.
  *
  *     import { cases, checkRun } from "plcvec";
  *     const list = cases(myImplementation);
- *     test.each(list)("$id", (c) => c.check());
+ *     for (const c of list) test(c.id, () => c.check());
  *     afterAll(() => checkRun(list));
  *
  * Everything a gate reads from the environment is read here (CONTRACT.md): PLCVEC_VECTORS,

@@ -7,7 +7,7 @@
  *     console.log(summaryText(report));
  *
  * Test-runner integration: `plcvec/node-test` (one node:test test per vector) and `cases()`
- * below (a plain iterable for `test.each` in Vitest or Jest).
+ * below (a plain list for Vitest or Jest).
  */
 export * from "./generated/names.js";
 export { checkRun, cases, runReport, VectorFailure, type Case, type CaseOptions } from "./cases.js";

@@ -9,8 +9,13 @@
  * and again in its closing list of failures), and `dot` prints each once but drops what a test file
  * writes on stderr, where `vectorTests` writes the run's text when the file's process ends.
  * Tests that are not vectors are reported too: a failure with its error, a pass as one line.
+ *
+ * A run in which no vector ran (no test file found, which is what `node --test` on uncompiled
+ * TypeScript finds, or a file without vectorTests) fails: node:test alone says `tests 0` and exits 0.
  */
 import { inspect } from "node:util";
+
+import { isVectorName, NOTHING_RAN } from "./nothing-ran.js";
 
 /** The members of node:test's reporter events this reporter reads (node 20 and later). */
 interface EventData {
@@ -58,8 +63,11 @@ export function failureText(data: EventData): string {
 
 export default async function* plcvecReporter(source: AsyncIterable<TestEvent>): AsyncGenerator<string> {
   const counts: string[] = [];
+  let vectors = 0;
   for await (const event of source) {
     const data = event.data;
+    // A vector that ran: passed, failed, or a known failure (todo); one a filter left out is a skip.
+    if ((event.type === "test:pass" || event.type === "test:fail") && !data.skip && isVectorName(data.name)) vectors++;
     switch (event.type) {
       case "test:fail":
         if (!data.todo && !data.skip) {
@@ -85,4 +93,8 @@ export default async function* plcvecReporter(source: AsyncIterable<TestEvent>):
     }
   }
   if (counts.length > 0) yield `node:test: ${counts.join(", ")}\n`;
+  if (vectors === 0) {
+    yield `plcvec/reporter: ${NOTHING_RAN}\n`;
+    process.exitCode = 1;
+  }
 }

@@ -216,3 +216,18 @@ test("known failures under node:test: an id the suite does not have is stale; a 
   assert.equal(readFileSync(written, "utf8").match(/^id = .*$/gm)?.join(), `id = "${TADD_EXAMPLE}"`);
   assert.equal(hostileRun({ PLCVEC_HOSTILE: "wrong-result", PLCVEC_KNOWN_FAILURES: written }).status, 0);
 });
+
+test("plcvec/reporter fails a run in which no vector ran: no test file (TypeScript not compiled), or none calling vectorTests", () => {
+  const { NODE_TEST_CONTEXT: _, ...clean } = process.env;
+  const empty = mkdtempSync(join(tmpdir(), "plcvec-ts-empty-"));
+  // What a newcomer has before compiling: a TypeScript test file, which node --test on Node 20 does not run.
+  writeFileSync(join(empty, "emulator.test.ts"), 'import { vectorTests } from "plcvec/node-test";\n');
+  const nothing = spawnSync(process.execPath, ["--test", `--test-reporter=${reporter}`], { ...BOUND, cwd: empty, env: clean });
+  assert.equal(nothing.status, 1, nothing.stdout + nothing.stderr);
+  assert.match(nothing.stdout, /^plcvec\/reporter: no plcvec vector ran, so nothing was tested/m);
+  // A test file of the user's own that runs no vector: green under node:test, not under plcvec/reporter.
+  writeFileSync(join(empty, "other.test.mjs"), 'import { test } from "node:test";\ntest("not a vector", () => {});\n');
+  const other = spawnSync(process.execPath, ["--test", `--test-reporter=${reporter}`], { ...BOUND, cwd: empty, env: clean });
+  assert.equal(other.status, 1, other.stdout + other.stderr);
+  assert.match(other.stdout, /✔ not a vector/);
+});
