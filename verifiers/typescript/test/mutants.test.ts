@@ -4,6 +4,8 @@ import { describe, test } from "node:test";
 
 import { FAMILIES, loadSuite, runVectors, type Implementation } from "../src/index.js";
 import { MUTANTS, mutant, type Aspect } from "../src/mutants/index.js";
+import { reference } from "../src/reference/index.js";
+import { rollupLines } from "../src/reports.js";
 
 const suite = loadSuite();
 
@@ -17,6 +19,9 @@ describe("each mutant is rejected", () => {
       // A single-bug mutant of one family is caught by that family's vectors, and only fails there.
       const families = new Set(failing.map((r) => r.id.split("/")[0]));
       assert.ok(families.has(m.family), `${name} is not caught by any ${m.family} vector (caught in ${[...families].join(", ")})`);
+      // A bug is never explained away: every reading the roll-up proposes for it is marked partial.
+      const proposals = rollupLines(report).filter((l) => /^ {4} {0,5}\d+ {2}[A-Z0-9-]+=/.test(l) && !l.includes("(partial: "));
+      assert.deepEqual(proposals, [], `${name}: a reading explains all of a bug of its families`);
     });
   }
 });
@@ -36,12 +41,15 @@ test("the mutants cover every family and every comparison aspect", () => {
   for (const aspect of aspects) assert.ok(all.some((m) => m.aspect === aspect), `no mutant breaks the ${aspect}`);
 });
 
-test("a mutant that breaks an interpretation passes once it declares that reading", () => {
-  // cp1e-er-held holds P_ER: exactly the "held" alternative of CP1E-ER-FLAG. Declared, it passes
-  // the CP1E vectors; undeclared, it fails them. The runner judges by the declared alternative.
+test("an implementation that follows a reading passes once it declares it", () => {
+  // The reference following CP1E-ER-FLAG=held: undeclared, it fails the CP1E vectors (the roll-up
+  // proposes the reading, whole); declared, it passes them. The runner judges by the declaration.
   const selection = { families: ["cp1e-time-compare"] };
-  assert.equal(runVectors(mutant("cp1e-er-held"), { suite, selection }).passed, false);
-  assert.equal(runVectors(mutant("cp1e-er-held", { "CP1E-ER-FLAG": "held" }), { suite, selection }).passed, true);
+  const held = reference({ "CP1E-ER-FLAG": "held" });
+  const undeclared = runVectors({ name: "follows held", run: (r) => held.run(r) }, { suite, selection });
+  assert.equal(undeclared.passed, false);
+  assert.ok(rollupLines(undeclared).includes("    declare: choices: { \"CP1E-ER-FLAG\": \"held\" }"), rollupLines(undeclared).join("\n"));
+  assert.equal(runVectors(held, { suite, selection }).passed, true);
 });
 
 test("a write outside the vector is reported as such", () => {

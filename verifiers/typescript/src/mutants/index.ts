@@ -54,13 +54,14 @@ class YearFrom1970 extends Fx5CompareMachine {
   }
 }
 
-/** An AND form executed while the preceding logic is off, whatever the declared alternative. */
+/**
+ * An AND form executed while the preceding logic is off, whatever the declared alternative, and its
+ * comparison passed on without the preceding logic: SM709 as under always-executed (a reading), but
+ * a contact that conducts with its logic off (a bug no reading explains).
+ */
 class AndAlwaysExecuted extends Fx5CompareMachine {
   override execute(instruction: string, operands: Operands, step: StepInputs): boolean {
-    if (instruction.startsWith("AND") && step.rlo_in === false) {
-      this.evaluate(this.parse(instruction).condition, operands, step.clock);
-      return false;
-    }
+    if (instruction.startsWith("AND") && step.rlo_in === false) return this.evaluate(this.parse(instruction).condition, operands, step.clock);
     return super.execute(instruction, operands, step);
   }
 }
@@ -136,19 +137,36 @@ class FlagsNotReflected extends Cp1eTimeCompare {
   protected override reflectFlags(): void {}
 }
 
-/** P_ER held from an earlier error, whatever the declared alternative (the "held" reading forced). */
+/** P_ER held from an earlier error, whatever the declared alternative, and taken for this execution's error. */
 class ErHeld extends Cp1eTimeCompare {
   protected override evaluate(condition: string, operands: Operands): boolean {
     const before = this.mem.value("P_ER");
     const result = super.evaluate(condition, operands);
-    if (before === true) this.mem.write("P_ER", true);
-    return result;
+    if (before !== true) return result;
+    // Held (a reading), then read back as this execution's error: the contact stays off (a bug).
+    this.mem.write("P_ER", true);
+    return false;
   }
 }
 
-/** A byte above 9 in a nibble (0x0A) taken as valid BCD. */
+/**
+ * A low nibble of 10 (0x0A) compared as BCD, and P_ER turned on as well: neither reading (an error
+ * that compares nothing, or raw bytes compared without an error) but a check that flags and goes on.
+ */
 class NibbleAbove9 extends Cp1eTimeCompare {
-  protected override isBcd = (b: number): boolean => b >> 4 <= 9 && (b & 0xf) <= 10;
+  #sawTen = false;
+  protected override isBcd = (b: number): boolean => {
+    const ok = b >> 4 <= 9 && (b & 0xf) <= 10;
+    if (ok && (b & 0xf) === 10) this.#sawTen = true;
+    return ok;
+  };
+
+  protected override evaluate(condition: string, operands: Operands): boolean {
+    this.#sawTen = false;
+    const result = super.evaluate(condition, operands);
+    if (this.#sawTen) this.mem.write("P_ER", true);
+    return result;
+  }
 }
 
 function replacing(family: string, factory: MachineFactory): Readonly<Record<string, MachineFactory>> {
@@ -173,7 +191,7 @@ export const MUTANTS: Readonly<Record<string, Mutant>> = {
   "fx5-and-always-executed": {
     family: "fx5-time-compare",
     aspect: "interpretation alternative",
-    bug: "AND executed while the preceding logic is off, whatever is declared",
+    bug: "AND executed while the preceding logic is off, whatever is declared, its comparison passed on as the result",
     machines: fx5Both((m, c) => new AndAlwaysExecuted(m, c)),
   },
   "fx5-clock-into-s2": {
@@ -203,10 +221,10 @@ export const MUTANTS: Readonly<Record<string, Mutant>> = {
   "cp1e-er-held": {
     family: "cp1e-time-compare",
     aspect: "interpretation alternative",
-    bug: "P_ER held, whatever is declared",
+    bug: "P_ER held, whatever is declared, and a held P_ER keeps the contact off",
     machines: replacing("cp1e-time-compare", (m, c) => new ErHeld(m, c)),
   },
-  "cp1e-nibble-above-9": { family: "cp1e-time-compare", aspect: "flag", bug: "a nibble of 10 taken as BCD", machines: replacing("cp1e-time-compare", (m, c) => new NibbleAbove9(m, c)) },
+  "cp1e-nibble-above-9": { family: "cp1e-time-compare", aspect: "flag", bug: "a nibble of 10 compared as BCD, and P_ER turned on as well", machines: replacing("cp1e-time-compare", (m, c) => new NibbleAbove9(m, c)) },
 };
 
 /** The mutant as an Implementation, following `choices` like the reference. */
