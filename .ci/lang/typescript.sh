@@ -12,13 +12,15 @@ trap 'rm -rf "$work"' EXIT
 (
     cd verifiers/typescript
     # The README's own install command: the lock file records every platform's optional packages.
-    npm ci --no-audit --no-fund --loglevel=error
+    npm ci --no-audit --no-fund --loglevel=error >/dev/null
     npm run --silent typecheck
     npm run --silent lint
     # No import circle (madge counts `import type` too); its report is printed only when it finds one.
     npm run --silent circles >"$work/circles.log" 2>&1 || { cat "$work/circles.log"; exit 1; }
     npm run --silent build
-    npm test
+    # node:test over test/: its whole output only when something failed, else its counts on one line.
+    npm test >"$work/test.log" 2>&1 || { cat "$work/test.log"; exit 1; }
+    printf 'typescript tests: %s passed, %s failed\n' "$(sed -n 's/^ℹ pass //p' "$work/test.log")" "$(sed -n 's/^ℹ fail //p' "$work/test.log")"
     # The public API against 0.1.0's (API Extractor's reports): every change named in CHANGES.md's
     # Breaking or Deprecated section, and a deliberate rename in a scratch copy caught.
     python3 api/check.py --prove crc32=crc32Renamed
@@ -89,9 +91,9 @@ if (n === 0) { console.error("no source map checked"); process.exit(1); }' "$wor
 # marked, the runnable ones are extracted (never retyped) and run in order. The one difference from a
 # newcomer's machine: `npm install plcvec` installs the tarball `npm pack` made (the package is not
 # taken from the registry), and vitest at the version this folder pins.
-python3 .ci/readme_snippets.py check verifiers/typescript/README.md
+python3 .ci/readme_snippets.py check verifiers/typescript/README.md >/dev/null
 outside="$work/outside"
-python3 .ci/readme_snippets.py extract verifiers/typescript/README.md --out "$outside"
+python3 .ci/readme_snippets.py extract verifiers/typescript/README.md --out "$outside" >/dev/null
 vitest_version=$(node -p "require('$root/verifiers/typescript/node_modules/vitest/package.json').version")
 npm() {
     local args=() a
