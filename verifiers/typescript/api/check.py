@@ -11,8 +11,8 @@ symbol removed, renamed or given another signature) is a change that may break a
 named in CHANGES.md's Breaking (or Deprecated, for a rename that keeps the old name working)
 section of the version being checked, the symbol's name as a word (`Report.results` for a member).
 The version being checked is package.json's version when CHANGES.md has a section for it, else the
-first section (the release being written); while CHANGES.md does not exist yet, the news fragments
-in changes.d/ are read instead. The values of the generated SUITE constant are left out: they
+first section (the release being written); the news fragments in changes.d/, not yet folded into
+CHANGES.md, count as that section's. The values of the generated SUITE constant are left out: they
 name the vectors, not the API.
 
 `--prove OLD=NEW` also renames a symbol in a scratch copy of the built declarations and requires
@@ -71,14 +71,14 @@ def declarations(report: str) -> Counter:
 
 
 def announced(version: str) -> str:
-    """The Breaking and Deprecated sections of `version` in CHANGES.md (or of the fragments in changes.d/)."""
+    """The Breaking and Deprecated sections of `version` in CHANGES.md, and of the news fragments in
+    changes.d/ that are not folded into it yet."""
+    chosen = ""
     changes = REPO / "CHANGES.md"
     if changes.is_file():
-        text = changes.read_text(encoding="utf-8")
-        sections = re.split(r"^## ", text, flags=re.M)[1:]
+        sections = re.split(r"^## ", changes.read_text(encoding="utf-8"), flags=re.M)[1:]
         chosen = next((s for s in sections if re.match(rf"\[?v?{re.escape(version)}\b", s)), sections[0] if sections else "")
-    else:
-        chosen = "\n".join(p.read_text(encoding="utf-8") for p in sorted((REPO / "changes.d").glob("*.md")))
+    chosen += "\n" + "\n".join(p.read_text(encoding="utf-8") for p in sorted((REPO / "changes.d").glob("*.md")))
     kept = []
     for part in re.split(r"^### ", chosen, flags=re.M)[1:]:
         if part.split("\n", 1)[0].strip().lower() in ("breaking", "deprecated"):

@@ -64,8 +64,10 @@ export function failureText(data: EventData): string {
 export default async function* plcvecReporter(source: AsyncIterable<TestEvent>): AsyncGenerator<string> {
   const counts: string[] = [];
   let vectors = 0;
+  let failed = false;
   for await (const event of source) {
     const data = event.data;
+    if (event.type === "test:fail" && !data.todo && !data.skip) failed = true;
     // A vector that ran: passed, failed, or a known failure (todo); one a filter left out is a skip.
     if ((event.type === "test:pass" || event.type === "test:fail") && !data.skip && isVectorName(data.name)) vectors++;
     switch (event.type) {
@@ -93,7 +95,9 @@ export default async function* plcvecReporter(source: AsyncIterable<TestEvent>):
     }
   }
   if (counts.length > 0) yield `node:test: ${counts.join(", ")}\n`;
-  if (vectors === 0) {
+  // A run that failed says why itself (a process ended half way reports no vector); one that did not
+  // fail but ran no vector is the gate that tested nothing.
+  if (vectors === 0 && !failed) {
     yield `plcvec/reporter: ${NOTHING_RAN}\n`;
     process.exitCode = 1;
   }
