@@ -116,6 +116,21 @@ test("what is not a regular file is refused by name before it is opened: a named
   assert.throws(() => loadKnownFailures(knownPipe), (err: unknown) => err instanceof VerifyError && err.message === `${knownPipe}: not a regular file (a named pipe)`);
 });
 
+test("the files this package ships hold no repeated key (so loading them again may skip that scan)", async () => {
+  const { mayRepeatKeys, repeatedKey } = await import("../src/files.js");
+  const { packagedSums } = await import("../src/suite.js");
+  const index = JSON.parse(readFileSync(join(PACKAGED_VECTORS, "index.json"), "utf8")) as { families: Record<string, { file: string; sha256: string }> };
+  assert.deepEqual([...packagedSums()].sort(), Object.values(index.families).map((f) => f.sha256).sort());
+  let lines = 0;
+  for (const { file } of Object.values(index.families)) {
+    for (const line of readFileSync(join(PACKAGED_VECTORS, file), "utf8").trimEnd().split("\n")) {
+      lines++;
+      if (mayRepeatKeys(line, JSON.parse(line))) assert.equal(repeatedKey(line), undefined, `${file}: ${line.slice(0, 80)}`);
+    }
+  }
+  assert.equal(lines, SUITE.total + Object.keys(index.families).length);
+});
+
 test("a repeated key is refused by file, line and vector id, in a vector and in the index", () => {
   const lines = familyLines("fx5-time-add").slice(0, 4);
   const id = (JSON.parse(lines[2]!) as { id: string }).id;
