@@ -94,36 +94,55 @@ function judgeAll(verdicts: readonly Verdict[], suite: Suite, followed: Readonly
  * The choice that explains the most vectors: starting from `followed`, each interpretation in id
  * order is given, of its alternatives in file order, the one that explains strictly the most vectors
  * with every other interpretation as it stands (a tie keeps the current one); rounds repeat until
- * one changes nothing.
+ * one changes nothing. The rounds run twice (TEXT.md, step 4): first without the alternatives that
+ * leave devices unjudged (`unjudging`), then with every one, from where the first ended: a reading
+ * that judges nothing of a device explains any answer there, so it is taken only for what no reading
+ * that judges explains.
  */
-function choose(judged: readonly Judged[], alternatives: ReadonlyMap<string, readonly string[]>, followed: Readonly<Record<string, string>>): Record<string, string> {
+function choose(
+  judged: readonly Judged[],
+  alternatives: ReadonlyMap<string, readonly string[]>,
+  followed: Readonly<Record<string, string>>,
+  unjudging: ReadonlySet<string>,
+): Record<string, string> {
   const choice: Record<string, string> = { ...followed };
   const byInterp = new Map<string, Judged[]>();
   for (const j of judged) for (const i of j.touched) (byInterp.get(i) ?? byInterp.set(i, []).get(i)!).push(j);
   const score = (vectors: readonly Judged[], trial: Readonly<Record<string, string>>): number =>
     vectors.reduce((n, j) => n + (j.passing.has(keyOf(j.touched, trial)) ? 1 : 0), 0);
-  for (let changed = true; changed; ) {
-    changed = false;
-    for (const interp of [...alternatives.keys()].sort()) {
-      const vectors = byInterp.get(interp);
-      if (vectors === undefined) continue;
-      let best = choice[interp]!;
-      let bestScore = score(vectors, choice);
-      for (const alt of alternatives.get(interp)!) {
-        if (alt === choice[interp]) continue;
-        const s = score(vectors, { ...choice, [interp]: alt });
-        if (s > bestScore) {
-          best = alt;
-          bestScore = s;
+  for (const allowed of [(i: string, alt: string) => !unjudging.has(`${i}=${alt}`), () => true]) {
+    for (let changed = true; changed; ) {
+      changed = false;
+      for (const interp of [...alternatives.keys()].sort()) {
+        const vectors = byInterp.get(interp);
+        if (vectors === undefined) continue;
+        let best = choice[interp]!;
+        let bestScore = score(vectors, choice);
+        for (const alt of alternatives.get(interp)!) {
+          if (alt === choice[interp] || !allowed(interp, alt)) continue;
+          const s = score(vectors, { ...choice, [interp]: alt });
+          if (s > bestScore) {
+            best = alt;
+            bestScore = s;
+          }
         }
-      }
-      if (best !== choice[interp]) {
-        choice[interp] = best;
-        changed = true;
+        if (best !== choice[interp]) {
+          choice[interp] = best;
+          changed = true;
+        }
       }
     }
   }
   return choice;
+}
+
+/** `ID=alternative` of each alternative some vector's alternatives entry leaves devices unjudged under. */
+function unjudgingAlternatives(suite: Suite): Set<string> {
+  const out = new Set<string>();
+  for (const v of suite.vectors) {
+    for (const alt of v.alternatives ?? []) for (const id of Object.keys(alt.unjudged ?? {})) out.add(`${id}=${alt.choices[id]}`);
+  }
+  return out;
 }
 
 /** The fewest interpretations (first in id order among as few) whose change to `choice` makes `j` pass. */
@@ -161,7 +180,7 @@ export function inference(
   cpuWrites: ReadonlySet<string>,
 ): Inference {
   const judged = judgeAll(verdicts, suite, followed, defaults, cpuWrites);
-  const choice = choose(judged, alternatives, followed);
+  const choice = choose(judged, alternatives, followed, unjudgingAlternatives(suite));
   const byId = new Map(judged.map((j) => [j.id, j]));
   const explained = new Map<string, [string, string][]>();
   const unexplained: string[] = [];
