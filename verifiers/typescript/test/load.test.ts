@@ -1,10 +1,10 @@
 /** Loading refuses, by file, line and vector id, what the contract cannot run. */
 import assert from "node:assert/strict";
 import { spawnSync } from "node:child_process";
-import { cpSync, mkdtempSync, readFileSync, symlinkSync, writeFileSync } from "node:fs";
+import { cpSync, mkdtempSync, readFileSync, rmSync, symlinkSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join, dirname } from "node:path";
-import { test } from "node:test";
+import { after, test } from "node:test";
 import { fileURLToPath } from "node:url";
 
 import { loadKnownFailures, loadSuite, PACKAGED_VECTORS, parseKnownFailures, runVectors, summaryText, VerifyError, SUITE } from "../src/index.js";
@@ -83,9 +83,17 @@ test("a folder that is not a vector set, and a missing path, are named", () => {
 
 const escaped = (s: string): string => s.replace(/[.*+?^${}()|[\]\\]/g, "\\$&");
 
+/** The copies of the packaged set the tests below make (6 MB each), removed when the file's tests end. */
+const copies: string[] = [];
+after(() => {
+  for (const c of copies) rmSync(c, { recursive: true, force: true });
+});
+
 /** A copy of the packaged vector folder, with `edit` applied to its index.json text. */
 function copiedSet(edit: (index: string) => string = (i) => i): string {
-  const dir = join(mkdtempSync(join(tmpdir(), "plcvec-ts-set-")), "vectors");
+  const top = mkdtempSync(join(tmpdir(), "plcvec-ts-set-"));
+  copies.push(top);
+  const dir = join(top, "vectors");
   cpSync(PACKAGED_VECTORS, dir, { recursive: true });
   writeFileSync(join(dir, "index.json"), edit(readFileSync(join(dir, "index.json"), "utf8")));
   return dir;
