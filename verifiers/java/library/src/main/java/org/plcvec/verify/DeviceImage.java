@@ -54,14 +54,17 @@ public final class DeviceImage {
         return values[i];
     }
 
-    /** The value as reported, for messages: a word, a bit, or whatever else was reported. */
+    /**
+     * The value as reported, for messages, as TEXT.md shows values: a word or a bit as itself, an
+     * integer outside the word range as its digits, a floating-point number in Java's shortest
+     * round-trip form ({@code NaN}, {@code Infinity} and {@code -Infinity} for those that are not
+     * finite), a string, {@code null}, a list or a map as compact JSON.
+     *
+     * @param i the entry
+     * @return the value as a report shows it
+     */
     public String show(int i) {
-        if (values[i] == Values.OTHER) {
-            Object o = others[i];
-            return o instanceof String ? "\"" + o + "\"" : String.valueOf(o)
-                    + (o == null ? "" : " (" + o.getClass().getSimpleName() + ")");
-        }
-        return Values.show(values[i]);
+        return values[i] == Values.OTHER ? Values.showReported(others[i]) : Values.show(values[i]);
     }
 
     /** JSON-ready: words as Integer, bits as Boolean. */

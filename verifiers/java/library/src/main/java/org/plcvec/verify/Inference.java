@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
+import java.util.TreeSet;
 
 /**
  * Which interpretation alternatives an implementation's answers follow, from the vectors and the
@@ -36,6 +37,10 @@ final class Inference {
     final Map<String, Map<String, String>> explained = new LinkedHashMap<>();
     /** The failing vectors no offered reading explains, in run order. */
     final List<Verdict> unexplained = new ArrayList<>();
+    /** known failure (XFAIL) id -> its smallest change, for those the choice explains, in run order. */
+    final Map<String, Map<String, String>> explainedKnown = new LinkedHashMap<>();
+    /** The known failures the choice does not explain (their vector errored, or no reading passes it). */
+    final List<Verdict> unexplainedKnown = new ArrayList<>();
     /** The ids of vectors that pass now and would fail under {@link #choice}. */
     final List<String> broken = new ArrayList<>();
     /** The number of judged vectors. */
@@ -52,16 +57,33 @@ final class Inference {
         return v.status() == Status.FAIL || v.status() == Status.ERROR || v.status() == Status.NOT_RUN;
     }
 
-    /** The inference over one run's verdicts. */
-    static Inference of(Report.Header header, List<Verdict> verdicts) {
-        Map<String, Suite.InterpretationInfo> known = header.suite().interpretations();
+    /**
+     * The inference over one run's verdicts: {@code known} every interpretation of the suite,
+     * {@code run} the alternative followed for those of the families run (the only ones that move),
+     * {@code cpuWrites} the devices the implementation declared.
+     */
+    static Inference of(Map<String, Suite.InterpretationInfo> known, Map<String, Followed> run, Set<String> cpuWrites,
+                        List<Verdict> verdicts) {
         Map<String, String> defaults = new TreeMap<>();
         known.forEach((i, info) -> defaults.put(i, info.defaultAlternative()));
         Map<String, String> followed = new TreeMap<>(defaults);
-        header.followed().forEach((i, f) -> followed.put(i, f.alternative()));
-        long[] cpuWrites = header.cpuWrites().stream().mapToLong(d -> Address.of(d).key()).toArray();
+        run.forEach((i, f) -> followed.put(i, f.alternative()));
+        long[] keys = cpuWrites.stream().mapToLong(d -> Address.of(d).key()).toArray();
 
-        List<Judged> judged = judgeAll(verdicts, followed, defaults, cpuWrites);
+        List<Judged> judged = judgeAll(verdicts, followed, defaults, keys);
+        Map<String, String> choice = choose(judged, followed, run.keySet(), known);
+        Inference out = new Inference(followed, choice, judged.size());
+        out.explain(verdicts, judged);
+        return out;
+    }
+
+    /**
+     * Step 4, the choice: from the followed alternatives, each interpretation of the families run
+     * in id order moved to the first of its alternatives that passes strictly more of the judged
+     * vectors that touch it, in rounds until a round changes nothing.
+     */
+    private static Map<String, String> choose(List<Judged> judged, Map<String, String> followed, Set<String> run,
+                                              Map<String, Suite.InterpretationInfo> known) {
         Map<String, List<Judged>> byInterpretation = new TreeMap<>();
         for (Judged j : judged) {
             j.touched().forEach(i -> byInterpretation.computeIfAbsent(i, k -> new ArrayList<>()).add(j));
@@ -70,8 +92,7 @@ final class Inference {
         boolean changed = true;
         while (changed) {
             changed = false;
-            // Only the interpretations of the families run move (header.followed() holds exactly them).
-            for (String interpretation : new TreeMap<>(header.followed()).keySet()) {
+            for (String interpretation : new TreeSet<>(run)) {
                 List<Judged> touching = byInterpretation.get(interpretation);
                 if (touching == null) {
                     continue;
@@ -96,27 +117,33 @@ final class Inference {
                 }
             }
         }
+        return choice;
+    }
 
-        Inference out = new Inference(followed, choice, judged.size());
+    /**
+     * Steps 5 and 6: which failing vectors and known failures the choice explains (each with its
+     * smallest change), which it does not, and which passing vectors it would break.
+     */
+    private void explain(List<Verdict> verdicts, List<Judged> judged) {
         Map<String, Judged> byId = new java.util.HashMap<>();
         judged.forEach(j -> byId.put(j.verdict().id(), j));
         for (Verdict v : verdicts) {
-            if (!failing(v)) {
+            boolean known = v.status() == Status.XFAIL;
+            if (!failing(v) && !known) {
                 continue;
             }
             Judged j = byId.get(v.id());
             if (j == null || !j.passesUnder(choice)) {
-                out.unexplained.add(v);
+                (known ? unexplainedKnown : unexplained).add(v);
             } else {
-                out.explained.put(v.id(), smallestChange(j, followed, choice));
+                (known ? explainedKnown : explained).put(v.id(), smallestChange(j, followed, choice));
             }
         }
         for (Judged j : judged) {
             if (j.verdict().status() == Status.PASS && !j.passesUnder(choice)) {
-                out.broken.add(j.verdict().id());
+                broken.add(j.verdict().id());
             }
         }
-        return out;
     }
 
     private static int score(List<Judged> vectors, Map<String, String> choice) {
@@ -163,7 +190,7 @@ final class Inference {
                     } catch (VerifyException inconsistent) {   // an entry whose steps do not add up passes nothing
                         continue;
                     }
-                    if (passed ? under.sameOutcome(v.expected()) : under.accepts(v.answer())) {
+                    if (passed ? under.passesWherePasses(v.expected()) : Compare.accepts(under, v.answer())) {
                         passing.add(touched.stream().map(combination::get).toList());
                     }
                 }

@@ -3,7 +3,7 @@ package org.plcvec.verify;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
-import java.nio.file.NoSuchFileException;
+import java.nio.file.StandardCopyOption;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collections;
@@ -50,16 +50,20 @@ public final class KnownFailures {
         return NONE;
     }
 
+    /**
+     * Read a known-failures file. A path that is not a regular file (a named pipe nobody writes, a
+     * folder, a loop of symbolic links) is refused by name before it is opened, so no load waits.
+     *
+     * @param file the TOML file
+     * @return its entries
+     * @throws VerifyException when it cannot be read or is not a known-failures file, naming the
+     *         file and line
+     */
     public static KnownFailures load(Path file) {
-        String text;
-        try {
-            text = Files.readString(file, StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
+        if (!JsonFiles.present(file)) {
             throw new VerifyException(file + ": cannot read the expectations file: no such file");
-        } catch (IOException e) {
-            throw new VerifyException(file + ": cannot read the expectations file: " + e.getMessage());
         }
-        return parse(text, file.toString());
+        return parse(JsonFiles.read(file), file.toString());
     }
 
     public static KnownFailures parse(String text, String path) {
@@ -153,15 +157,90 @@ public final class KnownFailures {
         }
     }
 
-    /** Entries naming a vector the suite does not have: each is a STALE result. */
+    /**
+     * Entries naming a vector the suite does not have (whatever the selection): each is a STALE
+     * verdict, naming the vector an id merged into another became.
+     */
     List<Verdict> unknownIds(Suite suite) {
         List<Verdict> out = new ArrayList<>();
         for (Entry e : entries.values()) {
             if (suite.byId(e.id()) == null) {
+                String into = suite.mergedInto(e.id());
                 out.add(new Verdict(e.id(), null, Status.STALE, List.of(), "listed as a known failure (" + path + ":"
-                        + e.line() + ") but the suite has no such vector; remove it from the expectations file", null));
+                        + e.line() + ") but the suite has no such vector" + (into != null ? ": it was merged into " + into
+                        + "; list that id instead" : "; remove it from the expectations file"), null));
             }
         }
         return out;
+    }
+
+    /**
+     * Refuse, before a run, a path the run's failures could not be written to: one that is there
+     * and is not a regular file, or whose folder is not a folder that can be written.
+     *
+     * @param file the expectations file to write
+     * @throws VerifyException naming the file and why
+     */
+    static void checkWritable(Path file) {
+        if (JsonFiles.present(file)) {
+            JsonFiles.requireRegularFile(file);
+            if (!Files.isWritable(file)) {
+                throw new VerifyException(file + ": cannot write the expectations file: not writable");
+            }
+        }
+        Path dir = file.toAbsolutePath().getParent();
+        if (dir == null || !Files.isDirectory(dir)) {
+            throw new VerifyException(file + ": cannot write the expectations file: no such folder " + dir);
+        }
+        if (!Files.isWritable(dir)) {
+            throw new VerifyException(file + ": cannot write the expectations file: the folder " + dir + " is not writable");
+        }
+    }
+
+    /**
+     * Write the failing vectors of {@code verdicts} as an expectations file, atomically: the file is
+     * whole or untouched.
+     *
+     * @return the number of entries written
+     * @throws VerifyException when it cannot be written, naming the file
+     */
+    static int write(Path file, List<Verdict> verdicts, String reason) {
+        StringBuilder sb = new StringBuilder("# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n");
+        int n = 0;
+        for (Verdict r : verdicts.stream().sorted(java.util.Comparator.comparing(Verdict::id)).toList()) {
+            if (r.vector() != null && (r.status() == Status.FAIL || r.status() == Status.ERROR || r.status() == Status.XFAIL)) {
+                sb.append("[[").append(SECTION).append("]]\nid = ").append(toml(r.id())).append("\nreason = ")
+                        .append(toml(reason)).append("\n\n");
+                n++;
+            }
+        }
+        checkWritable(file);
+        Path dir = file.toAbsolutePath().getParent();
+        try {
+            Path tmp = Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
+            try {
+                Files.writeString(tmp, sb, StandardCharsets.UTF_8);
+                Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } finally {
+                Files.deleteIfExists(tmp);
+            }
+        } catch (IOException e) {
+            throw new VerifyException(file + ": cannot write the expectations file: " + e.getMessage(), e);
+        }
+        return n;
+    }
+
+    private static String toml(String s) {
+        StringBuilder sb = new StringBuilder("\"");
+        for (char c : s.toCharArray()) {
+            if (c == '"' || c == '\\') {
+                sb.append('\\').append(c);
+            } else if (c < 0x20 || c == 0x7f) {
+                sb.append(String.format("\\u%04X", (int) c));
+            } else {
+                sb.append(c);
+            }
+        }
+        return sb.append('"').toString();
     }
 }

@@ -53,15 +53,12 @@ public final class PlcvecTests {
     static volatile boolean factoryRan;
 
     private final Verifier verifier;
+    /** The settings given ({@link #environment}), or null for this process's, read anew by each run. */
     private final Environment env;
     private final Consumer<String> timedOut;
 
     private PlcvecTests(Verifier verifier) {
-        this(verifier, Environment.current(), Run::endProcess);
-    }
-
-    private PlcvecTests(Verifier verifier, Environment env) {
-        this(verifier, env, Run::endProcess);
+        this(verifier, null, Run::endProcess);
     }
 
     private PlcvecTests(Verifier verifier, Environment env, Consumer<String> timedOut) {
@@ -70,8 +67,16 @@ public final class PlcvecTests {
         this.timedOut = timedOut;
     }
 
-    /** The same tests under other {@code PLCVEC_*} values than this process's (for tests). */
-    PlcvecTests environment(Environment env) {
+    /**
+     * The same tests under these settings instead of this process's {@code PLCVEC_*} variables:
+     * for a test that pins its settings, or one process that runs several configurations. The
+     * vectors are then {@code PLCVEC_VECTORS} of {@code env} (else the copy in this jar), unless
+     * {@link #suite(Suite)} names others.
+     *
+     * @param env the settings, e.g. {@code Environment.of(Map.of("PLCVEC_FAMILY", "fx5-time-add"))}
+     * @return the same tests under {@code env}
+     */
+    public PlcvecTests environment(Environment env) {
         return new PlcvecTests(verifier, env, timedOut);
     }
 
@@ -91,20 +96,45 @@ public final class PlcvecTests {
         return new PlcvecTests(verifier);
     }
 
+    /**
+     * The same tests over other vectors than the golden set.
+     *
+     * @param suite the vectors
+     * @return the same tests over {@code suite}
+     */
     public PlcvecTests suite(Suite suite) {
-        return new PlcvecTests(verifier.suite(suite), env);
+        return new PlcvecTests(verifier.suite(suite), env, timedOut);
     }
 
+    /**
+     * The same tests over part of the vectors ({@code PLCVEC_*} narrows it further).
+     *
+     * @param selection the vectors to run
+     * @return the same tests over {@code selection}
+     */
     public PlcvecTests selection(Selection selection) {
-        return new PlcvecTests(verifier.selection(selection), env);
+        return new PlcvecTests(verifier.selection(selection), env, timedOut);
     }
 
+    /**
+     * The same tests with a known-failures file ({@code PLCVEC_KNOWN_FAILURES} names another).
+     *
+     * @param file the TOML file
+     * @return the same tests with those known failures
+     * @throws VerifyException when the file cannot be read
+     */
     public PlcvecTests expectations(Path file) {
-        return new PlcvecTests(verifier.expectations(file), env);
+        return new PlcvecTests(verifier.expectations(file), env, timedOut);
     }
 
+    /**
+     * The same tests with these known failures ({@code PLCVEC_KNOWN_FAILURES} names another file).
+     *
+     * @param known the known failures
+     * @return the same tests with them
+     */
     public PlcvecTests expectations(KnownFailures known) {
-        return new PlcvecTests(verifier.expectations(known), env);
+        return new PlcvecTests(verifier.expectations(known), env, timedOut);
     }
 
     /**
@@ -114,25 +144,15 @@ public final class PlcvecTests {
      */
     public Stream<DynamicNode> stream() {
         factoryRan = true;
-        Verifier v;
-        List<Vector> vectors;
-        Duration timeout;
-        Path write;
+        Environment settings = env != null ? env : Environment.current();
+        settings.warn();
+        Run run;
         try {
-            Selection narrowed = env.narrow(verifier.selection(), verifier.suite());
-            // Narrowed by nothing: the same verifier, and the plan it may have made already.
-            v = narrowed == verifier.selection() ? verifier : verifier.selection(narrowed);
-            Path known = env.knownFailures();
-            if (known != null) {
-                v = v.expectations(known);
-            }
-            timeout = env.timeout();
-            write = env.writeExpectations();
-            vectors = v.vectors();
+            run = plan(settings);
         } catch (VerifyException e) {
             return Stream.of(usage(e.getMessage()));
         }
-        Run run = new Run(v, vectors, timeout, write, timedOut);
+        List<Vector> vectors = run.vectors;
         List<DynamicNode> tests = new ArrayList<>(vectors.size() + 2);
         for (int i = 0; i < vectors.size(); i++) {
             Vector vector = vectors.get(i);
@@ -140,12 +160,38 @@ public final class PlcvecTests {
             // The test source lets an IDE open the vector's line in the vector file.
             tests.add(DynamicTest.dynamicTest(vector.id(), vector.source(), () -> verdict(run.check(vector, index))));
         }
-        for (Verdict stale : v.knownFailures().unknownIds(v.suite())) {
+        for (Verdict stale : run.verifier.knownFailures().unknownIds(run.verifier.suite())) {
             run.record(stale);
             tests.add(failing("expectations: " + stale.id(), stale.report()));
         }
         tests.add(DynamicTest.dynamicTest(END, run::end));
         return tests.stream();
+    }
+
+    /**
+     * The run these settings make: the vectors ({@code PLCVEC_VECTORS} of the environment unless a
+     * suite was given), the selection narrowed by the environment, the known failures, the bound on
+     * each vector and the file to write the failures to, each refused here, before any vector runs.
+     */
+    private Run plan(Environment env) {
+        Verifier v = verifier.hasSuite() ? verifier : verifier.suite(this.env == null ? Suite.golden() : env.suite());
+        Selection narrowed = env.narrow(v.selection(), v.suite());
+        // Narrowed by nothing: the same verifier, and the plan it may have made already.
+        v = narrowed == v.selection() ? v : v.selection(narrowed);
+        Path known = env.knownFailures();
+        if (known != null) {
+            v = v.expectations(known);
+        }
+        Duration timeout = env.timeout();
+        Path write = env.writeExpectations();
+        if (write != null) {
+            try {
+                KnownFailures.checkWritable(write);
+            } catch (VerifyException e) {
+                throw new VerifyException(Environment.WRITE_EXPECTATIONS + "=" + write + ": " + e.getMessage());
+            }
+        }
+        return new Run(v, v.vectors(), timeout, write, timedOut);
     }
 
     /** The name of the test that ends a run. */
@@ -294,8 +340,8 @@ public final class PlcvecTests {
             ExitGuard.forget(this);
         }
 
-        private static Verdict notRun(Vector vector) {
-            return new Verdict(vector.id(), vector, Status.NOT_RUN, List.of(), "not run: the run ended before it", Map.of());
+        private Verdict notRun(Vector vector) {
+            return Judge.verdict(vector, verifier.expected(vector), Status.NOT_RUN, "not run: the run ended before it");
         }
 
         /**
@@ -326,8 +372,8 @@ public final class PlcvecTests {
         private String timedOutText(int index) {
             Vector v = vectors.get(index);
             ended = v.id();
-            Verdict late = new Verdict(v.id(), v, Status.ERROR, List.of(), "no answer within " + seconds(timeout)
-                    + " (" + Environment.TIMEOUT + "); the run ends here: the vectors after it are not run", Map.of());
+            Verdict late = Judge.verdict(v, verifier.expected(v), Status.ERROR, "no answer within " + seconds(timeout)
+                    + " (" + Environment.TIMEOUT + "); the run ends here: the vectors after it are not run");
             List<Verdict> all;
             synchronized (verdicts) {
                 all = new ArrayList<>(verdicts);
@@ -374,7 +420,10 @@ public final class PlcvecTests {
                     + Environment.TIMEOUT + "); " + notRun + " vectors were not run";
         }
 
-        /** The last test: the totals, the expectations file, and a failure if nothing was tested. */
+        /**
+         * The last test: the end of the run's text, the expectations file, and a failure when the
+         * run ended early or nothing passed (every vector skipped or a known failure).
+         */
         void end() {
             stop();
             List<Verdict> all;
@@ -385,17 +434,22 @@ public final class PlcvecTests {
             System.out.print(report.totals());
             System.out.flush();
             if (write != null) {
-                int n = report.writeExpectations(write, "not triaged yet");
-                System.out.println("plcvec: " + n + " known failures written to " + write);
+                try {
+                    int n = report.writeExpectations(write, "not triaged yet");
+                    System.out.println("plcvec: " + n + " known failures written to " + write);
+                } catch (VerifyException e) {
+                    throw quiet(new AssertionFailedError("plcvec: " + Environment.WRITE_EXPECTATIONS + "=" + write + ": "
+                            + e.getMessage()));
+                }
             }
             if (ended != null) {
                 throw quiet(new AssertionFailedError(endedText(all)));
             }
             if (!report.passed() && report.failing().isEmpty()) {
-                throw quiet(new AssertionFailedError("plcvec: nothing tested: " + (all.isEmpty()
-                        ? "no selected vector was run (did the test runner's own filter leave them out? select "
-                        + "vectors with " + Environment.ID + " instead)"
-                        : "every one of the " + all.size() + " vectors run was skipped") + "; a run of nothing proves nothing"));
+                throw quiet(new AssertionFailedError("plcvec: " + (all.isEmpty()
+                        ? "nothing tested: no selected vector was run (did the test runner's own filter leave them out? "
+                        + "select vectors with " + Environment.ID + " instead); a run of nothing proves nothing"
+                        : report.shortfall())));
             }
         }
 

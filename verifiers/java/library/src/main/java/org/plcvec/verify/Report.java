@@ -1,10 +1,6 @@
 package org.plcvec.verify;
 
-import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.nio.file.Files;
 import java.nio.file.Path;
-import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.EnumMap;
 import java.util.List;
@@ -16,12 +12,23 @@ import java.util.Map;
  * its verdicts), so it can be made by any runner of the suite, JUnit's included.
  */
 public final class Report {
-    /** What a run was: the suite, the implementation, the alternatives it followed. */
+    /**
+     * What a run was: the suite, the implementation, the alternatives it followed.
+     *
+     * @param suite the vectors the run judged by
+     * @param implementation the implementation's name
+     * @param version its version ("" when it gives none)
+     * @param followed interpretation to the alternative followed, for the families run
+     * @param cpuWrites the devices the implementation declares its CPU writes on its own account
+     * @param knownFailures the known-failures file as the user gave it ("" for none)
+     */
     public record Header(Suite suite, String implementation, String version, Map<String, Followed> followed,
-                         java.util.Set<String> cpuWrites) {
+                         java.util.Set<String> cpuWrites, String knownFailures) {
+        /** The same, copied: a header does not change with the maps it was made from. */
         public Header {
             followed = Map.copyOf(new java.util.TreeMap<>(followed));
             cpuWrites = java.util.Set.copyOf(cpuWrites);
+            knownFailures = knownFailures == null ? "" : knownFailures;
         }
     }
 
@@ -30,7 +37,16 @@ public final class Report {
     private final double seconds;
     private Inference inference;
     private final String aborted;
+    /** How the roll-up's {@code declare:} lines are written: as this runner's implementer declares a choice. */
+    private java.util.function.Function<Map<String, String>, String> declaration = Rollup::javaDeclaration;
 
+    /**
+     * A report of values: what a run was and its verdicts.
+     *
+     * @param header what the run was
+     * @param verdicts every vector's verdict, in run order, then the stale known-failure ids
+     * @param seconds how long the run took
+     */
     public Report(Header header, List<Verdict> verdicts, double seconds) {
         this(header, verdicts, seconds, null);
     }
@@ -43,18 +59,49 @@ public final class Report {
         this.aborted = aborted;
     }
 
+    /**
+     * What the run was.
+     *
+     * @return the suite, the implementation and what it followed
+     */
     public Header header() {
         return header;
     }
 
+    /**
+     * Every verdict of the run.
+     *
+     * @return the vectors' verdicts in run order, then the stale known-failure ids
+     */
     public List<Verdict> verdicts() {
         return results;
     }
 
+    /**
+     * Every verdict of the run, under its name of 0.1.0.
+     *
+     * @return {@link #verdicts()}
+     * @deprecated renamed {@link #verdicts()} (a verdict is a {@link Verdict}); removed in 0.3.0
+     */
+    @Deprecated(since = "0.2.0", forRemoval = true)
+    public List<Verdict> results() {
+        return verdicts();
+    }
+
+    /**
+     * The verdicts that fail the run: failed, errored, not run, or a stale known failure.
+     *
+     * @return those verdicts, in run order
+     */
     public List<Verdict> failing() {
         return results.stream().filter(Verdict::failing).toList();
     }
 
+    /**
+     * How many vectors got each status.
+     *
+     * @return every status, with 0 for those no vector got
+     */
     public Map<Status, Integer> counts() {
         Map<Status, Integer> counts = new EnumMap<>(Status.class);
         for (Status s : Status.values()) {
@@ -64,12 +111,42 @@ public final class Report {
         return counts;
     }
 
-    /** Nothing failed, errored or is stale, and something was run (an all-skipped run proves nothing). */
+    /**
+     * Whether the run passed: nothing failed, errored, was not run or is stale, and at least one
+     * vector passed. A run of skips and known failures alone proves nothing (CONTRACT.md: a list of
+     * known failures on an implementation that fails them all is never green).
+     *
+     * @return true for a green run
+     */
     public boolean passed() {
-        Map<Status, Integer> c = counts();
-        return failing().isEmpty() && c.get(Status.PASS) + c.get(Status.XFAIL) > 0;
+        return failing().isEmpty() && counts().get(Status.PASS) > 0;
     }
 
+    /**
+     * Why a run without failures still does not pass, as {@code plcvec verify}'s gate says it.
+     *
+     * @return {@code nothing passed (293 skipped): the run proves nothing}, or "" when the run
+     *         failed or passed
+     */
+    public String shortfall() {
+        if (!failing().isEmpty() || counts().get(Status.PASS) > 0) {
+            return "";
+        }
+        List<String> others = new ArrayList<>();
+        counts().forEach((status, n) -> {
+            if (n > 0) {
+                others.add(n + " " + (status == Status.SKIP ? "skipped" : status == Status.XFAIL ? "known failures"
+                        : status.label()));
+            }
+        });
+        return "nothing passed (" + String.join(", ", others) + "): the run proves nothing";
+    }
+
+    /**
+     * How long the run took.
+     *
+     * @return seconds of wall-clock time
+     */
     public double seconds() {
         return seconds;
     }
@@ -77,45 +154,15 @@ public final class Report {
     /**
      * Write the failing vectors of this run as a new expectations file, each with {@code reason}
      * (a starting list for adopting the suite, as {@code plcvec verify --write-expectations}
-     * writes it). Written atomically: the file is whole or untouched. Returns the number of entries.
+     * writes it). Written atomically: the file is whole or untouched.
+     *
+     * @param file where to write it
+     * @param reason the reason every entry gets
+     * @return the number of entries written
+     * @throws VerifyException when the file cannot be written, naming it
      */
     public int writeExpectations(Path file, String reason) {
-        StringBuilder sb = new StringBuilder("# Known failures: each passing entry fails the run as stale, so fix and delete.\n\n");
-        int n = 0;
-        for (Verdict r : results.stream().sorted(java.util.Comparator.comparing(Verdict::id)).toList()) {
-            if (r.vector() != null && (r.status() == Status.FAIL || r.status() == Status.ERROR || r.status() == Status.XFAIL)) {
-                sb.append("[[").append(KnownFailures.SECTION).append("]]\nid = ").append(toml(r.id())).append("\nreason = ")
-                        .append(toml(reason)).append("\n\n");
-                n++;
-            }
-        }
-        Path dir = file.toAbsolutePath().getParent();
-        try {
-            Path tmp = Files.createTempFile(dir, "." + file.getFileName(), ".tmp");
-            try {
-                Files.writeString(tmp, sb, StandardCharsets.UTF_8);
-                Files.move(tmp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-            } finally {
-                Files.deleteIfExists(tmp);
-            }
-        } catch (IOException e) {
-            throw new VerifyException(file + ": cannot write the expectations file: " + e.getMessage(), e);
-        }
-        return n;
-    }
-
-    private static String toml(String s) {
-        StringBuilder sb = new StringBuilder("\"");
-        for (char c : s.toCharArray()) {
-            if (c == '"' || c == '\\') {
-                sb.append('\\').append(c);
-            } else if (c < 0x20 || c == 0x7f) {
-                sb.append(String.format("\\u%04X", (int) c));
-            } else {
-                sb.append(c);
-            }
-        }
-        return sb.append('"').toString();
+        return KnownFailures.write(file, results, reason);
     }
 
     /**
@@ -144,6 +191,8 @@ public final class Report {
         StringBuilder out = new StringBuilder(rollup()).append(skipsByReason());
         if (aborted != null) {
             out.append("ABORTED: ").append(aborted).append('\n');
+        } else if (!shortfall().isEmpty()) {
+            out.append("NOT PASSED: ").append(shortfall()).append('\n');
         }
         out.append('\n');
         Suite s = header.suite();
@@ -161,14 +210,21 @@ public final class Report {
     Inference inference() {
         Inference i = inference;
         if (i == null) {
-            i = inference = Inference.of(header, results);
+            i = inference = Inference.of(header.suite().interpretations(), header.followed(), header.cpuWrites(), results);
         }
         return i;
     }
 
-    /** The roll-up by reading (TEXT.md); "" when no vector failed or errored. */
+    /** The roll-up by reading (TEXT.md); "" when no vector failed, errored, was not run or is a known failure. */
     String rollup() {
-        return results.stream().anyMatch(Inference::failing) ? Rollup.text(results, inference()) : "";
+        return results.stream().anyMatch(v -> Inference.failing(v) || v.status() == Status.XFAIL)
+                ? Rollup.text(results, inference(), declaration, header.knownFailures()) : "";
+    }
+
+    /** This report with the roll-up's declarations written another way (the shared cases' {@code --choose}). */
+    Report declaring(java.util.function.Function<Map<String, String>, String> declaration) {
+        this.declaration = declaration;
+        return this;
     }
 
     /** {@code SKIPPED s of n vectors (p%):} and a line per reason, most vectors first (TEXT.md); "" without skips. */

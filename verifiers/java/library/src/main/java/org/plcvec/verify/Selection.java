@@ -22,10 +22,10 @@ import org.plcvec.spec.Tag;
  * Selection.all().families(Family.FX5_TIME_ADD).tags(Tag.BOUNDARY).shard(2, 4)
  * }</pre>
  *
- * <p>{@link #withEnvironment(Suite)} narrows it by {@code PLCVEC_FAMILY}, {@code PLCVEC_INSTRUCTION},
+ * <p>{@link PlcvecTests} narrows it further by {@code PLCVEC_FAMILY}, {@code PLCVEC_INSTRUCTION},
  * {@code PLCVEC_TAG}, {@code PLCVEC_ID} (globs), {@code PLCVEC_INTERPRETATION} (each a
- * comma-separated list) and {@code PLCVEC_SHARD=K/N} ({@link Environment}), so one CI variable
- * narrows any factory: {@code PLCVEC_ID='fx5-time-add/TADDP/*' mvn test}.
+ * comma-separated list) and {@code PLCVEC_SHARD=K/N} ({@link Environment#narrow}), so one CI
+ * variable narrows any factory: {@code PLCVEC_ID='fx5-time-add/TADDP/*' mvn test}.
  */
 public final class Selection {
     private static final Selection ALL = new Selection(Set.of(), Set.of(), Set.of(), List.of(), Set.of(), 0, 0);
@@ -133,11 +133,41 @@ public final class Selection {
     }
 
     /**
-     * This selection narrowed by the {@code PLCVEC_*} variables (and their {@code plcvec.*}
-     * system properties): a variable can only narrow what the code selects, never widen it.
+     * This selection narrowed by the {@code plcvec.*} system properties alone, unchecked (0.1.0).
+     *
+     * @return the selection narrowed
+     * @deprecated the factory reads every setting, {@code PLCVEC_*} variables and {@code plcvec.*}
+     *             properties alike, and refuses a name the suite does not have
+     *             ({@link Environment#narrow(Selection, Suite)}); removed in 0.3.0
      */
-    public Selection withEnvironment(Suite suite) {
-        return Environment.current().narrow(this, suite);
+    @Deprecated(since = "0.2.0", forRemoval = true)
+    public Selection withSystemProperties() {
+        Selection p = all();
+        String[] names = {"family", "instruction", "tag", "id", "interpretation"};
+        for (String name : names) {
+            String v = System.getProperty("plcvec." + name);
+            if (v != null && !v.isBlank()) {
+                String[] items = Arrays.stream(v.split(",")).map(String::trim).filter(x -> !x.isEmpty()).toArray(String[]::new);
+                p = name.equals("family") ? p.families(items) : name.equals("instruction") ? p.instructions(items)
+                        : name.equals("tag") ? p.tags(items) : name.equals("id") ? p.ids(items) : p.interpretations(items);
+            }
+        }
+        String shard = System.getProperty("plcvec.shard");
+        if (shard != null && !shard.isBlank()) {
+            p = p.shard(shard);
+        }
+        return and(p);
+    }
+
+    /**
+     * Every vector, narrowed by the {@code plcvec.*} system properties alone (0.1.0).
+     *
+     * @return the selection
+     * @deprecated as {@link #withSystemProperties()}; removed in 0.3.0
+     */
+    @Deprecated(since = "0.2.0", forRemoval = true)
+    public static Selection fromSystemProperties() {
+        return all().withSystemProperties();
     }
 
     // Another selection this one is ANDed with ("family A" AND "family B" is not "A or B").

@@ -164,7 +164,7 @@ public final class StdioServer {
         } catch (VirtualMachineError fatal) {
             throw fatal;
         } catch (Throwable t) {   // the implementation's failure on this vector, not the loop's
-            result.put("error", Verifier.describe(t));
+            result.put("error", Judge.describe(t));
         }
         return result;
     }

@@ -70,4 +70,31 @@ public final class Values {
         }
         return Integer.toString(value);
     }
+
+    /** Compact JSON with the keys of every map sorted, as TEXT.md shows a reported list or map. */
+    private static final tools.jackson.databind.json.JsonMapper SORTED = tools.jackson.databind.json.JsonMapper.builder()
+            .enable(tools.jackson.databind.SerializationFeature.ORDER_MAP_ENTRIES_BY_KEYS).build();
+
+    /**
+     * A reported value that is neither a word nor a bit, as a report shows it (TEXT.md, "How values
+     * are shown").
+     *
+     * @param value what the implementation reported
+     * @return its digits, {@code NaN}, {@code 13.5}, {@code "13"}, {@code null}, {@code [1,2]}, ...
+     */
+    public static String showReported(Object value) {
+        if (value instanceof Double || value instanceof Float) {
+            double d = ((Number) value).doubleValue();
+            return Double.isNaN(d) ? "NaN" : Double.isInfinite(d) ? (d > 0 ? "Infinity" : "-Infinity")
+                    : value instanceof Float ? Float.toString((Float) value) : Double.toString(d);
+        }
+        if (value instanceof Number && !(value instanceof java.math.BigDecimal)) {
+            return value.toString();
+        }
+        try {
+            return SORTED.writeValueAsString(value);
+        } catch (tools.jackson.core.JacksonException e) {
+            return String.valueOf(value);
+        }
+    }
 }

@@ -13,8 +13,11 @@ public final class Vector extends VectorRequest {
     record Expectation(List<StepExpect> steps, Address[] finalDevices, int[] finalValues, String category) {
     }
 
-    /** An entry of {@code alternatives}: the choices it holds for, and its expectation. */
-    record Variant(Map<String, String> choices, Expectation expectation) {
+    /**
+     * An entry of {@code alternatives}: the choices it holds for, its expectation, and the devices
+     * it leaves unjudged (interpretation to devices, both sorted; empty for most).
+     */
+    record Variant(Map<String, String> choices, Expectation expectation, Map<String, List<String>> unjudged) {
     }
 
     private final String description;

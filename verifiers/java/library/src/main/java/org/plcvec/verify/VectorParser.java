@@ -42,6 +42,8 @@ final class VectorParser {
     private static final Set<String> DEFINED_KEYS = Set.of("category", "interpretations", "default", "reason");
     private static final Set<String> ERROR_KEYS = Set.of("step", "code", "device");
     private static final Set<String> ALTERNATIVE_KEYS = Set.of("choices", "expect", "final", "outcome");
+    /** An {@code alternatives} entry from schema 1.1 on: the devices it leaves unjudged, too. */
+    private static final Set<String> ALTERNATIVE_KEYS_1_1 = Set.of("choices", "expect", "final", "outcome", "unjudged");
     static final Set<String> HEADER_KEYS = Set.of("count", "family", "generated", "instructions", "interpretations",
             "kind", "schema_version", "spec_file", "spec_sha256", "tags", "title");
     static final Set<String> INTERPRETATION_KEYS = Set.of("id", "question", "default", "alternatives");
@@ -78,7 +80,7 @@ final class VectorParser {
         }
     }
 
-    private static void knownKeys(JsonNode v) throws Bad {
+    private static void knownKeys(JsonNode v, int schemaMinor) throws Bad {
         known(v, VECTOR_KEYS, "");
         known(v.path("assumes"), ASSUMES_KEYS, "assumes");
         known(v.get("initial"), INITIAL_KEYS, "initial");
@@ -95,7 +97,7 @@ final class VectorParser {
         i = 0;
         for (JsonNode alt : v.path("alternatives")) {
             String path = "alternatives/" + i++;
-            known(alt, ALTERNATIVE_KEYS, path);
+            known(alt, schemaMinor >= 1 ? ALTERNATIVE_KEYS_1_1 : ALTERNATIVE_KEYS, path);
             int s = 0;
             for (JsonNode e : alt.path("expect")) {
                 known(e, EXPECT_KEYS, path + "/expect/" + s++);
@@ -107,7 +109,11 @@ final class VectorParser {
         }
     }
 
-    static Vector vector(JsonNode v, String family) throws Bad {
+    /**
+     * One vector of a family file whose schema is 1.{@code schemaMinor}: the keys that version
+     * names, what the schema and {@link Validate} check of it, and its expectations.
+     */
+    static Vector vector(JsonNode v, String family, int schemaMinor) throws Bad {
         if (!v.isObject()) {
             throw new Bad("not a JSON object");
         }
@@ -136,7 +142,11 @@ final class VectorParser {
         if (!v.path("final").path("devices").isObject()) {
             throw new Bad("`final` needs `devices`");
         }
-        knownKeys(v);
+        knownKeys(v, schemaMinor);
+        String problem = Validate.vectorProblem(v);
+        if (problem != null) {
+            throw new Bad(problem);
+        }
         Set<String> names = new LinkedHashSet<>();
         JsonNode outcome = v.get("outcome");
         List<String> interpretations = strings(outcome.path("interpretations"), "outcome.interpretations");
@@ -171,10 +181,21 @@ final class VectorParser {
                         + " expectations");
             }
             variants.add(new Vector.Variant(chosen, expectation(alt.get("expect"), alt.get("final").get("devices"),
-                    alt.path("outcome").path("category").asString(""), request.steps().size())));
+                    alt.path("outcome").path("category").asString(""), request.steps().size()), unjudged(alt)));
         }
         return new Vector(request, v.path("description").asString(""), strings(v.path("tags"), "tags"),
                 strings(v.path("clauses"), "clauses"), interpretations, expectation, variants);
+    }
+
+    /** An entry's {@code unjudged} map (checked by {@link Validate}): interpretation to devices, both sorted. */
+    private static Map<String, List<String>> unjudged(JsonNode alt) {
+        Map<String, List<String>> out = new java.util.TreeMap<>();
+        for (Map.Entry<String, JsonNode> e : alt.path("unjudged").properties()) {
+            List<String> devices = new ArrayList<>();
+            e.getValue().forEach(d -> devices.add(d.stringValue()));
+            out.put(e.getKey(), List.copyOf(devices));
+        }
+        return out;
     }
 
     /** A run request (the protocol's vector without expectations). */

@@ -121,6 +121,9 @@ public final class Verdict {
             judgedBy.forEach((k, v) -> sb.append(sb.length() == 0 ? "" : ", ").append(k).append('=').append(v));
             lines.add("    judged by: " + sb);
         }
+        if (expected != null) {
+            expected.notJudgedLines().forEach(line -> lines.add("    " + line));
+        }
         int shownStep = Integer.MIN_VALUE;
         for (Problem p : problems.subList(0, Math.min(problems.size(), SHOW_PROBLEMS))) {
             String[] context = steps.get(p.step());

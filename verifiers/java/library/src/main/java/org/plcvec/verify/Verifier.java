@@ -61,6 +61,11 @@ public final class Verifier {
         return suite != null ? suite : Suite.golden();
     }
 
+    /** Whether a suite was given ({@link #suite(Suite)}), rather than the golden set by default. */
+    boolean hasSuite() {
+        return suite != null;
+    }
+
     public Implementation implementation() {
         return implementation;
     }
@@ -83,6 +88,7 @@ public final class Verifier {
         final Memory[] memories;            // one per vector, reused by run()
         final Map<String, String> all;      // interpretation -> the alternative followed (declared or default)
         final Map<String, String> defaults;
+        final Judge judge;
 
         Plan(Suite suite, Implementation impl, Selection selection) {
             this.vectors = selection.apply(suite);
@@ -108,6 +114,7 @@ public final class Verifier {
             this.followed = Collections.unmodifiableMap(followed);
             this.all = all;
             this.defaults = defaults;
+            this.judge = new Judge(impl, all, defaults);
             long[] cpuWrites = impl.cpuWrites().stream().mapToLong(d -> Address.of(d).key()).toArray();
             for (Vector v : vectors) {
                 expected.put(v.id(), Expected.of(v, all, defaults).cpuWrites(cpuWrites));
@@ -148,7 +155,7 @@ public final class Verifier {
     /** What a report of this run says it was. */
     public Report.Header header() {
         return new Report.Header(suite(), implementation.name(), implementation.version(), followed(),
-                implementation.cpuWrites());
+                implementation.cpuWrites(), known == KnownFailures.none() ? "" : known.path());
     }
 
     /** Run one vector and judge it, known failures applied. */
@@ -157,13 +164,19 @@ public final class Verifier {
         if (e == null) {
             throw new VerifyException("vector " + v.id() + " is not in the selection (" + selection + ")");
         }
-        Verdict r = judge(v, e, null);
+        Verdict r = plan().judge.judge(v, e, null);
         known.apply(r);
         return r;
     }
 
+    /** What {@code v} expects under the alternatives this run follows, or null when it is not selected. */
+    Expected expected(Vector v) {
+        return plan().expected.get(v.id());
+    }
+
     /** Run every selected vector; the report holds every result, known failures applied. */
     public Report run() {
+        Environment.current().warn();
         long start = System.nanoTime();
         Plan p = plan();
         List<Verdict> results = new ArrayList<>(p.vectors.size());
@@ -173,7 +186,7 @@ public final class Verifier {
             if (m == null && implementation instanceof Emulator) {
                 m = p.memories[i] = v.newMemory();
             }
-            Verdict r = judge(v, p.expectedInOrder[i], m);
+            Verdict r = p.judge.judge(v, p.expectedInOrder[i], m);
             known.apply(r);
             results.add(r);
             i++;
@@ -193,7 +206,7 @@ public final class Verifier {
         List<Vector> vectors = p.vectors;
         if (!(implementation instanceof Emulator)) {
             for (int i = 0, n = vectors.size(); i < n; i++) {
-                if (judge(vectors.get(i), p.expectedInOrder[i], null).status() != Status.PASS) {
+                if (p.judge.judge(vectors.get(i), p.expectedInOrder[i], null).status() != Status.PASS) {
                     failures++;
                 }
             }
@@ -227,198 +240,10 @@ public final class Verifier {
         for (int s = 0, n = steps.size(); s < n; s++) {
             Step step = steps.get(s);
             step.applySet(m);
-            if (!e.matches(s, m, scan.execute(step))) {
+            if (!Compare.matches(e, s, m, scan.execute(step))) {
                 return false;
             }
         }
         return true;
-    }
-
-    private static final List<Problem> NONE = List.of();
-
-    private Verdict judge(Vector v, Expected e, Memory reuse) {
-        if (!implementation.supports(v.instruction())) {
-            return new Verdict(v.id(), v, Status.SKIP, NONE, implementation.name() + " does not support "
-                    + v.instruction(), e.judgedBy);
-        }
-        try {
-            Answer answer = implementation instanceof Emulator
-                    ? runEmulator((Emulator) implementation, v, e, reuse)
-                    : runContract(v, e);
-            List<Problem> problems = answer.problems();
-            if (problems.isEmpty()) {
-                return new Verdict(v.id(), v, Status.PASS, problems, null, e.judgedBy).judged(e, null);
-            }
-            Map<Integer, String[]> steps = new java.util.HashMap<>();
-            for (Problem p : problems) {
-                if (p.step() != Problem.WHOLE) {
-                    steps.computeIfAbsent(p.step(), s -> new String[] {e.inputs(s), e.operands(s)});
-                }
-            }
-            return new Verdict(v.id(), v, Status.FAIL, problems, null, deciding(v, e, problems)).steps(steps)
-                    .judged(e, answer.steps());
-        } catch (SkipVector s) {
-            return new Verdict(v.id(), v, Status.SKIP, NONE, s.getMessage(), e.judgedBy);
-        } catch (VectorError r) {   // the implementation's own report, in its own words
-            return new Verdict(v.id(), v, Status.ERROR, NONE, "the implementation reported an error: " + r.getMessage(),
-                    e.judgedBy).causedBy(r);
-        } catch (VirtualMachineError fatal) {
-            throw fatal;
-        } catch (Throwable t) {   // the implementation's failure on this vector, not the run's
-            return new Verdict(v.id(), v, Status.ERROR, NONE, describe(t), e.judgedBy).causedBy(t);
-        }
-    }
-
-    /**
-     * What an implementation gave on one vector: the problems found and, when there are some, its
-     * answer (the state after each step), which the roll-up by reading judges under other
-     * alternatives.
-     */
-    private record Answer(List<Problem> problems, List<StepState> steps) {
-    }
-
-    private static final Answer PASSED = new Answer(NONE, null);
-
-    /** The memory path: compare in place after each step; build problems only on a mismatch. */
-    private static Answer runEmulator(Emulator emulator, Vector v, Expected e, Memory reuse) throws Exception {
-        Memory m = reuse;
-        if (m == null) {
-            m = v.newMemory();
-        } else {
-            m.reset(v.slots.length, v.initial);
-        }
-        Emulator.Scan scan = emulator.load(v, m);
-        List<Step> steps = v.steps();
-        for (int s = 0, n = steps.size(); s < n; s++) {
-            Step step = steps.get(s);
-            step.applySet(m);
-            if (!e.matches(s, m, scan.execute(step))) {
-                return replay(emulator, v, e);
-            }
-        }
-        return PASSED;
-    }
-
-    /**
-     * The interpretations that decide a differing field (TEXT.md, "judged by"): I decides when the
-     * vector offers an expectation that differs from the followed one in I only and differs at a
-     * problem's field; each with the alternative followed.
-     */
-    private Map<String, String> deciding(Vector v, Expected e, List<Problem> problems) {
-        List<String> touched = v.interpretations();
-        if (touched.isEmpty()) {
-            return Map.of();
-        }
-        Plan p = plan();
-        List<Map<String, String>> offered = Expected.offered(v, p.defaults);
-        Map<String, String> out = new TreeMap<>();
-        for (String i : touched) {
-            for (Map<String, String> c : offered) {
-                boolean onlyI = !c.get(i).equals(e.judgedBy.get(i)) && touched.stream()
-                        .allMatch(x -> x.equals(i) || c.get(x).equals(e.judgedBy.get(x)));
-                if (!onlyI) {
-                    continue;
-                }
-                Map<String, String> all = new TreeMap<>(p.all);
-                all.putAll(c);
-                Expected other = Expected.of(v, all, p.defaults);
-                if (problems.stream().anyMatch(problem -> e.differs(other, problem))) {
-                    out.put(i, e.judgedBy.get(i));
-                    break;
-                }
-            }
-        }
-        return out;
-    }
-
-    /**
-     * The problems of a vector the emulator failed, found by running it again from the start on a
-     * fresh CPU and memory, keeping what it held before each step (the fast path keeps nothing).
-     */
-    private static Answer replay(Emulator emulator, Vector v, Expected e) throws Exception {
-        Memory m = v.newMemory();
-        Emulator.Scan scan = emulator.load(v, m);
-        List<Problem> problems = new ArrayList<>();
-        List<StepState> answer = new ArrayList<>();
-        List<Step> steps = v.steps();
-        int listed = v.slots.length;
-        for (int s = 0, n = steps.size(); s < n; s++) {
-            Step step = steps.get(s);
-            step.applySet(m);
-            int[] held = new int[listed];
-            for (int j = 0; j < listed; j++) {
-                held[j] = m.valueAt(j);
-            }
-            Boolean result = scan.execute(step);
-            if (!e.matches(s, m, result)) {
-                problems.addAll(e.problems(s, m, result, held));
-            }
-            answer.add(new StepState(result, m.snapshot()));
-        }
-        return new Answer(problems, answer);
-    }
-
-    private Answer runContract(Vector v, Expected e) throws Exception {
-        List<StepState> states = implementation.run(v);
-        if (states == null || states.size() != v.steps().size()) {
-            return new Answer(List.of(new Problem(Problem.WHOLE, "steps", v.steps().size() + " steps",
-                    (states == null ? 0 : states.size()) + " steps", null)), states);
-        }
-        List<Problem> problems = NONE;
-        for (int s = 0; s < states.size(); s++) {
-            StepState st = states.get(s);
-            if (st == null || st.devices() == null) {
-                throw new IllegalStateException("step " + s + ": the implementation reported no devices");
-            }
-            List<Problem> p = e.problems(s, st.devices(), st.result(), s == 0 ? null : states.get(s - 1).devices());
-            if (!p.isEmpty()) {
-                if (problems == NONE) {
-                    problems = new ArrayList<>();
-                }
-                problems.addAll(p);
-            }
-        }
-        return problems == NONE ? PASSED : new Answer(problems, states);
-    }
-
-    /**
-     * {@code IllegalStateException: step 0 has no en (MyCpu.java:42)}: located at the
-     * implementation's own frame, the first one outside the JDK and this library (a
-     * {@code DateTimeException} thrown by {@code LocalDate.of} is the caller's line, not
-     * {@code LocalDate.java}).
-     */
-    static String describe(Throwable t) {
-        StackTraceElement frame = ownFrame(t);
-        String where = frame != null && frame.getFileName() != null
-                ? " (" + frame.getFileName() + ":" + frame.getLineNumber() + ")" : "";
-        return t.getClass().getSimpleName() + ": " + t.getMessage() + where;
-    }
-
-    /** Whether {@code cls} is this library's own code (by where it was loaded from, not by its package). */
-    private static boolean library(String cls) {
-        if (!cls.startsWith("org.plcvec.verify.")) {
-            return false;
-        }
-        try {
-            Class<?> c = Class.forName(cls, false, Verifier.class.getClassLoader());
-            java.security.CodeSource mine = Verifier.class.getProtectionDomain().getCodeSource();
-            java.security.CodeSource its = c.getProtectionDomain().getCodeSource();
-            return mine != null && its != null && mine.getLocation().equals(its.getLocation());
-        } catch (ClassNotFoundException | SecurityException e) {
-            return false;
-        }
-    }
-
-    /** The first frame of the implementation's own code (else the top frame, else null). */
-    static StackTraceElement ownFrame(Throwable t) {
-        StackTraceElement[] trace = t.getStackTrace();
-        for (StackTraceElement e : trace) {
-            String cls = e.getClassName();
-            if (!(cls.startsWith("java.") || cls.startsWith("javax.") || cls.startsWith("jdk.")
-                    || cls.startsWith("sun.") || cls.startsWith("com.sun.") || library(cls))) {
-                return e;
-            }
-        }
-        return trace.length > 0 ? trace[0] : null;
     }
 }

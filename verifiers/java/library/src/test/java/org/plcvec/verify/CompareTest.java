@@ -44,7 +44,7 @@ class CompareTest {
     @Test
     void aWordOutOfRangeOrOfAnotherTypeIsWrong() {
         Verdict r = judge(Fakes.echo((s, d) -> d.put("D30", 65536 + 13)));
-        assertEquals("step 0 D30: expected 13, got 65549 (Integer) (before the step: 65535)", r.problems().get(0).line());
+        assertEquals("step 0 D30: expected 13, got 65549 (before the step: 65535)", r.problems().get(0).line());
         r = judge(Fakes.echo((s, d) -> d.put("D30", "13")));
         assertEquals("step 0 D30: expected 13, got \"13\" (before the step: 65535)", r.problems().get(0).line());
     }

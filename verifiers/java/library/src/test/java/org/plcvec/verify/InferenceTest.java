@@ -38,7 +38,8 @@ import tools.jackson.databind.node.ObjectNode;
  * nothing (carry-above-24 2 against 1; set-only 4 against 1). Of the 13 failing vectors, f1..f3,
  * f8 and f9 pass under the choice (5); f8's smallest change is TADD-FLAGS-OFF alone (it fails under
  * TADD-EXACT-24 alone, where 3 is expected). f4 would fail under set-only (broken: 1). f6 and
- * u1..u7 are explained by nothing.
+ * u1..u7 are explained by nothing. Every vector is of fx5-time-add, so both readings are partial:
+ * the 8 failures no reading explains are of their family.
  */
 class InferenceTest {
     @TempDir
@@ -157,10 +158,11 @@ class InferenceTest {
 
         String expected = """
                 READINGS: 5 of 13 failing vectors pass under other alternatives:
-                         4  TADD-FLAGS-OFF=set-only
-                         1  TADD-EXACT-24=carry-above-24
-                    declare: --choose TADD-EXACT-24=carry-above-24 --choose TADD-FLAGS-OFF=set-only
+                         4  TADD-FLAGS-OFF=set-only (partial: 8 failing vectors of fx5-time-add not explained)
+                         1  TADD-EXACT-24=carry-above-24 (partial: 8 failing vectors of fx5-time-add not explained)
+                    declare: Choices.of(Alternatives.TaddExact24.CARRY_ABOVE_24, Alternatives.TaddFlagsOff.SET_ONLY)
                     (so declared, 1 vectors that pass now would fail)
+                    partial: 8 failing vectors that no reading explains are of the same families; a declaration may hide part of a bug there
                 NOT EXPLAINED by any reading: 8 failing vectors, by the clauses they cite:
                          7  fx5-time-add#a
                             fx5-time-add/TADD/inference/plain/u1
@@ -193,9 +195,10 @@ class InferenceTest {
     }
 
     @Test
-    void aKnownFailureIsJudgedButNotRolledUp() throws IOException {
+    void aKnownFailureIsJudgedAndRolledUpApart() throws IOException {
         // f9 listed as known (XFAIL): it still moves TADD-EXACT-24 (judged as a failure), but is not
-        // a failing vector of the roll-up; f8 alone is then explained by the two.
+        // a failing vector of the READINGS part; it is the known failure another reading explains
+        // (TEXT.md's KNOWN FAILURES block), partial since f8, unexplained, is of its family.
         answers.put(ID + "both/f8", 2);
         answers.put(ID + "exact/f9", 3);
         for (String f : List.of("flags/f1", "flags/f2", "flags/f3", "flags/f4", "flags/f6")) {
@@ -214,7 +217,11 @@ class InferenceTest {
                 NOT EXPLAINED by any reading: 1 failing vectors, by the clauses they cite:
                          1  fx5-time-add#both
                             fx5-time-add/TADD/inference/both/f8
-                """, report.rollup());
+                KNOWN FAILURES: 1 of 1 known failures pass under other alternatives:
+                         1  TADD-EXACT-24=carry-above-24 (partial: 1 failing vectors and known failures of fx5-time-add not explained)
+                    declare: Choices.of(Alternatives.TaddExact24.CARRY_ABOVE_24)
+                    then remove those 1 known failures from %s
+                """.formatted(known), report.rollup());
         assertEquals("carry-above-24", report.inference().choice.get(EXACT));
         assertEquals("written-each-execution", report.inference().choice.get(FLAGS));
     }

@@ -81,18 +81,88 @@ class TextTest {
         return text.replaceFirst("(?m)^plcvec verify: .*\n", "").replaceFirst(" in \\d+\\.\\d\\d s\n$", "\n");
     }
 
+    /** The shared cases run by this library's own run, with the known failures of {@code known.toml} or none. */
+    static Report run(boolean withKnown) throws IOException {
+        Verifier verifier = Verifier.of(fromCases()).suite(Suite.load(CASES.resolve("vectors")));
+        if (withKnown) {
+            // As the cases give it: the file's name as the user gave it, which the text repeats.
+            verifier = verifier.expectations(KnownFailures.parse(read("known.toml"), "known.toml"));
+        }
+        return verifier.run().declaring(Rollup::verifyDeclaration);
+    }
+
+    static String read(String name) throws IOException {
+        return Files.readString(CASES.resolve(name), StandardCharsets.UTF_8);
+    }
+
     @Test
     void theRunsTextIsTheOneText() throws IOException {
-        Report report = Verifier.of(fromCases()).suite(Suite.load(CASES.resolve("vectors"))).run();
-        String expected = Files.readString(CASES.resolve("expected.txt"), StandardCharsets.UTF_8);
-        assertEquals(expected, shared(report.summary()));
+        assertEquals(read("expected.txt"), shared(run(false).summary()));
+    }
+
+    @Test
+    void withKnownFailuresTheRunsTextIsTheOneText() throws IOException {
+        assertEquals(read("expected-known.txt"), shared(run(true).summary()));
     }
 
     @Test
     void theEndOfARunIsTheTextAfterTheFailureBlocks() throws IOException {
         // What a test runner prints at its end (each block was shown by its own test): from the roll-up on.
-        Report report = Verifier.of(fromCases()).suite(Suite.load(CASES.resolve("vectors"))).run();
-        String expected = Files.readString(CASES.resolve("expected.txt"), StandardCharsets.UTF_8);
-        assertEquals(expected.substring(expected.indexOf("READINGS: ")), shared(report.totals()));
+        String expected = read("expected.txt");
+        assertEquals(expected.substring(expected.indexOf("READINGS: ")), shared(run(false).totals()));
+        String known = read("expected-known.txt");
+        assertEquals(known.substring(known.indexOf("READINGS: ")), shared(run(true).totals()));
+    }
+
+    /**
+     * The factory's own end of run (its last test) prints the same text, with the declarations in
+     * Java's syntax: the shared text with each {@code declare:} line rewritten as this runner
+     * writes it, the {@code --choose} pairs taken from the line itself.
+     */
+    @Test
+    void theFactorysEndOfRunPrintsTheOneTextInJavasSyntax() throws Throwable {
+        Path known = Files.createTempFile("plcvec-known", ".toml");
+        try {
+            Files.writeString(known, read("known.toml"));
+            PlcvecTests tests = PlcvecTests.of(fromCases()).suite(Suite.load(CASES.resolve("vectors")))
+                    .environment(Environment.of(Map.of(Environment.KNOWN_FAILURES, known.toString())));
+            String printed = PlcvecTestsTest.endOfRun(tests);
+            String expected = read("expected-known.txt").replace("known.toml", known.toString());
+            StringBuilder java = new StringBuilder();
+            for (String line : expected.substring(expected.indexOf("READINGS: ")).split("\n", -1)) {
+                java.append(line.startsWith("    declare: ") ? "    declare: " + Rollup.javaDeclaration(choose(line)) : line)
+                        .append('\n');
+            }
+            assertEquals(java.substring(0, java.length() - 1), shared(printed));
+        } finally {
+            Files.delete(known);
+        }
+    }
+
+    /** The pairs of a {@code declare: --choose ID=alt ...} line. */
+    private static Map<String, String> choose(String line) {
+        Map<String, String> out = new java.util.TreeMap<>();
+        for (String item : line.substring(line.indexOf("--choose ")).split(" ")) {
+            if (item.contains("=")) {
+                out.put(item.substring(0, item.indexOf('=')), item.substring(item.indexOf('=') + 1));
+            }
+        }
+        return out;
+    }
+
+    /** TEXT.md's table of declarations: this runner's row, and plcvec verify's, rendered from the generated names. */
+    @Test
+    void theDeclarationIsTheOneTextMdGivesJava() throws IOException {
+        String text = Files.readString(CASES.resolve("../TEXT.md"), StandardCharsets.UTF_8);
+        Map<String, String> choice = Map.of("FX5-SM709-SCOPE", "all-words", "TADD-FLAGS-OFF", "set-only");
+        assertEquals(row(text, "Java"), Rollup.javaDeclaration(choice));
+        assertEquals(row(text, "`plcvec verify`"), Rollup.verifyDeclaration(choice));
+    }
+
+    private static String row(String text, String runner) {
+        java.util.regex.Matcher m = java.util.regex.Pattern.compile("(?m)^\\| " + java.util.regex.Pattern.quote(runner)
+                + " \\| `(.*)` \\|$").matcher(text);
+        org.junit.jupiter.api.Assertions.assertTrue(m.find(), "TEXT.md has no row for " + runner);
+        return m.group(1);
     }
 }
