@@ -43,6 +43,9 @@ FORMS = {"python": "json", "c": "json", "rust": "jsonl", "go": "jsonl", "java": 
 STATUS = {"pass": 0, "fail": 1, "usage": 2, "empty": 5}
 # Languages whose entry point returns the verdict's own status, not only its test runner's.
 EXACT = {"python", "c"}
+# Languages whose faults-entry runs every row in one call (`faults-entry --batch PLAN OUT`, README.md):
+# one test run for the rows, not a build tool and a test process started per row.
+BATCH = {"java"}
 ROW_KEYS = {"id", "what", "verdict", "names", "file_line", "hostile", "on", "damage", "source", "env",
             "known", "filter", "except", "not_names", "once", "seconds", "known_as", "known_kind"}
 EXCEPT_KEYS = {"verdict", "names", "skip", "why"}
@@ -393,7 +396,8 @@ def expected(row: Row, lang: str) -> tuple[str, list[str], bool]:
     return exc.get("verdict", row.verdict), list(exc.get("names", row.names)), bool(exc.get("skip"))
 
 
-def run_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float) -> Outcome:
+def prepare_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float):
+    """The row's environment, its placeholders and its bound; or its Outcome, when the language skips it."""
     verdict, names, skipped = expected(row, lang)
     if skipped:
         return Outcome(lang, row, True, f"skipped: {row.exceptions[lang]['why']}", None, 0.0, "")
@@ -424,7 +428,55 @@ def run_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float) 
     # A row with its own time limit is not left to hang for the whole bound past it.
     if row.seconds is not None:
         bound = min(bound, row.seconds + 30)
+    return env, subst, bound
+
+
+def run_row(lang: str, row: Row, folders: Folders, scratch: Path, bound: float) -> Outcome:
+    prepared = prepare_row(lang, row, folders, scratch, bound)
+    if isinstance(prepared, Outcome):
+        return prepared
+    env, subst, bound = prepared
     status, output, seconds = run_bounded([str(entry(lang))], env, bound)
+    return judge_row(lang, row, subst, bound, status, output, seconds)
+
+
+def run_batch(lang: str, rows: list[Row], folders: Folders, scratch: Path, bound: float) -> list[Outcome]:
+    """Every row in one call of `faults-entry --batch PLAN OUT` (a language in BATCH): PLAN lists each
+    row's id, environment and bound; the entry writes OUT/<id>.json with the row's exit status (null
+    for a hang), output and seconds, each judged here as a row run on its own."""
+    out = scratch / lang / "batch"
+    out.mkdir(parents=True, exist_ok=True)
+    plan, prepared, done = [], {}, {}
+    for row in rows:
+        p = prepare_row(lang, row, folders, scratch, bound)
+        if isinstance(p, Outcome):
+            done[row.id] = p
+            continue
+        env, subst, row_bound = p
+        prepared[row.id] = (subst, row_bound)
+        plan.append({"id": row.id, "env": env, "bound": row_bound})
+    (out / "plan.json").write_text(json.dumps(plan), encoding="utf-8")
+    status, output, _ = run_bounded([str(entry(lang)), "--batch", str(out / "plan.json"), str(out)], dict(os.environ),
+                                    min(BUILD_BOUND_S, bound * max(1, len(plan))))
+    outcomes = []
+    for row in rows:
+        if row.id in done:
+            outcomes.append(done[row.id])
+            continue
+        subst, row_bound = prepared[row.id]
+        result = out / f"{row.id}.json"
+        if result.is_file():
+            r = json.loads(result.read_text(encoding="utf-8"))
+            outcomes.append(judge_row(lang, row, subst, row_bound, r["status"], r["output"], r["seconds"]))
+        else:   # the batch ended (or hung) before this row: what it printed says why
+            outcomes.append(judge_row(lang, row, subst, row_bound, None, f"(no result; the batch exited {status})\n"
+                                      + output, 0.0))
+    return outcomes
+
+
+def judge_row(lang: str, row: Row, subst: dict, bound: float, status: int | None, output: str,
+              seconds: float) -> Outcome:
+    verdict, names, _ = expected(row, lang)
     problems = []
     if status is None:
         problems.append(f"no answer within {bound:.0f} s (a hang)")
@@ -527,21 +579,24 @@ def main(argv: list[str] | None = None) -> int:
                     print(problem, file=sys.stderr)
                     failures += len(rows)
                     continue
-            for row in rows:
-                try:
-                    o = run_row(lang, row, folders, base / "scratch", args.bound)
-                except TableError as e:
-                    print(f"run.py: {e}", file=sys.stderr)
-                    return 2
-                outcomes.append(o)
-                mark = "ok  " if o.ok else "FAIL"
-                print(f"{mark} {lang:10} {row.id:34} {o.seconds:5.1f} s  {o.why}", flush=True)
-                if not o.ok:
-                    failures += 1
-                # A failing row always shows what the runner printed: a CI log must explain its own
-                # failure, which may not come back on a second run.
-                if not o.ok or args.verbose:
-                    print(excerpt(o), flush=True)
+            try:
+                if lang in BATCH:
+                    results = run_batch(lang, rows, folders, base / "scratch", args.bound)
+                else:
+                    results = (run_row(lang, row, folders, base / "scratch", args.bound) for row in rows)
+                for o in results:
+                    outcomes.append(o)
+                    mark = "ok  " if o.ok else "FAIL"
+                    print(f"{mark} {lang:10} {o.row.id:34} {o.seconds:5.1f} s  {o.why}", flush=True)
+                    if not o.ok:
+                        failures += 1
+                    # A failing row always shows what the runner printed: a CI log must explain its
+                    # own failure, which may not come back on a second run.
+                    if not o.ok or args.verbose:
+                        print(excerpt(o), flush=True)
+            except TableError as e:
+                print(f"run.py: {e}", file=sys.stderr)
+                return 2
     finally:
         if args.keep:
             print(f"damaged folders kept in {base}")
