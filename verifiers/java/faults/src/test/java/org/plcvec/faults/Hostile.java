@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 
 import org.plcvec.reference.Reference;
@@ -21,25 +22,41 @@ import org.plcvec.verify.VectorRequest;
 final class Hostile implements Implementation {
     static final List<String> KINDS = List.of("reference", "wrong-result", "panic", "loop-forever", "empty-answer",
             "stray-write", "duplicate-write", "wrong-type", "out-of-range", "exit-zero", "exit-nonzero", "crash",
-            "mutates-request", "supports-nothing", "skips-everything", "bad-choice", "cpu-writes");
+            "mutates-request", "supports-nothing", "skips-everything", "bad-choice", "cpu-writes", "word-65536",
+            "not-a-number", "closes-fds", "child-holds-stdout", "follows-alternative");
+    /** The kinds that end or damage the process they run in: each needs a test process of its own. */
+    static final Set<String> PROCESS_ENDING = Set.of("loop-forever", "exit-zero", "exit-nonzero", "crash", "closes-fds",
+            "child-holds-stdout");
 
     private final Reference reference = new Reference();
     private final String kind;
     private final String on;
+    /** What follows-alternative answers with: the reference following the undeclared choice. */
+    private final Reference answering;
 
-    private Hostile(String kind, String on) {
+    private Hostile(String kind, String on, Reference answering) {
         this.kind = kind;
         this.on = on;
+        this.answering = answering;
     }
 
-    /** {@code PLCVEC_HOSTILE} (absent: the plain reference) acting on {@code PLCVEC_HOSTILE_ON}. */
-    static Implementation fromEnvironment() {
-        String kind = System.getenv().getOrDefault("PLCVEC_HOSTILE", "reference");
+    /**
+     * {@code PLCVEC_HOSTILE} of {@code env} (absent: the plain reference) acting on
+     * {@code PLCVEC_HOSTILE_ON}; {@code follows-alternative} follows {@code PLCVEC_HOSTILE_CHOICE}.
+     */
+    static Implementation from(Map<String, String> env) {
+        String kind = env.getOrDefault("PLCVEC_HOSTILE", "reference");
         if (!KINDS.contains(kind)) {
             throw new IllegalArgumentException("PLCVEC_HOSTILE=" + kind + ": known: " + String.join(", ", KINDS));
         }
-        // The plain reference is the documented Emulator, exactly as an implementer plugs one in.
-        return kind.equals("reference") ? new Reference() : new Hostile(kind, System.getenv("PLCVEC_HOSTILE_ON"));
+        if (kind.equals("reference")) {
+            return new Reference();   // the documented Emulator, exactly as an implementer plugs one in
+        }
+        Reference answering = new Reference();
+        if (kind.equals("follows-alternative")) {
+            answering = new Reference(Choices.parse(List.of(env.getOrDefault("PLCVEC_HOSTILE_CHOICE", ""))).checked());
+        }
+        return new Hostile(kind, env.get("PLCVEC_HOSTILE_ON"), answering);
     }
 
     @Override
@@ -49,6 +66,7 @@ final class Hostile implements Implementation {
 
     @Override
     public Choices choices() {
+        // follows-alternative declares nothing: a reading followed but not declared.
         return kind.equals("bad-choice") ? Choices.of(Map.of("NO-SUCH-INTERPRETATION", "x")) : reference.choices();
     }
 
@@ -64,32 +82,33 @@ final class Hostile implements Implementation {
 
     @Override
     public List<StepState> run(VectorRequest vector) throws Exception {
-        if (kind.equals("skips-everything")) {
-            throw new SkipVector("this implementation skips every vector");
+        switch (kind) {
+            case "skips-everything":
+                throw new SkipVector("this implementation skips every vector");
+            case "follows-alternative":
+                return answering.run(vector);
+            case "cpu-writes": {
+                boolean target = vector.id().equals(on);
+                return edit(reference.run(vector), d -> {
+                    d.put("SM56", true);
+                    d.put("SD1", 1);
+                    if (target) {
+                        d.put("SD0", 1);
+                    }
+                });
+            }
+            default:
+                return vector.id().equals(on) ? misbehave(vector) : reference.run(vector);
         }
-        boolean target = vector.id().equals(on);
-        if (kind.equals("cpu-writes")) {
-            return edit(reference.run(vector), d -> {
-                d.put("SM56", true);
-                d.put("SD1", 1);
-                if (target) {
-                    d.put("SD0", 1);
-                }
-            });
-        }
-        if (!target) {
-            return reference.run(vector);
-        }
+    }
+
+    /** The misbehaviour on the target vector. */
+    private List<StepState> misbehave(VectorRequest vector) throws Exception {
         switch (kind) {
             case "panic":
                 throw new IllegalStateException("hostile: a panic on " + vector.id());
             case "loop-forever":
-                long spins = 0;
-                while (spins >= 0) {     // never returns, deaf to interrupts
-                    spins++;
-                    Thread.onSpinWait();
-                }
-                return List.of();
+                return Misbehaviour.loopForever();
             case "empty-answer":
                 return List.of();
             case "exit-zero":
@@ -103,21 +122,25 @@ final class Hostile implements Implementation {
                 return List.of();
             case "mutates-request": {
                 List<StepState> answer = reference.run(vector);
-                clear(vector);
+                Misbehaviour.clear(vector);
                 return answer;
             }
+            case "closes-fds":
+                Misbehaviour.closeInheritedDescriptors();
+                return wrong(reference.run(vector));
+            case "child-holds-stdout":
+                Misbehaviour.childHoldingStdout();
+                return reference.run(vector);
             default:
-                break;
+                return edited(reference.run(vector));
         }
-        List<StepState> states = reference.run(vector);
+    }
+
+    /** The target vector's answer with a wrong value, a stray write or a wrong type. */
+    private List<StepState> edited(List<StepState> states) {
         switch (kind) {
             case "wrong-result":
-                if (states.get(0).result() != null) {
-                    List<StepState> out = new ArrayList<>(states);
-                    out.set(0, new StepState(!states.get(0).result(), states.get(0).devices()));
-                    return out;
-                }
-                return edit(states, d -> firstOf(d, Integer.class).ifPresent(k -> d.put(k, ((Integer) d.get(k) + 1) & 0xFFFF)));
+                return wrong(states);
             case "stray-write":
                 return edit(states, d -> d.put("D7777", 1));
             case "duplicate-write":
@@ -131,9 +154,23 @@ final class Hostile implements Implementation {
                 return edit(states, d -> firstOf(d, Boolean.class).ifPresent(k -> d.put(k, 1)));
             case "out-of-range":
                 return edit(states, d -> firstOf(d, Integer.class).ifPresent(k -> d.put(k, 70000)));
+            case "word-65536":
+                return edit(states, d -> firstOf(d, Integer.class).ifPresent(k -> d.put(k, 65536)));
+            case "not-a-number":
+                return edit(states, d -> firstOf(d, Integer.class).ifPresent(k -> d.put(k, Double.NaN)));
             default:
                 throw new IllegalStateException("PLCVEC_HOSTILE=" + kind + " is not handled");
         }
+    }
+
+    /** The contact result flipped, or 1 added to the first word of every step. */
+    private static List<StepState> wrong(List<StepState> states) {
+        if (states.get(0).result() != null) {
+            List<StepState> out = new ArrayList<>(states);
+            out.set(0, new StepState(!states.get(0).result(), states.get(0).devices()));
+            return out;
+        }
+        return edit(states, d -> firstOf(d, Integer.class).ifPresent(k -> d.put(k, ((Integer) d.get(k) + 1) & 0xFFFF)));
     }
 
     private interface Edit {
@@ -151,28 +188,8 @@ final class Hostile implements Implementation {
         return out;
     }
 
-    private static java.util.Optional<String> firstOf(Map<String, Object> devices, Class<?> type) {
+    private static Optional<String> firstOf(Map<String, Object> devices, Class<?> type) {
         return devices.entrySet().stream().filter(e -> type.isInstance(e.getValue())).map(Map.Entry::getKey)
                 .filter(k -> k.matches("[A-Z]+\\d+")).findFirst();
-    }
-
-    /** Clear what of the request can be cleared; the API hands out read-only views, which is the point. */
-    private static void clear(VectorRequest vector) {
-        try {
-            vector.steps().clear();
-        } catch (UnsupportedOperationException readOnly) {
-            // the request's steps cannot be changed from outside
-        }
-        try {
-            vector.steps().forEach(s -> s.set().clear());
-        } catch (UnsupportedOperationException readOnly) {
-            // nor a step's inputs
-        }
-        try {
-            vector.operands().clear();
-            vector.initialDevices().clear();
-        } catch (UnsupportedOperationException readOnly) {
-            // nor the operands
-        }
     }
 }

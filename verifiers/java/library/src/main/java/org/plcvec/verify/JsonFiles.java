@@ -37,7 +37,7 @@ final class JsonFiles {
     static final JsonMapper JSON = JsonMapper.builder().enable(DeserializationFeature.FAIL_ON_READING_DUP_TREE_KEY).build();
     /** The parser that takes the last of a repeated key: only to find whose vector a repeated key is in. */
     private static final JsonMapper LENIENT = JsonMapper.builder().build();
-    private static final Pattern DUPLICATE = Pattern.compile("Duplicate (?:field|property) '(.*?)'");
+    private static final Pattern DUPLICATE = Pattern.compile("Duplicate (?:field|property) [\"'](.*?)[\"'] for");
     /** The file type bits of a {@code unix:mode} attribute, and those of the files that are not regular. */
     private static final int TYPE = 0170000;
     private static final int FIFO = 0010000;

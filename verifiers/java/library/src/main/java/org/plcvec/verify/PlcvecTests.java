@@ -274,6 +274,7 @@ public final class PlcvecTests {
         /** The bound, and how often the watchdog looks: every eighth of the bound, 10 ms to 1 s. */
         final long bound;
         final long tick;
+        private final java.util.Set<Long> processes;   // this process's descendants when the run started
         private long seen = -1;              // the watchdog's own: the beat it saw last, and since when
         private long since;
 
@@ -288,6 +289,7 @@ public final class PlcvecTests {
             // Room for every vector's verdict and a stale known failure or two: no growth mid-run.
             this.verdicts = Collections.synchronizedList(new ArrayList<>(vectors.size() + 8));
             ExitGuard.watch(this);
+            this.processes = LeftProcesses.now();
         }
 
         void record(Verdict r) {
@@ -335,6 +337,7 @@ public final class PlcvecTests {
          * runs keeps none of them).
          */
         void stop() {
+            LeftProcesses.since(processes);
             finished = true;
             Watchdog.forget(this);
             ExitGuard.forget(this);
@@ -539,7 +542,8 @@ public final class PlcvecTests {
     /**
      * A shutdown hook that names the vector in progress when the process ends in the middle of a
      * run (an implementation calling {@code System.exit}): without it, the test runner reports only
-     * that its process went away. {@code Runtime.halt} and signals run no hook; the vector's name
+     * that its process went away. It also ends the processes the runs' implementations left
+     * running ({@link LeftProcesses}). {@code Runtime.halt} and signals run no hook; the vector's name
      * is then in the test runner's record of the test that started and never ended.
      */
     static final class ExitGuard {
@@ -566,6 +570,7 @@ public final class PlcvecTests {
                             System.err.println(said);
                         }
                     }
+                    LeftProcesses.end();
                 }, "plcvec-exit-guard"));
             }
         }
