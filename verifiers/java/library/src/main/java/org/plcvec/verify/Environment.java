@@ -17,7 +17,7 @@ import java.util.regex.Pattern;
  * them works in every language. A system property of the same name in lower case with dots
  * ({@code -Dplcvec.shard=2/4} for {@code PLCVEC_SHARD}, {@code -Dplcvec.known-failures=} for
  * {@code PLCVEC_KNOWN_FAILURES}) overrides the variable, for a build tool that passes properties
- * more easily than environment.
+ * more easily than environment; a property set to nothing ({@code -Dplcvec.id=}) unsets its variable.
  *
  * <p>The selection variables narrow what the code selects, never widen it. A name the suite does
  * not have, an empty item ({@code PLCVEC_FAMILY=,}), an id glob that matches no id, a malformed
@@ -110,9 +110,10 @@ public final class Environment {
      */
     public String get(String variable) {
         String v = override.apply(variable);
-        if (v == null || v.isEmpty()) {
-            v = variables.get(variable);
+        if (v != null) {     // set, even to nothing: -Dplcvec.id= unsets PLCVEC_ID
+            return v.isEmpty() ? null : v;
         }
+        v = variables.get(variable);
         if (v == null && !variables.containsKey(variable)) {
             for (SettingNames.OldName old : SettingNames.OLD_NAMES) {
                 if (old.replacement().equals(variable) && variables.containsKey(old.name())) {

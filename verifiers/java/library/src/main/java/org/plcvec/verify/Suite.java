@@ -87,8 +87,8 @@ public final class Suite {
             synchronized (Suite.class) {
                 s = golden;
                 if (s == null) {
-                    String override = System.getProperty(PROPERTY);
-                    if (override == null || override.isEmpty()) {
+                    String override = System.getProperty(PROPERTY);   // set, even to nothing, it wins
+                    if (override == null) {
                         override = System.getenv(ENV);
                     }
                     s = override == null || override.isEmpty() ? bundled() : load(Path.of(override));
