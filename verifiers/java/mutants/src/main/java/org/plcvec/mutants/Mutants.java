@@ -12,6 +12,7 @@ import org.plcvec.reference.Reference;
 import org.plcvec.reference.Settings;
 import org.plcvec.spec.Alternatives;
 import org.plcvec.spec.Family;
+import org.plcvec.spec.Instruction;
 import org.plcvec.verify.Address;
 import org.plcvec.verify.Choices;
 import org.plcvec.verify.Emulator.Scan;
@@ -88,11 +89,20 @@ public final class Mutants {
                 }));
         add("fx5-and-executed-when-off", List.of(Family.FX5_TIME_COMPARE),
                 "Declares FX5-AND-OR-WHEN-OFF=and-skipped (the default) but executes AND while the preceding logic is "
-                        + "off, as always-executed does: an interpretation followed other than the one declared.",
-                c -> {
-                    Settings alwaysExecuted = new Settings(c.with(Alternatives.Fx5AndOrWhenOff.ALWAYS_EXECUTED));
-                    return fx5(c, (v, m, fields, declared) -> new Fx5Compare(v, m, fields, alwaysExecuted));
-                });
+                        + "off, and skips OR while it is on: AND as always-executed, OR as short-circuit, which no "
+                        + "alternative does together.",
+                c -> fx5(c, (v, m, fields, settings) -> new Fx5Compare(v, m, fields, settings) {
+                    @Override
+                    public Boolean execute(Step step) {
+                        erred = false;
+                        if (form == Instruction.Form.OR && step.rloIn()) {
+                            return true;              // skipped: the preceding logic decides
+                        }
+                        boolean contact = evaluate(step);   // AND executed whatever the preceding logic
+                        return form == Instruction.Form.LD ? contact
+                                : form == Instruction.Form.AND ? step.rloIn() && contact : step.rloIn() || contact;
+                    }
+                }));
 
         // -- FX5 TADD / TADDP ---------------------------------------------------------------------
         add("tadd-no-wrap-at-24", List.of(Family.FX5_TIME_ADD),
@@ -165,12 +175,14 @@ public final class Mutants {
                     }
                 }));
         add("hour-input-off-resets", List.of(Family.FC6A_HOUR_METER),
-                "Declares HOUR-INPUT-OFF=hold (the default) but clears D1 while the input is off, as reset does: an "
-                        + "interpretation followed other than the one declared.",
-                c -> {
-                    Settings reset = new Settings(c.with(Alternatives.HourInputOff.RESET));
-                    return hour(c, (v, m, declared) -> new Fc6aHourMeter(v, m, reset));
-                });
+                "Declares HOUR-INPUT-OFF=hold (the default) but clears D1 while the input is off, as reset does, yet "
+                        + "keeps the fraction of a second already counted, which reset drops: no alternative does both.",
+                c -> hour(c, (v, m, settings) -> new Fc6aHourMeter(v, m, settings) {
+                    @Override
+                    protected void inputOff() {
+                        store(0);
+                    }
+                }));
 
         // -- CP1E time comparison -----------------------------------------------------------------
         add("cp1e-mask-inverted", List.of(Family.CP1E_TIME_COMPARE),
@@ -192,12 +204,17 @@ public final class Mutants {
                     }
                 }));
         add("cp1e-bcd-read-as-binary", List.of(Family.CP1E_TIME_COMPARE),
-                "The time bytes are taken as plain binary without checking that they are BCD, so a byte such as 1AH "
-                        + "is compared instead of turning P_ER on.",
+                "The time bytes are read as BCD digits without checking them (tens x 10 + units), so a byte such as "
+                        + "1AH is compared as 20 instead of turning P_ER on (nor as the byte 1AH, as raw-bytes compares it).",
                 c -> cp1e(c, (v, m, settings) -> new Cp1eTimeCompare(v, m, settings) {
                     @Override
                     protected boolean isBcd(int b) {
                         return true;
+                    }
+
+                    @Override
+                    protected int compared(int raw) {
+                        return (raw >> 4) * 10 + (raw & 0x0F);
                     }
                 }));
     }

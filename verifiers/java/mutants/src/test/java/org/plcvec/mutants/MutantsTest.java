@@ -108,6 +108,27 @@ class MutantsTest {
         }));
     }
 
+    /**
+     * No mutant is explained away by a reading (TEXT.md, "The roll-up by reading"): the roll-up of
+     * a mutant's run may propose a declaration only marked partial, since the bug leaves failures
+     * of the same families that no reading explains. A mutant whose failures one reading explains
+     * entirely is that reading, not a bug.
+     */
+    @TestFactory
+    Stream<DynamicTest> noMutantIsExplainedAwayByAReading() {
+        return Mutants.all().stream().map(m -> DynamicTest.dynamicTest(m.name(), () -> {
+            Report report = Verifier.of(m.create()).selection(Selection.all().families(m.families().toArray(new Family[0])))
+                    .run();
+            String summary = report.summary();
+            for (String line : summary.split("\n")) {
+                if (line.matches(" {4}[ \\d]{6}  [A-Z0-9-]+=.*")) {
+                    assertTrue(line.contains(" (partial: "), m.name() + " is explained by a reading: " + line + "\n"
+                            + summary.substring(summary.indexOf("READINGS: ")));
+                }
+            }
+        }));
+    }
+
     @Test
     void theMutantsCoverEveryFamilyAndEveryAspect() {
         assertTrue(Mutants.all().size() >= 10);

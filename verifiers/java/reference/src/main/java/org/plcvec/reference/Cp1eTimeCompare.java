@@ -94,6 +94,8 @@ public class Cp1eTimeCompare implements Emulator.Scan {
             if (invalid(a, f) || invalid(b, f)) {
                 return error();
             }
+            a = compared(a);
+            b = compared(b);
             // "The time comparison instructions are limited to comparing 8-bit time values." For
             // valid BCD the byte order is the numeric order.
             if (order == 0 && a != b) {
@@ -127,6 +129,11 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         }
         int v = bcd(raw);
         return (v < f.min() || v > f.max()) && settings.cp1eOutOfRangeError;   // (CP1E-OUT-OF-RANGE)
+    }
+
+    /** The value a field's byte is compared as: the byte itself, whose order is the numeric one for valid BCD. */
+    protected int compared(int raw) {
+        return raw;
     }
 
     protected Field[] fields() {

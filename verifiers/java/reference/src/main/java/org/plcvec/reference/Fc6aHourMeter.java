@@ -44,17 +44,7 @@ public class Fc6aHourMeter implements Emulator.Scan {
         boolean turnedOn = step.input() && !inputWasOn;
         inputWasOn = step.input();
         if (!step.input()) {
-            // "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF.
-            switch (settings.hourInputOff) {
-                case RESET:
-                    store(0);
-                    fractionMs = 0;
-                    break;
-                case HOLD_DROP_FRACTION:
-                    fractionMs = 0;     // D1 kept; the part of a second is lost
-                    break;
-                default:                // HOLD: nothing changes
-            }
+            inputOff();
             if (settings.hourPresetEveryExecution) {
                 checkPreset();          // HOUR-PRESET-CHECK=every-execution: with the input off too
             }
@@ -107,6 +97,20 @@ public class Fc6aHourMeter implements Emulator.Scan {
             mem.setBit(d2, reached || (wrapped && mem.bit(d2)));
         }
         return null;
+    }
+
+    /** "While input is on, the ON duration of the input is measured." Off: HOUR-INPUT-OFF. */
+    protected void inputOff() {
+        switch (settings.hourInputOff) {
+            case RESET:
+                store(0);
+                fractionMs = 0;
+                break;
+            case HOLD_DROP_FRACTION:
+                fractionMs = 0;     // D1 kept; the part of a second is lost
+                break;
+            default:                // HOLD: nothing changes
+        }
     }
 
     /** Read and check S1: the preset, or null when it is invalid (M8004 on, D2 off). */
