@@ -3,12 +3,24 @@ package org.plcvec.spec;
 
 /** One answer to an {@link Interpretation}; the enums of {@link Alternatives} implement it. */
 public interface Alternative {
-    /** The question this answers. */
+    /**
+     * The question this answers.
+     *
+     * @return its interpretation
+     */
     Interpretation interpretation();
 
-    /** The alternative's id as the vectors spell it ({@code all-words}). */
+    /**
+     * The alternative's id as the vectors spell it.
+     *
+     * @return {@code all-words}, ...
+     */
     String id();
 
-    /** What an implementation following it does. */
+    /**
+     * What an implementation following it does.
+     *
+     * @return the spec's words
+     */
     String says();
 }

@@ -26,31 +26,57 @@ public enum Family {
         this.kind = kind;
     }
 
-    /** The family's name as the vectors spell it ({@code fx5-time-add}). */
+    /**
+     * The family's name as the vectors spell it.
+     *
+     * @return {@code fx5-time-add}, ...
+     */
     public String id() {
         return id;
     }
 
+    /**
+     * The family's title, as the spec gives it.
+     *
+     * @return the title
+     */
     public String title() {
         return title;
     }
 
-    /** The generic rule kind of the generator that derives its vectors. */
+    /**
+     * The generic rule kind of the generator that derives its vectors.
+     *
+     * @return the rule kind
+     */
     public String kind() {
         return kind;
     }
 
-    /** The family's instructions, in the vector file's order. */
+    /**
+     * The family's instructions, in the vector file's order.
+     *
+     * @return the instructions
+     */
     public List<Instruction> instructions() {
         return Instruction.of(this);
     }
 
-    /** The interpretations the family's vectors may depend on. */
+    /**
+     * The interpretations the family's vectors may depend on.
+     *
+     * @return the interpretations
+     */
     public List<Interpretation> interpretations() {
         return Interpretation.of(this);
     }
 
-    /** The family named {@code id} as the vectors spell it, or null. */
+    /**
+     * The family named {@code id} as the vectors spell it.
+     *
+     * @param id the family's name
+     * @return the family, or null
+     */
     public static Family byId(String id) {
         for (Family f : values()) {
             if (f.id.equals(id)) {

@@ -124,8 +124,11 @@ public enum Instruction {
 
     /** A contact's form: how its result combines with the preceding logic ({@code rlo_in}). */
     public enum Form {
+        /** The {@code LD} form (verifiers/CONTRACT.md, "Comparing"). */
         LD,
+        /** The {@code AND} form (verifiers/CONTRACT.md, "Comparing"). */
         AND,
+        /** The {@code OR} form (verifiers/CONTRACT.md, "Comparing"). */
         OR;
     }
 
@@ -150,7 +153,11 @@ public enum Instruction {
             this.symbol = symbol;
         }
 
-        /** As the manual writes it ({@code <=}). */
+        /**
+         * As the manual writes it.
+         *
+         * @return {@code <=}, ...
+         */
         public String symbol() {
             return symbol;
         }
@@ -158,7 +165,9 @@ public enum Instruction {
 
     /** When an execution runs: at every scan, or on the rising edge of its input only. */
     public enum Execution {
+        /** The execution {@code every-scan}. */
         EVERY_SCAN("every-scan"),
+        /** The execution {@code rising-edge}. */
         RISING_EDGE("rising-edge");
 
         private final String id;
@@ -167,7 +176,11 @@ public enum Instruction {
             this.id = id;
         }
 
-        /** As the spec names it ({@code every-scan}). */
+        /**
+         * As the spec names it.
+         *
+         * @return {@code every-scan} or {@code rising-edge}
+         */
         public String id() {
             return id;
         }
@@ -189,35 +202,66 @@ public enum Instruction {
         this.execution = execution;
     }
 
-    /** The structured-text spelling, or "" where the page gives none. */
+    /**
+     * The structured-text spelling.
+     *
+     * @return the name, "" where the page gives none
+     */
     public String st() {
         return st;
     }
 
-    /** LD, AND or OR for a contact; null for an instruction that is not one (TADD, HOUR). */
+    /**
+     * LD, AND or OR for a contact.
+     *
+     * @return the form, null for an instruction that is not a contact (TADD, HOUR)
+     */
     public Form form() {
         return form;
     }
 
-    /** The condition a contact tests; null for an instruction that compares nothing. */
+    /**
+     * What a comparison tests.
+     *
+     * @return the condition, null for an instruction that compares nothing
+     */
     public Condition condition() {
         return condition;
     }
 
+    /**
+     * When the instruction executes: at every scan, or on the rising edge of its input.
+     *
+     * @return the execution
+     */
     public Execution execution() {
         return execution;
     }
 
-    /** The instruction as the manual and the vectors spell it ({@code LDTM<=}, {@code LD <=DT}). */
+    /**
+     * The instruction as the manual and the vectors spell it.
+     *
+     * @return {@code LDTM<=}, {@code LD <=DT}, {@code TADDP}, ...
+     */
     public String mnemonic() {
         return mnemonic;
     }
 
+    /**
+     * The family the instruction belongs to.
+     *
+     * @return the family
+     */
     public Family family() {
         return family;
     }
 
-    /** The instruction spelt {@code mnemonic} as the vectors spell it, or null. */
+    /**
+     * The instruction spelt {@code mnemonic}.
+     *
+     * @param mnemonic as the vectors spell it
+     * @return the instruction, or null
+     */
     public static Instruction byMnemonic(String mnemonic) {
         for (Instruction i : values()) {
             if (i.mnemonic.equals(mnemonic)) {

@@ -71,16 +71,29 @@ public enum Interpretation {
         this.question = question;
     }
 
-    /** The interpretation's id as the vectors spell it ({@code FX5-SM709-SCOPE}). */
+    /**
+     * The interpretation's id as the vectors spell it.
+     *
+     * @return {@code FX5-SM709-SCOPE}, ...
+     */
     public String id() {
         return id;
     }
 
+    /**
+     * What the pages leave open.
+     *
+     * @return the question
+     */
     public String question() {
         return question;
     }
 
-    /** The alternative an implementation follows unless it declares another. */
+    /**
+     * The alternative followed when none is declared.
+     *
+     * @return the default
+     */
     public Alternative defaultAlternative() {
         switch (this) {
             case CP1E_NON_BCD:
@@ -140,7 +153,11 @@ public enum Interpretation {
         }
     }
 
-    /** Every alternative, the default among them, in the spec's order. */
+    /**
+     * Every alternative, the default first.
+     *
+     * @return the alternatives
+     */
     public List<Alternative> alternatives() {
         switch (this) {
             case CP1E_NON_BCD:
@@ -200,7 +217,11 @@ public enum Interpretation {
         }
     }
 
-    /** The families whose vectors may depend on it (one declaration holds for all of them). */
+    /**
+     * The families whose vectors it may decide.
+     *
+     * @return the families
+     */
     public List<Family> families() {
         switch (this) {
             case CP1E_NON_BCD:
@@ -260,7 +281,12 @@ public enum Interpretation {
         }
     }
 
-    /** The alternative with this id, or null. */
+    /**
+     * One of its alternatives.
+     *
+     * @param id the alternative's id
+     * @return the alternative, or null
+     */
     public Alternative alternative(String id) {
         for (Alternative a : alternatives()) {
             if (a.id().equals(id)) {
@@ -270,7 +296,12 @@ public enum Interpretation {
         return null;
     }
 
-    /** The interpretation spelt {@code id}, or null. */
+    /**
+     * The interpretation with an id.
+     *
+     * @param id its id as the vectors spell it
+     * @return the interpretation, or null
+     */
     public static Interpretation byId(String id) {
         for (Interpretation i : values()) {
             if (i.id.equals(id)) {

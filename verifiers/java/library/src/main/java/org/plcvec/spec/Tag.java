@@ -64,16 +64,30 @@ public enum Tag {
         this.description = description;
     }
 
-    /** The tag as the vectors spell it ({@code manual-example}). */
+    /**
+     * The tag as the vectors spell it.
+     *
+     * @return {@code manual-example}, ...
+     */
     public String id() {
         return id;
     }
 
+    /**
+     * What the tag means.
+     *
+     * @return the description
+     */
     public String description() {
         return description;
     }
 
-    /** The tag spelt {@code id}, or null. */
+    /**
+     * The tag spelt {@code id}.
+     *
+     * @param id as the vectors spell it
+     * @return the tag, or null
+     */
     public static Tag byId(String id) {
         for (Tag t : values()) {
             if (t.id.equals(id)) {

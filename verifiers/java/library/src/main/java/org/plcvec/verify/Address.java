@@ -29,7 +29,12 @@ public final class Address {
         this.key = key;
     }
 
-    /** The address named {@code name} ({@code D100}, {@code SM709}, {@code P_ER}). */
+    /**
+     * The address named {@code name} ({@code D100}, {@code SM709}, {@code P_ER}).
+     *
+     * @param name the device as the vectors spell it
+     * @return its address (one object per name)
+     */
     public static Address of(String name) {
         Address a = BY_NAME.get(name);
         return a != null ? a : BY_NAME.computeIfAbsent(name, Address::parse);
@@ -56,7 +61,13 @@ public final class Address {
         return ((long) id) << 32;
     }
 
-    /** The address {@code offset} points further ({@code D100}.plus(2) is {@code D102}). */
+    /**
+     * The address {@code offset} points further ({@code D100}.plus(2) is {@code D102}).
+     *
+     * @param offset how many points further
+     * @return that address
+     * @throws IllegalArgumentException for a named device, which has no next point
+     */
     public Address plus(int offset) {
         if (number < 0) {
             throw new IllegalArgumentException(name + " is not a numbered device");
@@ -64,21 +75,38 @@ public final class Address {
         return offset == 0 ? this : of(kind + (number + offset));
     }
 
+    /**
+     * The device as the vectors spell it.
+     *
+     * @return {@code D100}, {@code SM709}, {@code P_ER}
+     */
     public String name() {
         return name;
     }
 
-    /** The device type: {@code D}, {@code SM}, or the whole name of a named device. */
+    /**
+     * The device type: {@code D}, {@code SM}, or the whole name of a named device.
+     *
+     * @return the type
+     */
     public String kind() {
         return kind;
     }
 
-    /** The device number, or -1 for a named device. */
+    /**
+     * The device number, or -1 for a named device.
+     *
+     * @return the number
+     */
     public int number() {
         return number;
     }
 
-    /** Unique per address; {@code plus(n).key() == key() + n}. */
+    /**
+     * A key unique per address, one addition away from the next point.
+     *
+     * @return the key; {@code plus(n).key() == key() + n}
+     */
     public long key() {
         return key;
     }

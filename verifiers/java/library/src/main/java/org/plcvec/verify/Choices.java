@@ -23,11 +23,22 @@ public final class Choices {
         this.chosen = Collections.unmodifiableMap(new TreeMap<>(chosen));
     }
 
-    /** Nothing declared: every interpretation takes its default. */
+    /**
+     * Nothing declared: every interpretation takes its default.
+     *
+     * @return the empty declaration
+     */
     public static Choices defaults() {
         return DEFAULTS;
     }
 
+    /**
+     * The alternatives an implementation follows, by their generated names.
+     *
+     * @param alternatives one per interpretation ({@code Alternatives.TaddExact24.CARRY_ABOVE_24})
+     * @return the declaration
+     * @throws VerifyException when an interpretation is declared twice
+     */
     public static Choices of(Alternative... alternatives) {
         Map<String, String> m = new TreeMap<>();
         for (Alternative a : alternatives) {
@@ -38,12 +49,23 @@ public final class Choices {
         return new Choices(m);
     }
 
-    /** From interpretation id → alternative id, as the vectors spell them. */
+    /**
+     * From interpretation id to alternative id, as the vectors spell them.
+     *
+     * @param chosen {@code FX5-SM709-SCOPE} to {@code all-words}, ...
+     * @return the declaration
+     */
     public static Choices of(Map<String, String> chosen) {
         return new Choices(chosen);
     }
 
-    /** From {@code ID=ALT} strings (a command line's {@code --choose}). */
+    /**
+     * From {@code ID=ALT} strings (a command line's {@code --choose}).
+     *
+     * @param items each {@code INTERPRETATION=ALTERNATIVE}
+     * @return the declaration
+     * @throws VerifyException for an item that is not of that form
+     */
     public static Choices parse(List<String> items) {
         Map<String, String> m = new TreeMap<>();
         for (String item : items) {
@@ -56,29 +78,54 @@ public final class Choices {
         return new Choices(m);
     }
 
-    /** These choices with {@code alternative} declared too (replacing any for its interpretation). */
+    /**
+     * These choices with {@code alternative} declared too (replacing any for its interpretation).
+     *
+     * @param alternative the alternative to follow
+     * @return the new declaration
+     */
     public Choices with(Alternative alternative) {
         Map<String, String> m = new TreeMap<>(chosen);
         m.put(alternative.interpretation().id(), alternative.id());
         return new Choices(m);
     }
 
-    /** The declared alternative of {@code interpretation}, or null. */
+    /**
+     * The declared alternative of an interpretation.
+     *
+     * @param interpretation its id
+     * @return the alternative's id, or null when undeclared
+     */
     public String get(String interpretation) {
         return chosen.get(interpretation);
     }
 
-    /** The declared alternative of an interpretation, or its default. */
+    /**
+     * The declared alternative of an interpretation, or its default.
+     *
+     * @param interpretation the interpretation
+     * @return the alternative's id
+     */
     public String getOrDefault(org.plcvec.spec.Interpretation interpretation) {
         String alt = chosen.get(interpretation.id());
         return alt != null ? alt : interpretation.defaultAlternative().id();
     }
 
-    /** Whether {@code alternative} is what these choices follow (declared, or the default when undeclared). */
+    /**
+     * Whether {@code alternative} is what these choices follow (declared, or the default when undeclared).
+     *
+     * @param alternative an alternative
+     * @return true when followed
+     */
     public boolean follows(Alternative alternative) {
         return alternative.id().equals(getOrDefault(alternative.interpretation()));
     }
 
+    /**
+     * The declarations.
+     *
+     * @return interpretation id to alternative id, sorted
+     */
     public Map<String, String> asMap() {
         return chosen;
     }
@@ -86,6 +133,9 @@ public final class Choices {
     /**
      * Checks every declaration against the spec's names this library was generated with (before
      * any suite is loaded, e.g. for a command line's {@code --choose}).
+     *
+     * @return these choices
+     * @throws VerifyException naming an unknown interpretation or alternative
      */
     public Choices checked() {
         for (Map.Entry<String, String> e : chosen.entrySet()) {
@@ -106,7 +156,13 @@ public final class Choices {
         return this;
     }
 
-    /** Checks every declaration against the suite; an unknown id is a usage error, never ignored. */
+    /**
+     * Checks every declaration against the suite; an unknown id is a usage error, never ignored.
+     *
+     * @param suite the vectors whose interpretations count
+     * @param who the implementation, for the message
+     * @throws VerifyException naming what is unknown and what is known
+     */
     public void validate(Suite suite, String who) {
         Map<String, Suite.InterpretationInfo> known = suite.interpretations();
         for (Map.Entry<String, String> e : chosen.entrySet()) {

@@ -21,6 +21,9 @@ public final class DeviceImage {
     /**
      * From a map of device name to value: {@code Boolean} for a bit, an integer 0..65535 for a word.
      * Anything else is kept, and reported as a wrong value.
+     *
+     * @param devices what an implementation reports after a step
+     * @return the image
      */
     public static DeviceImage of(Map<String, ?> devices) {
         Address[] a = new Address[devices.size()];
@@ -41,15 +44,31 @@ public final class DeviceImage {
         return new DeviceImage(a, v, others);
     }
 
+    /**
+     * The number of devices reported.
+     *
+     * @return the size
+     */
     public int size() {
         return addresses.length;
     }
 
+    /**
+     * The device of entry {@code i}.
+     *
+     * @param i the entry, 0 to size() - 1
+     * @return its address
+     */
     public Address address(int i) {
         return addresses[i];
     }
 
-    /** The encoded value ({@link Values}) of entry {@code i}. */
+    /**
+     * The encoded value ({@link Values}) of entry {@code i}.
+     *
+     * @param i the entry, 0 to size() - 1
+     * @return the value, {@link Values#OTHER} for one that is neither a word nor a bit
+     */
     public int value(int i) {
         return values[i];
     }
@@ -67,7 +86,11 @@ public final class DeviceImage {
         return values[i] == Values.OTHER ? Values.showReported(others[i]) : Values.show(values[i]);
     }
 
-    /** JSON-ready: words as Integer, bits as Boolean. */
+    /**
+     * JSON-ready: words as Integer, bits as Boolean.
+     *
+     * @return device name to value, in report order
+     */
     public Map<String, Object> toMap() {
         Map<String, Object> out = new LinkedHashMap<>();
         for (int i = 0; i < addresses.length; i++) {

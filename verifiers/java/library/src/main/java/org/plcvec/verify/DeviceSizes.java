@@ -6,6 +6,7 @@ import java.util.Map;
 
 /** The number of points of each device type ({@code assumes.device_sizes}: D 8000 is D0..D7999). */
 public final class DeviceSizes {
+    /** No size stated: every device is taken to exist. */
     public static final DeviceSizes UNSTATED = new DeviceSizes(Map.of());
 
     private final Map<String, Integer> sizes;
@@ -13,6 +14,11 @@ public final class DeviceSizes {
     private final long[] kinds;
     private final int[] points;
 
+    /**
+     * Sizes by device type.
+     *
+     * @param sizes device type to its number of points ({@code D} to 8000)
+     */
     public DeviceSizes(Map<String, Integer> sizes) {
         this.sizes = Collections.unmodifiableMap(new LinkedHashMap<>(sizes));
         this.kinds = new long[sizes.size()];
@@ -24,13 +30,24 @@ public final class DeviceSizes {
         }
     }
 
-    /** Points of device type {@code kind}, or -1 when the vector does not state it. */
+    /**
+     * The number of points of a device type.
+     *
+     * @param kind the device type ({@code D})
+     * @return its points, or -1 when the vector does not state it
+     */
     public int of(String kind) {
         Integer n = sizes.get(kind);
         return n == null ? -1 : n;
     }
 
-    /** Whether {@code count} points from {@code base} all exist; an unstated type is taken to exist. */
+    /**
+     * Whether {@code count} points from {@code base} all exist; an unstated type is taken to exist.
+     *
+     * @param base the first point
+     * @param count how many points from it
+     * @return true when the last of them is within its type's size
+     */
     public boolean inRange(Address base, int count) {
         long kind = base.key() >>> 32;
         for (int i = 0; i < kinds.length; i++) {
@@ -41,6 +58,11 @@ public final class DeviceSizes {
         return true;
     }
 
+    /**
+     * The sizes as the vector states them.
+     *
+     * @return device type to its number of points
+     */
     public Map<String, Integer> asMap() {
         return sizes;
     }

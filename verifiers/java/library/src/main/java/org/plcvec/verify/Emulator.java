@@ -20,10 +20,24 @@ public interface Emulator extends Implementation {
     /** One execution (scan) of the vector's instruction; returns the contact result, or null for non-contacts. */
     @FunctionalInterface
     interface Scan {
+        /**
+         * One execution (scan) of the vector's instruction.
+         *
+         * @param step the step's inputs; its {@code set} is already applied to the memory
+         * @return the contact result, or null for an instruction that is not a contact
+         * @throws Exception anything the emulator throws: an error of that vector
+         */
         Boolean execute(Step step) throws Exception;
     }
 
-    /** Ready a CPU for {@code vector} over {@code memory}, which holds the vector's initial devices. */
+    /**
+     * Ready a CPU for {@code vector} over {@code memory}, which holds the vector's initial devices.
+     *
+     * @param vector the vector, without its expectations
+     * @param memory the device image the emulator reads and writes
+     * @return what executes each step
+     * @throws Exception anything the emulator throws: an error of that vector
+     */
     Scan load(VectorRequest vector, Memory memory) throws Exception;
 
     @Override

@@ -69,7 +69,11 @@ public final class Environment {
         this.override = override;
     }
 
-    /** This process's variables, each overridden by its system property. */
+    /**
+     * This process's variables, each overridden by its system property.
+     *
+     * @return the settings of this process
+     */
     public static Environment current() {
         Map<String, String> plcvec = new TreeMap<>();
         System.getenv().forEach((name, value) -> {

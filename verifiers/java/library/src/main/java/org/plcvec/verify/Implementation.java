@@ -17,6 +17,8 @@ public interface Implementation {
      * The name reports show: by default the class's simple name; for a lambda (an {@link Emulator}
      * written as one), the class it is written in, since the lambda's own class name is made up
      * by the JVM anew in each run ({@code ClockTest$$Lambda$500/0x00007f45a00d8c88}).
+     *
+     * @return the name
      */
     default String name() {
         Class<?> c = getClass();
@@ -30,18 +32,30 @@ public interface Implementation {
         return simple.isEmpty() ? c.getName() : simple;   // an anonymous class has no simple name
     }
 
+    /**
+     * The implementation's version, for reports.
+     *
+     * @return the version, or "" for none
+     */
     default String version() {
         return "";
     }
 
-    /** The interpretation alternatives this implementation follows; undeclared ones take the default. */
+    /**
+     * The interpretation alternatives this implementation follows; undeclared ones take the default.
+     *
+     * @return the declaration
+     */
     default Choices choices() {
         return Choices.defaults();
     }
 
     /**
-     * Whether it runs this instruction at all ({@code LDTM<=}, {@code TADDP}, {@code LD <=DT}).
-     * Vectors of other instructions are skipped; a selection in which nothing is supported fails.
+     * Whether it runs this instruction at all. Vectors of other instructions are skipped; a selection
+     * in which nothing is supported fails.
+     *
+     * @param instruction as the vectors spell it ({@code LDTM<=}, {@code TADDP}, {@code LD <=DT})
+     * @return true when supported
      */
     default boolean supports(String instruction) {
         return true;
@@ -51,6 +65,8 @@ public interface Implementation {
      * Devices the CPU writes on its own account (diagnostic relays and registers such as
      * {@code SM0}, {@code SM56}, {@code SD0}), by exact name. A write to one of them that the vector
      * does not list is not a write outside the vector; one the vector lists is compared as usual.
+     *
+     * @return the device names
      */
     default Set<String> cpuWrites() {
         return Set.of();
@@ -58,8 +74,11 @@ public interface Implementation {
 
     /**
      * Run every step of {@code vector} from its initial state and report the state after each.
-     * Throw {@link SkipVector} to skip this vector; any other exception is reported as an error
-     * of this vector.
+     *
+     * @param vector the vector, without its expectations
+     * @return the state after each step, one per step
+     * @throws Exception {@link SkipVector} to skip this vector, {@link VectorError} to report an error
+     *         in the implementation's words; anything else is an error of this vector
      */
     List<StepState> run(VectorRequest vector) throws Exception;
 }

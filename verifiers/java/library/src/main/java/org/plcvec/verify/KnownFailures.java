@@ -46,6 +46,11 @@ public final class KnownFailures {
         this.entries = Collections.unmodifiableMap(entries);
     }
 
+    /**
+     * No known failure.
+     *
+     * @return the empty list
+     */
     public static KnownFailures none() {
         return NONE;
     }
@@ -66,6 +71,14 @@ public final class KnownFailures {
         return parse(JsonFiles.read(file), file.toString());
     }
 
+    /**
+     * Read the text of a known-failures file.
+     *
+     * @param text the TOML
+     * @param path the file's name as the messages give it
+     * @return its entries
+     * @throws VerifyException when it is not a known-failures file, naming the path and line
+     */
     public static KnownFailures parse(String text, String path) {
         JsonNode data;
         try {
@@ -133,10 +146,20 @@ public final class KnownFailures {
         return 1;
     }
 
+    /**
+     * The entries, in file order.
+     *
+     * @return vector id to its entry
+     */
     public Map<String, Entry> entries() {
         return entries;
     }
 
+    /**
+     * The file's name as it was given.
+     *
+     * @return the path, or {@code (none)}
+     */
     public String path() {
         return path;
     }

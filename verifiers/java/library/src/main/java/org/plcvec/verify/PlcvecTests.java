@@ -88,10 +88,22 @@ public final class PlcvecTests {
         return new PlcvecTests(verifier, env, timedOut);
     }
 
+    /**
+     * The tests of an implementation against the golden set, every vector selected.
+     *
+     * @param implementation the implementation under test
+     * @return its tests
+     */
     public static PlcvecTests of(Implementation implementation) {
         return new PlcvecTests(Verifier.of(implementation));
     }
 
+    /**
+     * The tests a verifier describes (its suite, selection and known failures).
+     *
+     * @param verifier the verifier
+     * @return its tests
+     */
     public static PlcvecTests of(Verifier verifier) {
         return new PlcvecTests(verifier);
     }
@@ -140,7 +152,9 @@ public final class PlcvecTests {
     /**
      * The dynamic tests, for a {@code @TestFactory} method to return: one per selected vector,
      * named by its id, then one per stale known failure, then {@value #END} (the run's totals,
-     * and a failure when nothing was tested or the run ended early).
+     * and a failure when nothing passed or the run ended early).
+     *
+     * @return the tests, in run order
      */
     public Stream<DynamicNode> stream() {
         factoryRan = true;

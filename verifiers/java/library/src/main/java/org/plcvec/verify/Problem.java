@@ -10,19 +10,38 @@ public record Problem(int step, String field, String expected, String actual, St
     public static final int WHOLE = -1;
 
     /**
-     * {@code before}: the value the implementation held before the step (null: no suffix);
-     * {@code mustStay}: the vector keeps the device through the step and the implementation wrote it.
+     * One field that differs.
+     *
+     * @param step the step, or {@link #WHOLE}
+     * @param field {@code result}, a device, or {@code steps}
+     * @param expected what the vector expects, as a report shows it
+     * @param actual what the implementation gave, as a report shows it
+     * @param before the value the implementation held before the step (null: no suffix)
+     * @param mustStay the vector keeps the device through the step and the implementation wrote it
      */
     public Problem {
     }
 
+    /**
+     * One field that differs, which the implementation did not write where it had to stay.
+     *
+     * @param step the step, or {@link #WHOLE}
+     * @param field {@code result}, a device, or {@code steps}
+     * @param expected what the vector expects
+     * @param actual what the implementation gave
+     * @param before the value held before the step (null: no suffix)
+     */
     public Problem(int step, String field, String expected, String actual, String before) {
         this(step, field, expected, actual, before, false);
     }
     static final String NOT_REPORTED = "<not reported>";
     static final String NOT_IN_VECTOR = "<not in the vector>";
 
-    /** {@code step 0 SM709: expected false, got true (the step must leave it unchanged)}. */
+    /**
+     * The field line of TEXT.md: {@code step 0 SM709: expected false, got true (the step must leave it unchanged)}.
+     *
+     * @return the line
+     */
     public String line() {
         StringBuilder sb = new StringBuilder();
         if (step != WHOLE) {

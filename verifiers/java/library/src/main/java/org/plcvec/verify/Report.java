@@ -24,7 +24,16 @@ public final class Report {
      */
     public record Header(Suite suite, String implementation, String version, Map<String, Followed> followed,
                          java.util.Set<String> cpuWrites, String knownFailures) {
-        /** The same, copied: a header does not change with the maps it was made from. */
+        /**
+         * The same, copied: a header does not change with the maps it was made from.
+         *
+         * @param suite the vectors the run judged by
+         * @param implementation the implementation's name
+         * @param version its version ("" when it gives none)
+         * @param followed interpretation to the alternative followed, for the families run
+         * @param cpuWrites the devices the implementation declares its CPU writes on its own account
+         * @param knownFailures the known-failures file as the user gave it ("" for none)
+         */
         public Header {
             followed = Map.copyOf(new java.util.TreeMap<>(followed));
             cpuWrites = java.util.Set.copyOf(cpuWrites);
@@ -168,6 +177,8 @@ public final class Report {
     /**
      * What {@code plcvec verify} prints at the end of a run (verifiers/parity/TEXT.md, "The run's
      * text"): each failure's block, then {@link #totals()}.
+     *
+     * @return the text
      */
     public String summary() {
         StringBuilder sb = new StringBuilder();
@@ -183,9 +194,12 @@ public final class Report {
      * The end of a run without the failure blocks (a test runner has shown each already), as
      * verifiers/parity/TEXT.md writes it: the roll-up by reading (the failures another
      * alternative explains, and the declaration that gives it; those no reading explains, by the
-     * clauses they cite), the skips by reason, {@code ABORTED: <why>} when the run was stopped, an
-     * empty line, then the summary lines (the suite
-     * and the implementation, every alternative followed, the declared CPU writes, the totals).
+     * clauses they cite; the known failures another reading explains), the skips by reason,
+     * {@code ABORTED: <why>} when the run was stopped or {@code NOT PASSED: <why>} when nothing
+     * passed, an empty line, then the summary lines (the suite and the implementation, every
+     * alternative followed, the declared CPU writes, the totals).
+     *
+     * @return the text
      */
     public String totals() {
         StringBuilder out = new StringBuilder(rollup()).append(skipsByReason());

@@ -52,54 +52,116 @@ public final class Selection {
         this.and = null;
     }
 
-    /** Every vector. */
+    /**
+     * Every vector.
+     *
+     * @return the selection of everything
+     */
     public static Selection all() {
         return ALL;
     }
 
+    /**
+     * Also these families.
+     *
+     * @param names the families
+     * @return the new selection
+     */
     public Selection families(Family... names) {
         return families(Arrays.stream(names).map(Family::id).toArray(String[]::new));
     }
 
-    /** Families as the vectors spell them ({@code fx5-time-add}). */
+    /**
+     * Also these families, as the vectors spell them ({@code fx5-time-add}).
+     *
+     * @param names the families
+     * @return the new selection
+     */
     public Selection families(String... names) {
         return new Selection(union(families, names), instructions, tags, ids, interpretations, shardK, shardN);
     }
 
+    /**
+     * Also these instructions.
+     *
+     * @param names the instructions
+     * @return the new selection
+     */
     public Selection instructions(Instruction... names) {
         return instructions(Arrays.stream(names).map(Instruction::mnemonic).toArray(String[]::new));
     }
 
-    /** Instructions as the vectors spell them ({@code LDTM<=}, {@code LD <=DT}). */
+    /**
+     * Also these instructions, as the vectors spell them ({@code LDTM<=}, {@code LD <=DT}).
+     *
+     * @param names the instructions
+     * @return the new selection
+     */
     public Selection instructions(String... names) {
         return new Selection(families, union(instructions, names), tags, ids, interpretations, shardK, shardN);
     }
 
+    /**
+     * Also the vectors with one of these tags.
+     *
+     * @param names the tags
+     * @return the new selection
+     */
     public Selection tags(Tag... names) {
         return tags(Arrays.stream(names).map(Tag::id).toArray(String[]::new));
     }
 
+    /**
+     * Also the vectors with one of these tags, as the vectors spell them ({@code boundary}).
+     *
+     * @param names the tags
+     * @return the new selection
+     */
     public Selection tags(String... names) {
         return new Selection(families, instructions, union(tags, names), ids, interpretations, shardK, shardN);
     }
 
-    /** Id globs: {@code *} any run of characters (slashes too), {@code ?} one, {@code [abc]}, {@code [!abc]}. */
+    /**
+     * Also the vectors whose id a glob matches: {@code *} any run of characters (slashes too),
+     * {@code ?} one, {@code [abc]}, {@code [!abc]}; a glob matches the whole id.
+     *
+     * @param globs exact ids or globs
+     * @return the new selection
+     */
     public Selection ids(String... globs) {
         List<String> all = new ArrayList<>(ids);
         all.addAll(Arrays.asList(globs));
         return new Selection(families, instructions, tags, all, interpretations, shardK, shardN);
     }
 
-    /** Vectors whose outcome depends on one of these interpretations. */
+    /**
+     * Also the vectors whose outcome depends on one of these interpretations.
+     *
+     * @param names the interpretations
+     * @return the new selection
+     */
     public Selection interpretations(Interpretation... names) {
         return interpretations(Arrays.stream(names).map(Interpretation::id).toArray(String[]::new));
     }
 
+    /**
+     * Also the vectors whose outcome depends on one of these interpretations, by id.
+     *
+     * @param names the interpretation ids
+     * @return the new selection
+     */
     public Selection interpretations(String... names) {
         return new Selection(families, instructions, tags, ids, union(interpretations, names), shardK, shardN);
     }
 
-    /** Shard {@code k} of {@code n} (1 ≤ k ≤ n), chosen as the Python runner does: crc32(id) % n + 1 == k. */
+    /**
+     * Shard {@code k} of {@code n}, chosen as the Python runner does: crc32(id) % n + 1 == k.
+     *
+     * @param k the shard, 1 to n
+     * @param n the number of shards
+     * @return the new selection
+     * @throws VerifyException when k is not between 1 and n
+     */
     public Selection shard(int k, int n) {
         if (n < 1 || k < 1 || k > n) {
             throw new VerifyException("shard " + k + "/" + n + ": K must be between 1 and N");
@@ -107,7 +169,13 @@ public final class Selection {
         return new Selection(families, instructions, tags, ids, interpretations, k, n);
     }
 
-    /** {@code K/N}. */
+    /**
+     * Shard {@code K/N}.
+     *
+     * @param text {@code K/N}, e.g. {@code 2/4}
+     * @return the new selection
+     * @throws VerifyException for anything else
+     */
     public Selection shard(String text) {
         String[] parts = text.trim().split("/");
         try {
@@ -120,14 +188,25 @@ public final class Selection {
         throw new VerifyException("shard takes K/N (e.g. 2/4), got '" + text + "'");
     }
 
-    /** The shard (1..n) a vector belongs to: a hash of the id, so adding vectors moves no other vector. */
+    /**
+     * The shard a vector belongs to: a hash of the id, so adding vectors moves no other vector.
+     *
+     * @param id the vector's id
+     * @param n the number of shards
+     * @return the shard, 1 to n
+     */
     public static int shardOf(String id, int n) {
         CRC32 crc = new CRC32();
         crc.update(id.getBytes(java.nio.charset.StandardCharsets.UTF_8));
         return (int) (crc.getValue() % n) + 1;
     }
 
-    /** Vectors both this selection and {@code other} select. */
+    /**
+     * Vectors both this selection and {@code other} select.
+     *
+     * @param other another selection
+     * @return their intersection
+     */
     public Selection and(Selection other) {
         return other == ALL ? this : this == ALL ? other : new Selection(this, other);
     }
@@ -185,6 +264,12 @@ public final class Selection {
         this.and = base.and == null ? and : new Selection(base.and, and);
     }
 
+    /**
+     * Whether this selection selects a vector.
+     *
+     * @param v the vector
+     * @return true when every filter lets it through
+     */
     public boolean matches(Vector v) {
         if (!families.isEmpty() && !families.contains(v.family())) {
             return false;
@@ -207,7 +292,13 @@ public final class Selection {
         return and == null || and.matches(v);
     }
 
-    /** The selected vectors of {@code suite}, in the suite's order; an unknown name is an error. */
+    /**
+     * The selected vectors of {@code suite}, in the suite's order.
+     *
+     * @param suite the vectors
+     * @return those selected
+     * @throws VerifyException for a name the suite does not have
+     */
     public List<Vector> apply(Suite suite) {
         check(suite);
         List<Vector> out = new ArrayList<>();

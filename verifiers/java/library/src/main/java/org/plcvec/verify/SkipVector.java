@@ -8,6 +8,11 @@ package org.plcvec.verify;
 public class SkipVector extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
+    /**
+     * Skip the vector being run.
+     *
+     * @param reason why, as the report shows it
+     */
     public SkipVector(String reason) {
         super(reason);
     }

@@ -17,11 +17,20 @@ public enum Status {
     /** Never run: the run ended before it (a vector before it gave no answer in time). Never a known failure. */
     NOT_RUN;
 
+    /**
+     * Whether a vector with this status fails the run.
+     *
+     * @return true for fail, error, stale and not-run
+     */
     public boolean failing() {
         return this == FAIL || this == ERROR || this == STALE || this == NOT_RUN;
     }
 
-    /** As the text of every plcvec runner spells it: {@code pass}, ..., {@code not-run}. */
+    /**
+     * As the text of every plcvec runner spells it.
+     *
+     * @return {@code pass}, ..., {@code not-run}
+     */
     public String label() {
         return name().toLowerCase(java.util.Locale.ROOT).replace('_', '-');
     }

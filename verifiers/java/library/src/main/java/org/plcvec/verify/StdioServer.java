@@ -36,11 +36,24 @@ public final class StdioServer {
     private StdioServer() {
     }
 
-    /** Serve on System.in / System.out until {@code bye} or end of input; returns the exit status. */
+    /**
+     * Serve on System.in and System.out until {@code bye} or end of input.
+     *
+     * @param implementation the implementation to serve
+     * @return the exit status: 0, or 2 after a {@code fatal} message
+     */
     public static int serve(Implementation implementation) {
         return serve(implementation, System.in, System.out);
     }
 
+    /**
+     * Serve on the given streams until {@code bye} or end of input.
+     *
+     * @param implementation the implementation to serve
+     * @param in where the runner's messages are read
+     * @param out where the answers are written
+     * @return the exit status: 0, or 2 after a {@code fatal} message
+     */
     public static int serve(Implementation implementation, InputStream in, OutputStream out) {
         PrintStream o = new PrintStream(out, false, StandardCharsets.UTF_8);
         BufferedReader reader = new BufferedReader(new InputStreamReader(in, StandardCharsets.UTF_8));

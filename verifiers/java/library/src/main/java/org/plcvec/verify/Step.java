@@ -29,19 +29,31 @@ public final class Step {
         this.elapsedMs = elapsedMs;
     }
 
-    /** 0 for the first step. */
+    /**
+     * The step's place in the vector.
+     *
+     * @return 0 for the first step
+     */
     public int index() {
         return index;
     }
 
-    /** Apply {@code set} (values written by the program or an HMI before the execution). */
+    /**
+     * Apply {@code set} (values written by the program or an HMI before the execution).
+     *
+     * @param memory the device image to write them to
+     */
     public void applySet(Memory memory) {
         for (int i = 0; i < setDevices.length; i++) {
             memory.setRaw(setDevices[i], setValues[i]);
         }
     }
 
-    /** {@code set} as JSON-ready values (empty when the step sets nothing). */
+    /**
+     * {@code set} as JSON-ready values.
+     *
+     * @return device name to value, empty when the step sets nothing
+     */
     public Map<String, Object> set() {
         Map<String, Object> out = new java.util.LinkedHashMap<>();
         for (int i = 0; i < setDevices.length; i++) {
@@ -50,21 +62,41 @@ public final class Step {
         return out;
     }
 
+    /**
+     * Whether the step gives the logic state before an AND/OR form.
+     *
+     * @return true for an AND or OR form's step
+     */
     public boolean hasRloIn() {
         return rloIn != null;
     }
 
-    /** The logic state before an AND/OR form. */
+    /**
+     * The logic state before an AND/OR form.
+     *
+     * @return the preceding logic
+     * @throws IllegalStateException when the step has none (an LD form)
+     */
     public boolean rloIn() {
         return require(rloIn, "rlo_in");
     }
 
-    /** The injected clock (only the fields the family compares: hour/minute/second or year/month/day), or null. */
+    /**
+     * The injected clock (only the fields the family compares: hour/minute/second or year/month/day).
+     *
+     * @return field to value, or null
+     */
     public Map<String, Integer> clock() {
         return clock;
     }
 
-    /** One field of the injected clock. */
+    /**
+     * One field of the injected clock.
+     *
+     * @param field {@code hour}, {@code day}, ...
+     * @return its value
+     * @throws IllegalStateException when the step has no such field
+     */
     public int clock(String field) {
         Integer v = clock == null ? null : clock.get(field);
         if (v == null) {
@@ -73,21 +105,41 @@ public final class Step {
         return v;
     }
 
-    /** The execution condition of TADD/TADDP. */
+    /**
+     * The execution condition of TADD/TADDP.
+     *
+     * @return EN
+     * @throws IllegalStateException when the step has none
+     */
     public boolean en() {
         return require(en, "en");
     }
 
+    /**
+     * Whether the step gives an execution condition (TADD/TADDP).
+     *
+     * @return true when it does
+     */
     public boolean hasEn() {
         return en != null;
     }
 
-    /** The HOUR input this scan. */
+    /**
+     * The HOUR input this scan.
+     *
+     * @return whether the input is on
+     * @throws IllegalStateException when the step has none
+     */
     public boolean input() {
         return require(input, "input");
     }
 
-    /** Milliseconds since the previous execution, all ON time when the input is on. */
+    /**
+     * Milliseconds since the previous execution, all ON time when the input is on.
+     *
+     * @return the milliseconds
+     * @throws IllegalStateException when the step has none
+     */
     public long elapsedMs() {
         if (elapsedMs == null) {
             throw new IllegalStateException("step " + index + " has no elapsed_ms");
@@ -102,7 +154,11 @@ public final class Step {
         return value;
     }
 
-    /** The inputs as the protocol sends them (for a stdio adapter written on top of this library). */
+    /**
+     * The inputs as the protocol sends them (for a stdio adapter written on top of this library).
+     *
+     * @return input name to value
+     */
     public Map<String, Object> toMap() {
         Map<String, Object> out = new java.util.LinkedHashMap<>();
         if (setDevices.length > 0) {

@@ -27,7 +27,7 @@ public final class Suite {
     public static final String ENV = "PLCVEC_VECTORS";
     /** The system property that does the same (it wins over the environment). */
     public static final String PROPERTY = "plcvec.vectors";
-    static final String RESOURCES = "/org/plcvec/vectors/";
+    static final String RESOURCES = SuiteLoader.RESOURCES;
     static final JsonMapper JSON = JsonFiles.JSON;
 
     /**
@@ -56,17 +56,16 @@ public final class Suite {
     private static volatile Suite golden;
     private static volatile Suite bundled;
 
-    Suite(List<Vector> vectors, Map<String, JsonNode> headers, Map<String, String> merged, String source,
-          String suiteVersion, String schemaVersion, String specSha256) {
-        this.vectors = List.copyOf(vectors);
-        this.headers = Collections.unmodifiableMap(headers);
-        this.merged = Collections.unmodifiableMap(new TreeMap<>(merged));
-        this.source = source;
-        this.suiteVersion = suiteVersion;
-        this.schemaVersion = schemaVersion;
-        this.specSha256 = specSha256;
+    private Suite(SuiteLoader.Loaded loaded) {
+        this.vectors = List.copyOf(loaded.vectors());
+        this.headers = Collections.unmodifiableMap(loaded.headers());
+        this.merged = Collections.unmodifiableMap(new TreeMap<>(loaded.merged()));
+        this.source = loaded.source();
+        this.suiteVersion = loaded.suiteVersion();
+        this.schemaVersion = loaded.schemaVersion();
+        this.specSha256 = loaded.specSha256();
         Map<String, Vector> ids = new LinkedHashMap<>();
-        for (Vector v : vectors) {
+        for (Vector v : this.vectors) {
             if (ids.put(v.id(), v) != null) {
                 throw new VerifyException(source + ": vector id " + v.id() + " appears twice");
             }
@@ -124,7 +123,7 @@ public final class Suite {
      * @return the vectors inside this jar
      */
     public static Suite fromResources() {
-        return SuiteLoader.fromResources();
+        return new Suite(SuiteLoader.fromResources());
     }
 
     /**
@@ -137,7 +136,7 @@ public final class Suite {
      *         naming the file (and line) or the vector id
      */
     public static Suite load(Path path) {
-        return SuiteLoader.load(path);
+        return new Suite(SuiteLoader.load(path, ENV + " or " + PROPERTY));
     }
 
     private Map<String, InterpretationInfo> readInterpretations() {

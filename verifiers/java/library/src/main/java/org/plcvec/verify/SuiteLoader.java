@@ -36,26 +36,34 @@ final class SuiteLoader {
         byte[] read(String name);
     }
 
+    /** The resources folder of the copy inside this jar. */
+    static final String RESOURCES = "/org/plcvec/vectors/";
+
+    /** What a load read: what {@link Suite} is made of. */
+    record Loaded(List<Vector> vectors, Map<String, JsonNode> headers, Map<String, String> merged, String source,
+                  String suiteVersion, String schemaVersion, String specSha256) {
+    }
+
     /** A family header as read: the family, and the minor version of the schema its file follows. */
     private record FamilyHeader(String family, int schemaMinor) {
     }
 
     /** The compact copy inside this jar. */
-    static Suite fromResources() {
+    static Loaded fromResources() {
         Source src = name -> {
-            try (InputStream in = Suite.class.getResourceAsStream(Suite.RESOURCES + name)) {
+            try (InputStream in = SuiteLoader.class.getResourceAsStream(RESOURCES + name)) {
                 if (in == null) {
-                    throw new VerifyException("classpath:" + Suite.RESOURCES + name + ": no such file");
+                    throw new VerifyException("classpath:" + RESOURCES + name + ": no such file");
                 }
                 return in.readAllBytes();
             } catch (IOException e) {
-                throw new VerifyException("classpath:" + Suite.RESOURCES + name + ": cannot read: " + e.getMessage());
+                throw new VerifyException("classpath:" + RESOURCES + name + ": cannot read: " + e.getMessage());
             }
         };
-        return loadCompact(src, "classpath:" + Suite.RESOURCES);
+        return loadCompact(src, "classpath:" + RESOURCES);
     }
 
-    static Suite load(Path path) {
+    static Loaded load(Path path, String variable) {
         if (Files.isDirectory(path)) {
             Source src = name -> bytes(path.resolve(name));
             // Present, not "a regular file": an index that is a pipe or a loop is refused by name.
@@ -69,8 +77,7 @@ final class SuiteLoader {
                     + "(a vectors/ folder); is this a plcvec vector folder?");
         }
         if (!JsonFiles.present(path)) {
-            throw new VerifyException(path + ": no such vector folder or file (from " + Suite.ENV + " or "
-                    + Suite.PROPERTY + "?)");
+            throw new VerifyException(path + ": no such vector folder or file (from " + variable + "?)");
         }
         String name = path.toString();
         String text = JsonFiles.utf8(bytes(path), name);
@@ -81,7 +88,7 @@ final class SuiteLoader {
         } else {
             readFamilyJson(text, name, vectors, headers);
         }
-        return new Suite(vectors, headers, Map.of(), name, "", schemaOf(headers), specOf(headers, ""));
+        return new Loaded(vectors, headers, Map.of(), name, "", schemaOf(headers), specOf(headers, ""));
     }
 
     private static byte[] bytes(Path path) {
@@ -102,7 +109,7 @@ final class SuiteLoader {
         }
     }
 
-    private static Suite loadCompact(Source src, String where) {
+    private static Loaded loadCompact(Source src, String where) {
         String indexName = where + "index.json";
         JsonNode index = index(src.read("index.json"), indexName);
         JsonNode families = index.path("families");
@@ -128,11 +135,11 @@ final class SuiteLoader {
                 throw new VerifyException(name + ": " + (vectors.size() - before) + " vectors, but index.json says " + count);
             }
         }
-        return new Suite(vectors, headers, merged(index), where, version(index),
+        return new Loaded(vectors, headers, merged(index), where, version(index),
                 index.path("schema_version").asString(schemaOf(headers)), index.path("spec_sha256").asString(""));
     }
 
-    private static Suite loadManifest(Source src, Path dir) {
+    private static Loaded loadManifest(Source src, Path dir) {
         String manifestName = dir.resolve("manifest.json").toString();
         JsonNode manifest = index(src.read("manifest.json"), manifestName);
         JsonNode families = manifest.path("families");
@@ -149,7 +156,7 @@ final class SuiteLoader {
             String name = dir.resolve(file).toString();
             readFamilyJson(JsonFiles.utf8(src.read(file), name), name, vectors, headers);
         }
-        return new Suite(vectors, headers, merged(manifest), dir.toString(), version(manifest), schemaOf(headers),
+        return new Loaded(vectors, headers, merged(manifest), dir.toString(), version(manifest), schemaOf(headers),
                 manifest.path("spec_sha256").asString(specOf(headers, "")));
     }
 

@@ -21,24 +21,52 @@ public final class Values {
     private Values() {
     }
 
+    /**
+     * The encoded bit.
+     *
+     * @param on its state
+     * @return {@link #TRUE} or {@link #FALSE}
+     */
     public static int bit(boolean on) {
         return on ? TRUE : FALSE;
     }
 
-    /** A word from any integer: the low 16 bits, as the CPU stores it. */
+    /**
+     * A word from any integer: the low 16 bits, as the CPU stores it.
+     *
+     * @param value any integer
+     * @return the word, 0..65535
+     */
     public static int word(int value) {
         return value & 0xFFFF;
     }
 
+    /**
+     * Whether an encoded value is a bit.
+     *
+     * @param value an encoded value
+     * @return true for {@link #TRUE} and {@link #FALSE}
+     */
     public static boolean isBit(int value) {
         return value == TRUE || value == FALSE;
     }
 
+    /**
+     * Whether an encoded value is a word.
+     *
+     * @param value an encoded value
+     * @return true for 0..65535
+     */
     public static boolean isWord(int value) {
         return value >= 0 && value <= 0xFFFF;
     }
 
-    /** The encoded value of a JSON-ish Java value: Boolean, or an integer 0..65535; else OTHER. */
+    /**
+     * The encoded value of a JSON-ish Java value.
+     *
+     * @param value a Boolean, or an integer
+     * @return the bit, the word 0..65535, or {@link #OTHER} for anything else
+     */
     public static int encode(Object value) {
         if (value instanceof Boolean) {
             return bit((Boolean) value);
@@ -52,7 +80,12 @@ public final class Values {
         return OTHER;
     }
 
-    /** The JSON value: Boolean for a bit, Integer for a word, null when absent. */
+    /**
+     * The JSON value of an encoded one.
+     *
+     * @param value an encoded value
+     * @return Boolean for a bit, Integer for a word, null when absent or other
+     */
     public static Object decode(int value) {
         if (isBit(value)) {
             return value == TRUE;
@@ -60,7 +93,12 @@ public final class Values {
         return value == ABSENT || value == OTHER ? null : Integer.valueOf(value);
     }
 
-    /** As a report shows it: {@code true}, {@code 13317}, {@code <not reported>}. */
+    /**
+     * As a report shows it.
+     *
+     * @param value an encoded value
+     * @return {@code true}, {@code 13317}, ...
+     */
     public static String show(int value) {
         if (value == TRUE) {
             return "true";

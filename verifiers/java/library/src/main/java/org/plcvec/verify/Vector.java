@@ -40,8 +40,9 @@ public final class Vector extends VectorRequest {
     }
 
     /**
-     * Where the vector is written ({@code classpath:/org/plcvec/vectors/fx5-time-add.jsonl?line=12},
-     * or a file URI), or null: the JUnit test source of its dynamic test.
+     * Where the vector is written: the JUnit test source of its dynamic test.
+     *
+     * @return {@code classpath:/org/plcvec/vectors/fx5-time-add.jsonl?line=12} or a file URI, or null
      */
     public java.net.URI source() {
         return source;
@@ -51,25 +52,47 @@ public final class Vector extends VectorRequest {
         this.source = uri;
     }
 
+    /**
+     * What the vector tests, in words.
+     *
+     * @return the description, "" for none
+     */
     public String description() {
         return description;
     }
 
+    /**
+     * Why the vector exists ({@code boundary}, {@code manual-example}, ...).
+     *
+     * @return its tags
+     */
     public List<String> tags() {
         return tags;
     }
 
-    /** The spec clauses the vector exercises, for reports. */
+    /**
+     * The spec clauses the vector exercises, for reports.
+     *
+     * @return clause ids ({@code fx5-time-add#carry})
+     */
     public List<String> clauses() {
         return clauses;
     }
 
-    /** The interpretations the vector's outcome depends on (empty for most). */
+    /**
+     * The interpretations the vector's outcome depends on.
+     *
+     * @return their ids (empty for most)
+     */
     public List<String> interpretations() {
         return interpretations;
     }
 
-    /** The outcome category under the defaults: {@code value}, {@code error} or {@code implementation-defined}. */
+    /**
+     * The outcome category under the defaults.
+     *
+     * @return {@code value}, {@code error} or {@code implementation-defined}
+     */
     public String category() {
         return interpretations.isEmpty() ? expectation.category() : "implementation-defined";
     }

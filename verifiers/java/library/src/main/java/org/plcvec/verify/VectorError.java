@@ -11,6 +11,11 @@ package org.plcvec.verify;
 public class VectorError extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
+    /**
+     * Report an error on the vector being run.
+     *
+     * @param message the implementation's own words
+     */
     public VectorError(String message) {
         super(message);
     }

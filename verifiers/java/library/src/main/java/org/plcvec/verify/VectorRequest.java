@@ -57,41 +57,76 @@ public class VectorRequest {
                 r.listed);
     }
 
-    /** The vector's stable id ({@code fx5-time-add/TADD/manual-example/program}). */
+    /**
+     * The vector's stable id.
+     *
+     * @return {@code fx5-time-add/TADD/manual-example/program}
+     */
     public String id() {
         return id;
     }
 
-    /** The family as the vectors spell it. */
+    /**
+     * The family as the vectors spell it.
+     *
+     * @return {@code fx5-time-add}
+     */
     public String family() {
         return family;
     }
 
-    /** The family, or null if this verifier's generated names do not know it (a newer suite). */
+    /**
+     * The family by its generated name.
+     *
+     * @return the family, or null if this verifier's generated names do not know it (a newer suite)
+     */
     public Family familyName() {
         return familyName;
     }
 
-    /** The instruction as the manual spells it ({@code LDTM<=}, {@code LD <=DT}, {@code TADDP}). */
+    /**
+     * The instruction as the manual spells it.
+     *
+     * @return {@code LDTM<=}, {@code LD <=DT}, {@code TADDP}
+     */
     public String instruction() {
         return instruction;
     }
 
-    /** The instruction, or null if this verifier's generated names do not know it. */
+    /**
+     * The instruction by its generated name.
+     *
+     * @return the instruction, or null if this verifier's generated names do not know it
+     */
     public Instruction instructionName() {
         return instructionName;
     }
 
-    /** {@code assumes.device_sizes}. */
+    /**
+     * {@code assumes.device_sizes}.
+     *
+     * @return the device sizes the vector assumes
+     */
     public DeviceSizes deviceSizes() {
         return sizes;
     }
 
+    /**
+     * The instruction's operands.
+     *
+     * @return operand name as the manual names it to operand
+     */
     public Map<String, Operand> operands() {
         return operands;
     }
 
-    /** The operand named {@code name} as the manual names it ({@code s1}, {@code D1}, {@code C}). */
+    /**
+     * The operand named {@code name} as the manual names it ({@code s1}, {@code D1}, {@code C}).
+     *
+     * @param name the operand's name
+     * @return the operand
+     * @throws IllegalStateException when the vector has no such operand
+     */
     public Operand operand(String name) {
         String[] names = operandNames;
         for (int i = 0; i < names.length; i++) {
@@ -111,16 +146,29 @@ public class VectorRequest {
         return o;
     }
 
-    /** Work-area words: the implementation's own, never compared. */
+    /**
+     * Work-area words: the implementation's own, never compared.
+     *
+     * @return the device names
+     */
     public Set<String> scratch() {
         return scratch;
     }
 
+    /**
+     * The executions, in order.
+     *
+     * @return the steps
+     */
     public List<Step> steps() {
         return steps;
     }
 
-    /** {@code initial.devices}, JSON-ready (words as Integer, bits as Boolean). */
+    /**
+     * {@code initial.devices}, JSON-ready.
+     *
+     * @return device name to value (words as Integer, bits as Boolean)
+     */
     public Map<String, Object> initialDevices() {
         Map<String, Object> out = new LinkedHashMap<>();
         for (int i = 0; i < listed; i++) {
@@ -129,7 +177,11 @@ public class VectorRequest {
         return out;
     }
 
-    /** A fresh device image holding {@code initial.devices}. */
+    /**
+     * A fresh device image holding {@code initial.devices}.
+     *
+     * @return the memory
+     */
     public Memory newMemory() {
         return new Memory(sizes, slots, initial);
     }

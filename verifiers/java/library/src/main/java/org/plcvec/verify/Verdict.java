@@ -31,39 +31,74 @@ public final class Verdict {
         this.judgedBy = judgedBy == null ? Map.of() : judgedBy;
     }
 
+    /**
+     * The vector's id (or the id an expectations file names).
+     *
+     * @return the id
+     */
     public String id() {
         return id;
     }
 
-    /** The vector (null for an expectations-file entry the suite does not have). */
+    /**
+     * The vector judged.
+     *
+     * @return the vector, or null for an expectations-file entry the suite does not have
+     */
     public Vector vector() {
         return vector;
     }
 
+    /**
+     * The verdict.
+     *
+     * @return the status
+     */
     public Status status() {
         return status;
     }
 
+    /**
+     * Whether this verdict fails the run.
+     *
+     * @return true for fail, error, stale and not-run
+     */
     public boolean failing() {
         return status.failing();
     }
 
-    /** The fields that differ (for FAIL). */
+    /**
+     * The fields that differ (for a failure).
+     *
+     * @return the problems, in the order of TEXT.md
+     */
     public List<Problem> problems() {
         return problems;
     }
 
-    /** Why it errored, was skipped, is a known failure or is stale. */
+    /**
+     * Why it errored, was skipped, is a known failure or is stale.
+     *
+     * @return the message, "" for none
+     */
     public String message() {
         return message;
     }
 
-    /** interpretation → the alternative the vector was judged by (only those it depends on). */
+    /**
+     * The alternatives the vector was judged by (only those of the interpretations it depends on).
+     *
+     * @return interpretation to alternative
+     */
     public Map<String, String> judgedBy() {
         return judgedBy;
     }
 
-    /** What the implementation threw, for an {@link Status#ERROR} it caused; else null. */
+    /**
+     * What the implementation threw.
+     *
+     * @return the exception of an {@link Status#ERROR} it caused, else null
+     */
     public Throwable cause() {
         return cause;
     }
@@ -109,6 +144,8 @@ public final class Verdict {
      *     step 0 D300: expected 0, got 24 (before the step: 65535)
      *     spec clauses: fx5-time-add#sm700, ...
      * </pre>
+     *
+     * @return the block, without a final newline
      */
     public String report() {
         List<String> lines = new ArrayList<>();

@@ -35,28 +35,62 @@ public final class Verifier {
         this.known = known;
     }
 
-    /** A verifier of {@code implementation} against the golden set, every vector selected. */
+    /**
+     * A verifier of {@code implementation} against the golden set, every vector selected.
+     *
+     * @param implementation the implementation under test
+     * @return the verifier
+     */
     public static Verifier of(Implementation implementation) {
         return new Verifier(null, implementation, Selection.all(), KnownFailures.none());
     }
 
+    /**
+     * The same verifier over other vectors.
+     *
+     * @param suite the vectors
+     * @return the new verifier
+     */
     public Verifier suite(Suite suite) {
         return new Verifier(suite, implementation, selection, known);
     }
 
+    /**
+     * The same verifier over part of the vectors.
+     *
+     * @param selection the vectors to run
+     * @return the new verifier
+     */
     public Verifier selection(Selection selection) {
         return new Verifier(suite, implementation, selection, known);
     }
 
+    /**
+     * The same verifier with known failures.
+     *
+     * @param known the known failures
+     * @return the new verifier
+     */
     public Verifier expectations(KnownFailures known) {
         return new Verifier(suite, implementation, selection, known);
     }
 
-    /** The expectations file (known failures) to apply. */
+    /**
+     * The same verifier with the known failures of an expectations file.
+     *
+     * @param file the TOML file
+     * @return the new verifier
+     * @throws VerifyException when the file cannot be read
+     */
     public Verifier expectations(Path file) {
         return expectations(KnownFailures.load(file));
     }
 
+    /**
+     * The vectors judged.
+     *
+     * @return the suite given, else the golden set
+     */
     public Suite suite() {
         return suite != null ? suite : Suite.golden();
     }
@@ -66,14 +100,29 @@ public final class Verifier {
         return suite != null;
     }
 
+    /**
+     * The implementation under test.
+     *
+     * @return the implementation
+     */
     public Implementation implementation() {
         return implementation;
     }
 
+    /**
+     * The vectors to run.
+     *
+     * @return the selection
+     */
     public Selection selection() {
         return selection;
     }
 
+    /**
+     * The known failures applied.
+     *
+     * @return the known failures
+     */
     public KnownFailures knownFailures() {
         return known;
     }
@@ -142,23 +191,42 @@ public final class Verifier {
         return p;
     }
 
-    /** The selected vectors, in the suite's order. */
+    /**
+     * The selected vectors, in the suite's order.
+     *
+     * @return the vectors
+     * @throws VerifyException when the selection matches nothing or names what the suite lacks
+     */
     public List<Vector> vectors() {
         return plan().vectors;
     }
 
-    /** interpretation → the alternative followed, for every interpretation of the selected families. */
+    /**
+     * The alternative followed for every interpretation of the selected families.
+     *
+     * @return interpretation to what is followed
+     */
     public Map<String, Followed> followed() {
         return plan().followed;
     }
 
-    /** What a report of this run says it was. */
+    /**
+     * What a report of this run says it was.
+     *
+     * @return the header
+     */
     public Report.Header header() {
         return new Report.Header(suite(), implementation.name(), implementation.version(), followed(),
                 implementation.cpuWrites(), known == KnownFailures.none() ? "" : known.path());
     }
 
-    /** Run one vector and judge it, known failures applied. */
+    /**
+     * Run one vector and judge it, known failures applied.
+     *
+     * @param v a selected vector
+     * @return its verdict
+     * @throws VerifyException when the vector is not selected
+     */
     public Verdict check(Vector v) {
         Expected e = plan().expected.get(v.id());
         if (e == null) {
@@ -174,7 +242,11 @@ public final class Verifier {
         return plan().expected.get(v.id());
     }
 
-    /** Run every selected vector; the report holds every result, known failures applied. */
+    /**
+     * Run every selected vector; the report holds every verdict, known failures applied.
+     *
+     * @return the report
+     */
     public Report run() {
         Environment.current().warn();
         long start = System.nanoTime();
@@ -196,9 +268,10 @@ public final class Verifier {
     }
 
     /**
-     * Run and judge the selected vectors without keeping results, for the benchmark: the number
-     * of vectors that did not pass (0 for a conforming implementation). The same judgement as
-     * {@link #run()}, without building a report.
+     * Run and judge the selected vectors without keeping verdicts, for the benchmark. The same
+     * judgement as {@link #run()}, without building a report.
+     *
+     * @return the number of vectors that did not pass (0 for a conforming implementation)
      */
     public int countFailures() {
         Plan p = plan();

@@ -8,10 +8,21 @@ package org.plcvec.verify;
 public class VerifyException extends RuntimeException {
     private static final long serialVersionUID = 1L;
 
+    /**
+     * A problem with the input.
+     *
+     * @param message what is wrong, naming the file and line or the vector id
+     */
     public VerifyException(String message) {
         super(message);
     }
 
+    /**
+     * A problem with the input, caused by another.
+     *
+     * @param message what is wrong, naming the file and line or the vector id
+     * @param cause what was thrown
+     */
     public VerifyException(String message, Throwable cause) {
         super(message, cause);
     }

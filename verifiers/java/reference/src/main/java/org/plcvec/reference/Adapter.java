@@ -15,6 +15,11 @@ public final class Adapter {
     private Adapter() {
     }
 
+    /**
+     * Serve the reference over standard input and output, following {@code --choose ID=ALT}.
+     *
+     * @param args {@code --choose ID=ALT}, repeatable
+     */
     public static void main(String[] args) {
         System.exit(run(args, null));
     }
@@ -22,6 +27,10 @@ public final class Adapter {
     /**
      * Parse {@code --choose ID=ALT} (repeatable) and serve; {@code variants} builds another
      * implementation from the choices (the mutants' adapter passes its own).
+     *
+     * @param args the command line
+     * @param variants the implementation to serve for the choices, or null for the reference
+     * @return the exit status
      */
     public static int run(String[] args, java.util.function.Function<Choices, ? extends org.plcvec.verify.Implementation> variants) {
         List<String> choose = new ArrayList<>();

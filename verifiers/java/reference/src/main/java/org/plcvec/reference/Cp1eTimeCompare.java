@@ -41,14 +41,29 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         Instruction.Condition.LT, Address.of("P_LT"), Instruction.Condition.LE, Address.of("P_LE"),
         Instruction.Condition.GT, Address.of("P_GT"), Instruction.Condition.GE, Address.of("P_GE"));
 
+    /** The memory the CPU reads and writes. */
     protected final Memory mem;
+    /** The alternatives followed. */
     protected final Settings settings;
+    /** LD, AND or OR. */
     protected final Instruction.Form form;
+    /** What the comparison tests. */
     protected final Instruction.Condition condition;
+    /** S1, the first three words compared. */
     protected final Address s1;
+    /** S2, the three words S1 is compared with. */
     protected final Address s2;
+    /** C, the control word whose bits mask fields. */
     protected final Operand c;
 
+    /**
+     * A CPU for one CP1E time comparison vector.
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @param settings the alternatives followed
+     * @throws IllegalArgumentException for an instruction that is not a CP1E time comparison
+     */
     public Cp1eTimeCompare(VectorRequest vector, Memory memory, Settings settings) {
         Instruction m = vector.instructionName();
         if (m == null || m.form() == null || m.family() != Family.CP1E_TIME_COMPARE) {
@@ -74,6 +89,11 @@ public class Cp1eTimeCompare implements Emulator.Scan {
                 this::evaluate);
     }
 
+    /**
+     * The comparison: C read, each unmasked field checked and compared, the flags written.
+     *
+     * @return the execution condition it creates
+     */
     protected boolean evaluate() {
         int mask = c.word(mem);
         // Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS).
@@ -122,7 +142,13 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         return Contact.holds(condition, order);
     }
 
-    /** Whether a field's byte is an error under the alternatives followed. */
+    /**
+     * Whether a field's byte is an error under the alternatives followed.
+     *
+     * @param raw the byte
+     * @param f its field
+     * @return true for a byte that is not BCD, or out of its range, where an alternative makes that an error
+     */
     protected boolean invalid(int raw, Field f) {
         if (!isBcd(raw)) {
             return settings.cp1eNonBcdError;          // "Second (00 to 59, BCD)" (CP1E-NON-BCD)
@@ -131,27 +157,52 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         return (v < f.min() || v > f.max()) && settings.cp1eOutOfRangeError;   // (CP1E-OUT-OF-RANGE)
     }
 
-    /** The value a field's byte is compared as: the byte itself, whose order is the numeric one for valid BCD. */
+    /**
+     * The value a field's byte is compared as.
+     *
+     * @param raw the byte
+     * @return the byte itself, whose order is the numeric one for valid BCD
+     */
     protected int compared(int raw) {
         return raw;
     }
 
+    /**
+     * The fields compared, most significant first.
+     *
+     * @return the fields
+     */
     protected Field[] fields() {
         return FIELDS;
     }
 
+    /**
+     * Whether C masks a field: its bit set to 1.
+     *
+     * @param mask the control word
+     * @param f the field
+     * @return true when the field is not compared
+     */
     protected boolean masked(int mask, Field f) {
         return ((mask >> f.maskBit()) & 1) != 0;
     }
 
-    /** "the result of a time comparison instruction is reflected in the arithmetic flags ({@code =, <>, <, <=, >, >=})." */
+    /**
+     * "the result of a time comparison instruction is reflected in the arithmetic flags ({@code =, <>, <, <=, >, >=})."
+     *
+     * @param order S1 against S2: negative, 0 or positive
+     */
     protected void reflectFlags(int order) {
         for (Instruction.Condition k : Instruction.Condition.values()) {
             mem.setBit(FLAGS.get(k), Contact.holds(k, order));
         }
     }
 
-    /** Error: P_ER on, execution condition OFF, the six arithmetic flags as CP1E-ERROR-FLAGS says. */
+    /**
+     * Error: P_ER on, execution condition OFF, the six arithmetic flags as CP1E-ERROR-FLAGS says.
+     *
+     * @return the execution condition: OFF
+     */
     protected boolean error() {
         mem.setBit(P_ER, true);
         if (settings.cp1eErrorFlagsOff) {
@@ -162,6 +213,12 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         return false;
     }
 
+    /**
+     * Whether a byte is two BCD digits.
+     *
+     * @param b the byte
+     * @return true when neither nibble is above 9
+     */
     protected boolean isBcd(int b) {
         return (b >> 4) <= 9 && (b & 0xF) <= 9;
     }

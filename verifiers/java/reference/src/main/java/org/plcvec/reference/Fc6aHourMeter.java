@@ -17,17 +17,31 @@ public class Fc6aHourMeter implements Emulator.Scan {
     /** "the value returns to 0 hours 0 minutes 0 seconds" after "65,535 hours 59 minutes 59 seconds". */
     static final long CYCLE = 65536L * 3600;
 
+    /** The memory the CPU reads and writes. */
     protected final Memory mem;
+    /** The alternatives followed. */
     protected final Settings settings;
+    /** D1, the measured time: hours, minutes, seconds. */
     protected final Address d1;
+    /** D2, the comparison output. */
     protected final Address d2;
+    /** S1, the preset: a constant (hours) or three words. */
     protected final Operand s1;
+    /** The part of a second measured and not yet counted in D1. */
     protected long fractionMs;
     /** For HOUR-OUTPUT-OFF=recompared: D2 stays on across a wrap. */
     protected boolean wrapped;
     /** The input at the previous execution; before the first step it counts as off (HOUR-FIRST-SCAN). */
     protected boolean inputWasOn;
 
+    /**
+     * A CPU for one HOUR vector.
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @param settings the alternatives followed
+     * @throws IllegalArgumentException for an instruction that is not HOUR
+     */
     public Fc6aHourMeter(VectorRequest vector, Memory memory, Settings settings) {
         if (!vector.instruction().equals("HOUR")) {
             throw new IllegalArgumentException("not HOUR: " + vector.instruction());
@@ -113,7 +127,11 @@ public class Fc6aHourMeter implements Emulator.Scan {
         }
     }
 
-    /** Read and check S1: the preset, or null when it is invalid (M8004 on, D2 off). */
+    /**
+     * Read and check S1.
+     *
+     * @return the preset (hours, minutes, seconds), or null when it is invalid (M8004 on, D2 off)
+     */
     protected int[] checkPreset() {
         int[] p = preset();
         if (!presetValid(p)) {
@@ -130,20 +148,40 @@ public class Fc6aHourMeter implements Emulator.Scan {
         return p;
     }
 
+    /**
+     * The seconds after which D1 returns to 0 hours 0 minutes 0 seconds.
+     *
+     * @return 65,536 hours in seconds
+     */
     protected long cycle() {
         return CYCLE;
     }
 
-    /** "When the measured input ON duration value in D1 reaches the preset value" */
+    /**
+     * "When the measured input ON duration value in D1 reaches the preset value"
+     *
+     * @param total D1 in seconds
+     * @param preset S1 in seconds
+     * @return true when D1 has reached S1
+     */
     protected boolean reached(long total, long preset) {
         return total >= preset;
     }
 
-    /** D1, D1+1, D1+2: hours, minutes, seconds. */
+    /**
+     * D1, D1+1, D1+2: hours, minutes, seconds.
+     *
+     * @return D1 in seconds
+     */
     protected long measured() {
         return mem.word(d1, 0) * 3600L + mem.word(d1, 1) * 60L + mem.word(d1, 2);
     }
 
+    /**
+     * Write D1 as hours, minutes and seconds.
+     *
+     * @param total the seconds measured
+     */
     protected void store(long total) {
         mem.setWord(d1, 0, (int) (total / 3600));
         mem.setWord(d1, 1, (int) (total / 60 % 60));
@@ -154,6 +192,8 @@ public class Fc6aHourMeter implements Emulator.Scan {
      * "When source device S1 is designated by a constant, the preset value can be 0 through 65,535
      * in hours, then minutes and seconds are set to 0." "... when designated by a data register,
      * ... occupy 3 consecutive data registers ... to store hour, minute, and second data."
+     *
+     * @return hours, minutes, seconds
      */
     protected int[] preset() {
         if (s1.isConstant()) {
@@ -163,7 +203,12 @@ public class Fc6aHourMeter implements Emulator.Scan {
         return new int[] {mem.word(a, 0), mem.word(a, 1), mem.word(a, 2)};
     }
 
-    /** "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59." */
+    /**
+     * "Hour data can be 0 through 65,535. Minute and second data can be 0 through 59."
+     *
+     * @param p the preset: hours, minutes, seconds
+     * @return true when every field is in range
+     */
     protected boolean presetValid(int[] p) {
         return p[0] >= 0 && p[0] <= 65535 && p[1] >= 0 && p[1] <= 59 && p[2] >= 0 && p[2] <= 59;
     }

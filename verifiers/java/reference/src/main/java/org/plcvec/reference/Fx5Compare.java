@@ -23,25 +23,44 @@ public class Fx5Compare implements Emulator.Scan {
     // 'Set the "hour" data ... within the range 0 to 23.' '"minute" ... (s1)+1 ... 0 to 59.'
     // '"second" ... (s1)+2 ... 0 to 59.' '(1) Set "second" as comparison target. (2) ... "minute"
     // ... (3) ... "hour"': b0 second, b1 minute, b2 hour. Most significant first.
+    /** The time comparison's fields, most significant first. */
     public static final Field[] TIME = {
         new Field(0, "hour", 0, 23, 2), new Field(1, "minute", 0, 59, 1), new Field(2, "second", 0, 59, 0),
     };
     // 'Set the 4 digit "year" data ... 1980 to 2079.' '"month" ... 1 to 12.' '"date" ... 1 to 31.'
+    /** The date comparison's fields, most significant first. */
     public static final Field[] DATE = {
         new Field(0, "year", 1980, 2079, 2), new Field(1, "month", 1, 12, 1), new Field(2, "day", 1, 31, 0),
     };
 
     static final Address SM709 = Address.of("SM709");
 
+    /** The memory the CPU reads and writes. */
     protected final Memory mem;
+    /** The fields compared: {@link #TIME} or {@link #DATE}. */
     protected final Field[] fields;
+    /** The alternatives followed. */
     protected final Settings settings;
+    /** LD, AND or OR. */
     protected final Instruction.Form form;
+    /** What the comparison tests. */
     protected final Instruction.Condition condition;
+    /** (s1), the first data. */
     protected final Operand s1;
+    /** (s2), the data (s1) is compared with. */
     protected final Operand s2;
+    /** (s3), the selector: which fields are compared, and bit 15 for the current time. */
     protected final Operand s3;
 
+    /**
+     * A CPU for one FX5 time or date comparison vector.
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @param fields {@link #TIME} or {@link #DATE}
+     * @param settings the alternatives followed
+     * @throws IllegalArgumentException for an instruction that is not a comparison of that family
+     */
     public Fx5Compare(VectorRequest vector, Memory memory, Field[] fields, Settings settings) {
         Instruction m = vector.instructionName();
         if (m == null || m.form() == null
@@ -77,7 +96,12 @@ public class Fx5Compare implements Emulator.Scan {
     /** Whether this execution turned SM709 on. */
     protected boolean erred;
 
-    /** The comparison itself (the "contact"). */
+    /**
+     * The comparison itself (the "contact").
+     *
+     * @param step the step (its clock for a current-time comparison)
+     * @return the comparison's result
+     */
     protected boolean evaluate(Step step) {
         int s3word = s3.word(mem);
         // "(5) When 1 is set to the 15 bit, the data in the device specified by (s1) is compared
@@ -138,19 +162,33 @@ public class Fx5Compare implements Emulator.Scan {
         return Contact.holds(condition, compare(a, b, s3word));
     }
 
-    /** SM709 on and non-continuity. "Once SM709 turns on, the on state is held": never cleared here. */
+    /**
+     * SM709 on and non-continuity. "Once SM709 turns on, the on state is held": never cleared here.
+     *
+     * @return the result: non-continuity
+     */
     protected boolean error() {
         mem.setBit(SM709, true);
         erred = true;
         return false;
     }
 
-    /** (s1), (s2): "16-bit signed binary", three words. */
+    /**
+     * (s1), (s2): "16-bit signed binary", three words.
+     *
+     * @param base the operand's first word
+     * @return the three words, signed
+     */
     protected int[] read(Address base) {
         return new int[] {(short) mem.word(base, 0), (short) mem.word(base, 1), (short) mem.word(base, 2)};
     }
 
-    /** The injected current time (or date), in the fields' order. */
+    /**
+     * The injected current time (or date), in the fields' order.
+     *
+     * @param step the step
+     * @return the clock's fields
+     */
     protected int[] clock(Step step) {
         int[] out = new int[3];
         for (Field f : fields) {
@@ -159,7 +197,13 @@ public class Fx5Compare implements Emulator.Scan {
         return out;
     }
 
-    /** Whether a field (every field when {@code selected} is -1, else those it selects) is outside its range. */
+    /**
+     * Whether a field is outside its range.
+     *
+     * @param words the three words
+     * @param selected the (s3) selection, or -1 for every field
+     * @return true when a field checked is outside its range
+     */
     protected boolean outOfRange(int[] words, int selected) {
         for (Field f : fields) {
             if (selected != -1 && ((selected >> f.bit()) & 1) == 0) {
@@ -173,7 +217,14 @@ public class Fx5Compare implements Emulator.Scan {
         return false;
     }
 
-    /** -1/0/1: field by field, most significant selected field first. */
+    /**
+     * Field by field, most significant selected field first.
+     *
+     * @param a (s1)'s words
+     * @param b (s2)'s words (or the clock)
+     * @param selected the (s3) selection
+     * @return -1, 0 or 1
+     */
     protected int compare(int[] a, int[] b, int selected) {
         for (Field f : fields) {
             if (((selected >> f.bit()) & 1) == 0) {

@@ -23,15 +23,29 @@ public class Fx5TimeAdd implements Emulator.Scan {
     /** "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)". */
     static final int[] MAX = {23, 59, 59};
 
+    /** The memory the CPU reads and writes. */
     protected final Memory mem;
+    /** The alternatives followed. */
     protected final Settings settings;
+    /** TADDP: executed on the rising edge of EN only. */
     protected final boolean pulse;
+    /** (s1), the first time added. */
     protected final Address s1;
+    /** (s2), the second time added. */
     protected final Address s2;
+    /** (d), where the sum is stored. */
     protected final Address d;
     /** TADDP: the state of EN before the first step is off. */
     protected boolean previousEn;
 
+    /**
+     * A CPU for one TADD or TADDP vector.
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @param settings the alternatives followed
+     * @throws IllegalArgumentException for an instruction that is not TADD or TADDP
+     */
     public Fx5TimeAdd(VectorRequest vector, Memory memory, Settings settings) {
         String instruction = vector.instruction();
         if (!instruction.equals("TADD") && !instruction.equals("TADDP")) {
@@ -90,16 +104,30 @@ public class Fx5TimeAdd implements Emulator.Scan {
      * "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result will be
      * the sum minus 24:00:00." But "If 1 second is added to 23:59:59, the result will be 0:00:00.
      * This turns on both the carry flag and the zero flag." (TADD-EXACT-24)
+     *
+     * @param total the sum in seconds
+     * @return true when it carries
      */
     protected boolean carries(int total) {
         return settings.taddCarryAbove24 ? total > DAY : total >= DAY;
     }
 
-    /** The sum as stored: "the result will be the sum minus 24:00:00". */
+    /**
+     * The sum as stored: "the result will be the sum minus 24:00:00".
+     *
+     * @param total the sum in seconds
+     * @return the seconds stored
+     */
     protected int wrap(int total) {
         return Math.floorMod(total, DAY);
     }
 
+    /**
+     * Whether every field is within its range (hour 0 to 23, minute and second 0 to 59).
+     *
+     * @param hms hours, minutes, seconds
+     * @return true when valid
+     */
     protected boolean valid(int[] hms) {
         for (int i = 0; i < 3; i++) {
             if (hms[i] < 0 || hms[i] > MAX[i]) {
@@ -109,16 +137,32 @@ public class Fx5TimeAdd implements Emulator.Scan {
         return true;
     }
 
-    /** Three words, "16-bit signed binary". */
+    /**
+     * Three words, "16-bit signed binary".
+     *
+     * @param base the operand's first word
+     * @return hours, minutes, seconds, signed
+     */
     protected int[] read(Address base) {
         return new int[] {(short) mem.word(base, 0), (short) mem.word(base, 1), (short) mem.word(base, 2)};
     }
 
+    /**
+     * An operation error: its code in SD0 and SD8067.
+     *
+     * @param code the error code (2820H, 3405H)
+     */
     protected void error(int code) {
         mem.setWord(SD0, code);
         mem.setWord(SD8067, code);
     }
 
+    /**
+     * Write the carry flags (SM700, SM8022) and the zero flag (SM8020) as TADD-FLAGS-OFF says.
+     *
+     * @param carry whether the sum carried
+     * @param zero whether the result is 0:00:00
+     */
     protected void setFlags(boolean carry, boolean zero) {
         if (settings.taddFlagsSetOnly) {
             // TADD-FLAGS-OFF=set-only: an execution only ever turns a flag on.

@@ -17,16 +17,26 @@ import org.plcvec.verify.VectorRequest;
  * methods are protected so that a mutant (a single-bug variant) overrides exactly one thing.
  */
 public class Reference implements Emulator {
+    /** The name reports show. */
     public static final String NAME = "plcvec-reference-java";
+    /** The reference's own version. */
     public static final String VERSION = "1.0";
 
+    /** The alternatives declared. */
     protected final Choices choices;
+    /** The same, as the families read them. */
     protected final Settings settings;
 
+    /** The reference following every default. */
     public Reference() {
         this(Choices.defaults());
     }
 
+    /**
+     * The reference following these alternatives.
+     *
+     * @param choices the alternatives to follow; undeclared ones take the default
+     */
     public Reference(Choices choices) {
         this.choices = choices;
         this.settings = new Settings(choices);
@@ -74,18 +84,47 @@ public class Reference implements Emulator {
         }
     }
 
+    /**
+     * An FX5 time or date comparison (a mutant returns its subclass).
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @param fields the family's fields
+     * @return the CPU
+     */
     protected Scan fx5Compare(VectorRequest vector, Memory memory, Fx5Compare.Field[] fields) {
         return new Fx5Compare(vector, memory, fields, settings);
     }
 
+    /**
+     * An FX5 TADD or TADDP (a mutant returns its subclass).
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @return the CPU
+     */
     protected Scan fx5TimeAdd(VectorRequest vector, Memory memory) {
         return new Fx5TimeAdd(vector, memory, settings);
     }
 
+    /**
+     * An FC6A HOUR (a mutant returns its subclass).
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @return the CPU
+     */
     protected Scan fc6aHourMeter(VectorRequest vector, Memory memory) {
         return new Fc6aHourMeter(vector, memory, settings);
     }
 
+    /**
+     * A CP1E time comparison (a mutant returns its subclass).
+     *
+     * @param vector the vector
+     * @param memory its device image
+     * @return the CPU
+     */
     protected Scan cp1eTimeCompare(VectorRequest vector, Memory memory) {
         return new Cp1eTimeCompare(vector, memory, settings);
     }

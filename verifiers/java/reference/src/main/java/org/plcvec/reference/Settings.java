@@ -57,6 +57,11 @@ public final class Settings {
     final boolean cp1eErHeld;
     final boolean cp1eErrorFlagsOff;
 
+    /**
+     * The alternatives of {@code c}, each resolved once.
+     *
+     * @param c the alternatives declared; undeclared ones take the default
+     */
     public Settings(Choices c) {
         sm709Scope = follows(c, Fx5Sm709Scope.values());
         fx5Logic = follows(c, Fx5AndOrWhenOff.values());

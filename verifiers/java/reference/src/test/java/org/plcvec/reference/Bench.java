@@ -134,6 +134,26 @@ public final class Bench {
                 allPass[k][i] = t[k];
             }
         }
+        print(new Measured(n, suite.source(), load, loadCpu, plan, seconds, cpu, warm, warmSeconds, onePass, allPass));
+    }
+
+    /** What main measured, for {@link #print}. */
+    private record Measured(int n, String source, double load, double loadCpu, double plan, double[] seconds, double[] cpu,
+                            int warm, double warmSeconds, double[][] onePass, double[][] allPass) {
+    }
+
+    /** The table a person reads, then the JSON object bench-native reads. */
+    private static void print(Measured m) {
+        int n = m.n();
+        double load = m.load();
+        double loadCpu = m.loadCpu();
+        double plan = m.plan();
+        double[] seconds = m.seconds();
+        double[] cpu = m.cpu();
+        int warm = m.warm();
+        double warmSeconds = m.warmSeconds();
+        double[][] onePass = m.onePass();
+        double[][] allPass = m.allPass();
         Figure guard = new Figure(allPass[0], allPass[1], onePass[0], onePass[1]);
         Figure tests = new Figure(allPass[0], allPass[2], onePass[0], onePass[2]);
         double median = seconds[PASSES / 2];
@@ -143,7 +163,7 @@ public final class Bench {
         String ratioRow = "%-58s %8s %10.3f%n";
         System.out.printf(Locale.ROOT, "%-58s %8s %10s %12s%n", "java verifier, golden set, in process", "vectors", "seconds",
                 "vectors/s");
-        System.out.printf(Locale.ROOT, "%-58s %8d %10.4f %12s%n", "load the vectors (" + suite.source() + ")", n, load, "");
+        System.out.printf(Locale.ROOT, "%-58s %8d %10.4f %12s%n", "load the vectors (" + m.source() + ")", n, load, "");
         System.out.printf(Locale.ROOT, "%-58s %8d %10.4f %12s%n", "  of which CPU time of the loading thread (cold JVM)", n,
                 loadCpu, "");
         System.out.printf(Locale.ROOT, "%-58s %8d %10.4f %12s%n", "plan: expectations under the alternatives", n, plan, "");
