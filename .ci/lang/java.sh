@@ -46,7 +46,7 @@ timed quiet install
 export GNUPGHOME="$scratch/gnupg"
 mkdir -m 700 "$GNUPGHOME"
 quiet gpg --batch --passphrase '' --quick-gen-key 'plcvec CI throwaway <ci@plcvec.invalid>' ed25519 sign 1d
-stage() { (cd verifiers/java && mvn -B -q -o -Dstyle.color=never deploy -Prelease -DskipTests \
+stage() { (cd verifiers/java && mvn -B -q -Dstyle.color=never deploy -Prelease -DskipTests \
     -DaltDeploymentRepository="staging::file://$scratch/stage"); }
 timed quiet stage
 quiet verifiers/java/central-check --signed "$scratch/stage"

@@ -109,9 +109,22 @@ public final class Values {
         return Integer.toString(value);
     }
 
-    /** Compact JSON with the keys of every map sorted, as TEXT.md shows a reported list or map. */
+    /** Compact JSON, as TEXT.md shows a reported list or map. */
     private static final tools.jackson.databind.json.JsonMapper SORTED = tools.jackson.databind.json.JsonMapper.builder()
-            .enable(tools.jackson.databind.SerializationFeature.ORDER_MAP_ENTRIES_BY_KEYS).build();
+            .build();
+
+    /** The value with every map's keys sorted (a map may hold its keys in any order of its own). */
+    private static Object keysSorted(Object value) {
+        if (value instanceof java.util.Map<?, ?> map) {
+            java.util.Map<String, Object> out = new java.util.TreeMap<>();
+            map.forEach((k, v) -> out.put(String.valueOf(k), keysSorted(v)));
+            return out;
+        }
+        if (value instanceof java.util.Collection<?> list) {
+            return list.stream().map(Values::keysSorted).toList();
+        }
+        return value;
+    }
 
     /**
      * A reported value that is neither a word nor a bit, as a report shows it (TEXT.md, "How values
@@ -130,7 +143,7 @@ public final class Values {
             return value.toString();
         }
         try {
-            return SORTED.writeValueAsString(value);
+            return SORTED.writeValueAsString(keysSorted(value));
         } catch (tools.jackson.core.JacksonException e) {
             return String.valueOf(value);
         }
