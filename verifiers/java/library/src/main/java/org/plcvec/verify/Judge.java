@@ -82,16 +82,24 @@ final class Judge {
         } else {
             m.reset(v.slots.length, v.initial);
         }
+        return passes(emulator, v, e, m) ? PASSED : replay(emulator, v, e);
+    }
+
+    /**
+     * Whether the emulator passes {@code v} in {@code m}, which holds the vector's initial devices:
+     * compared in place after each step, stopping at the first difference.
+     */
+    static boolean passes(Emulator emulator, Vector v, Expected e, Memory m) throws Exception {
         Emulator.Scan scan = emulator.load(v, m);
         List<Step> steps = v.steps();
         for (int s = 0, n = steps.size(); s < n; s++) {
             Step step = steps.get(s);
             step.applySet(m);
             if (!Compare.matches(e, s, m, scan.execute(step))) {
-                return replay(emulator, v, e);
+                return false;
             }
         }
-        return PASSED;
+        return true;
     }
 
     /**

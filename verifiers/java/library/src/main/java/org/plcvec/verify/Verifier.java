@@ -293,7 +293,8 @@ public final class Verifier {
                 m = p.memories[i] = v.newMemory();
             }
             try {
-                if (!p.supported[i] || !passes(emulator, v, p.expectedInOrder[i], m)) {
+                m.reset(v.slots.length, v.initial);
+                if (!p.supported[i] || !Judge.passes(emulator, v, p.expectedInOrder[i], m)) {
                     failures++;
                 }
             } catch (VirtualMachineError fatal) {
@@ -303,20 +304,5 @@ public final class Verifier {
             }
         }
         return failures;
-    }
-
-    /** Whether the emulator passes {@code v}: the memory path, stopping at the first difference. */
-    private static boolean passes(Emulator emulator, Vector v, Expected e, Memory m) throws Exception {
-        m.reset(v.slots.length, v.initial);
-        Emulator.Scan scan = emulator.load(v, m);
-        List<Step> steps = v.steps();
-        for (int s = 0, n = steps.size(); s < n; s++) {
-            Step step = steps.get(s);
-            step.applySet(m);
-            if (!Compare.matches(e, s, m, scan.execute(step))) {
-                return false;
-            }
-        }
-        return true;
     }
 }
