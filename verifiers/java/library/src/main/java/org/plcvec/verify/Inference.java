@@ -71,7 +71,11 @@ final class Inference {
         long[] keys = cpuWrites.stream().mapToLong(d -> Address.of(d).key()).toArray();
 
         List<Judged> judged = judgeAll(verdicts, followed, defaults, keys);
-        Map<String, String> choice = choose(judged, followed, run.keySet(), known);
+        // Twice: first without the readings that leave devices unjudged, which explain any answer
+        // there, so that they take only what no reading that judges explains (TEXT.md, step 4).
+        Set<String> leaving = leavingUnjudged(verdicts);
+        Map<String, String> choice = choose(judged, followed, run.keySet(), known, leaving);
+        choice = choose(judged, choice, run.keySet(), known, Set.of());
         Inference out = new Inference(followed, choice, judged.size());
         out.explain(verdicts, judged);
         return out;
@@ -83,7 +87,7 @@ final class Inference {
      * vectors that touch it, in rounds until a round changes nothing.
      */
     private static Map<String, String> choose(List<Judged> judged, Map<String, String> followed, Set<String> run,
-                                              Map<String, Suite.InterpretationInfo> known) {
+                                              Map<String, Suite.InterpretationInfo> known, Set<String> barred) {
         Map<String, List<Judged>> byInterpretation = new TreeMap<>();
         for (Judged j : judged) {
             j.touched().forEach(i -> byInterpretation.computeIfAbsent(i, k -> new ArrayList<>()).add(j));
@@ -100,7 +104,7 @@ final class Inference {
                 String best = choice.get(interpretation);
                 int bestScore = score(touching, choice);
                 for (String alternative : known.get(interpretation).alternatives()) {
-                    if (alternative.equals(choice.get(interpretation))) {
+                    if (alternative.equals(choice.get(interpretation)) || barred.contains(interpretation + "=" + alternative)) {
                         continue;
                     }
                     Map<String, String> trial = new TreeMap<>(choice);
@@ -118,6 +122,19 @@ final class Inference {
             }
         }
         return choice;
+    }
+
+    /** {@code ID=alternative} of every alternative some vector's entry names in its {@code unjudged} map. */
+    private static Set<String> leavingUnjudged(List<Verdict> verdicts) {
+        Set<String> out = new HashSet<>();
+        for (Verdict v : verdicts) {
+            if (v.vector() != null) {
+                for (Vector.Variant variant : v.vector().variants()) {
+                    variant.unjudged().keySet().forEach(i -> out.add(i + "=" + variant.choices().get(i)));
+                }
+            }
+        }
+        return out;
     }
 
     /**

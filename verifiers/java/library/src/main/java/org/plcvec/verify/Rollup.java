@@ -38,21 +38,27 @@ final class Rollup {
         StringBuilder out = new StringBuilder();
         Map<String, Verdict> byId = new LinkedHashMap<>();
         verdicts.forEach(v -> byId.putIfAbsent(v.id(), v));
+        Map<String, Integer> broken = new TreeMap<>();
+        inference.broken.forEach(id -> broken.merge(family(byId.get(id)), 1, Integer::sum));
         if (!inference.explained.isEmpty()) {
             out.append("READINGS: ").append(inference.explained.size()).append(" of ").append(failing)
                     .append(" failing vectors pass under other alternatives:\n");
-            Set<String> partial = groups(out, inference.explained, byId, families(inference.unexplained),
-                    "failing vectors");
+            boolean partial = groups(out, inference.explained, byId, families(inference.unexplained), broken);
             out.append(INDENT).append("declare: ").append(declaration.apply(changed(inference, inference.choice.keySet())))
                     .append('\n');
             if (!inference.broken.isEmpty()) {
                 out.append(INDENT).append("(so declared, ").append(inference.broken.size())
                         .append(" vectors that pass now would fail)\n");
             }
-            if (!partial.isEmpty()) {
-                long p = inference.unexplained.stream().filter(v -> partial.contains(family(v))).count();
-                out.append(INDENT).append("partial: ").append(p).append(" failing vectors that no reading explains are of "
-                        + "the same families; a declaration may hide part of a bug there\n");
+            if (partial) {
+                // Of the families of every explained vector, each vector counted once.
+                Set<String> explainedFamilies = new TreeSet<>();
+                inference.explained.keySet().forEach(id -> explainedFamilies.add(family(byId.get(id))));
+                long p = inference.unexplained.stream().filter(v -> explainedFamilies.contains(family(v))).count();
+                long q = inference.broken.stream().filter(id -> explainedFamilies.contains(family(byId.get(id)))).count();
+                out.append(INDENT).append("partial: ").append(p).append(" vectors no reading explains and ").append(q)
+                        .append(" vectors that pass now are of the same families; the declaration may hide part of a bug "
+                                + "there\n");
             }
         }
         if (!inference.unexplained.isEmpty()) {
@@ -64,7 +70,7 @@ final class Rollup {
                     .append(" known failures pass under other alternatives:\n");
             List<Verdict> notExplained = new ArrayList<>(inference.unexplained);
             notExplained.addAll(inference.unexplainedKnown);
-            groups(out, inference.explainedKnown, byId, families(notExplained), "failing vectors and known failures");
+            groups(out, inference.explainedKnown, byId, families(notExplained), broken);
             Set<String> touched = new TreeSet<>();
             inference.explainedKnown.values().forEach(change -> touched.addAll(change.keySet()));
             out.append(INDENT).append("declare: ").append(declaration.apply(changed(inference, touched))).append('\n');
@@ -76,12 +82,13 @@ final class Rollup {
 
     /**
      * One line per group of explained vectors (their smallest change), largest first, each marked
-     * partial when {@code unexplained} (family to count) holds a family of the group's vectors.
+     * partial when {@code unexplained} or {@code broken} (family to count) holds a family of the
+     * group's vectors.
      *
-     * @return the families of the partial groups
+     * @return whether some group is partial
      */
-    private static Set<String> groups(StringBuilder out, Map<String, Map<String, String>> explained,
-                                      Map<String, Verdict> byId, Map<String, Integer> unexplained, String what) {
+    private static boolean groups(StringBuilder out, Map<String, Map<String, String>> explained,
+                                  Map<String, Verdict> byId, Map<String, Integer> unexplained, Map<String, Integer> broken) {
         Map<String, Set<String>> groups = new TreeMap<>();   // the change's text -> the families of its vectors
         Map<String, Integer> sizes = new TreeMap<>();
         explained.forEach((id, change) -> {
@@ -89,19 +96,19 @@ final class Rollup {
             sizes.merge(text, 1, Integer::sum);
             groups.computeIfAbsent(text, k -> new TreeSet<>()).add(family(byId.get(id)));
         });
-        Set<String> partial = new TreeSet<>();
-        Map<String, Integer> lines = new LinkedHashMap<>();
+        boolean partial = false;
         for (Map.Entry<String, Integer> group : sorted(sizes)) {
-            List<String> shared = groups.get(group.getKey()).stream().filter(unexplained::containsKey).toList();
+            List<String> shared = groups.get(group.getKey()).stream()
+                    .filter(f -> unexplained.containsKey(f) || broken.containsKey(f)).toList();
             String line = group.getKey();
             if (!shared.isEmpty()) {
-                int u = shared.stream().mapToInt(unexplained::get).sum();
-                line += " (partial: " + u + " " + what + " of " + String.join(", ", shared) + " not explained)";
-                partial.addAll(shared);
+                int u = shared.stream().mapToInt(f -> unexplained.getOrDefault(f, 0)).sum();
+                int w = shared.stream().mapToInt(f -> broken.getOrDefault(f, 0)).sum();
+                line += " (partial: " + u + " not explained, " + w + " would fail, in " + String.join(", ", shared) + ")";
+                partial = true;
             }
-            lines.put(line, group.getValue());
+            out.append(countLine(group.getValue(), line));
         }
-        lines.forEach((line, n) -> out.append(countLine(n, line)));
         return partial;
     }
 

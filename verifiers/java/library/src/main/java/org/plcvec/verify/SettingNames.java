@@ -40,6 +40,7 @@ final class SettingNames {
             "PLCVEC_ADAPTER",
             "PLCVEC_ALTERNATIVES",
             "PLCVEC_GATE_SCRIPT",
+            "PLCVEC_GATE_SHA256",
             "PLCVEC_PACKAGE",
             "PLCVEC_PYTHON",
             "PLCVEC_REPORT_DIR",
