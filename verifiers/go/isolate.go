@@ -41,7 +41,9 @@ const (
 	// readyBound is how long the child may take to reach Run (load the suite, build the plan).
 	readyBound = 120 * time.Second
 	outputKept = 16 << 10 // bytes of the child's own output kept for a report
-	beatSize   = 16       // bytes of the shared position: the position, then the lines written
+	// outputWait is how long the child's output is still read once it has exited.
+	outputWait = 500 * time.Millisecond
+	beatSize   = 16 // bytes of the shared position: the position, then the lines written
 	// pollMin and pollMax bound how long the parent waits before it looks at the position again
 	// when nothing has come on the pipe: the wait doubles each time, since the child does not
 	// wait for the parent (a longer wait only delays the subtests' reports; a line, the end of
@@ -236,6 +238,9 @@ func startChild(name string, ordinal int, wanted []bool) (*child, error) {
 	c := &child{cmd: exec.Command(self, args...), lines: make(chan []string, 16), beat: b, output: &tail{}, exited: make(chan struct{})}
 	c.cmd.Env = append(os.Environ(), envChild+"="+name+"\n"+strconv.Itoa(ordinal), envWanted+"="+encodeWanted(wanted))
 	c.cmd.Stdout, c.cmd.Stderr = c.output, c.output
+	// A process the implementation started may keep the child's output open long after the child
+	// ended: its end is the child's exit, not the end of that output.
+	c.cmd.WaitDelay = outputWait
 	c.cmd.ExtraFiles = []*os.File{w, shared}
 	if err := c.cmd.Start(); err != nil {
 		r.Close()
@@ -373,7 +378,7 @@ func (c *child) ending() string {
 		} else {
 			how = "ended the test process: " + exit.String()
 		}
-	} else if c.err == nil {
+	} else if c.err == nil || errors.Is(c.err, exec.ErrWaitDelay) {
 		how = "ended the test process with exit status 0"
 	}
 	if out := c.output.String(); out != "" {

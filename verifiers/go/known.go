@@ -38,6 +38,10 @@ const knownSection = "known-failure"
 
 // LoadKnownFailures reads an expectations file; every mistake is named by file and line.
 func LoadKnownFailures(path string) (*KnownFailures, error) {
+	// A named pipe nobody writes would hold the run before it starts.
+	if why := notRegularPath(path); why != "" {
+		return nil, fmt.Errorf("%s: %s", path, why)
+	}
 	raw, err := os.ReadFile(path)
 	if err != nil {
 		return nil, fmt.Errorf("%s: cannot read the expectations file: %v", path, errors.Unwrap(err))
@@ -134,11 +138,15 @@ func (k *KnownFailures) unknownIDs(s *Suite) []Verdict {
 	}
 	sort.Strings(ids)
 	for _, id := range ids {
-		if s.Vector(id) == nil {
-			out = append(out, Verdict{ID: id, Status: StatusStale, Message: fmt.Sprintf(
-				"listed as a known failure (%s:%d) but the suite has no such vector; remove it from the expectations file",
-				k.Path, k.Entries[id].Line)})
+		if s.Vector(id) != nil {
+			continue
 		}
+		why := "; remove it from the expectations file"
+		if now, ok := s.merged[id]; ok {
+			why = ": it was merged into " + now + "; list that id instead"
+		}
+		out = append(out, Verdict{ID: id, Status: StatusStale, Message: fmt.Sprintf(
+			"listed as a known failure (%s:%d) but the suite has no such vector%s", k.Path, k.Entries[id].Line, why)})
 	}
 	return out
 }
@@ -185,6 +193,9 @@ func tomlString(s string) string {
 
 // writeAtomic replaces path with data through a temporary file in the same folder.
 func writeAtomic(path string, data []byte) error {
+	if why := notRegularPath(path); why != "" {
+		return fmt.Errorf("%s: %s", path, why)
+	}
 	tmp, err := os.CreateTemp(filepath.Dir(path), "."+filepath.Base(path)+".*")
 	if err != nil {
 		return fmt.Errorf("%s: %v", path, err)

@@ -242,7 +242,8 @@ func TestKnownFailures(t *testing.T) {
 	if err != nil {
 		t.Fatal(err)
 	}
-	if v := report.Verdicts[0]; v.Status != plcvec.StatusXFail || !report.OK() {
+	// (Not OK all the same: a run of known failures alone passes nothing; known_test.go.)
+	if v := report.Verdicts[0]; v.Status != plcvec.StatusXFail || len(report.Failed()) != 0 {
 		t.Errorf("a listed failure is not xfail: %s", v.Text())
 	}
 	report, _ = plcvec.Verify(manualAnswer{}, opts)
@@ -475,7 +476,7 @@ func TestWriteExpectations(t *testing.T) {
 	if err != nil {
 		t.Fatal(err)
 	}
-	if !report.OK() || report.Verdicts[0].Status != plcvec.StatusXFail || !strings.Contains(report.Verdicts[0].Message, "D31 off by one (\"minute\")\tc:\\x") {
+	if len(report.Failed()) != 0 || report.Verdicts[0].Status != plcvec.StatusXFail || !strings.Contains(report.Verdicts[0].Message, "D31 off by one (\"minute\")\tc:\\x") {
 		t.Errorf("the written file does not make the run pass: %+v", report.Verdicts)
 	}
 	if _, err := report.WriteExpectations(filepath.Join(t.TempDir(), "no", "such", "dir", "k.toml"), "r"); err == nil {
@@ -511,6 +512,7 @@ func (l looping) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 		case "wrong":
 			return manualAnswer{set("D30", plcvec.Word(99))}.Run(req)
 		}
+		//lint:ignore SA5002 the implementation under test never returns: the bound must end it
 		for {
 		}
 	}

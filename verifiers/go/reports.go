@@ -24,7 +24,11 @@ func (r *Report) Summary() string {
 // empty line, the header and the totals. Run logs it at the end of the test, each failure
 // having been reported by its own subtest.
 func (r *Report) Closing() string {
-	return r.RollUp() + r.Skips() + "\n" + r.Plan.Header() + r.Totals()
+	gate := ""
+	if len(r.Failed()) == 0 && r.shortfall() != "" {
+		gate = "NOT PASSED: " + r.shortfall() + "\n"
+	}
+	return r.RollUp() + r.Skips() + gate + "\n" + r.Plan.Header() + r.Totals()
 }
 
 // Totals is the line of counts that ends a run's report: pass, fail and skip always, the

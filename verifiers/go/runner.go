@@ -2,6 +2,7 @@ package plcvec
 
 import (
 	"fmt"
+	"os"
 	"runtime/debug"
 	"strings"
 	"time"
@@ -55,6 +56,7 @@ type Case struct {
 
 // Prepare builds the plan of a run of impl: handshake, selection, expectations.
 func Prepare(impl Implementation, opts Options) (*Plan, error) {
+	warnSettings(os.Stderr)
 	suite := opts.Suite
 	if suite == nil {
 		var err error
@@ -228,11 +230,37 @@ func (r *Report) Failed() []Verdict {
 	return out
 }
 
-// OK reports whether the run passes: nothing failed, and at least one vector was really run
-// (an implementation that skips everything is not a pass).
+// OK reports whether the run passes: nothing failed, and at least one vector passed (a run of
+// skips and known failures alone proves nothing: CONTRACT.md, "Exit status").
 func (r *Report) OK() bool {
+	return len(r.Failed()) == 0 && r.shortfall() == ""
+}
+
+// shortfall says why the run proves nothing, "" when some vector passed: no vector was run, or
+// every one was skipped or a known failure (an implementation that skips everything, or a list
+// of known failures on an implementation that fails them all).
+func (r *Report) shortfall() string {
 	c := r.Counts()
-	return len(r.Failed()) == 0 && c[StatusPass]+c[StatusXFail] > 0
+	switch {
+	case len(r.Verdicts) == 0:
+		return "no vector was run; choose vectors with PLCVEC_ID=<id or glob>[,...]"
+	case c[StatusPass] > 0:
+		return ""
+	}
+	var parts []string
+	for _, s := range statusOrder {
+		if c[s] > 0 {
+			word := string(s)
+			switch s {
+			case StatusSkip:
+				word = "skipped"
+			case StatusXFail:
+				word = "known failures"
+			}
+			parts = append(parts, fmt.Sprintf("%d %s", c[s], word))
+		}
+	}
+	return "nothing passed (" + strings.Join(parts, ", ") + "): the run proves nothing"
 }
 
 // Interpretations is a line naming the alternative followed for every interpretation of the

@@ -3,6 +3,7 @@ package plcvec
 import (
 	"fmt"
 	"hash/crc32"
+	"os"
 	"sort"
 	"strconv"
 	"strings"
@@ -167,4 +168,34 @@ func anyIn(want, have []string) bool {
 		}
 	}
 	return false
+}
+
+// narrow keeps the vectors the PLCVEC_* selection also takes.
+func (s *Suite) narrow(vectors []*Vector, env environment) ([]*Vector, error) {
+	if err := s.checkEnvironment(env); err != nil {
+		return nil, err
+	}
+	out := vectors[:0:0]
+	for _, v := range vectors {
+		if env.narrow.Matches(v) {
+			out = append(out, v)
+		}
+	}
+	return out, nil
+}
+
+// checkEnvironment checks each variable's names against the suite apart, so that an error names
+// the variable that holds the unknown name.
+func (s *Suite) checkEnvironment(env environment) error {
+	for _, c := range []struct {
+		name string
+		sel  Selection
+	}{{EnvID, Selection{IDs: env.narrow.IDs}}, {EnvFamily, Selection{Families: env.narrow.Families}},
+		{EnvInstruction, Selection{Instructions: env.narrow.Instructions}}, {EnvTag, Selection{Tags: env.narrow.Tags}},
+		{EnvInterpretation, Selection{Interpretations: env.narrow.Interpretations}}} {
+		if err := s.checkSelection(c.sel); err != nil {
+			return fmt.Errorf("%s=%q: %v", c.name, os.Getenv(c.name), err)
+		}
+	}
+	return nil
 }

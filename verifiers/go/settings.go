@@ -2,32 +2,34 @@ package plcvec
 
 import (
 	"fmt"
-	"math"
+	"io"
 	"os"
+	"regexp"
+	"sort"
 	"strconv"
 	"strings"
 	"time"
 )
 
-// The environment variables every plcvec runner reads, with the same meaning and the same
-// errors (CONTRACT.md): `plcvec verify` takes them as the defaults of its flags, and Run reads
-// them so that a CI job changes what a gate runs without changing the test.
-const (
-	EnvVectors           = "PLCVEC_VECTORS"            // another copy of the vectors (a folder)
-	EnvID                = "PLCVEC_ID"                 // ids or globs, comma-separated
-	EnvFamily            = "PLCVEC_FAMILY"             // families, comma-separated
-	EnvInstruction       = "PLCVEC_INSTRUCTION"        // instructions, comma-separated
-	EnvTag               = "PLCVEC_TAG"                // tags, comma-separated
-	EnvInterpretation    = "PLCVEC_INTERPRETATION"     // interpretations, comma-separated
-	EnvShard             = "PLCVEC_SHARD"              // K/N
-	EnvKnownFailures     = "PLCVEC_KNOWN_FAILURES"     // a known-failures TOML file
-	EnvWriteExpectations = "PLCVEC_WRITE_EXPECTATIONS" // write the run's failures to this TOML file
-	EnvTimeout           = "PLCVEC_TIMEOUT"            // seconds per vector
-)
+// The PLCVEC_* variables of a run (CONTRACT.md, "The environment"): `plcvec verify` takes them as
+// the defaults of its flags, and Run reads them so that a CI job changes what a gate runs without
+// changing the test. Their names, old names and the names plcvec's own tools use come from the
+// one table of them (settings_gen.go, generated from verifiers/python/plcvec_verify/settings.py).
 
 // DefaultTimeout bounds one vector when $PLCVEC_TIMEOUT does not: an implementation that never
 // answers is reported against that vector, and the run ends there rather than hang.
 const DefaultTimeout = 10 * time.Second
+
+// CONTRACT.md's one rule for PLCVEC_TIMEOUT: digits with an optional fraction (no sign, no
+// exponent), above 0 and at most a day, so that a value one runner takes no runner refuses and
+// none overflows a clock.
+const maxTimeoutSeconds = 86400
+
+var timeoutPattern = regexp.MustCompile(`^[0-9]+(\.[0-9]+)?$`)
+
+// nearestDistance is the largest edit distance at which a PLCVEC_* variable that is no setting is
+// taken for a misspelling of one (CONTRACT.md, "Old names and misspellings").
+const nearestDistance = 3
 
 // environment is what the PLCVEC_* variables ask of a run.
 type environment struct {
@@ -41,7 +43,8 @@ type environment struct {
 // readEnvironment reads the PLCVEC_* variables. A malformed value is an error naming its
 // variable; an empty item of a list (PLCVEC_FAMILY=,) is an error too, never "no filter".
 func readEnvironment() (environment, error) {
-	env := environment{known: os.Getenv(EnvKnownFailures), write: os.Getenv(EnvWriteExpectations)}
+	known, _ := lookupSetting(EnvKnownFailures)
+	env := environment{known: known, write: os.Getenv(EnvWriteExpectations)}
 	lists := []struct {
 		name string
 		into *[]string
@@ -69,48 +72,168 @@ func readEnvironment() (environment, error) {
 		env.narrow.Shard, env.narrowed = shard, true
 	}
 	var err error
-	env.timeout, err = parseTimeout(os.Getenv(EnvTimeout))
+	text, set := os.LookupEnv(EnvTimeout)
+	env.timeout, err = parseTimeout(text, set)
 	return env, err
 }
 
-// parseTimeout reads $PLCVEC_TIMEOUT: seconds, a positive finite number; "" is the default.
-func parseTimeout(text string) (time.Duration, error) {
-	if text == "" {
+// lookupSetting is the value of a setting: its variable, else, while the old name is still read,
+// the variable it was renamed from (when only that one is set).
+func lookupSetting(name string) (string, bool) {
+	if text, ok := os.LookupEnv(name); ok {
+		return text, true
+	}
+	for _, d := range deprecatedSettings {
+		if d.replacement == name {
+			if text, ok := os.LookupEnv(d.name); ok {
+				return text, true
+			}
+		}
+	}
+	return "", false
+}
+
+// parseTimeout reads $PLCVEC_TIMEOUT (CONTRACT.md's one rule); unset is the default.
+func parseTimeout(text string, set bool) (time.Duration, error) {
+	if !set {
 		return DefaultTimeout, nil
 	}
-	s, err := strconv.ParseFloat(strings.TrimSpace(text), 64)
-	if err != nil || !(s > 0) || math.IsInf(s, 0) || s > 1e6 {
-		return 0, fmt.Errorf("%s=%q: seconds per vector, a positive number (default %d)", EnvTimeout, text, int(DefaultTimeout/time.Second))
+	s, err := strconv.ParseFloat(text, 64)
+	if !timeoutPattern.MatchString(text) || err != nil || !(s > 0) || s > maxTimeoutSeconds {
+		return 0, fmt.Errorf("%s=%s: the bound must be a number of seconds above 0 and at most %d, "+
+			"written as digits with an optional fraction (2, 0.5)", EnvTimeout, text, maxTimeoutSeconds)
 	}
 	return time.Duration(s * float64(time.Second)), nil
 }
 
-// narrow keeps the vectors the PLCVEC_* selection also takes.
-func (s *Suite) narrow(vectors []*Vector, env environment) ([]*Vector, error) {
-	if err := s.checkEnvironment(env); err != nil {
-		return nil, err
+// warnSettings writes the warnings the environment earns to w, once per run: Prepare calls it,
+// except in the second process of a Run (isolate.go), whose parent has warned already.
+func warnSettings(w io.Writer) {
+	if _, inChild := os.LookupEnv(envChild); inChild {
+		return
 	}
-	out := vectors[:0:0]
-	for _, v := range vectors {
-		if env.narrow.Matches(v) {
-			out = append(out, v)
-		}
+	for _, line := range settingWarnings(os.Environ()) {
+		fmt.Fprintln(w, "plcvec: "+line)
 	}
-	return out, nil
 }
 
-// checkEnvironment checks each variable's names against the suite apart, so that an error names
-// the variable that holds the unknown name.
-func (s *Suite) checkEnvironment(env environment) error {
-	for _, c := range []struct {
-		name string
-		sel  Selection
-	}{{EnvID, Selection{IDs: env.narrow.IDs}}, {EnvFamily, Selection{Families: env.narrow.Families}},
-		{EnvInstruction, Selection{Instructions: env.narrow.Instructions}}, {EnvTag, Selection{Tags: env.narrow.Tags}},
-		{EnvInterpretation, Selection{Interpretations: env.narrow.Interpretations}}} {
-		if err := s.checkSelection(c.sel); err != nil {
-			return fmt.Errorf("%s=%q: %v", c.name, os.Getenv(c.name), err)
+// settingWarnings are the warnings of CONTRACT.md, "Old names and misspellings", for the
+// variables of environ (NAME=value entries), in variable order: an old name read as the setting it
+// was renamed to, or ignored when that one is set too; a PLCVEC_* variable that is neither a
+// setting, an old name nor a name plcvec's own tools use, named with the nearest setting.
+func settingWarnings(environ []string) []string {
+	set := map[string]bool{}
+	var names []string
+	for _, kv := range environ {
+		name, _, _ := strings.Cut(kv, "=")
+		if strings.HasPrefix(name, "PLCVEC_") && !set[name] {
+			set[name] = true
+			names = append(names, name)
 		}
 	}
-	return nil
+	sort.Strings(names)
+	var out []string
+	for _, name := range names {
+		if line := settingWarning(name, set); line != "" {
+			out = append(out, line)
+		}
+	}
+	return out
+}
+
+// settingWarning is the warning variable name earns, or "" (set: every PLCVEC_* variable set).
+func settingWarning(name string, set map[string]bool) string {
+	if isSetting(name) || isReserved(name) {
+		return ""
+	}
+	for _, d := range deprecatedSettings {
+		if d.name != name {
+			continue
+		}
+		if set[d.replacement] {
+			return fmt.Sprintf("warning: %s is ignored: it is the old name of %s, which is set too", name, d.replacement)
+		}
+		return fmt.Sprintf("warning: %s is the old name of %s, read as it until plcvec %s; set %s instead",
+			name, d.replacement, d.until, d.replacement)
+	}
+	if guess := nearestSetting(name); guess != "" {
+		return fmt.Sprintf("warning: %s is not a plcvec setting; did you mean %s?", name, guess)
+	}
+	all := make([]string, len(settings))
+	for i, s := range settings {
+		all[i] = s.name
+	}
+	return fmt.Sprintf("warning: %s is not a plcvec setting; the settings are %s", name, strings.Join(all, ", "))
+}
+
+func isSetting(name string) bool {
+	for _, s := range settings {
+		if s.name == name {
+			return true
+		}
+	}
+	return false
+}
+
+func isReserved(name string) bool {
+	for _, r := range reservedSettings {
+		if r == name {
+			return true
+		}
+	}
+	for _, p := range reservedSettingPrefixes {
+		if strings.HasPrefix(name, p) {
+			return true
+		}
+	}
+	return false
+}
+
+// nearestSetting is the setting name is most likely a misspelling of: the first by name among
+// the settings and old names at the smallest edit distance, if that is at most nearestDistance,
+// an old name counting as the setting it was renamed to; "" when none is that near.
+func nearestSetting(name string) string {
+	candidates := make([]string, 0, len(settings)+len(deprecatedSettings))
+	for _, s := range settings {
+		candidates = append(candidates, s.name)
+	}
+	for _, d := range deprecatedSettings {
+		candidates = append(candidates, d.name)
+	}
+	sort.Strings(candidates)
+	upper := strings.ToUpper(name)
+	best, distance := "", nearestDistance+1
+	for _, c := range candidates {
+		if d := editDistance(upper, c); d < distance {
+			best, distance = c, d
+		}
+	}
+	for _, d := range deprecatedSettings {
+		if d.name == best {
+			return d.replacement
+		}
+	}
+	return best
+}
+
+// editDistance is the Levenshtein distance of a and b (insert, delete, replace: each 1), by byte:
+// the names are ASCII.
+func editDistance(a, b string) int {
+	previous := make([]int, len(b)+1)
+	for j := range previous {
+		previous[j] = j
+	}
+	for i := 1; i <= len(a); i++ {
+		current := make([]int, len(b)+1)
+		current[0] = i
+		for j := 1; j <= len(b); j++ {
+			cost := 1
+			if a[i-1] == b[j-1] {
+				cost = 0
+			}
+			current[j] = min(previous[j]+1, current[j-1]+1, previous[j-1]+cost)
+		}
+		previous = current
+	}
+	return previous[len(b)]
 }

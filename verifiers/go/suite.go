@@ -15,6 +15,7 @@ import (
 	"strconv"
 	"strings"
 	"sync"
+	"syscall"
 )
 
 // SchemaMajor is the major schema version this verifier reads (CONTRACT.md, "Versioning"): a 2.x
@@ -31,6 +32,7 @@ type Suite struct {
 	Headers       map[string]*Header // family -> header
 	Vectors       []*Vector          // family by family, each family sorted by id
 	byID          map[string]*Vector
+	merged        map[string]string // an id merged into another vector -> the id it is now
 }
 
 // Vector returns the vector with this id, or nil.
@@ -72,6 +74,9 @@ func Embedded() (*Suite, error) {
 // each).
 func Load(dir string) (*Suite, error) {
 	info, err := os.Stat(dir)
+	if errors.Is(err, syscall.ELOOP) {
+		return nil, fmt.Errorf("%s: a loop of symbolic links", dir)
+	}
 	if err != nil {
 		return nil, fmt.Errorf("%s: no such vector folder", dir)
 	}
@@ -93,27 +98,28 @@ type listing struct {
 		Count  *int   `json:"count"`
 		SHA256 string `json:"sha256"`
 	} `json:"families"`
+	// Merged: {family: {an id the generator merged into another vector: the id it went to}}.
+	Merged map[string]map[string]string `json:"merged"`
 }
 
 func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
-	name := "index.json"
-	raw, err := fs.ReadFile(fsys, name)
-	if errors.Is(err, fs.ErrNotExist) {
-		name = "manifest.json"
-		raw, err = fs.ReadFile(fsys, name)
-	}
+	name, raw, err := readIndex(fsys, source, prefix)
 	if err != nil {
-		return nil, fmt.Errorf("%s: no index.json (an exported copy) or manifest.json (a vector folder)", source)
+		return nil, err
 	}
 	var list listing
 	if err := json.Unmarshal(raw, &list); err != nil {
 		return nil, fmt.Errorf("%s%s:%d: not valid JSON (%v)", prefix, name, jsonErrorLine(raw, err), err)
 	}
+	var keys keyScanner
+	if err := keys.repeatedKeyError(raw, prefix+name, 1, nil); err != nil {
+		return nil, err
+	}
 	if len(list.Families) == 0 {
 		return nil, fmt.Errorf("%s%s: no `families`; is this a plcvec vector folder?", prefix, name)
 	}
 	s := &Suite{Source: source, SuiteVersion: list.SuiteVersion, SpecSHA256: list.SpecSHA256,
-		Headers: map[string]*Header{}, byID: map[string]*Vector{}}
+		Headers: map[string]*Header{}, byID: map[string]*Vector{}, merged: mergedIDs(list.Merged)}
 	if s.SuiteVersion == "" {
 		s.SuiteVersion = list.GeneratorVersion
 	}
@@ -127,6 +133,9 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 		entry := list.Families[family]
 		if entry.File == "" || strings.Contains(entry.File, "..") {
 			return nil, fmt.Errorf("%s%s: family %s has no usable `file`", prefix, name, family)
+		}
+		if why := notRegular(fsys, entry.File); why != "" {
+			return nil, fmt.Errorf("%s%s: %s", prefix, entry.File, why)
 		}
 		data, err := fs.ReadFile(fsys, entry.File)
 		if err != nil {
@@ -185,6 +194,47 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 	return s, nil
 }
 
+// readIndex reads the folder's index: index.json (an exported copy), else manifest.json (a vector
+// folder). Whatever is there under an index's name is read as the index: a named pipe is refused
+// by name, not taken for "no index".
+func readIndex(fsys fs.FS, source, prefix string) (string, []byte, error) {
+	for _, name := range []string{"index.json", "manifest.json"} {
+		if _, err := fs.Stat(fsys, name); errors.Is(err, fs.ErrNotExist) {
+			continue
+		}
+		if why := notRegular(fsys, name); why != "" {
+			return "", nil, fmt.Errorf("%s%s: %s", prefix, name, why)
+		}
+		raw, err := fs.ReadFile(fsys, name)
+		if err != nil {
+			return "", nil, fmt.Errorf("%s%s: cannot read it (%v)", prefix, name, errors.Unwrap(err))
+		}
+		return name, raw, nil
+	}
+	return "", nil, fmt.Errorf("%s: no index.json (an exported copy) or manifest.json (a vector folder)", source)
+}
+
+// mergedIDs flattens an index's {family: {old id: the id it went to}} into {old id: the id it is
+// now}, each chain of merges followed to its end (a vector merged into one merged again later).
+func mergedIDs(merged map[string]map[string]string) map[string]string {
+	flat := map[string]string{}
+	for _, ids := range merged {
+		for old, id := range ids {
+			flat[old] = id
+		}
+	}
+	out := make(map[string]string, len(flat))
+	for old, id := range flat {
+		seen := map[string]bool{old: true}
+		for next, ok := flat[id]; ok && !seen[id]; next, ok = flat[id] {
+			seen[id] = true
+			id = next
+		}
+		out[old] = id
+	}
+	return out
+}
+
 func checkHeader(h *Header, where string) error {
 	if h.Family == "" {
 		return fmt.Errorf("%s: not a plcvec vector file (no `family`)", where)
@@ -216,6 +266,10 @@ func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
 	if err := decodeStrict(lines[0], header); err != nil {
 		return nil, nil, fmt.Errorf("%s:1: the header is not valid (%v)", where, err)
 	}
+	var keys keyScanner
+	if err := keys.repeatedKeyError(lines[0], where, 1, nil); err != nil {
+		return nil, nil, err
+	}
 	if err := checkHeader(header, where); err != nil {
 		return nil, nil, err
 	}
@@ -228,6 +282,9 @@ func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
 		v := &Vector{}
 		if err := decodeStrict(line, v); err != nil {
 			return nil, nil, fmt.Errorf("%s:%d: %s not a valid vector (%v)", where, lineNo, idOf(line), err)
+		}
+		if err := keys.repeatedKeyError(line, where, lineNo, func(int) string { return v.ID }); err != nil {
+			return nil, nil, err
 		}
 		if p := v.shapeProblem(header.Family); p != "" {
 			return nil, nil, fmt.Errorf("%s:%d: vector %s: %s (is the file a plcvec vector file, unedited?)", where, lineNo, nameOr(v.ID, lineNo), p)
@@ -252,6 +309,10 @@ func parseFamilyJSON(data []byte, where string) (*Header, []*Vector, error) {
 	if err := checkHeader(&file.Header, where); err != nil {
 		return nil, nil, err
 	}
+	var keys keyScanner
+	if err := keys.repeatedKeyError(data, where, 1, func(at int) string { return vectorAt(data, at) }); err != nil {
+		return nil, nil, err
+	}
 	if file.Vectors == nil {
 		return nil, nil, fmt.Errorf("%s: not a plcvec vector file (no `vectors`)", where)
 	}
@@ -268,6 +329,43 @@ func parseFamilyJSON(data []byte, where string) (*Header, []*Vector, error) {
 	}
 	h := file.Header
 	return &h, vectors, nil
+}
+
+// vectorAt is the id of the vector of a family file (one JSON object, its `vectors` a list) that
+// holds the byte at offset, or "". Only a refusal looks for it, so it decodes the file again.
+func vectorAt(data []byte, offset int) string {
+	dec := json.NewDecoder(bytes.NewReader(data))
+	if t, err := dec.Token(); err != nil || t != json.Delim('{') {
+		return ""
+	}
+	for dec.More() {
+		key, err := dec.Token()
+		if err != nil {
+			return ""
+		}
+		if key != "vectors" {
+			var skip json.RawMessage
+			if dec.Decode(&skip) != nil {
+				return ""
+			}
+			continue
+		}
+		if t, err := dec.Token(); err != nil || t != json.Delim('[') {
+			return ""
+		}
+		for dec.More() {
+			start := int(dec.InputOffset())
+			var raw json.RawMessage
+			if dec.Decode(&raw) != nil {
+				return ""
+			}
+			if start <= offset && offset < int(dec.InputOffset()) {
+				return idOfString(raw)
+			}
+		}
+		return ""
+	}
+	return ""
 }
 
 func idOf(line []byte) string {

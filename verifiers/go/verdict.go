@@ -19,6 +19,9 @@ const (
 	StatusNotRun Status = "not-run"
 )
 
+// statusOrder is the order the totals count the statuses in (TEXT.md, "The summary lines").
+var statusOrder = []Status{StatusPass, StatusFail, StatusError, StatusSkip, StatusXFail, StatusStale, StatusNotRun}
+
 // Failing reports whether the status fails a run.
 func (s Status) Failing() bool {
 	return s == StatusFail || s == StatusError || s == StatusStale || s == StatusNotRun

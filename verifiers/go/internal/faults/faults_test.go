@@ -11,7 +11,7 @@ import (
 // TestFaults is plcvec.Run as an implementer's test calls it, on the implementation
 // $PLCVEC_HOSTILE names (the reference by default); verifiers/go/faults-entry runs it.
 func TestFaults(t *testing.T) {
-	impl, err := faults.New(os.Getenv("PLCVEC_HOSTILE"), os.Getenv("PLCVEC_HOSTILE_ON"))
+	impl, err := faults.New(os.Getenv("PLCVEC_HOSTILE"), os.Getenv("PLCVEC_HOSTILE_ON"), os.Getenv("PLCVEC_HOSTILE_CHOICE"))
 	if err != nil {
 		t.Fatal(err)
 	}

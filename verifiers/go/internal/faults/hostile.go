@@ -8,6 +8,7 @@ package faults
 import (
 	"fmt"
 	"os"
+	"os/exec"
 	"sort"
 	"strings"
 
@@ -18,11 +19,25 @@ import (
 // Names lists the hostile implementations, as the table names them.
 var Names = []string{"reference", "wrong-result", "panic", "loop-forever", "empty-answer", "stray-write",
 	"duplicate-write", "wrong-type", "out-of-range", "exit-zero", "exit-nonzero", "crash", "mutates-request",
-	"supports-nothing", "skips-everything", "bad-choice", "cpu-writes"}
+	"supports-nothing", "skips-everything", "bad-choice", "cpu-writes", "word-65536", "closes-fds",
+	"child-holds-stdout", "follows-alternative"}
 
-// New is the hostile implementation name, misbehaving on the vector id on.
-func New(name, on string) (plcvec.Implementation, error) {
-	ref, err := reference.New(nil)
+// New is the hostile implementation name, misbehaving on the vector id on; choice is the
+// `ID=alternative` that follows-alternative follows without declaring it.
+func New(name, on, choice string) (plcvec.Implementation, error) {
+	if name == "not-a-number" {
+		// The row is exempt in the table (faults.toml, the README): there is nothing to build.
+		return nil, fmt.Errorf("PLCVEC_HOSTILE=not-a-number: a plcvec.Value is an integer, which cannot hold NaN")
+	}
+	followed := map[string]string(nil)
+	if name == "follows-alternative" {
+		id, alt, ok := strings.Cut(choice, "=")
+		if !ok {
+			return nil, fmt.Errorf("PLCVEC_HOSTILE_CHOICE=%q: follows-alternative takes ID=alternative", choice)
+		}
+		followed = map[string]string{id: alt}
+	}
+	ref, err := reference.New(followed)
 	if err != nil {
 		return nil, err
 	}
@@ -53,6 +68,8 @@ func (h *hostile) Hello() plcvec.Hello {
 		hello.Interpretations = map[string]string{"NO-SUCH-INTERPRETATION": "x"}
 	case "cpu-writes":
 		hello.CPUWrites = []string{"SM56", "SD1", "SD0"}
+	case "follows-alternative":
+		hello.Interpretations = nil // a reading followed but not declared
 	}
 	return hello
 }
@@ -67,6 +84,7 @@ func (h *hostile) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 		case "panic":
 			panic("hostile: a panic on " + req.ID)
 		case "loop-forever":
+			//lint:ignore SA5002 the misbehaviour itself: an implementation that never returns
 			for {
 			}
 		case "exit-zero":
@@ -83,6 +101,12 @@ func (h *hostile) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 			<-done
 		case "empty-answer":
 			return []plcvec.StepResult{}, nil
+		case "closes-fds":
+			closeInherited()
+		case "child-holds-stdout":
+			if err := holdStdout(); err != nil {
+				return nil, err
+			}
 		}
 	}
 	steps, err := h.ref.Run(req)
@@ -109,7 +133,7 @@ func (h *hostile) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 			req.Devices, req.Steps = nil, nil
 		}
 	case !target:
-	case h.name == "wrong-result":
+	case h.name == "wrong-result" || h.name == "closes-fds":
 		if r := steps[0].Result; r != plcvec.NoResult {
 			steps[0].Result = plcvec.Contact(r != plcvec.ResultOn)
 		} else {
@@ -133,8 +157,21 @@ func (h *hostile) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 		}
 	case h.name == "out-of-range":
 		changeWord(req, &steps[0], func(uint16) plcvec.Value { return plcvec.Value(70000) })
+	case h.name == "word-65536":
+		changeWord(req, &steps[0], func(uint16) plcvec.Value { return plcvec.Value(65536) })
 	}
 	return steps, nil
+}
+
+// holdStdout starts a process that inherits stdout and stderr and sleeps 300 s, left running:
+// a runner that waits for the end of its output would wait for it.
+func holdStdout() error {
+	cmd := exec.Command("sleep", "300")
+	cmd.Stdout, cmd.Stderr = os.Stdout, os.Stderr
+	if err := cmd.Start(); err != nil {
+		return err
+	}
+	return cmd.Process.Release()
 }
 
 // own copies the reference's answer into slices of its own.

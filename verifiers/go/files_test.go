@@ -1,0 +1,192 @@
+package plcvec_test
+
+import (
+	"encoding/json"
+	"os"
+	"path/filepath"
+	"regexp"
+	"strconv"
+	"strings"
+	"syscall"
+	"testing"
+	"time"
+
+	"github.com/plcvec/plcvec/verifiers/go"
+)
+
+// copyVectors copies the exported vectors into a new folder, each file through edit (name ->
+// bytes; nil keeps them).
+func copyVectors(t *testing.T, edit func(name string, data []byte) []byte) string {
+	t.Helper()
+	dir := t.TempDir()
+	entries, err := os.ReadDir("vectors")
+	if err != nil {
+		t.Fatal(err)
+	}
+	for _, e := range entries {
+		data, err := os.ReadFile(filepath.Join("vectors", e.Name()))
+		if err != nil {
+			t.Fatal(err)
+		}
+		if edit != nil {
+			data = edit(e.Name(), data)
+		}
+		if err := os.WriteFile(filepath.Join(dir, e.Name()), data, 0o644); err != nil {
+			t.Fatal(err)
+		}
+	}
+	return dir
+}
+
+// loadWithin loads dir, failing the test when the load takes more than a few seconds (a load
+// that opens a named pipe waits for ever).
+func loadWithin(t *testing.T, dir string) error {
+	t.Helper()
+	done := make(chan error, 1)
+	go func() {
+		_, err := plcvec.Load(dir)
+		done <- err
+	}()
+	select {
+	case err := <-done:
+		return err
+	case <-time.After(20 * time.Second):
+		t.Fatalf("loading %s did not end", dir)
+		return nil
+	}
+}
+
+// TestLoadRefusesWhatIsNotARegularFile: a named pipe, a device, a folder or a loop of symbolic
+// links where the index or a family file belongs is refused by its path, before it is opened.
+func TestLoadRefusesWhatIsNotARegularFile(t *testing.T) {
+	for _, c := range []struct {
+		name, file string
+		put        func(path string) error
+		want       string
+	}{
+		{"named pipe", "fx5-time-add.jsonl", func(p string) error { return syscall.Mkfifo(p, 0o644) }, "fx5-time-add.jsonl: not a regular file (a named pipe)"},
+		{"index a named pipe", "index.json", func(p string) error { return syscall.Mkfifo(p, 0o644) }, "index.json: not a regular file (a named pipe)"},
+		{"device", "fx5-time-add.jsonl", func(p string) error { return os.Symlink("/dev/zero", p) }, "fx5-time-add.jsonl: not a regular file (a character device)"},
+		{"folder", "fx5-time-add.jsonl", func(p string) error { return os.Mkdir(p, 0o755) }, "fx5-time-add.jsonl: not a regular file (a folder)"},
+		{"loop", "fx5-time-add.jsonl", func(p string) error { return os.Symlink(filepath.Base(p), p) }, "fx5-time-add.jsonl: a loop of symbolic links"},
+	} {
+		t.Run(c.name, func(t *testing.T) {
+			dir := copyVectors(t, nil)
+			path := filepath.Join(dir, c.file)
+			if err := os.Remove(path); err != nil {
+				t.Fatal(err)
+			}
+			if err := c.put(path); err != nil {
+				t.Skipf("cannot make one here: %v", err)
+			}
+			if err := loadWithin(t, dir); err == nil || err.Error() != path+strings.TrimPrefix(c.want, c.file) {
+				t.Errorf("got %v; want %s", err, path+strings.TrimPrefix(c.want, c.file))
+			}
+		})
+	}
+}
+
+// TestLoadRefusesRepeatedKeys: a JSON object holding one key twice, in a vector, a file's header
+// or the index, is refused by file, line (of the second occurrence) and vector id.
+func TestLoadRefusesRepeatedKeys(t *testing.T) {
+	const family = "fx5-time-add.jsonl"
+	sealed := func(edit func([]string) []string) func(string, []byte) []byte {
+		return func(name string, data []byte) []byte {
+			switch name {
+			case family:
+				return []byte(strings.Join(edit(strings.Split(string(data), "\n")), "\n"))
+			case "index.json": // the edited file's hash is not the damage under test
+				return regexp.MustCompile(`"sha256": "[0-9a-f]+"`).ReplaceAll(data, []byte(`"sha256": ""`))
+			}
+			return data
+		}
+	}
+	idOnLine3 := func(lines []string) string {
+		return regexp.MustCompile(`"id":"([^"]+)"`).FindStringSubmatch(lines[2])[1]
+	}
+	var id string
+	for _, c := range []struct {
+		name string
+		edit func(string, []byte) []byte
+		want func(dir string) string
+	}{
+		{"in a vector", sealed(func(ls []string) []string {
+			id = idOnLine3(ls)
+			ls[2] = strings.Replace(ls[2], `"description":"`, `"description":"twice","description":"`, 1)
+			return ls
+		}), func(dir string) string {
+			return filepath.Join(dir, family) + ":3: vector " + id + `: repeated key "description"`
+		}},
+		{"deep in a vector, written with an escape", sealed(func(ls []string) []string {
+			id = idOnLine3(ls)
+			ls[2] = strings.Replace(ls[2], `"devices":{`, `"devices":{"D\u0031":1,"D1":1,`, 1)
+			return ls
+		}), func(dir string) string {
+			return filepath.Join(dir, family) + ":3: vector " + id + `: repeated key "D1"`
+		}},
+		{"in the header", sealed(func(ls []string) []string {
+			ls[0] = strings.Replace(ls[0], `{`, `{"family":"fx5-time-add",`, 1)
+			return ls
+		}), func(dir string) string { return filepath.Join(dir, family) + `:1: repeated key "family"` }},
+		{"in the index (the line of the second occurrence)", func(name string, data []byte) []byte {
+			if name == "index.json" {
+				return []byte(strings.Replace(string(data), "{", `{"families": {}, `, 1))
+			}
+			return data
+		}, func(dir string) string { return filepath.Join(dir, "index.json") + `:2: repeated key "families"` }},
+	} {
+		t.Run(c.name, func(t *testing.T) {
+			dir := copyVectors(t, c.edit)
+			if err := loadWithin(t, dir); err == nil || err.Error() != c.want(dir) {
+				t.Errorf("got %v; want %s", err, c.want(dir))
+			}
+		})
+	}
+}
+
+// TestLoadRefusesRepeatedKeysInAFamilyJSON: in a repository folder (manifest.json and
+// <family>.json), the repeat is named by its line and the vector that holds it.
+func TestLoadRefusesRepeatedKeysInAFamilyJSON(t *testing.T) {
+	src := filepath.Join("..", "..", "vectors")
+	if _, err := os.Stat(filepath.Join(src, "manifest.json")); err != nil {
+		t.Skip("no repository vectors/ beside this module")
+	}
+	dir := t.TempDir()
+	for _, name := range []string{"manifest.json", "fx5-time-add.json"} {
+		data, err := os.ReadFile(filepath.Join(src, name))
+		if err != nil {
+			t.Fatal(err)
+		}
+		os.WriteFile(filepath.Join(dir, name), data, 0o644)
+	}
+	// The manifest of that one family, its hash left out: the edit is the damage under test.
+	var manifest map[string]any
+	raw, _ := os.ReadFile(filepath.Join(dir, "manifest.json"))
+	if err := json.Unmarshal(raw, &manifest); err != nil {
+		t.Fatal(err)
+	}
+	entry := manifest["families"].(map[string]any)["fx5-time-add"].(map[string]any)
+	entry["sha256"] = ""
+	manifest["families"] = map[string]any{"fx5-time-add": entry}
+	delete(manifest, "total")
+	raw, _ = json.Marshal(manifest)
+	os.WriteFile(filepath.Join(dir, "manifest.json"), raw, 0o644)
+	data, _ := os.ReadFile(filepath.Join(dir, "fx5-time-add.json"))
+	lines := strings.Split(string(data), "\n")
+	at, id := -1, ""
+	for i, l := range lines {
+		if m := regexp.MustCompile(`"id": "(fx5-time-add/TADD/manual-example/program)"`).FindStringSubmatch(l); m != nil {
+			id = m[1]
+		}
+		if id != "" && strings.Contains(l, `"tags": [`) {
+			lines[i] = strings.Replace(l, `"tags": [`, `"tags": [], "tags": [`, 1)
+			at = i + 1
+			break
+		}
+	}
+	os.WriteFile(filepath.Join(dir, "fx5-time-add.json"), []byte(strings.Join(lines, "\n")), 0o644)
+	want := filepath.Join(dir, "fx5-time-add.json") + ":" + strconv.Itoa(at) + ": vector " + id + `: repeated key "tags"`
+	if err := loadWithin(t, dir); at < 0 || err == nil || err.Error() != want {
+		t.Errorf("got %v; want %s", err, want)
+	}
+}
