@@ -1,9 +1,5 @@
 package plcvec
 
-import (
-	"math"
-)
-
 // Memory is a vector's device image for the Emulator helper: the devices the vector lists,
 // each by name and address, and the writes to any device it does not list (which the runner
 // reports: an instruction must not write outside the vector).
@@ -40,95 +36,6 @@ func (m *Memory) reset(req *Request) {
 	copy(m.vals, req.initial)
 }
 
-// prepareAddrs works out once, for the whole run, what every memory of the request starts
-// from: each device's address, its lookup key, and the initial image as a flat list of values.
-func (r *Request) prepareAddrs(a *arena) {
-	n := len(r.Devices)
-	if cap(a.parsed) < n {
-		a.parsed = make([]Addr, n)
-	}
-	addrs := a.parsed[:n]
-	r.keys = a.keys.take(n, a.chunk)
-	r.initial = a.values.take(n, a.chunk)
-	r.addrs = nil
-	for i, d := range r.Devices {
-		addrs[i] = ParseAddr(d.Name)
-		var exact bool
-		r.keys[i], exact = addrKey(addrs[i])
-		r.initial[i] = d.Value
-		if !exact && r.addrs == nil {
-			r.addrs = a.addrs.take(n, a.chunk)
-		}
-	}
-	// The addresses are kept only for a request with a name whose key is not exact: an exact
-	// key never equals an inexact one, so a look-up compares addresses only in such a request.
-	if r.addrs != nil {
-		copy(r.addrs, addrs)
-		for i := range r.addrs {
-			r.addrs[i].Kind = a.intern(r.addrs[i].Kind)
-		}
-	}
-	r.prepareTable(a)
-	r.prepareRuns(a)
-}
-
-// prepareRuns counts, for each device, the devices after it that continue it word by word
-// (D100, D101, D102 sort together): a multi-word operand is read or written in one go. Only
-// exact keys with a number (not P_EQ) continue: the next word's key is the key plus 1 << 32.
-func (r *Request) prepareRuns(a *arena) {
-	r.runs = a.runs.take(len(r.keys), a.chunk)
-	for i := len(r.keys) - 1; i >= 0; i-- {
-		r.runs[i] = 1
-		key := r.keys[i]
-		numbered := key&(1<<31) == 0 && key>>32 < math.MaxInt32
-		if numbered && i+1 < len(r.keys) && r.keys[i+1] == key+1<<32 && r.runs[i+1] < math.MaxUint16 {
-			r.runs[i] = r.runs[i+1] + 1
-		}
-	}
-}
-
-// addrKey folds an address into one integer, its number above its kind, so that a lookup
-// compares integers, not strings. For the device names of PLCs (a kind of 1 to 4 ASCII
-// characters, D, SM, P_EQ, and a number that fits 31 bits, or none) the kind's bytes are the
-// key's low half and the key is exact: equal keys are equal addresses. Any other address gets a
-// hash of its kind with the top bit of the low half set, which no exact key has, and a lookup
-// compares the addresses themselves on a match.
-func addrKey(a Addr) (key uint64, exact bool) {
-	k := a.Kind
-	if uint(a.N+1) > math.MaxInt32+1 {
-		return inexactKey(a), false
-	}
-	var packed, pad uint64 // pad: 0x01 in each byte past the kind, so that none reads as NUL
-	switch len(k) {
-	case 1:
-		packed, pad = uint64(k[0]), 0x01010100
-	case 2:
-		packed, pad = uint64(k[0])|uint64(k[1])<<8, 0x01010000
-	case 3:
-		packed, pad = uint64(k[0])|uint64(k[1])<<8|uint64(k[2])<<16, 0x01000000
-	case 4:
-		packed = uint64(k[0]) | uint64(k[1])<<8 | uint64(k[2])<<16 | uint64(k[3])<<24
-	default:
-		return inexactKey(a), false
-	}
-	// Every byte of the kind ASCII and none NUL (the zero-byte test of "Bit Twiddling Hacks").
-	if v := packed | pad; packed&0x80808080 != 0 || (v-0x01010101)&^v&0x80808080 != 0 {
-		return inexactKey(a), false
-	}
-	return uint64(uint32(a.N))<<32 | packed, true
-}
-
-func inexactKey(a Addr) uint64 { return uint64(uint32(a.N))<<32 | kindHash(a.Kind) }
-
-// kindHash is an FNV-1a hash of a device kind, with bit 31 set: never an exact key's low half.
-func kindHash(kind string) uint64 {
-	h := uint32(2166136261)
-	for i := 0; i < len(kind); i++ {
-		h = (h ^ uint32(kind[i])) * 16777619
-	}
-	return uint64(h | 1<<31)
-}
-
 // slot is a's index in the vector's devices, or -1: its key looked up in the request's table,
 // or a scan for a request too large for one.
 func (m *Memory) slot(a Addr) int {
@@ -151,32 +58,6 @@ func (m *Memory) slot(a Addr) int {
 		if r.keys[i] == key && (exact || r.addrs[i] == a) {
 			return i
 		}
-	}
-}
-
-// fibonacci is 2^64 divided by the golden ratio: multiplying a key by it and keeping the top
-// bits spreads keys that differ only in their number (D100, D101) over the table.
-const fibonacci = 0x9E3779B97F4A7C15
-
-// prepareTable makes the request's lookup table: open addressing, at most half full, each
-// entry a device's index + 1 (0 is empty).
-func (r *Request) prepareTable(a *arena) {
-	r.table = nil
-	if len(r.keys) >= math.MaxUint16 {
-		return
-	}
-	bits := uint(3)
-	for 1<<bits < 2*len(r.keys) {
-		bits++
-	}
-	r.table, r.shift = a.slots.take(1<<bits, a.chunk), 64-bits
-	mask := uint64(len(r.table) - 1)
-	for i, key := range r.keys {
-		h := key * fibonacci >> r.shift
-		for r.table[h] != 0 {
-			h = (h + 1) & mask
-		}
-		r.table[h] = uint16(i + 1)
 	}
 }
 

@@ -73,3 +73,71 @@ func (p *Plan) Header() string {
 	}
 	return text
 }
+
+// Skips is the skips by reason (TEXT.md), empty when nothing was skipped.
+func (r *Report) Skips() string {
+	groups := map[string]*group{}
+	n, s := 0, 0
+	for i := range r.Verdicts {
+		v := &r.Verdicts[i]
+		if v.Vector != nil {
+			n++
+		}
+		if v.Status != StatusSkip {
+			continue
+		}
+		s++
+		reason := v.Message
+		if reason == "" {
+			reason = "(no reason given)"
+		}
+		if groups[reason] == nil {
+			groups[reason] = &group{text: reason}
+		}
+		groups[reason].n++
+	}
+	if s == 0 {
+		return ""
+	}
+	t := (2000*s + n) / (2 * n)
+	var b strings.Builder
+	fmt.Fprintf(&b, "SKIPPED %d of %d vectors (%d.%d%%):\n", s, n, t/10, t%10)
+	sorted := sortGroups(groups)
+	for k, g := range sorted {
+		if k == maxProblems {
+			fmt.Fprintf(&b, "%s... and %d more reasons (--jsonl lists each vector)\n", indent, len(sorted)-maxProblems)
+			break
+		}
+		fmt.Fprintf(&b, "%s%6d  %s\n", indent, g.n, g.text)
+	}
+	return b.String()
+}
+
+// Interpretations is a line naming the alternative followed for every interpretation of the
+// families run, declared or default: a result means nothing without it.
+func (p *Plan) Interpretations() string {
+	families := map[string]bool{}
+	for _, c := range p.Cases {
+		families[c.family] = true
+	}
+	var parts []string
+	for _, i := range p.Suite.Interpretations() {
+		run := false
+		for _, f := range i.Families {
+			run = run || families[f]
+		}
+		if !run {
+			continue
+		}
+		c := p.Choices[i.ID]
+		how := " (default)"
+		if c.Declared {
+			how = " (declared)"
+		}
+		parts = append(parts, i.ID+"="+c.Alternative+how)
+	}
+	if len(parts) == 0 {
+		return "(none)"
+	}
+	return strings.Join(parts, ", ")
+}

@@ -262,32 +262,3 @@ func (r *Report) shortfall() string {
 	}
 	return "nothing passed (" + strings.Join(parts, ", ") + "): the run proves nothing"
 }
-
-// Interpretations is a line naming the alternative followed for every interpretation of the
-// families run, declared or default: a result means nothing without it.
-func (p *Plan) Interpretations() string {
-	families := map[string]bool{}
-	for _, c := range p.Cases {
-		families[c.family] = true
-	}
-	var parts []string
-	for _, i := range p.Suite.Interpretations() {
-		run := false
-		for _, f := range i.Families {
-			run = run || families[f]
-		}
-		if !run {
-			continue
-		}
-		c := p.Choices[i.ID]
-		how := " (default)"
-		if c.Declared {
-			how = " (declared)"
-		}
-		parts = append(parts, i.ID+"="+c.Alternative+how)
-	}
-	if len(parts) == 0 {
-		return "(none)"
-	}
-	return strings.Join(parts, ", ")
-}

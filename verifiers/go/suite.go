@@ -418,3 +418,48 @@ func jsonErrorLine(data []byte, err error) int {
 }
 
 func itoa(n int) string { return strconv.Itoa(n) }
+
+// Interpretation is an open question of the manual as the loaded suite declares it: its
+// alternatives, its default, and the families whose vectors it decides. One interpretation may
+// belong to several families (the FX5 time and date comparisons share theirs): an
+// implementation declares it once, and it holds for all of them.
+type Interpretation struct {
+	ID           string
+	Default      string
+	Alternatives []string
+	Families     []string
+}
+
+// Interpretations lists the suite's interpretations, sorted by id.
+func (s *Suite) Interpretations() []Interpretation {
+	out, _ := s.interpretations()
+	return out
+}
+
+func (s *Suite) interpretations() ([]Interpretation, error) {
+	byID := map[string]*Interpretation{}
+	for _, family := range s.Families {
+		for _, hi := range s.Headers[family].Interpretations {
+			alts := make([]string, len(hi.Alternatives))
+			for i, a := range hi.Alternatives {
+				alts[i] = a.ID
+			}
+			seen := byID[hi.ID]
+			if seen == nil {
+				byID[hi.ID] = &Interpretation{ID: hi.ID, Default: hi.Default, Alternatives: alts, Families: []string{family}}
+				continue
+			}
+			if seen.Default != hi.Default || strings.Join(seen.Alternatives, "\x00") != strings.Join(alts, "\x00") {
+				return nil, fmt.Errorf("%s: interpretation %s has other alternatives or another default in %s than in %s",
+					s.Source, hi.ID, family, seen.Families[0])
+			}
+			seen.Families = append(seen.Families, family)
+		}
+	}
+	out := make([]Interpretation, 0, len(byID))
+	for _, i := range byID {
+		out = append(out, *i)
+	}
+	sort.Slice(out, func(a, b int) bool { return out[a].ID < out[b].ID })
+	return out, nil
+}
