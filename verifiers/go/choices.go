@@ -16,7 +16,7 @@ type Choice struct {
 
 // resolveChoices checks the declared alternatives against the suite and fills in the defaults.
 func (s *Suite) resolveChoices(declared map[string]string) (map[string]Choice, error) {
-	known := map[string]Interpretation{}
+	known := map[string]InterpretationInfo{}
 	for _, i := range s.Interpretations() {
 		known[i.ID] = i
 	}

@@ -113,8 +113,11 @@ func (e *expected) deviceProblems(step int, got []Device, steps []StepResult) []
 				prev[d.Name] = d.Value
 			}
 		}
-		w := show(want[j])
-		return Problem{Step: step, Field: e.names[j], Expected: w, Actual: actual,
+		w, b := show(want[j]), ""
+		if before[j] != absent {
+			b = before[j].String()
+		}
+		return Problem{Step: step, Field: e.names[j], Expected: w, Actual: actual, Before: b,
 			Suffix: suffix(e.held(step, j, steps, prev), w, actual, want[j] == before[j])}
 	}
 	reported := make(map[string]Value, len(got))

@@ -28,9 +28,9 @@ type Suite struct {
 	SuiteVersion  string
 	SchemaVersion string
 	SpecSHA256    string
-	Families      []string           // in file order
-	Headers       map[string]*Header // family -> header
-	Vectors       []*Vector          // family by family, each family sorted by id
+	Families      []string                 // in file order
+	Headers       map[string]*FamilyHeader // family -> header
+	Vectors       []*Vector                // family by family, each family sorted by id
 	byID          map[string]*Vector
 	merged        map[string]string // an id merged into another vector -> the id it is now
 }
@@ -119,7 +119,7 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 		return nil, fmt.Errorf("%s%s: no `families`; is this a plcvec vector folder?", prefix, name)
 	}
 	s := &Suite{Source: source, SuiteVersion: list.SuiteVersion, SpecSHA256: list.SpecSHA256,
-		Headers: map[string]*Header{}, byID: map[string]*Vector{}, merged: mergedIDs(list.Merged)}
+		Headers: map[string]*FamilyHeader{}, byID: map[string]*Vector{}, merged: mergedIDs(list.Merged)}
 	if s.SuiteVersion == "" {
 		s.SuiteVersion = list.GeneratorVersion
 	}
@@ -142,7 +142,7 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 			return nil, fmt.Errorf("%s%s: cannot read it (listed in %s)", prefix, entry.File, name)
 		}
 		where := prefix + entry.File
-		var header *Header
+		var header *FamilyHeader
 		var vectors []*Vector
 		if path.Ext(entry.File) == ".jsonl" {
 			header, vectors, err = parseJSONL(data, where)
@@ -235,7 +235,7 @@ func mergedIDs(merged map[string]map[string]string) map[string]string {
 	return out
 }
 
-func checkHeader(h *Header, where string) error {
+func checkHeader(h *FamilyHeader, where string) error {
 	if h.Family == "" {
 		return fmt.Errorf("%s: not a plcvec vector file (no `family`)", where)
 	}
@@ -251,7 +251,7 @@ func checkHeader(h *Header, where string) error {
 }
 
 // parseJSONL reads an exported family file: line 1 the header, then one vector per line.
-func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
+func parseJSONL(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 	lines := bytes.Split(data, []byte("\n"))
 	if len(lines) > 0 && len(lines[len(lines)-1]) == 0 {
 		lines = lines[:len(lines)-1]
@@ -262,7 +262,7 @@ func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
 	if err := checkUTF8(lines[0], where, 1); err != nil {
 		return nil, nil, err
 	}
-	header := &Header{}
+	header := &FamilyHeader{}
 	if err := decodeStrict(lines[0], header); err != nil {
 		return nil, nil, fmt.Errorf("%s:1: the header is not valid (%v)", where, err)
 	}
@@ -295,18 +295,18 @@ func parseJSONL(data []byte, where string) (*Header, []*Vector, error) {
 }
 
 // parseFamilyJSON reads a repository family file: one JSON object, the header and `vectors`.
-func parseFamilyJSON(data []byte, where string) (*Header, []*Vector, error) {
+func parseFamilyJSON(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 	if err := checkUTF8(data, where, 1); err != nil {
 		return nil, nil, err
 	}
 	var file struct {
-		Header
+		FamilyHeader
 		Vectors []json.RawMessage `json:"vectors"`
 	}
 	if err := decodeStrict(data, &file); err != nil {
 		return nil, nil, fmt.Errorf("%s:%d: not valid JSON (%v)", where, jsonErrorLine(data, err), err)
 	}
-	if err := checkHeader(&file.Header, where); err != nil {
+	if err := checkHeader(&file.FamilyHeader, where); err != nil {
 		return nil, nil, err
 	}
 	var keys keyScanner
@@ -327,7 +327,7 @@ func parseFamilyJSON(data []byte, where string) (*Header, []*Vector, error) {
 		}
 		vectors = append(vectors, v)
 	}
-	h := file.Header
+	h := file.FamilyHeader
 	return &h, vectors, nil
 }
 
@@ -419,11 +419,11 @@ func jsonErrorLine(data []byte, err error) int {
 
 func itoa(n int) string { return strconv.Itoa(n) }
 
-// Interpretation is an open question of the manual as the loaded suite declares it: its
+// InterpretationInfo is an open question of the manual as the loaded suite declares it: its
 // alternatives, its default, and the families whose vectors it decides. One interpretation may
 // belong to several families (the FX5 time and date comparisons share theirs): an
 // implementation declares it once, and it holds for all of them.
-type Interpretation struct {
+type InterpretationInfo struct {
 	ID           string
 	Default      string
 	Alternatives []string
@@ -431,13 +431,13 @@ type Interpretation struct {
 }
 
 // Interpretations lists the suite's interpretations, sorted by id.
-func (s *Suite) Interpretations() []Interpretation {
+func (s *Suite) Interpretations() []InterpretationInfo {
 	out, _ := s.interpretations()
 	return out
 }
 
-func (s *Suite) interpretations() ([]Interpretation, error) {
-	byID := map[string]*Interpretation{}
+func (s *Suite) interpretations() ([]InterpretationInfo, error) {
+	byID := map[string]*InterpretationInfo{}
 	for _, family := range s.Families {
 		for _, hi := range s.Headers[family].Interpretations {
 			alts := make([]string, len(hi.Alternatives))
@@ -446,7 +446,7 @@ func (s *Suite) interpretations() ([]Interpretation, error) {
 			}
 			seen := byID[hi.ID]
 			if seen == nil {
-				byID[hi.ID] = &Interpretation{ID: hi.ID, Default: hi.Default, Alternatives: alts, Families: []string{family}}
+				byID[hi.ID] = &InterpretationInfo{ID: hi.ID, Default: hi.Default, Alternatives: alts, Families: []string{family}}
 				continue
 			}
 			if seen.Default != hi.Default || strings.Join(seen.Alternatives, "\x00") != strings.Join(alts, "\x00") {
@@ -456,7 +456,7 @@ func (s *Suite) interpretations() ([]Interpretation, error) {
 			seen.Families = append(seen.Families, family)
 		}
 	}
-	out := make([]Interpretation, 0, len(byID))
+	out := make([]InterpretationInfo, 0, len(byID))
 	for _, i := range byID {
 		out = append(out, *i)
 	}

@@ -17,7 +17,7 @@ type Vector struct {
 	Clauses      []string        `json:"clauses"`
 	Assumes      Assumes         `json:"assumes"`
 	Initial      *Initial        `json:"initial"`
-	Steps        []VectorStep    `json:"steps"`
+	Steps        []Step          `json:"steps"`
 	Final        *State          `json:"final"`
 	Outcome      *Outcome        `json:"outcome"`
 	Alternatives []Alternative   `json:"alternatives"`
@@ -116,8 +116,8 @@ func (in *Inputs) prepare(a *arena) {
 	}
 }
 
-// VectorStep is one step of a vector: its inputs and what it expects.
-type VectorStep struct {
+// Step is one step of a vector: its inputs and what it expects.
+type Step struct {
 	Inputs
 	Expect *Expect `json:"expect"`
 	given  uint8   // which of the inputs the step gives (a failure shows those)
@@ -133,7 +133,7 @@ const (
 
 // UnmarshalJSON reads a step, refusing keys the schema does not have, and notes which inputs
 // it gives.
-func (s *VectorStep) UnmarshalJSON(b []byte) error {
+func (s *Step) UnmarshalJSON(b []byte) error {
 	var raw struct {
 		Set       map[string]Value `json:"set"`
 		RLOIn     *bool            `json:"rlo_in"`
@@ -146,7 +146,7 @@ func (s *VectorStep) UnmarshalJSON(b []byte) error {
 	if err := decodeStrict(b, &raw); err != nil {
 		return err
 	}
-	*s = VectorStep{Inputs: Inputs{Set: raw.Set, Clock: raw.Clock}, Expect: raw.Expect}
+	*s = Step{Inputs: Inputs{Set: raw.Set, Clock: raw.Clock}, Expect: raw.Expect}
 	if raw.RLOIn != nil {
 		s.RLOIn, s.given = *raw.RLOIn, s.given|givesRLOIn
 	}
@@ -200,8 +200,8 @@ type Alternative struct {
 	Outcome Outcome           `json:"outcome"`
 }
 
-// Header is a family file's header: everything but the vectors.
-type Header struct {
+// FamilyHeader is a family file's header: everything but the vectors.
+type FamilyHeader struct {
 	Family          string                 `json:"family"`
 	Kind            string                 `json:"kind"`
 	Title           string                 `json:"title"`

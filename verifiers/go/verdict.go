@@ -63,6 +63,12 @@ type Problem struct {
 	// Suffix: for a device the vector lists, the value the implementation held before the step
 	// and whether the step had to leave it unchanged (verifiers/parity/TEXT.md, "A field line").
 	Suffix string
+	// Before is the vector's value of the device before the step ("" when the state before the
+	// step has no such device, or the problem is not about a device).
+	//
+	// Deprecated: the line (String) shows the value the implementation held before the step, in
+	// Suffix; Before stays filled until plcvec 0.3.0.
+	Before string
 }
 
 const (

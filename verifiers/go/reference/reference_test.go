@@ -34,7 +34,7 @@ func TestReference(t *testing.T) {
 
 // combinations is every combination of the alternatives of the given interpretations, taken
 // from the loaded suite (never a list typed here: an alternative the spec gains is run too).
-func combinations(interps []plcvec.Interpretation) []map[string]string {
+func combinations(interps []plcvec.InterpretationInfo) []map[string]string {
 	out := []map[string]string{{}}
 	for _, i := range interps {
 		var next []map[string]string
@@ -60,7 +60,7 @@ func TestEveryCombination(t *testing.T) {
 		t.Fatal(err)
 	}
 	for _, family := range suite.Families {
-		var interps []plcvec.Interpretation
+		var interps []plcvec.InterpretationInfo
 		for _, i := range suite.Interpretations() {
 			for _, f := range i.Families {
 				if f == family {
