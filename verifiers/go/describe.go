@@ -55,8 +55,9 @@ func (v *Verdict) judgedBy() []string {
 }
 
 // Text is the verdict's failure block (TEXT.md, "The failure block"): the id, what the vector
-// is about, the interpretations that decide a differing field, each step's inputs and operand
-// words before its differences, the differences, the message and the spec clauses.
+// is about, the interpretations that decide a differing field, the devices the followed
+// alternatives leave unjudged, each step's inputs and operand words before its differences, the
+// differences, the message and the spec clauses.
 func (v *Verdict) Text() string {
 	var b strings.Builder
 	fmt.Fprintf(&b, "%s %s\n", strings.ToUpper(string(v.Status)), v.ID)
@@ -65,6 +66,11 @@ func (v *Verdict) Text() string {
 	}
 	if judged := v.judgedBy(); len(judged) > 0 {
 		fmt.Fprintf(&b, "%sjudged by: %s\n", indent, strings.Join(judged, ", "))
+	}
+	if v.c != nil {
+		for _, line := range v.c.notJudgedLines() {
+			fmt.Fprintf(&b, "%s%s\n", indent, line)
+		}
 	}
 	shown := -1
 	for i, p := range v.Problems {
@@ -75,7 +81,7 @@ func (v *Verdict) Text() string {
 		if p.Step >= 0 && p.Step != shown && v.c != nil && v.c.expect != nil && p.Step < len(v.Vector.Steps) {
 			shown = p.Step
 			fmt.Fprintf(&b, "%sstep %d inputs: %s\n", indent, p.Step, v.Vector.inputsText(p.Step))
-			fmt.Fprintf(&b, "%sstep %d operands: %s\n", indent, p.Step, v.c.expect.operandsText(p.Step))
+			fmt.Fprintf(&b, "%sstep %d operands: %s\n", indent, p.Step, operandsText(v.Vector, v.c.expect, p.Step))
 		}
 		fmt.Fprintf(&b, "%s%s\n", indent, p)
 	}
@@ -166,9 +172,39 @@ func clockText(clock map[string]int) string {
 	return text + strings.Join(rest, "")
 }
 
-// operandsText is every operand with its words in the vector's state before step k.
-func (e *expected) operandsText(k int) string {
-	v := e.vector
+// notJudgedLines are the block's `not judged under` lines (verifiers/parity/unjudged rule, TEXT.md):
+// one per interpretation whose followed alternative leaves devices of the vector unjudged, sorted
+// by id, each with its devices sorted. A vector whose instruction the implementation does not run
+// has no expectation built, so its entry is looked up here.
+func (c *Case) notJudgedLines() []string {
+	var unjudged map[string][]string
+	var choices map[string]string
+	switch {
+	case c.expect != nil:
+		unjudged, choices = c.expect.unjudged, c.expect.choices
+	case c.plan != nil && len(c.Vector.Alternatives) > 0:
+		en, err := entryOf(c.Vector, c.plan.Choices)
+		if err != nil {
+			return nil
+		}
+		unjudged, choices = en.unjudged, en.choices
+	}
+	ids := make([]string, 0, len(unjudged))
+	for id := range unjudged {
+		ids = append(ids, id)
+	}
+	sort.Strings(ids)
+	lines := make([]string, len(ids))
+	for i, id := range ids {
+		devices := append([]string(nil), unjudged[id]...)
+		sort.Strings(devices)
+		lines[i] = "not judged under " + id + "=" + choices[id] + ": " + strings.Join(devices, ", ")
+	}
+	return lines
+}
+
+// operandsText is every operand of v with its words in the state before step k under e.
+func operandsText(v *Vector, e *expected, k int) string {
 	names := make([]string, 0, len(v.Initial.Operands))
 	devices := map[string]bool{}
 	for n, op := range v.Initial.Operands {

@@ -6,18 +6,96 @@ import (
 	"strings"
 )
 
+// What a vector expects of an implementation that follows given alternatives, in two concerns:
+// which of the vector's expectations applies (its own steps and final, or the entry of its
+// alternatives that matches: entryOf, the vector model), and that expectation laid out flat for
+// judging (expectedOf: the full state after every step, one list of values per step, parallel to
+// the names of the vector's devices), which is what a run reads for every vector.
+
 // absent marks a device that is not (yet) in the expected state.
 const absent Value = 1 << 31
 
-// expected is what one vector expects of an implementation that follows given alternatives.
-// A vector stores per step only the devices that changed, and the full state at the end;
-// implementations report the full image after every step, which is simpler for any emulator.
-// So the full expected state after each step is worked out here once, and checked against the
-// vector's own `final`, so that an inconsistent vector file is caught, not trusted.
+// entry is the vector's expectation under one combination of alternatives.
+type entry struct {
+	choices  map[string]string // the interpretations the vector touches -> the alternative
+	steps    []*Expect
+	final    map[string]Value
+	category string
+	// unjudged: the devices the entry leaves unjudged, by the interpretation whose alternative
+	// leaves them (an entry of `alternatives` only; the vector's defaults judge every device).
+	unjudged map[string][]string
+}
+
+// entryOf is the entry of v under the alternatives of choices: v's own steps and final when
+// every interpretation v touches is at its default, else the entry of v's alternatives whose
+// choices match.
+func entryOf(v *Vector, choices map[string]Choice) (entry, error) {
+	touched := v.Outcome.Interpretations
+	en := entry{choices: make(map[string]string, len(touched)), steps: make([]*Expect, len(v.Steps)),
+		final: v.Final.Devices, category: v.Outcome.Category}
+	isDefault := true
+	for _, id := range touched {
+		c, ok := choices[id]
+		if !ok {
+			return en, fmt.Errorf("vector %s: depends on interpretation %s, which its file does not declare", v.ID, id)
+		}
+		en.choices[id] = c.Alternative
+		isDefault = isDefault && c.Alternative == c.Default
+	}
+	for i := range v.Steps {
+		en.steps[i] = v.Steps[i].Expect
+	}
+	if len(touched) > 0 && v.Outcome.Default != nil {
+		en.category = v.Outcome.Default.Category
+	}
+	if isDefault {
+		return en, nil
+	}
+	alt := v.alternative(en.choices)
+	if alt == nil {
+		keys := make([]string, 0, len(en.choices))
+		for id, a := range en.choices {
+			keys = append(keys, id+"="+a)
+		}
+		sort.Strings(keys)
+		return en, fmt.Errorf("vector %s: no expectation for %s (the vector file lists no such alternative)",
+			v.ID, strings.Join(keys, ", "))
+	}
+	for i := range alt.Expect {
+		en.steps[i] = &alt.Expect[i]
+	}
+	en.final, en.category, en.unjudged = alt.Final.Devices, alt.Outcome.Category, alt.Unjudged
+	return en, nil
+}
+
+// alternative is the entry of v's alternatives whose choices name each of these alternatives,
+// or nil.
+func (v *Vector) alternative(choices map[string]string) *Alternative {
+	for i := range v.Alternatives {
+		alt := &v.Alternatives[i]
+		match := true
+		for id, a := range choices {
+			if alt.Choices[id] != a {
+				match = false
+				break
+			}
+		}
+		if match {
+			return alt
+		}
+	}
+	return nil
+}
+
+// expected is one vector's entry laid out for judging. A vector stores per step only the
+// devices that changed, and the full state at the end; implementations report the full image
+// after every step, which is simpler for any emulator. So the full expected state after each
+// step is worked out here once, and checked against the entry's own `final`, so that an
+// inconsistent vector file is caught, not trusted.
 type expected struct {
 	names    []string // every device of the vector, sorted (usually just the initial ones)
-	compared []bool   // parallel to names: false for scratch words
-	scratch  bool     // whether any device is a scratch word (not compared)
+	compared []bool   // parallel to names: false for scratch words and devices left unjudged
+	skips    bool     // whether some device is not compared
 	states   []Value  // step after step, each parallel to names; absent where the state has no such device
 	befores  []Value  // likewise: the state each step started from (after `set`), for messages
 	results  []Result // per step: the contact result expected, NoResult when none
@@ -28,8 +106,11 @@ type expected struct {
 	// cpuWrites are the devices the implementation declares its CPU writes on its own account:
 	// written outside the vector, they are not stray writes.
 	cpuWrites map[string]bool
-	sets      []map[string]Value // each step's `set` (the vector's own maps)
-	vector    *Vector
+	sets      []map[string]Value // each step's `set` (the vector's own maps), for what was held before it
+	// unjudged is the entry's: the devices left unjudged, by interpretation; notJudged the same
+	// devices as a set (nil when the entry judges every device).
+	unjudged  map[string][]string
+	notJudged map[string]bool
 }
 
 // state is the full state expected after step i; before, the state the step started from.
@@ -43,113 +124,98 @@ func (e *expected) before(i int) []Value {
 	return e.befores[i*n : (i+1)*n : (i+1)*n]
 }
 
-func expectationOf(a *arena, v *Vector, choices map[string]Choice, devices []string, cpuWrites map[string]bool) (*expected, error) {
-	touched := v.Outcome.Interpretations
-	applied := make(map[string]string, len(touched))
-	isDefault := true
-	for _, id := range touched {
-		c, ok := choices[id]
-		if !ok {
-			return nil, fmt.Errorf("vector %s: depends on interpretation %s, which its file does not declare", v.ID, id)
-		}
-		applied[id] = c.Alternative
-		if c.Alternative != c.Default {
-			isDefault = false
-		}
-	}
-	stepExpects := make([]*Expect, len(v.Steps))
-	for i := range v.Steps {
-		stepExpects[i] = v.Steps[i].Expect
-	}
-	final := v.Final.Devices
-	category := v.Outcome.Category
-	if len(touched) > 0 && v.Outcome.Default != nil {
-		category = v.Outcome.Default.Category
-	}
-	if !isDefault {
-		found := false
-		for ai := range v.Alternatives {
-			alt := &v.Alternatives[ai]
-			match := true
-			for id, a := range applied {
-				if alt.Choices[id] != a {
-					match = false
-					break
-				}
-			}
-			if match {
-				for i := range alt.Expect {
-					stepExpects[i] = &alt.Expect[i]
-				}
-				final, category, found = alt.Final.Devices, alt.Outcome.Category, true
-				break
-			}
-		}
-		if !found {
-			keys := make([]string, 0, len(applied))
-			for id, a := range applied {
-				keys = append(keys, id+"="+a)
-			}
-			sort.Strings(keys)
-			return nil, fmt.Errorf("vector %s: no expectation for %s (the vector file lists no such alternative)",
-				v.ID, strings.Join(keys, ", "))
-		}
-	}
+// judges reports whether the expectation compares device name (every device but those its entry
+// leaves unjudged; a scratch word's value is never compared, but it is expected all the same).
+func (e *expected) judges(name string) bool { return !e.notJudged[name] }
 
-	scratch := map[string]bool{}
-	for _, s := range v.Initial.Scratch {
-		scratch[s] = true
+// expectedOf is v's expectation under choices, laid out for judging: devices are the names of the
+// request's devices (sorted), the order in which a fast answer gives their values.
+func expectedOf(a *arena, v *Vector, choices map[string]Choice, devices []string, cpuWrites map[string]bool) (*expected, error) {
+	en, err := entryOf(v, choices)
+	if err != nil {
+		return nil, err
 	}
-	// The devices: the request's (sorted), then any other a step sets or expects.
-	names := make([]string, len(devices))
+	names, index := deviceNames(v, en, devices)
+	e := a.expects.one(a.chunk)
+	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: en.choices, category: en.category,
+		requested: a.names.take(len(devices), a.chunk), cpuWrites: cpuWrites, sets: make([]map[string]Value, len(v.Steps)),
+		unjudged: en.unjudged}
+	copy(e.requested, devices)
+	for i := range v.Steps {
+		e.sets[i] = v.Steps[i].Set
+	}
+	e.markCompared(v, en)
+	e.layOut(a, v, en, index)
+	if err := e.checkFinal(v, en); err != nil {
+		return nil, err
+	}
+	return e, nil
+}
+
+// deviceNames are the vector's devices: the request's (sorted), then any other a step sets or
+// expects, all sorted, with the index of each name.
+func deviceNames(v *Vector, en entry, devices []string) ([]string, map[string]int) {
+	names := append(make([]string, 0, len(devices)), devices...)
 	index := make(map[string]int, len(devices))
 	for i, d := range devices {
-		names[i] = d
 		index[d] = i
 	}
-	requested := a.names.take(len(names), a.chunk)
-	copy(requested, names)
-	extra := []string{}
+	extra := false
 	note := func(name string) {
 		if _, ok := index[name]; !ok {
 			index[name] = -1
-			extra = append(extra, name)
+			names, extra = append(names, name), true
 		}
 	}
 	for i, st := range v.Steps {
 		for name := range st.Set {
 			note(name)
 		}
-		for name := range stepExpects[i].Devices {
+		for name := range en.steps[i].Devices {
 			note(name)
 		}
 	}
-	for name := range final {
+	for name := range en.final {
 		note(name)
 	}
-	if len(extra) > 0 {
-		names = append(names, extra...)
+	if extra {
 		sort.Strings(names)
 		for i, n := range names {
 			index[n] = i
 		}
 	}
-	e := a.expects.one(a.chunk)
-	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: applied, category: category,
-		requested: requested, cpuWrites: cpuWrites, sets: make([]map[string]Value, len(v.Steps)), vector: v}
-	for i := range v.Steps {
-		e.sets[i] = v.Steps[i].Set
+	return names, index
+}
+
+// markCompared leaves scratch words and the devices the entry leaves unjudged out of the
+// comparison.
+func (e *expected) markCompared(v *Vector, en entry) {
+	scratch := make(map[string]bool, len(v.Initial.Scratch))
+	for _, s := range v.Initial.Scratch {
+		scratch[s] = true
 	}
-	n, steps := len(names), len(v.Steps)
+	for _, devices := range en.unjudged {
+		if e.notJudged == nil {
+			e.notJudged = map[string]bool{}
+		}
+		for _, d := range devices {
+			e.notJudged[d] = true
+		}
+	}
+	for i, name := range e.names {
+		e.compared[i] = !scratch[name] && !e.notJudged[name]
+		e.skips = e.skips || !e.compared[i]
+	}
+}
+
+// layOut works out the state before and after every step, and each step's contact result.
+func (e *expected) layOut(a *arena, v *Vector, en entry, index map[string]int) {
+	n, steps := len(e.names), len(v.Steps)
 	e.states, e.befores = a.values.take(n*steps, a.chunk), a.befores.take(n*steps, a.chunk)
 	e.results = a.results.take(steps, a.chunk)
 	state := make([]Value, n)
-	for i := range state {
+	for i, name := range e.names {
 		state[i] = absent
-	}
-	for i, name := range names {
-		e.compared[i] = !scratch[name]
-		e.scratch = e.scratch || scratch[name]
 		if val, ok := v.Initial.Devices[name]; ok {
 			state[i] = val
 		}
@@ -159,25 +225,30 @@ func expectationOf(a *arena, v *Vector, choices map[string]Choice, devices []str
 			state[index[name]] = val
 		}
 		copy(e.before(i), state)
-		for name, val := range stepExpects[i].Devices {
+		for name, val := range en.steps[i].Devices {
 			state[index[name]] = val
 		}
 		copy(e.state(i), state)
 		e.results[i] = NoResult
-		if stepExpects[i].Result != nil {
-			e.results[i] = Contact(*stepExpects[i].Result)
+		if r := en.steps[i].Result; r != nil {
+			e.results[i] = Contact(*r)
 		}
 	}
-	last := e.state(steps - 1)
-	for i, n := range names {
-		if scratch[n] {
+}
+
+// checkFinal checks that the per-step changes add up to the entry's `final` on every device it
+// judges (scratch words and devices left unjudged are in no `final`).
+func (e *expected) checkFinal(v *Vector, en entry) error {
+	last := e.state(len(v.Steps) - 1)
+	for i, name := range e.names {
+		if !e.compared[i] {
 			continue
 		}
-		want, ok := final[n]
+		want, ok := en.final[name]
 		if (ok && last[i] != want) || (!ok && last[i] != absent) {
-			return nil, fmt.Errorf("vector %s: the per-step changes do not add up to `final` at %s "+
-				"(the vector file is inconsistent; regenerate it)", v.ID, n)
+			return fmt.Errorf("vector %s: the per-step changes do not add up to `final` at %s "+
+				"(the vector file is inconsistent; regenerate it)", v.ID, name)
 		}
 	}
-	return e, nil
+	return nil
 }

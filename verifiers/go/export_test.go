@@ -96,3 +96,10 @@ func PrepareRun(impl Implementation, opts Options) (*Plan, error) {
 func PlanHead(p *Plan, n int) *Plan {
 	return &Plan{Suite: p.Suite, Hello: p.Hello, Choices: p.Choices, Cases: p.Cases[:n], Known: p.Known}
 }
+
+// InVerifySyntax makes r's roll-up write a declaration as `plcvec verify` does (--choose ...),
+// the form the shared cases' expected text holds.
+func InVerifySyntax(r *Report) { r.syntax = declareVerify }
+
+// Declaration is changes (interpretation -> alternative) as this runner's roll-up writes them.
+func Declaration(changes map[string]string) string { return (&Report{}).declaration(changes) }

@@ -2,7 +2,6 @@ package plcvec
 
 import (
 	"sort"
-	"strings"
 )
 
 // The inference (verifiers/parity/TEXT.md, "The inference"): the combinations of alternatives
@@ -34,7 +33,7 @@ func (c *Case) offers() []offer {
 			def := c.plan.Choices[id].Default
 			choices[id] = Choice{Alternative: alts[id], Default: def}
 		}
-		e, err := expectationOf(&arena{}, v, choices, c.expect.requested, c.expect.cpuWrites)
+		e, err := expectedOf(&arena{}, v, choices, c.expect.requested, c.expect.cpuWrites)
 		if err != nil {
 			return nil
 		}
@@ -103,12 +102,13 @@ func (c *Case) passesUnder(steps []StepResult) []bool {
 	return out
 }
 
-// differsAt reports whether two expectations of one vector differ at step k in field.
-func differsAt(a, b *expected, k int, field string) bool {
+// differsAt reports whether the offered expectation o differs from the followed one at step k in
+// field: another contact result, another value or JSON type, or the field left unjudged.
+func differsAt(o, followed *expected, k int, field string) bool {
 	if field == "result" {
-		return a.results[k] != b.results[k]
+		return o.results[k] != followed.results[k]
 	}
-	return a.valueAt(k, field) != b.valueAt(k, field)
+	return !o.judges(field) || o.valueAt(k, field) != followed.valueAt(k, field)
 }
 
 func (e *expected) valueAt(k int, name string) Value {
@@ -119,49 +119,102 @@ func (e *expected) valueAt(k int, name string) Value {
 	return absent
 }
 
-// sameExpectation reports whether two expectations of one vector expect the same of every step.
-func sameExpectation(a, b *expected) bool {
-	if a == nil || b == nil || len(a.results) != len(b.results) {
+// sameJudged reports whether a passing answer passes under the offered expectation o: at every
+// step the same contact result, and every device o judges expected alike (value and JSON type)
+// under o and under the followed expectation, which must judge it too: an answer the followed
+// expectation did not judge is not known to match (the unjudged rule).
+func sameJudged(o, followed *expected) bool {
+	if o == nil || followed == nil || len(o.results) != len(followed.results) {
 		return false
 	}
-	for k := range a.results {
-		if a.results[k] != b.results[k] {
+	for k := range o.results {
+		if o.results[k] != followed.results[k] {
 			return false
 		}
-		for _, n := range a.names {
-			if a.valueAt(k, n) != b.valueAt(k, n) {
-				return false
-			}
-		}
-		for _, n := range b.names {
-			if a.valueAt(k, n) != b.valueAt(k, n) {
-				return false
+		for _, names := range [2][]string{o.names, followed.names} {
+			for _, n := range names {
+				if o.judges(n) && (!followed.judges(n) || o.valueAt(k, n) != followed.valueAt(k, n)) {
+					return false
+				}
 			}
 		}
 	}
 	return true
 }
 
-// readings is the inference of a run (TEXT.md, "The inference").
+// judged is a vector whose answer the inference judges: one that passed, or one that failed
+// (a known failure that failed too), with whether its answer passes under each offer.
+type judged struct {
+	c      *Case
+	passed bool
+	passes []bool
+}
+
+// passesUnder reports whether j's answer passes under choice (restricted to what j touches).
+func (j judged) passesUnder(choice map[string]string) bool {
+	if len(j.c.Vector.Outcome.Interpretations) == 0 {
+		return j.passed
+	}
+	idx := j.c.offerIndex(choice)
+	if idx < 0 {
+		return false
+	}
+	if j.passed {
+		return sameJudged(j.c.offers()[idx].expect, j.c.expect)
+	}
+	return idx < len(j.passes) && j.passes[idx]
+}
+
+// readings is the inference of a run (TEXT.md, "The inference"): the choice, and which failing
+// vectors (fail, error, not-run) and known failures (xfail) it explains, each by its smallest
+// change ("ID=alternative" items in ID order), by verdict index.
 type readings struct {
-	choice      map[string]string
-	explained   map[int]string // verdict index -> its smallest change
-	failing     []int
-	broken      int
-	unexplained []int
+	choice           map[string]string
+	failing, known   []int
+	explained        map[int][]string
+	unexplained      []int
+	knownExplained   map[int][]string
+	knownUnexplained []int
+	broken           int
 }
 
 // infer finds the alternatives the implementation's answers match.
 func (r *Report) infer() readings {
-	p := r.Plan
-	type judged struct {
-		c      *Case
-		passed bool
-		passes []bool // per offer, for a failed vector
+	js, rd := r.judgedVectors()
+	if len(rd.failing) == 0 && len(rd.known) == 0 {
+		return rd
 	}
+	rd.choice = r.Plan.choose(js)
+	byCase := make(map[*Case]judged, len(js))
+	for _, j := range js {
+		byCase[j.c] = j
+		if j.passed && !j.passesUnder(rd.choice) {
+			rd.broken++
+		}
+	}
+	explain := func(i int, explained map[int][]string, unexplained *[]int) {
+		j, ok := byCase[r.Verdicts[i].c]
+		if !ok || !j.passesUnder(rd.choice) {
+			*unexplained = append(*unexplained, i)
+			return
+		}
+		explained[i] = smallestChange(j.c, rd.choice, j.passesUnder)
+	}
+	rd.explained, rd.knownExplained = map[int][]string{}, map[int][]string{}
+	for _, i := range rd.failing {
+		explain(i, rd.explained, &rd.unexplained)
+	}
+	for _, i := range rd.known {
+		explain(i, rd.knownExplained, &rd.knownUnexplained)
+	}
+	return rd
+}
+
+// judgedVectors are the run's judged vectors (steps 2 and 3), with its failing vectors and
+// known failures by verdict index.
+func (r *Report) judgedVectors() ([]judged, readings) {
 	var js []judged
-	var failing []int
-	touched := map[string]bool{}
+	var rd readings
 	for i := range r.Verdicts {
 		v := &r.Verdicts[i]
 		if v.c == nil {
@@ -170,49 +223,52 @@ func (r *Report) infer() readings {
 		if v.c == nil {
 			continue
 		}
-		if v.Status == StatusFail || v.Status == StatusError || v.Status == StatusNotRun {
-			failing = append(failing, i)
+		switch v.Status {
+		case StatusFail, StatusError, StatusNotRun:
+			rd.failing = append(rd.failing, i)
+		case StatusXFail:
+			rd.known = append(rd.known, i)
 		}
-		failed := v.Status == StatusFail || v.Status == StatusXFail && v.failed != nil
-		if v.Status != StatusPass && !failed {
-			continue
-		}
-		js = append(js, judged{v.c, v.Status == StatusPass, v.passes()})
-		for _, id := range v.c.Vector.Outcome.Interpretations {
-			touched[id] = true
+		// A known failure is judged when its answer failed (not when its vector errored).
+		if v.Status == StatusPass || v.Status == StatusFail || v.Status == StatusXFail && v.failed != nil {
+			js = append(js, judged{v.c, v.Status == StatusPass, v.passes()})
 		}
 	}
-	choice := map[string]string{}
+	return js, rd
+}
+
+// choose is the choice of step 4: from the followed alternatives, each interpretation in ID
+// order moved to the first alternative (in the files' order) that makes strictly more of the
+// judged vectors that touch it pass, round after round until none moves. Only an interpretation
+// some failed answer touches can move (a passing answer passes under the followed alternatives),
+// so only those are tried.
+func (p *Plan) choose(js []judged) map[string]string {
+	choice := make(map[string]string, len(p.Choices))
 	for id, c := range p.Choices {
 		choice[id] = c.Alternative
 	}
-	passUnder := func(j judged, choice map[string]string) bool {
-		if len(j.c.Vector.Outcome.Interpretations) == 0 {
-			return j.passed
+	touched := map[string]bool{}
+	for _, j := range js {
+		for _, id := range j.c.Vector.Outcome.Interpretations {
+			touched[id] = touched[id] || !j.passed
 		}
-		idx := j.c.offerIndex(choice)
-		if idx < 0 {
-			return false
-		}
-		if j.passed {
-			return sameExpectation(j.c.offers()[idx].expect, j.c.expect)
-		}
-		return idx < len(j.passes) && j.passes[idx]
 	}
+	var ids []string
+	for id, failed := range touched {
+		if failed {
+			ids = append(ids, id)
+		}
+	}
+	sort.Strings(ids)
 	score := func(id string) int {
 		n := 0
 		for _, j := range js {
-			if contains(j.c.Vector.Outcome.Interpretations, id) && passUnder(j, choice) {
+			if contains(j.c.Vector.Outcome.Interpretations, id) && j.passesUnder(choice) {
 				n++
 			}
 		}
 		return n
 	}
-	ids := make([]string, 0, len(touched))
-	for id := range touched {
-		ids = append(ids, id)
-	}
-	sort.Strings(ids)
 	alternatives := map[string][]string{}
 	for _, i := range p.Suite.Interpretations() {
 		alternatives[i.ID] = i.Alternatives
@@ -235,24 +291,7 @@ func (r *Report) infer() readings {
 			changed = changed || bestAlt != current
 		}
 	}
-	out := readings{choice: choice, explained: map[int]string{}, failing: failing}
-	byCase := map[*Case]judged{}
-	for _, j := range js {
-		byCase[j.c] = j
-		if j.passed && !passUnder(j, choice) {
-			out.broken++
-		}
-	}
-	for _, i := range failing {
-		v := &r.Verdicts[i]
-		j, ok := byCase[v.c]
-		if !ok || !passUnder(j, choice) {
-			out.unexplained = append(out.unexplained, i)
-			continue
-		}
-		out.explained[i] = smallestChange(j.c, choice, func(m map[string]string) bool { return passUnder(j, m) })
-	}
-	return out
+	return choice
 }
 
 // caseOf is the case of a vector id in the report's plan (nil for a stale id).
@@ -269,9 +308,10 @@ func (r *Report) caseOf(id string) *Case {
 	return r.Plan.byID[id]
 }
 
-// smallestChange is the first set of changes, by size then in order, under which the vector
-// passes: "ID=alt, ID=alt".
-func smallestChange(c *Case, choice map[string]string, passes func(map[string]string) bool) string {
+// smallestChange is step 6: the first set of the interpretations whose chosen alternative
+// differs from the followed one, by size then in lexicographic order (as itertools.combinations
+// gives them), under which the vector passes, as "ID=alternative" items.
+func smallestChange(c *Case, choice map[string]string, passes func(map[string]string) bool) []string {
 	followed := c.followed()
 	var differ []string
 	for _, id := range c.Vector.Outcome.Interpretations {
@@ -281,40 +321,51 @@ func smallestChange(c *Case, choice map[string]string, passes func(map[string]st
 	}
 	sort.Strings(differ)
 	for size := 1; size <= len(differ); size++ {
-		idx := make([]int, size)
-		for i := range idx {
-			idx[i] = i
-		}
-		for {
-			trial := map[string]string{}
+		for idx := firstCombination(size); idx != nil; idx = nextCombination(idx, len(differ)) {
+			trial := make(map[string]string, len(followed))
 			for k, v := range followed {
 				trial[k] = v
 			}
-			var parts []string
-			for _, i := range idx {
+			parts := make([]string, len(idx))
+			for n, i := range idx {
 				trial[differ[i]] = choice[differ[i]]
-				parts = append(parts, differ[i]+"="+choice[differ[i]])
+				parts[n] = differ[i] + "=" + choice[differ[i]]
 			}
 			if passes(trial) {
-				return strings.Join(parts, ", ")
-			}
-			// the next combination in lexicographic order
-			i := size - 1
-			for i >= 0 && idx[i] == len(differ)-size+i {
-				i--
-			}
-			if i < 0 {
-				break
-			}
-			idx[i]++
-			for j := i + 1; j < size; j++ {
-				idx[j] = idx[j-1] + 1
+				return parts
 			}
 		}
 	}
-	var parts []string
-	for _, id := range differ {
-		parts = append(parts, id+"="+choice[id])
+	parts := make([]string, len(differ))
+	for n, id := range differ {
+		parts[n] = id + "=" + choice[id]
 	}
-	return strings.Join(parts, ", ")
+	return parts
+}
+
+// firstCombination is the first choice of size indexes: 0, 1, ..., size-1.
+func firstCombination(size int) []int {
+	idx := make([]int, size)
+	for i := range idx {
+		idx[i] = i
+	}
+	return idx
+}
+
+// nextCombination is the choice of len(idx) indexes out of n after idx in lexicographic order,
+// or nil after the last.
+func nextCombination(idx []int, n int) []int {
+	size := len(idx)
+	i := size - 1
+	for i >= 0 && idx[i] == n-size+i {
+		i--
+	}
+	if i < 0 {
+		return nil
+	}
+	idx[i]++
+	for j := i + 1; j < size; j++ {
+		idx[j] = idx[j-1] + 1
+	}
+	return idx
 }

@@ -98,7 +98,7 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 			for i, d := range c.Request.Devices {
 				names[i] = d.Name
 			}
-			if c.expect, err = expectationOf(a, v, choices, names, cpuWrites); err != nil {
+			if c.expect, err = expectedOf(a, v, choices, names, cpuWrites); err != nil {
 				return nil, fmt.Errorf("%s: %w", suite.Source, err)
 			}
 		}
@@ -181,6 +181,9 @@ type Report struct {
 	Plan     *Plan
 	Verdicts []Verdict
 	Seconds  float64 // the run's wall-clock time
+	// syntax: how the roll-up writes a declaration (this runner's, unless a test asks for the
+	// shared cases' --choose form).
+	syntax declarationSyntax
 }
 
 // Verify runs the selected vectors through impl outside `go test` (a command, a benchmark, a
@@ -204,6 +207,7 @@ func (p *Plan) Verify(impl Implementation) *Report {
 	if p.Known != nil {
 		for i := range r.Verdicts {
 			p.Known.apply(&r.Verdicts[i])
+			r.Verdicts[i].c = p.Cases[i] // a pass made stale is described too
 		}
 		r.Verdicts = append(r.Verdicts, p.Known.unknownIDs(p.Suite)...)
 	}

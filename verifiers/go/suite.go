@@ -286,7 +286,7 @@ func parseJSONL(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 		if err := keys.repeatedKeyError(line, where, lineNo, func(int) string { return v.ID }); err != nil {
 			return nil, nil, err
 		}
-		if p := v.shapeProblem(header.Family); p != "" {
+		if p := v.shapeProblem(header); p != "" {
 			return nil, nil, fmt.Errorf("%s:%d: vector %s: %s (is the file a plcvec vector file, unedited?)", where, lineNo, nameOr(v.ID, lineNo), p)
 		}
 		vectors = append(vectors, v)
@@ -322,7 +322,7 @@ func parseFamilyJSON(data []byte, where string) (*FamilyHeader, []*Vector, error
 		if err := decodeStrict(raw, v); err != nil {
 			return nil, nil, fmt.Errorf("%s: vector %s: not a valid vector (%v)", where, nameOr(idOfString(raw), i), err)
 		}
-		if p := v.shapeProblem(file.Family); p != "" {
+		if p := v.shapeProblem(&file.FamilyHeader); p != "" {
 			return nil, nil, fmt.Errorf("%s: vector %s: %s (is the file a plcvec vector file, unedited?)", where, nameOr(v.ID, i), p)
 		}
 		vectors = append(vectors, v)

@@ -84,14 +84,40 @@ func TestSharedText(t *testing.T) {
 	h := cases.Hello
 	impl := answered{plcvec.Hello{Name: h.Adapter.Name, Version: h.Adapter.Version, Instructions: h.Instructions,
 		Interpretations: h.Interpretations, CPUWrites: h.CPUWrites}, cases.Answers}
-	report, err := plcvec.Verify(impl, plcvec.Options{Suite: suite})
+	for _, c := range []struct{ known, expected string }{{"", "expected.txt"}, {"known.toml", "expected-known.txt"}} {
+		t.Run(c.expected, func(t *testing.T) {
+			compareText(t, impl, plcvec.Options{Suite: suite, Expectations: c.known}, c.expected)
+		})
+	}
+}
+
+// compareText runs the shared cases and compares the run's text with the expected file.
+func compareText(t *testing.T, impl plcvec.Implementation, opts plcvec.Options, expected string) {
+	t.Helper()
+	folder, err := filepath.Abs(textCases)
 	if err != nil {
 		t.Fatal(err)
 	}
+	if opts.Expectations != "" {
+		// The file is given as the shared cases name it: `known.toml`, from its own folder.
+		here, err := os.Getwd()
+		if err != nil {
+			t.Fatal(err)
+		}
+		if err := os.Chdir(folder); err != nil {
+			t.Fatal(err)
+		}
+		defer os.Chdir(here)
+	}
+	report, err := plcvec.Verify(impl, opts)
+	if err != nil {
+		t.Fatal(err)
+	}
+	plcvec.InVerifySyntax(report) // the expected text holds plcvec verify's --choose
 	got := report.Summary()
 	got = regexp.MustCompile(`(?m)^plcvec: .* against .*\n`).ReplaceAllString(got, "")
 	got = regexp.MustCompile(` in [0-9.]+ s\n$`).ReplaceAllString(got, "\n")
-	want, err := os.ReadFile(filepath.Join(textCases, "expected.txt"))
+	want, err := os.ReadFile(filepath.Join(folder, expected))
 	if err != nil {
 		t.Fatal(err)
 	}
@@ -111,5 +137,22 @@ func TestSharedText(t *testing.T) {
 			}
 		}
 		t.Logf("the whole text:\n%s", got)
+	}
+}
+
+// TestDeclarationInTextMD: the roll-up writes a declaration as TEXT.md's table gives it for Go
+// ("The declaration in each runner"), from the generated names.
+func TestDeclarationInTextMD(t *testing.T) {
+	raw, err := os.ReadFile(filepath.Join(textCases, "..", "TEXT.md"))
+	if err != nil {
+		t.Fatal(err)
+	}
+	row := regexp.MustCompile("(?m)^\\| Go \\| `([^`]+)` \\|$").FindStringSubmatch(string(raw))
+	if row == nil {
+		t.Fatal("TEXT.md has no Go row in its table of declarations")
+	}
+	got := plcvec.Declaration(map[string]string{"TADD-FLAGS-OFF": "set-only", "FX5-SM709-SCOPE": "all-words"})
+	if got != row[1] {
+		t.Errorf("got  %s\nwant %s", got, row[1])
 	}
 }

@@ -4,7 +4,10 @@ import (
 	"bytes"
 	"encoding/json"
 	"fmt"
+	"regexp"
 	"sort"
+	"strconv"
+	"strings"
 	"unicode/utf8"
 )
 
@@ -105,9 +108,21 @@ func kindOf(bit bool) string {
 	return "a word"
 }
 
-// shapeProblem names what a vector lacks that the runner needs, or a device typed two ways, or
-// "" (the full schema is vectors/schema/; unknown keys are refused by the decoder).
-func (v *Vector) shapeProblem(family string) string {
+// shapeProblem names what a vector of a file with header h lacks that the runner needs, a
+// device typed two ways, or a malformed `unjudged` map, or "" (the full schema is
+// vectors/schema/; unknown keys are refused by the decoder).
+func (v *Vector) shapeProblem(h *FamilyHeader) string {
+	if p := v.basicShape(h.Family); p != "" {
+		return p
+	}
+	if p := v.unjudgedProblem(h.SchemaVersion); p != "" {
+		return p
+	}
+	return v.deviceTypes()
+}
+
+// basicShape names what a vector lacks that the runner needs.
+func (v *Vector) basicShape(family string) string {
 	switch {
 	case v.ID == "":
 		return "no `id`"
@@ -136,5 +151,72 @@ func (v *Vector) shapeProblem(family string) string {
 			return "alternative " + itoa(i) + " has " + itoa(len(a.Expect)) + " expectations for " + itoa(len(v.Steps)) + " steps"
 		}
 	}
-	return v.deviceTypes()
+	return ""
+}
+
+// deviceName is the schema's pattern of a device name.
+var deviceName = regexp.MustCompile(`^[A-Za-z_]+[0-9]*$`)
+
+// unjudgedProblem names the first fault of an `alternatives` entry's `unjudged` map by its JSON
+// path (unjudged.md, schema 1.1): the key in a file of schema 1.0, an interpretation that is not
+// one of the entry's choices, an empty list, a device named twice or not a device name, a device
+// not in `initial`, or one the entry expects all the same (in a step's `expect` or its `final`).
+func (v *Vector) unjudgedProblem(schema string) string {
+	for i, a := range v.Alternatives {
+		if a.Unjudged == nil {
+			continue
+		}
+		at := "alternatives/" + itoa(i)
+		if strings.HasPrefix(schema, "1.0.") {
+			return "at " + at + ": `unjudged` is not a key of schema " + schema + " (it came with 1.1.0)"
+		}
+		for _, id := range sortedKeysOf(a.Unjudged) {
+			if p := a.unjudgedDevices(v, at, id); p != "" {
+				return p
+			}
+		}
+	}
+	return ""
+}
+
+// unjudgedDevices checks the devices an alternative leaves unjudged under interpretation id.
+func (a *Alternative) unjudgedDevices(v *Vector, at, id string) string {
+	path := at + "/unjudged/" + id
+	devices := a.Unjudged[id]
+	switch _, ok := a.Choices[id]; {
+	case !ok:
+		return "at " + at + "/unjudged: " + id + " is not one of the entry's choices"
+	case len(devices) == 0:
+		return "at " + path + ": no device (the list holds one or more)"
+	}
+	seen := map[string]bool{}
+	for k, d := range devices {
+		switch _, listed := v.Initial.Devices[d]; {
+		case !deviceName.MatchString(d):
+			return "at " + path + "/" + itoa(k) + ": " + strconv.Quote(d) + " is not a device name"
+		case seen[d]:
+			return "at " + path + ": " + d + " is listed twice"
+		case !listed:
+			return "at " + path + ": " + d + " is not in initial/devices"
+		}
+		seen[d] = true
+		for s := range a.Expect {
+			if _, ok := a.Expect[s].Devices[d]; ok {
+				return "at " + at + "/expect/" + itoa(s) + "/devices/" + d + ": " + d + " is left unjudged by this entry (" + path + ")"
+			}
+		}
+		if _, ok := a.Final.Devices[d]; ok {
+			return "at " + at + "/final/devices/" + d + ": " + d + " is left unjudged by this entry (" + path + ")"
+		}
+	}
+	return ""
+}
+
+func sortedKeysOf[V any](m map[string]V) []string {
+	out := make([]string, 0, len(m))
+	for k := range m {
+		out = append(out, k)
+	}
+	sort.Strings(out)
+	return out
 }

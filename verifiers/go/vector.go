@@ -198,6 +198,10 @@ type Alternative struct {
 	Expect  []Expect          `json:"expect"`
 	Final   State             `json:"final"`
 	Outcome Outcome           `json:"outcome"`
+	// Unjudged (schema 1.1): the devices this combination leaves unjudged, by the interpretation
+	// whose alternative leaves them: listed in `initial`, absent from Expect and Final, never
+	// compared (a write to one is no stray write: the vector lists it).
+	Unjudged map[string][]string `json:"unjudged,omitempty"`
 }
 
 // FamilyHeader is a family file's header: everything but the vectors.

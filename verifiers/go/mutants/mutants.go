@@ -89,9 +89,9 @@ var All = []Mutant{
 	{"taddp-every-scan", []string{spec.FamilyFx5TimeAdd}, "a changed word",
 		"TADDP adds on every scan while EN is on, like TADD, instead of once on its rising edge.",
 		func(p *reference.Parts) { p.TADDRuns = func(_, en, _ bool) bool { return en } }},
-	{"tadd-on-error-computed-undeclared", []string{spec.FamilyFx5TimeAdd}, "an interpretation alternative",
-		"On error 3405H the sum is still written to (d) (TADD-ON-ERROR=computed) while the implementation declares the default, not-executed.",
-		func(p *reference.Parts) { p.TADDOnError = spec.TaddOnErrorComputed }},
+	{"tadd-on-error-computed-flags-kept", []string{spec.FamilyFx5TimeAdd}, "an interpretation alternative",
+		"On error 3405H the sum is still written to (d), as TADD-ON-ERROR=computed has it, while the implementation declares the default, not-executed; and the flags are left as they were, although that alternative updates them: half of a reading, undeclared.",
+		func(p *reference.Parts) { p.TADDOnError, p.TADDFlagsOnError = spec.TaddOnErrorComputed, false }},
 	{"hour-drops-fraction", []string{spec.FamilyFc6aHourMeter}, "a changed word",
 		"Each scan's ON time is cut to whole seconds and the remainder thrown away, so short scans never add up.",
 		func(p *reference.Parts) {

@@ -2,6 +2,7 @@ package mutants_test
 
 import (
 	"os"
+	"regexp"
 	"strings"
 	"testing"
 
@@ -113,5 +114,44 @@ func TestTableInMutantsMD(t *testing.T) {
 	}
 	if !strings.Contains(string(text), mutants.Table()) {
 		t.Errorf("MUTANTS.md does not hold the table of mutants.All; put this in it:\n%s", mutants.Table())
+	}
+}
+
+// TestNoMutantExplainedAway: no mutant's run ends with a proposal that is not marked partial
+// (TEXT.md, "The roll-up by reading"): a reading is proposed unmarked only when it explains every
+// failure of the families it touches, and a mutant is a bug, never only a reading, so some
+// failure of its family must stay unexplained.
+func TestNoMutantExplainedAway(t *testing.T) {
+	suite, err := plcvec.Default()
+	if err != nil {
+		t.Fatal(err)
+	}
+	for _, m := range mutants.All {
+		t.Run(m.Name, func(t *testing.T) {
+			impl, err := m.New(nil)
+			if err != nil {
+				t.Fatal(err)
+			}
+			report, err := plcvec.Verify(impl, plcvec.Options{Suite: suite,
+				Selection: plcvec.Selection{Families: m.Families}})
+			if err != nil {
+				t.Fatal(err)
+			}
+			rollUp := report.RollUp()
+			if !strings.Contains(rollUp, "NOT EXPLAINED by any reading") {
+				t.Errorf("%s: every failure is explained by a reading:\n%s", m.Name, rollUp)
+			}
+			inReadings := false
+			for _, line := range strings.Split(rollUp, "\n") {
+				switch {
+				case strings.HasPrefix(line, "READINGS:"):
+					inReadings = true
+				case !strings.HasPrefix(line, "    "):
+					inReadings = false
+				case inReadings && regexp.MustCompile(`^ {4} {0,5}\d+  `).MatchString(line) && !strings.Contains(line, "(partial: "):
+					t.Errorf("%s: a reading proposed unmarked: %q\n%s", m.Name, line, rollUp)
+				}
+			}
+		})
 	}
 }

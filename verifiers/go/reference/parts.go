@@ -24,6 +24,9 @@ type Parts struct {
 	// TADDOnError overrides TADD-ON-ERROR's declared alternative when not "" (a variant that
 	// follows another alternative than it declares).
 	TADDOnError string
+	// TADDFlagsOnError: whether an execution that computes the sum on error 3405H
+	// (TADD-ON-ERROR=computed) writes the flags too ("flags updated"; the reference: yes).
+	TADDFlagsOnError bool
 	// HourMeasure: whole seconds measured and the fraction kept, from the kept fraction and
 	// this scan's elapsed milliseconds.
 	HourMeasure func(fractionMS, elapsedMS int64) (whole, keptMS int64)
@@ -50,6 +53,7 @@ func Correct() Parts {
 		TADDWrap:         wrapDay,
 		TADDCarryFlags:   []plcvec.Addr{sm700, sm8022},
 		TADDRuns:         taddRuns,
+		TADDFlagsOnError: true,
 		HourMeasure:      measureKeepingFraction,
 		HourOnWrap:       func(*plcvec.Memory, plcvec.Addr) {},
 		HourWorkArea:     func(*plcvec.Memory, plcvec.Addr, int64) {},

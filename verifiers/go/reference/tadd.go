@@ -132,18 +132,23 @@ func (t *tadd) add(mem *plcvec.Memory) {
 	for k := range raw {
 		s2[k] = signed16(raw[k])
 	}
+	failed := false
 	for k, r := range taddRanges {
 		if s1[k] < r[0] || s1[k] > r[1] || s2[k] < r[0] || s2[k] > r[1] {
 			t.error(mem, errValueRange)
 			if !t.computeOnErr {
 				return
 			}
+			failed = true
 			break
 		}
 	}
 	total := (s1[0]+s2[0])*3600 + (s1[1]+s2[1])*60 + (s1[2] + s2[2])
 	result, carry := t.parts.TADDWrap(total, t.carryAt24)
 	mem.SetWords(t.d, uint16(result/3600), uint16(result%3600/60), uint16(result%60))
+	if failed && !t.parts.TADDFlagsOnError {
+		return
+	}
 	// "If the result is 0 (0:00:00), the zero flag turns on."
 	t.setFlags(mem, carry, result == 0)
 }
