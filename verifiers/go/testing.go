@@ -113,7 +113,7 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 			case StatusSkip, StatusXFail:
 				t.Skip(strings.TrimSuffix(v.Text(), "\n"))
 			default:
-				t.Error("\n" + v.Text())
+				t.Error("\n" + strings.TrimSuffix(v.Text(), "\n"))
 			}
 		})
 	}
