@@ -88,18 +88,21 @@ func Load(dir string) (*Suite, error) {
 
 // listing is what index.json (exported copy) and manifest.json (repository) have in common.
 type listing struct {
-	SuiteVersion     string `json:"suite_version"`
-	GeneratorVersion string `json:"generator_version"`
-	SchemaVersion    string `json:"schema_version"`
-	SpecSHA256       string `json:"spec_sha256"`
-	Total            *int   `json:"total"`
-	Families         map[string]struct {
-		File   string `json:"file"`
-		Count  *int   `json:"count"`
-		SHA256 string `json:"sha256"`
-	} `json:"families"`
+	SuiteVersion     string                  `json:"suite_version"`
+	GeneratorVersion string                  `json:"generator_version"`
+	SchemaVersion    string                  `json:"schema_version"`
+	SpecSHA256       string                  `json:"spec_sha256"`
+	Total            *int                    `json:"total"`
+	Families         map[string]listingEntry `json:"families"`
 	// Merged: {family: {an id the generator merged into another vector: the id it went to}}.
 	Merged map[string]map[string]string `json:"merged"`
+}
+
+// listingEntry is one family of an index.
+type listingEntry struct {
+	File   string `json:"file"`
+	Count  *int   `json:"count"`
+	SHA256 string `json:"sha256"`
 }
 
 func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
@@ -123,68 +126,18 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 	if s.SuiteVersion == "" {
 		s.SuiteVersion = list.GeneratorVersion
 	}
-	families := make([]string, 0, len(list.Families))
-	for f := range list.Families {
-		families = append(families, f)
-	}
-	sort.Strings(families)
 	versions := map[string]bool{}
-	for _, family := range families {
-		entry := list.Families[family]
-		if entry.File == "" || strings.Contains(entry.File, "..") {
-			return nil, fmt.Errorf("%s%s: family %s has no usable `file`", prefix, name, family)
-		}
-		if why := notRegular(fsys, entry.File); why != "" {
-			return nil, fmt.Errorf("%s%s: %s", prefix, entry.File, why)
-		}
-		data, err := fs.ReadFile(fsys, entry.File)
-		if err != nil {
-			return nil, fmt.Errorf("%s%s: cannot read it (listed in %s)", prefix, entry.File, name)
-		}
-		where := prefix + entry.File
-		var header *FamilyHeader
-		var vectors []*Vector
-		if path.Ext(entry.File) == ".jsonl" {
-			header, vectors, err = parseJSONL(data, where)
-		} else {
-			header, vectors, err = parseFamilyJSON(data, where)
-		}
+	for _, family := range sortedKeysOf(list.Families) {
+		header, err := s.loadFamily(fsys, prefix, name, family, list.Families[family])
 		if err != nil {
 			return nil, err
 		}
-		// After parsing, so that a line that does not parse is named by its line.
-		if entry.SHA256 != "" {
-			sum := sha256.Sum256(data)
-			if hex.EncodeToString(sum[:]) != entry.SHA256 {
-				return nil, fmt.Errorf("%s: its sha256 is not the one %s gives: the file is damaged or edited; export it again (plcvec export --lang go)", where, name)
-			}
-		}
-		if header.Family != family {
-			return nil, fmt.Errorf("%s: holds family %q, but %s lists it as %q", where, header.Family, name, family)
-		}
-		if entry.Count != nil && *entry.Count != len(vectors) {
-			return nil, fmt.Errorf("%s: %d vectors, but %s says %d (a truncated file?)", where, len(vectors), name, *entry.Count)
-		}
 		versions[header.SchemaVersion] = true
-		s.Families = append(s.Families, family)
-		s.Headers[family] = header
-		for _, v := range vectors {
-			if s.byID[v.ID] != nil {
-				return nil, fmt.Errorf("%s: vector id %s appears twice", where, v.ID)
-			}
-			s.byID[v.ID] = v
-		}
-		s.Vectors = append(s.Vectors, vectors...)
 	}
 	if list.Total != nil && *list.Total != len(s.Vectors) {
 		return nil, fmt.Errorf("%s%s: total %d, but the files hold %d vectors", prefix, name, *list.Total, len(s.Vectors))
 	}
-	all := make([]string, 0, len(versions))
-	for v := range versions {
-		all = append(all, v)
-	}
-	sort.Strings(all)
-	s.SchemaVersion = strings.Join(all, ", ")
+	s.SchemaVersion = strings.Join(sortedKeysOf(versions), ", ")
 	if s.SchemaVersion == "" {
 		s.SchemaVersion = list.SchemaVersion
 	}
@@ -192,6 +145,55 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 		return nil, err
 	}
 	return s, nil
+}
+
+// loadFamily reads one family file the index (name) lists, checks it against the index, and adds
+// its header and vectors to s.
+func (s *Suite) loadFamily(fsys fs.FS, prefix, name, family string, entry listingEntry) (*FamilyHeader, error) {
+	if entry.File == "" || strings.Contains(entry.File, "..") {
+		return nil, fmt.Errorf("%s%s: family %s has no usable `file`", prefix, name, family)
+	}
+	if why := notRegular(fsys, entry.File); why != "" {
+		return nil, fmt.Errorf("%s%s: %s", prefix, entry.File, why)
+	}
+	data, err := fs.ReadFile(fsys, entry.File)
+	if err != nil {
+		return nil, fmt.Errorf("%s%s: cannot read it (listed in %s)", prefix, entry.File, name)
+	}
+	where := prefix + entry.File
+	var header *FamilyHeader
+	var vectors []*Vector
+	if path.Ext(entry.File) == ".jsonl" {
+		header, vectors, err = parseJSONL(data, where)
+	} else {
+		header, vectors, err = parseFamilyJSON(data, where)
+	}
+	if err != nil {
+		return nil, err
+	}
+	// After parsing, so that a line that does not parse is named by its line.
+	if entry.SHA256 != "" {
+		sum := sha256.Sum256(data)
+		if hex.EncodeToString(sum[:]) != entry.SHA256 {
+			return nil, fmt.Errorf("%s: its sha256 is not the one %s gives: the file is damaged or edited; export it again (plcvec export --lang go)", where, name)
+		}
+	}
+	if header.Family != family {
+		return nil, fmt.Errorf("%s: holds family %q, but %s lists it as %q", where, header.Family, name, family)
+	}
+	if entry.Count != nil && *entry.Count != len(vectors) {
+		return nil, fmt.Errorf("%s: %d vectors, but %s says %d (a truncated file?)", where, len(vectors), name, *entry.Count)
+	}
+	s.Families = append(s.Families, family)
+	s.Headers[family] = header
+	for _, v := range vectors {
+		if s.byID[v.ID] != nil {
+			return nil, fmt.Errorf("%s: vector id %s appears twice", where, v.ID)
+		}
+		s.byID[v.ID] = v
+	}
+	s.Vectors = append(s.Vectors, vectors...)
+	return header, nil
 }
 
 // readIndex reads the folder's index: index.json (an exported copy), else manifest.json (a vector

@@ -51,7 +51,21 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 	}
 	start := time.Now()
 	report := &Report{Plan: plan, Verdicts: make([]Verdict, 0, len(plan.Cases))}
+	wanted := wantedCases(t, plan)
+	if wanted == nil {
+		return report
+	}
+	src := openSource(t, plan, impl, opts, env, ordinal, wanted)
+	defer src.close()
+	judgeCases(t, report, src, wanted)
+	finishRun(t, report, env, start)
+	return report
+}
 
+// wantedCases are the cases the test runner's own filter (-run, -skip) lets through; nil, and the
+// test failed, when it lets none through: nothing would be verified.
+func wantedCases(t *testing.T, plan *Plan) []bool {
+	t.Helper()
 	filter, err := testFilter()
 	if err != nil {
 		t.Fatalf("plcvec: -run: %v", err)
@@ -66,9 +80,14 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 	if count == 0 {
 		t.Errorf("plcvec: the test runner's filter (-run %q) matches none of the %d selected vectors: nothing was verified. "+
 			"Choose vectors with PLCVEC_ID=<id or glob>[,...] (exact ids, no quoting) rather than -run", runFlag(), len(plan.Cases))
-		return report
+		return nil
 	}
+	return wanted
+}
 
+// openSource starts what judges the wanted cases: the second process (isolate.go), or this one.
+func openSource(t *testing.T, plan *Plan, impl Implementation, opts Options, env environment, ordinal int, wanted []bool) source {
+	t.Helper()
 	var src source
 	if opts.InProcess || !canIsolate() {
 		src = newInProcess(plan, impl, env.timeout)
@@ -79,12 +98,18 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 		}
 		src = newIsolated(plan, c, wanted, env.timeout)
 	}
-	defer src.close()
 	if err := src.start(); err != nil {
+		src.close()
 		t.Fatalf("plcvec: %v", err)
 	}
+	return src
+}
 
-	ended := ""
+// judgeCases runs one subtest per case, each failing with its vector's block; once the run has
+// ended early (a vector that hung or ended the process), the cases after it are not-run.
+func judgeCases(t *testing.T, report *Report, src source, wanted []bool) {
+	t.Helper()
+	plan, ended := report.Plan, ""
 	for i, c := range plan.Cases {
 		if ended != "" {
 			if wanted[i] {
@@ -118,13 +143,21 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 		})
 	}
 	if ended != "" {
-		notRun := report.Counts()[StatusNotRun]
-		t.Errorf("plcvec: %s (%d vectors after it not run)", ended, notRun)
+		t.Errorf("plcvec: %s (%d vectors after it not run)", ended, report.Counts()[StatusNotRun])
 	}
+}
+
+// finishRun reports the known failures the suite has no vector for, writes the expectations file
+// asked for, and ends the test with the run's closing text: the roll-up, the skips and the totals,
+// each failure having been reported by its own subtest. A run that proves nothing (NOT PASSED, in
+// the text) fails the test.
+func finishRun(t *testing.T, report *Report, env environment, start time.Time) {
+	t.Helper()
+	plan := report.Plan
 	if plan.Known != nil {
 		for _, v := range plan.Known.unknownIDs(plan.Suite) {
 			report.Verdicts = append(report.Verdicts, v)
-			t.Error(v.Text())
+			t.Error(strings.TrimSuffix(v.Text(), "\n"))
 		}
 	}
 	if env.write != "" {
@@ -136,15 +169,12 @@ func Run(t *testing.T, impl Implementation, opts Options) *Report {
 		}
 	}
 	report.Seconds = time.Since(start).Seconds()
-	// Each failure was reported by its own subtest; the roll-up, the skips and the totals close,
-	// and fail the test when the run proves nothing (NOT PASSED, in the text).
 	closing := "\n" + strings.TrimSuffix(report.Closing(), "\n")
 	if len(report.Failed()) == 0 && report.shortfall() != "" {
 		t.Error(closing)
 	} else {
 		t.Log(closing)
 	}
-	return report
 }
 
 // prepareRun is the plan of a Run: Options, narrowed and completed by the PLCVEC_* variables.

@@ -80,33 +80,8 @@ func (h *hostile) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 	}
 	target := req.ID == h.on
 	if target {
-		switch h.name {
-		case "panic":
-			panic("hostile: a panic on " + req.ID)
-		case "loop-forever":
-			//lint:ignore SA5002 the misbehaviour itself: an implementation that never returns
-			for {
-			}
-		case "exit-zero":
-			os.Exit(0)
-		case "exit-nonzero":
-			os.Exit(3)
-		case "crash":
-			done := make(chan struct{})
-			go func() {
-				var p *plcvec.Request
-				_ = p.ID // a nil dereference in a goroutine of its own: the process dies
-				close(done)
-			}()
-			<-done
-		case "empty-answer":
-			return []plcvec.StepResult{}, nil
-		case "closes-fds":
-			closeInherited()
-		case "child-holds-stdout":
-			if err := holdStdout(); err != nil {
-				return nil, err
-			}
+		if steps, answered, err := h.before(req); answered {
+			return steps, err
 		}
 	}
 	steps, err := h.ref.Run(req)
@@ -116,6 +91,47 @@ func (h *hostile) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 	// The answer is the implementation's own from here on: the reference's buffers are not
 	// handed back to be reused.
 	steps = own(req, steps)
+	h.after(req, steps, target)
+	return steps, nil
+}
+
+// before is the misbehaviour on the target before the reference runs: one that ends the run,
+// the process, or the answer (answered), or one done on the way (closes-fds, child-holds-stdout).
+func (h *hostile) before(req *plcvec.Request) (steps []plcvec.StepResult, answered bool, err error) {
+	switch h.name {
+	case "panic":
+		panic("hostile: a panic on " + req.ID)
+	case "loop-forever":
+		//lint:ignore SA5002 the misbehaviour itself: an implementation that never returns
+		for {
+		}
+	case "exit-zero":
+		os.Exit(0)
+	case "exit-nonzero":
+		os.Exit(3)
+	case "crash":
+		done := make(chan struct{})
+		go func() {
+			var p *plcvec.Request
+			_ = p.ID // a nil dereference in a goroutine of its own: the process dies
+			close(done)
+		}()
+		<-done
+	case "empty-answer":
+		return []plcvec.StepResult{}, true, nil
+	case "closes-fds":
+		closeInherited()
+	case "child-holds-stdout":
+		if err := holdStdout(); err != nil {
+			return nil, true, err
+		}
+	}
+	return nil, false, nil
+}
+
+// after changes the reference's answer as the implementation misbehaves: on every vector
+// (cpu-writes), or on the target only.
+func (h *hostile) after(req *plcvec.Request, steps []plcvec.StepResult, target bool) {
 	switch {
 	case h.name == "cpu-writes":
 		for i := range steps {
@@ -160,7 +176,6 @@ func (h *hostile) Run(req *plcvec.Request) ([]plcvec.StepResult, error) {
 	case h.name == "word-65536":
 		changeWord(req, &steps[0], func(uint16) plcvec.Value { return plcvec.Value(65536) })
 	}
-	return steps, nil
 }
 
 // holdStdout starts a process that inherits stdout and stderr and sleeps 300 s, left running:
