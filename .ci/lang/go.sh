@@ -1,31 +1,57 @@
 #!/usr/bin/env bash
-# The Go verifier (verifiers/go): format, vet, test with the race detector, the table of faults,
-# the module fetched through a module proxy by the README's example, and the Go reference
-# implementation through `plcvec verify` over the stdio protocol.
+# The Go verifier (verifiers/go): format, vet and staticcheck as Go users run them, the public API
+# against the previous release (apidiff), the tests (the race detector on the package whose
+# concurrency it can see), the table of faults, the README's commands and files copied into an
+# empty folder as a module that fetches plcvec through a module proxy, and the Go reference
+# through `plcvec verify` over the stdio protocol. Quiet on success but for its last line; a step
+# that fails prints its output.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 cd "$(dirname "$0")/../.."
 GO_DIR=verifiers/go
 export GOFLAGS="${GOFLAGS:-} -mod=readonly"
-
+# The linters' versions, pinned; installed into a cache of their own on first use.
+STATICCHECK=honnef.co/go/tools/cmd/staticcheck@v0.8.2
+tools="${XDG_CACHE_HOME:-$HOME/.cache}/plcvec/go-tools"
 start=$SECONDS
-(cd "$GO_DIR" && go mod download)
 
+# quiet runs a step and shows its output only when it fails.
+quiet() {
+    local out
+    if ! out=$("$@" 2>&1); then
+        printf '%s\n' "$out" >&2
+        echo "go: failed: $*" >&2
+        return 1
+    fi
+}
+
+(cd "$GO_DIR" && quiet go mod download)
 unformatted=$(cd "$GO_DIR" && gofmt -l .)
 if [ -n "$unformatted" ]; then
     echo "gofmt: these files are not formatted:" >&2
     echo "$unformatted" >&2
     exit 1
 fi
-(cd "$GO_DIR" && go vet ./...)
-(cd "$GO_DIR" && go test -race -count=1 ./...)
+(cd "$GO_DIR" && quiet go vet ./...)
+if [ ! -x "$tools/staticcheck@${STATICCHECK##*@}/staticcheck" ]; then
+    GOBIN="$tools/staticcheck@${STATICCHECK##*@}" GOFLAGS= quiet go install "$STATICCHECK"
+fi
+(cd "$GO_DIR" && quiet "$tools/staticcheck@${STATICCHECK##*@}/staticcheck" ./...)
+# A change apidiff calls incompatible must be under Breaking in CHANGES.md; a rename must fail it.
+quiet "$GO_DIR/apicheck" --self-test
+# Import cycles: the Go toolchain refuses any (go vet and go build above), so none needs a tool.
+# The race detector on the package with goroutines of its own (Run's second process, its
+# watchdog), -short trimming its whole-set run there; the other packages without it.
+(cd "$GO_DIR" && quiet go test -race -short -count=1 .)
+(cd "$GO_DIR" && quiet go test -count=1 ./reference ./mutants ./cmd/... ./internal/...)
 # The shared table of faults: every row gets `plcvec verify`'s verdict through go test + plcvec.Run.
-python3 verifiers/parity/run.py --lang go
+quiet python3 verifiers/parity/run.py --lang go
+
 # The module as a user fetches it: a zip in a module proxy (the layout `go mod download` reads,
 # made of the files git tracks, as `go mod` would zip them) under the path and version the README
-# gives, and the README's example extracted from the Markdown and built as an outside module
-# against it, with no `replace` line; then the README's commands run in it. A module cache of its
-# own, so that this copy never stands in for a real release in the shared one.
+# gives; the README's blocks extracted into an empty folder and run there as an outside module,
+# with no `replace` line. A module cache of its own, so that this copy never stands in for a real
+# release in the shared one.
 outside=$(mktemp -d)
 trap 'chmod -R u+w "$outside" 2>/dev/null; rm -rf "$outside"' EXIT
 cmp LICENSE "$GO_DIR/LICENSE" || { echo "go: $GO_DIR/LICENSE is not the repository's LICENSE" >&2; exit 1; }
@@ -48,20 +74,34 @@ with zipfile.ZipFile(at / f"{version}.zip", "w", zipfile.ZIP_DEFLATED) as z:
 (at / f"{version}.info").write_text(json.dumps({"Version": version, "Time": "2026-01-01T00:00:00Z"}))
 (at / "list").write_text(version + "\n")
 PY
-python3 .ci/readme_snippets.py extract "$GO_DIR/README.md" --out "$outside/readme" >/dev/null
+quiet python3 .ci/readme_snippets.py extract "$GO_DIR/README.md" --out "$outside/readme"
 (
     cd "$outside/readme/go/myemu"
     grep -q "require $module $version" go.mod || { echo "go: the README's go.mod does not require $module $version" >&2; exit 1; }
-    grep BurntSushi "$OLDPWD/$GO_DIR/go.sum" > go.sum   # the dependency's hashes as the module records them
+    # The dependency's hashes as the module records them (go get would ask the checksum database).
+    grep BurntSushi "$OLDPWD/$GO_DIR/go.sum" > go.sum
     export GOFLAGS=-mod=mod GOMODCACHE="$outside/modcache" GONOSUMDB=github.com/plcvec GOPROXY="file://$outside/proxy,file://$(go env GOMODCACHE)/cache/download"
+    quiet bash -euo pipefail get.sh
+    grep -q "require $module $version" go.mod || { echo "go: go get changed the README's require line" >&2; exit 1; }
     unformatted=$(gofmt -l .)
     [ -z "$unformatted" ] || { echo "gofmt: the README's example: $unformatted" >&2; exit 1; }
-    go vet ./...
-    go test -race -count=1 ./...
-    bash -euo pipefail run.sh
-    grep -q "require $module $version" go.mod
+    quiet go vet ./...
+    # A test command that loads no test file or runs no vector cannot look green.
+    out=$(go test -count=1 -v ./... 2>&1) || { echo "$out" >&2; exit 1; }
+    grep -q -- "--- PASS: TestPlcvec/fx5-time-add/TADD/manual-example/program" <<<"$out" \
+        || { echo "go: the README's test ran no vector:" >&2; echo "$out" >&2; exit 1; }
+    quiet bash -euo pipefail run.sh
+    quiet bash -euo pipefail vectors.sh
+    # The README's known-failures file lists a vector the example passes: stale, so the run fails.
+    if out=$(PLCVEC_KNOWN_FAILURES=known.toml go test -count=1 -v ./... 2>&1); then
+        echo "go: the README's known.toml lists a vector the example passes, yet the run passed:" >&2
+        echo "$out" >&2
+        exit 1
+    fi
+    grep -qF "listed as a known failure (known.toml:1: our D31 is off by one) but it passes" <<<"$out" \
+        || { echo "go: the README's known.toml did not give the stale message the README quotes:" >&2; echo "$out" >&2; exit 1; }
 )
 # The Go reference over the stdio protocol passes the suite's own gate; a mutant does not.
-python3 -m plcvec verify --adapter verifiers/go/reference-adapter -q
-gate_rejects go "verifiers/go/reference-adapter --mutant cp1e-and-as-or" --family cp1e-time-compare
-echo "go: built, vetted, tested and verified in $((SECONDS - start)) s"
+quiet python3 -m plcvec verify --adapter verifiers/go/reference-adapter -q
+quiet gate_rejects go "verifiers/go/reference-adapter --mutant cp1e-and-as-or" --family cp1e-time-compare
+echo "go: formatted, vetted, staticchecked, API-checked, tested and verified in $((SECONDS - start)) s"

@@ -135,7 +135,7 @@ func expectedOf(a *arena, v *Vector, choices map[string]Choice, devices []string
 	if err != nil {
 		return nil, err
 	}
-	names, index := deviceNames(v, en, devices)
+	names := deviceNames(v, en, devices)
 	e := a.expects.one(a.chunk)
 	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: en.choices, category: en.category,
 		requested: a.names.take(len(devices), a.chunk), cpuWrites: cpuWrites, sets: make([]map[string]Value, len(v.Steps)),
@@ -145,26 +145,24 @@ func expectedOf(a *arena, v *Vector, choices map[string]Choice, devices []string
 		e.sets[i] = v.Steps[i].Set
 	}
 	e.markCompared(v, en)
-	e.layOut(a, v, en, index)
+	e.layOut(a, v, en)
 	if err := e.checkFinal(v, en); err != nil {
 		return nil, err
 	}
 	return e, nil
 }
 
-// deviceNames are the vector's devices: the request's (sorted), then any other a step sets or
-// expects, all sorted, with the index of each name.
-func deviceNames(v *Vector, en entry, devices []string) ([]string, map[string]int) {
-	names := append(make([]string, 0, len(devices)), devices...)
-	index := make(map[string]int, len(devices))
-	for i, d := range devices {
-		index[d] = i
-	}
-	extra := false
+// deviceNames are the vector's devices, sorted: the request's (sorted already), then any other a
+// step sets or expects (seldom any: a vector lists in `initial` what it reads or writes).
+func deviceNames(v *Vector, en entry, devices []string) []string {
+	names := devices
 	note := func(name string) {
-		if _, ok := index[name]; !ok {
-			index[name] = -1
-			names, extra = append(names, name), true
+		if !hasName(names, name) {
+			if len(names) == len(devices) { // the first extra: a list of the vector's own
+				names = append(make([]string, 0, len(devices)+4), devices...)
+			}
+			names = append(names, name)
+			sort.Strings(names)
 		}
 	}
 	for i, st := range v.Steps {
@@ -178,14 +176,17 @@ func deviceNames(v *Vector, en entry, devices []string) ([]string, map[string]in
 	for name := range en.final {
 		note(name)
 	}
-	if extra {
-		sort.Strings(names)
-		for i, n := range names {
-			index[n] = i
-		}
-	}
-	return names, index
+	return names
 }
+
+// hasName reports whether the sorted names hold name.
+func hasName(names []string, name string) bool {
+	i := sort.SearchStrings(names, name)
+	return i < len(names) && names[i] == name
+}
+
+// indexOf is name's index in the sorted names (which hold it).
+func indexOf(names []string, name string) int { return sort.SearchStrings(names, name) }
 
 // markCompared leaves scratch words and the devices the entry leaves unjudged out of the
 // comparison.
@@ -209,7 +210,7 @@ func (e *expected) markCompared(v *Vector, en entry) {
 }
 
 // layOut works out the state before and after every step, and each step's contact result.
-func (e *expected) layOut(a *arena, v *Vector, en entry, index map[string]int) {
+func (e *expected) layOut(a *arena, v *Vector, en entry) {
 	n, steps := len(e.names), len(v.Steps)
 	e.states, e.befores = a.values.take(n*steps, a.chunk), a.befores.take(n*steps, a.chunk)
 	e.results = a.results.take(steps, a.chunk)
@@ -222,11 +223,11 @@ func (e *expected) layOut(a *arena, v *Vector, en entry, index map[string]int) {
 	}
 	for i, st := range v.Steps {
 		for name, val := range st.Set {
-			state[index[name]] = val
+			state[indexOf(e.names, name)] = val
 		}
 		copy(e.before(i), state)
 		for name, val := range en.steps[i].Devices {
-			state[index[name]] = val
+			state[indexOf(e.names, name)] = val
 		}
 		copy(e.state(i), state)
 		e.results[i] = NoResult

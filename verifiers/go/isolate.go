@@ -16,6 +16,7 @@ import (
 	"strings"
 	"sync"
 	"sync/atomic"
+	"testing"
 	"time"
 )
 
@@ -224,6 +225,10 @@ func startChild(name string, ordinal int, wanted []bool) (*child, error) {
 	if fl := flag.Lookup("test.timeout"); fl != nil {
 		// The child lives no longer than the parent may.
 		args = append(args, "-test.timeout="+fl.Value.String())
+	}
+	if testing.Short() {
+		// A test may choose its vectors by testing.Short(): the child must choose the same.
+		args = append(args, "-test.short")
 	}
 	b, shared, err := newBeat()
 	if err != nil {

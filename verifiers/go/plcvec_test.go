@@ -273,7 +273,6 @@ func TestKnownFailures(t *testing.T) {
 // TestLoadRefusesDamage: a damaged copy is refused by file, line and vector id; a 2.x schema
 // is refused rather than misread.
 func TestLoadRefusesDamage(t *testing.T) {
-	src := "vectors"
 	for _, c := range []struct {
 		name string
 		edit func(lines []string) []string
@@ -309,18 +308,15 @@ func TestLoadRefusesDamage(t *testing.T) {
 		}, "schema_version 2."},
 	} {
 		t.Run(c.name, func(t *testing.T) {
-			dir := t.TempDir()
-			entries, _ := os.ReadDir(src)
-			for _, e := range entries {
-				data, _ := os.ReadFile(filepath.Join(src, e.Name()))
-				if e.Name() == "fx5-time-add.jsonl" {
-					data = []byte(strings.Join(c.edit(strings.Split(string(data), "\n")), "\n"))
+			dir := copyVectors(t, func(name string, data []byte) []byte {
+				switch name {
+				case "fx5-time-add.jsonl":
+					return []byte(strings.Join(c.edit(strings.Split(string(data), "\n")), "\n"))
+				case "index.json": // an edited copy fails its hash first: drop the hashes
+					return regexp.MustCompile(`"sha256": "[0-9a-f]+"`).ReplaceAll(data, []byte(`"sha256": ""`))
 				}
-				if e.Name() == "index.json" { // an edited copy fails its hash first: drop the hashes
-					data = regexp.MustCompile(`"sha256": "[0-9a-f]+"`).ReplaceAll(data, []byte(`"sha256": ""`))
-				}
-				_ = os.WriteFile(filepath.Join(dir, e.Name()), data, 0o644)
-			}
+				return data
+			})
 			_, err := plcvec.Load(dir)
 			if err == nil || !strings.Contains(err.Error(), c.want) {
 				t.Errorf("want an error containing %q, got %v", c.want, err)
@@ -328,15 +324,12 @@ func TestLoadRefusesDamage(t *testing.T) {
 		})
 	}
 	// Untouched except for one byte, the index's hash names the damaged file.
-	dir := t.TempDir()
-	entries, _ := os.ReadDir(src)
-	for _, e := range entries {
-		data, _ := os.ReadFile(filepath.Join(src, e.Name()))
-		if e.Name() == "fc6a-hour-meter.jsonl" { // still a valid file, but not the one exported
-			data = []byte(strings.Replace(string(data), `"description":"`, `"description":"x`, 1))
+	dir := copyVectors(t, func(name string, data []byte) []byte {
+		if name == "fc6a-hour-meter.jsonl" { // still a valid file, but not the one exported
+			return []byte(strings.Replace(string(data), `"description":"`, `"description":"x`, 1))
 		}
-		_ = os.WriteFile(filepath.Join(dir, e.Name()), data, 0o644)
-	}
+		return data
+	}, "fx5-time-add", "fc6a-hour-meter")
 	if _, err := plcvec.Load(dir); err == nil || !strings.Contains(err.Error(), "fc6a-hour-meter.jsonl: its sha256") {
 		t.Errorf("a damaged file was not named: %v", err)
 	}
@@ -385,12 +378,18 @@ func TestRunPatternSelectsID(t *testing.T) {
 }
 
 // TestPlcvecReference is plcvec.Run as an implementer writes it, on the reference.
+// With -short (CI's run under the race detector, which makes it slow) it runs one family: the
+// reference package's TestReference runs the whole set through Run.
 func TestPlcvecReference(t *testing.T) {
 	ref, err := reference.New(nil)
 	if err != nil {
 		t.Fatal(err)
 	}
-	plcvec.Run(t, ref.Implementation(), plcvec.Options{})
+	var opts plcvec.Options
+	if testing.Short() {
+		opts.Selection.Families = []string{spec.FamilyFx5TimeAdd}
+	}
+	plcvec.Run(t, ref.Implementation(), opts)
 }
 
 // valuesAnswer reports its steps in the fast form, with the wrong number of values.

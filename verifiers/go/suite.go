@@ -126,13 +126,28 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 	if s.SuiteVersion == "" {
 		s.SuiteVersion = list.GeneratorVersion
 	}
+	// The family files are read and parsed side by side (parsing is most of a load, and every run
+	// loads the set), then added in the index's order, so that an error is the same every time.
+	families := sortedKeysOf(list.Families)
+	loaded := make([]familyFile, len(families))
+	var wg sync.WaitGroup
+	for i, family := range families {
+		wg.Add(1)
+		go func() {
+			defer wg.Done()
+			loaded[i] = readFamily(fsys, prefix, name, family, list.Families[family])
+		}()
+	}
+	wg.Wait()
 	versions := map[string]bool{}
-	for _, family := range sortedKeysOf(list.Families) {
-		header, err := s.loadFamily(fsys, prefix, name, family, list.Families[family])
-		if err != nil {
+	for i, f := range loaded {
+		if f.err != nil {
+			return nil, f.err
+		}
+		if err := s.add(families[i], f); err != nil {
 			return nil, err
 		}
-		versions[header.SchemaVersion] = true
+		versions[f.header.SchemaVersion] = true
 	}
 	if list.Total != nil && *list.Total != len(s.Vectors) {
 		return nil, fmt.Errorf("%s%s: total %d, but the files hold %d vectors", prefix, name, *list.Total, len(s.Vectors))
@@ -147,53 +162,63 @@ func loadFS(fsys fs.FS, source, prefix string) (*Suite, error) {
 	return s, nil
 }
 
-// loadFamily reads one family file the index (name) lists, checks it against the index, and adds
-// its header and vectors to s.
-func (s *Suite) loadFamily(fsys fs.FS, prefix, name, family string, entry listingEntry) (*FamilyHeader, error) {
+// familyFile is one family file as read and checked against its index, or what is wrong with it.
+type familyFile struct {
+	header  *FamilyHeader
+	vectors []*Vector
+	where   string
+	err     error
+}
+
+// readFamily reads one family file the index (name) lists and checks it against the index.
+func readFamily(fsys fs.FS, prefix, name, family string, entry listingEntry) familyFile {
+	fail := func(format string, args ...any) familyFile { return familyFile{err: fmt.Errorf(format, args...)} }
 	if entry.File == "" || strings.Contains(entry.File, "..") {
-		return nil, fmt.Errorf("%s%s: family %s has no usable `file`", prefix, name, family)
+		return fail("%s%s: family %s has no usable `file`", prefix, name, family)
 	}
 	if why := notRegular(fsys, entry.File); why != "" {
-		return nil, fmt.Errorf("%s%s: %s", prefix, entry.File, why)
+		return fail("%s%s: %s", prefix, entry.File, why)
 	}
 	data, err := fs.ReadFile(fsys, entry.File)
 	if err != nil {
-		return nil, fmt.Errorf("%s%s: cannot read it (listed in %s)", prefix, entry.File, name)
+		return fail("%s%s: cannot read it (listed in %s)", prefix, entry.File, name)
 	}
-	where := prefix + entry.File
-	var header *FamilyHeader
-	var vectors []*Vector
+	f := familyFile{where: prefix + entry.File}
 	if path.Ext(entry.File) == ".jsonl" {
-		header, vectors, err = parseJSONL(data, where)
+		f.header, f.vectors, f.err = parseJSONL(data, f.where)
 	} else {
-		header, vectors, err = parseFamilyJSON(data, where)
+		f.header, f.vectors, f.err = parseFamilyJSON(data, f.where)
 	}
-	if err != nil {
-		return nil, err
+	if f.err != nil {
+		return f
 	}
 	// After parsing, so that a line that does not parse is named by its line.
 	if entry.SHA256 != "" {
-		sum := sha256.Sum256(data)
-		if hex.EncodeToString(sum[:]) != entry.SHA256 {
-			return nil, fmt.Errorf("%s: its sha256 is not the one %s gives: the file is damaged or edited; export it again (plcvec export --lang go)", where, name)
+		if sum := sha256.Sum256(data); hex.EncodeToString(sum[:]) != entry.SHA256 {
+			return fail("%s: its sha256 is not the one %s gives: the file is damaged or edited; export it again (plcvec export --lang go)", f.where, name)
 		}
 	}
-	if header.Family != family {
-		return nil, fmt.Errorf("%s: holds family %q, but %s lists it as %q", where, header.Family, name, family)
+	if f.header.Family != family {
+		return fail("%s: holds family %q, but %s lists it as %q", f.where, f.header.Family, name, family)
 	}
-	if entry.Count != nil && *entry.Count != len(vectors) {
-		return nil, fmt.Errorf("%s: %d vectors, but %s says %d (a truncated file?)", where, len(vectors), name, *entry.Count)
+	if entry.Count != nil && *entry.Count != len(f.vectors) {
+		return fail("%s: %d vectors, but %s says %d (a truncated file?)", f.where, len(f.vectors), name, *entry.Count)
 	}
+	return f
+}
+
+// add adds a family's header and vectors to s; an id s holds already is an error.
+func (s *Suite) add(family string, f familyFile) error {
 	s.Families = append(s.Families, family)
-	s.Headers[family] = header
-	for _, v := range vectors {
+	s.Headers[family] = f.header
+	for _, v := range f.vectors {
 		if s.byID[v.ID] != nil {
-			return nil, fmt.Errorf("%s: vector id %s appears twice", where, v.ID)
+			return fmt.Errorf("%s: vector id %s appears twice", f.where, v.ID)
 		}
 		s.byID[v.ID] = v
 	}
-	s.Vectors = append(s.Vectors, vectors...)
-	return header, nil
+	s.Vectors = append(s.Vectors, f.vectors...)
+	return nil
 }
 
 // readIndex reads the folder's index: index.json (an exported copy), else manifest.json (a vector
