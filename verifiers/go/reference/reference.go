@@ -29,14 +29,14 @@ type Reference struct {
 	// Each family's CPU as configured by the alternatives, worked out once: a vector's CPU is a
 	// copy of it with the vector's operands.
 	fx5  configured[fx5Config]
-	tadd configured[tadd]
-	hour configured[hourMeter]
+	tadd configured[fx5TimeAdd]
+	hour configured[fc6aHourMeter]
 	cp1e configured[cp1eConfig]
 	// One CPU of each family handed back by Release, for the next vector to reuse.
 	fx5CPUs  spare[fx5Compare]
-	taddCPUs spare[tadd]
-	hourCPUs spare[hourMeter]
-	cp1eCPUs spare[cp1e]
+	taddCPUs spare[fx5TimeAdd]
+	hourCPUs spare[fc6aHourMeter]
+	cp1eCPUs spare[cp1eTimeCompare]
 }
 
 type configured[T any] struct {

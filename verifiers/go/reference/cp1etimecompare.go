@@ -48,10 +48,10 @@ type cp1eConfig struct {
 	highBitsErr, erEach     bool   // CP1E-C-HIGH-BITS, CP1E-ER-FLAG
 	errorFlagsOff           bool   // CP1E-ERROR-FLAGS
 	allMasked, andOrWhenOff string // CP1E-ALL-MASKED, CP1E-AND-OR-WHEN-OFF
-	cpus                    *spare[cp1e]
+	cpus                    *spare[cp1eTimeCompare]
 }
 
-type cp1e struct {
+type cp1eTimeCompare struct {
 	*cp1eConfig
 	form      form
 	condition condition
@@ -69,7 +69,7 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 		return nil, fmt.Errorf("not a CP1E time comparison: %s", req.Instruction)
 	}
 	c := cfg.cpus.get()
-	*c = cp1e{cp1eConfig: cfg, form: in.form, condition: in.condition}
+	*c = cp1eTimeCompare{cp1eConfig: cfg, form: in.form, condition: in.condition}
 	if err := deviceOperands(req, []string{"S1", "S2"}, &c.s1, &c.s2); err != nil {
 		return nil, err
 	}
@@ -80,7 +80,7 @@ func newCP1E(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 }
 
 // Release hands the CPU back for the next vector, which overwrites all of it.
-func (c *cp1e) Release() { c.cpus.put(c) }
+func (c *cp1eTimeCompare) Release() { c.cpus.put(c) }
 
 // configureCP1E: the CPU as the alternatives of the CP1E comparisons configure it.
 func configureCP1E(r *Reference) (c cp1eConfig, err error) {
@@ -114,7 +114,7 @@ func configureCP1E(r *Reference) (c cp1eConfig, err error) {
 
 // Execute: "The time comparison instructions are treated just like the LD, AND, and OR
 // instructions to control the execution of subsequent instructions."
-func (c *cp1e) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
+func (c *cp1eTimeCompare) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
 	switch c.form {
 	case formLD:
 		return plcvec.Contact(c.evaluate(mem)), nil
@@ -134,7 +134,7 @@ func (c *cp1e) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, 
 func isBCD(b int) bool   { return b>>4 <= 9 && b&0xF <= 9 }
 func bcdValue(b int) int { return b>>4*10 + b&0xF }
 
-func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
+func (c *cp1eTimeCompare) evaluate(mem *plcvec.Memory) bool {
 	var s1, s2 [3]uint16
 	mem.ReadWords(c.s1, s1[:])
 	mem.ReadWords(c.s2, s2[:])
@@ -203,7 +203,7 @@ func (c *cp1e) evaluate(mem *plcvec.Memory) bool {
 // error: P_ER on, execution condition OFF. The flag table has no row for an execution without a
 // comparison result: the six arithmetic flags keep their values, or (CP1E-ERROR-FLAGS=off) are
 // all written off.
-func (c *cp1e) error(mem *plcvec.Memory) bool {
+func (c *cp1eTimeCompare) error(mem *plcvec.Memory) bool {
 	mem.SetBit(pER, true)
 	if c.errorFlagsOff {
 		for _, f := range cp1eFlags {

@@ -25,7 +25,7 @@ const (
 	errValueRange  = 0x3405 // "Any of values specified by (s1) and (s2) is outside the following range."
 )
 
-type tadd struct {
+type fx5TimeAdd struct {
 	parts        *Parts
 	pulse        bool
 	s1, s2, d    plcvec.Addr
@@ -34,11 +34,11 @@ type tadd struct {
 	computeOnErr bool // TADD-ON-ERROR: computed
 	fieldFirst   bool // TADD-ERROR-ORDER: 3405H stored when both conditions meet
 	previousEN   bool // TADDP: the state before the first scan is off
-	cpus         *spare[tadd]
+	cpus         *spare[fx5TimeAdd]
 }
 
 func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
-	base, err := r.tadd.get(func() (tadd, error) { return configureTADD(r) })
+	base, err := r.tadd.get(func() (fx5TimeAdd, error) { return configureTADD(r) })
 	if err != nil {
 		return nil, err
 	}
@@ -58,10 +58,10 @@ func newTADD(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 }
 
 // Release hands the CPU back for the next vector, which overwrites all of it.
-func (t *tadd) Release() { t.cpus.put(t) }
+func (t *fx5TimeAdd) Release() { t.cpus.put(t) }
 
 // configureTADD: the CPU as the alternatives of TADD configure it.
-func configureTADD(r *Reference) (t tadd, err error) {
+func configureTADD(r *Reference) (t fx5TimeAdd, err error) {
 	t.parts, t.cpus = &r.parts, &r.taddCPUs
 	flags, err := r.choice(spec.InterpTaddFlagsOff, spec.TaddFlagsOffWrittenEachExecution, spec.TaddFlagsOffSetOnly)
 	if err != nil {
@@ -97,7 +97,7 @@ func taddRuns(pulse, en, previous bool) bool {
 	return en
 }
 
-func (t *tadd) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
+func (t *fx5TimeAdd) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
 	run := t.parts.TADDRuns(t.pulse, step.EN, t.previousEN)
 	t.previousEN = step.EN
 	if run {
@@ -106,7 +106,7 @@ func (t *tadd) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, 
 	return plcvec.NoResult, nil
 }
 
-func (t *tadd) add(mem *plcvec.Memory) {
+func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 	// "2820H The device range specified by (s1), (s2), and (d) exceeds the corresponding device
 	// range." Nothing is read or written. ("These instructions occupy three points for each of
 	// three devices")
@@ -155,7 +155,7 @@ func (t *tadd) add(mem *plcvec.Memory) {
 
 // fieldOutOfRange: "3405H Any of values specified by (s1) and (s2) is outside the following
 // range." Only an operand whose three words exist can be read and checked.
-func (t *tadd) fieldOutOfRange(mem *plcvec.Memory, a plcvec.Addr) bool {
+func (t *fx5TimeAdd) fieldOutOfRange(mem *plcvec.Memory, a plcvec.Addr) bool {
 	if !mem.InRange(a, 3) {
 		return false
 	}
@@ -184,7 +184,7 @@ func wrapDay(total int, carryAt24 bool) (int, bool) {
 	return result, carry
 }
 
-func (t *tadd) setFlags(mem *plcvec.Memory, carry, zero bool) {
+func (t *fx5TimeAdd) setFlags(mem *plcvec.Memory, carry, zero bool) {
 	if t.flagsEach {
 		for _, f := range t.parts.TADDCarryFlags {
 			mem.SetBit(f, carry)
@@ -203,7 +203,7 @@ func (t *tadd) setFlags(mem *plcvec.Memory, carry, zero bool) {
 	}
 }
 
-func (t *tadd) error(mem *plcvec.Memory, code uint16) {
+func (t *fx5TimeAdd) error(mem *plcvec.Memory, code uint16) {
 	for _, r := range errorRegisters {
 		mem.SetWord(r, code)
 	}

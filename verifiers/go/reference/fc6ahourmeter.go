@@ -15,7 +15,7 @@ const hourCycle = 65536 * 3600
 // hourMeter is an FC6A CPU executing one HOUR instruction per scan. The fraction of a second
 // already measured lives here (on the CPU it is in the system work area D3, D3+1, whose
 // contents vectors never compare).
-type hourMeter struct {
+type fc6aHourMeter struct {
 	parts      *Parts
 	s1         plcvec.Operand
 	d1, d2, d3 plcvec.Addr
@@ -29,14 +29,14 @@ type hourMeter struct {
 	fractionMS int64
 	wrapped    bool // for "recompared": D2 stays on across a wrap
 	inputWasOn bool // the input at the previous execution (off before the first)
-	cpus       *spare[hourMeter]
+	cpus       *spare[fc6aHourMeter]
 }
 
 func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 	if req.Instruction != spec.InstrHour {
 		return nil, plcvec.Skip("not HOUR: " + req.Instruction)
 	}
-	base, err := r.hour.get(func() (hourMeter, error) { return configureHour(r) })
+	base, err := r.hour.get(func() (fc6aHourMeter, error) { return configureHour(r) })
 	if err != nil {
 		return nil, err
 	}
@@ -56,10 +56,10 @@ func newHourMeter(r *Reference, req *plcvec.Request) (plcvec.CPU, error) {
 }
 
 // Release hands the CPU back for the next vector, which overwrites all of it.
-func (h *hourMeter) Release() { h.cpus.put(h) }
+func (h *fc6aHourMeter) Release() { h.cpus.put(h) }
 
 // configureHour: the CPU as the alternatives of HOUR configure it.
-func configureHour(r *Reference) (h hourMeter, err error) {
+func configureHour(r *Reference) (h fc6aHourMeter, err error) {
 	h.parts, h.cpus = &r.parts, &r.hourCPUs
 	output, err := r.choice(spec.InterpHourOutputOff, spec.HourOutputOffLatched, spec.HourOutputOffRecompared)
 	if err != nil {
@@ -95,7 +95,7 @@ func configureHour(r *Reference) (h hourMeter, err error) {
 
 // checkPreset reads S1 and checks it: the preset in seconds, or false when it is invalid
 // (M8004 on, D2 off).
-func (h *hourMeter) checkPreset(mem *plcvec.Memory) (int64, bool) {
+func (h *fc6aHourMeter) checkPreset(mem *plcvec.Memory) (int64, bool) {
 	// "When source device S1 is designated by a constant, the preset value can be 0 through
 	// 65,535 in hours, then minutes and seconds are set to 0." A data register: "3 consecutive
 	// data registers ... to store hour, minute, and second data."
@@ -127,7 +127,7 @@ func measureKeepingFraction(fractionMS, elapsedMS int64) (int64, int64) {
 	return total / 1000, total % 1000
 }
 
-func (h *hourMeter) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
+func (h *fc6aHourMeter) Execute(mem *plcvec.Memory, step *plcvec.Inputs) (plcvec.Result, error) {
 	turnedOn := step.Input && !h.inputWasOn
 	h.inputWasOn = step.Input
 	if !step.Input {
