@@ -582,3 +582,29 @@ func TestTimeout(t *testing.T) {
 		})
 	}
 }
+
+// TestSettingWarningsOncePerRun: a misspelt PLCVEC_* variable earns its warning once per run on
+// stderr, through Run (its second process, whose last output a failure shows, does not repeat
+// it) and through Verify alike. Run in a child test binary, whose stderr is read.
+func TestSettingWarningsOncePerRun(t *testing.T) {
+	selection := plcvec.Selection{Families: []string{spec.FamilyFx5TimeAdd}}
+	if os.Getenv("PLCVEC_TEST_WARN") != "" {
+		ref, err := reference.New(nil)
+		if err != nil {
+			t.Fatal(err)
+		}
+		if _, err := plcvec.Verify(ref.Implementation(), plcvec.Options{Selection: selection}); err != nil {
+			t.Fatal(err)
+		}
+		// The second process ends the process on the manual's example: its output is shown.
+		plcvec.Run(t, looping{ref.Implementation(), "exits"}, plcvec.Options{Selection: selection})
+		return
+	}
+	cmd := exec.Command(os.Args[0], "-test.run", "^TestSettingWarningsOncePerRun$", "-test.v")
+	cmd.Env = append(os.Environ(), "PLCVEC_TEST_WARN=1", "PLCVEC_TAGG=boundary")
+	out, _ := cmd.CombinedOutput()
+	line := "plcvec: warning: PLCVEC_TAGG is not a plcvec setting; did you mean PLCVEC_TAG?\n"
+	if n := strings.Count(string(out), line); n != 2 || !strings.Contains(string(out), "ended the test process with exit status 3") {
+		t.Errorf("the warning %d times in two runs, not twice (Verify's and Run's, none from Run's second process):\n%s", n, out)
+	}
+}
