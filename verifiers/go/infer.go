@@ -175,7 +175,7 @@ type readings struct {
 	unexplained      []int
 	knownExplained   map[int][]string
 	knownUnexplained []int
-	broken           int
+	broken           []string // the family of each vector that passes now and would fail under the choice
 }
 
 // infer finds the alternatives the implementation's answers match.
@@ -189,7 +189,7 @@ func (r *Report) infer() readings {
 	for _, j := range js {
 		byCase[j.c] = j
 		if j.passed && !j.passesUnder(rd.choice) {
-			rd.broken++
+			rd.broken = append(rd.broken, j.c.family)
 		}
 	}
 	explain := func(i int, explained map[int][]string, unexplained *[]int) {
@@ -239,14 +239,42 @@ func (r *Report) judgedVectors() ([]judged, readings) {
 
 // choose is the choice of step 4: from the followed alternatives, each interpretation in ID
 // order moved to the first alternative (in the files' order) that makes strictly more of the
-// judged vectors that touch it pass, round after round until none moves. Only an interpretation
-// some failed answer touches can move (a passing answer passes under the followed alternatives),
-// so only those are tried.
+// judged vectors that touch it pass, round after round until none moves. The rounds run twice:
+// first without the alternatives that leave devices unjudged, then, from where the first run
+// ended, with every alternative: a reading that judges nothing of a device explains any answer
+// there, so it is taken only for what no reading that judges explains.
 func (p *Plan) choose(js []judged) map[string]string {
 	choice := make(map[string]string, len(p.Choices))
 	for id, c := range p.Choices {
 		choice[id] = c.Alternative
 	}
+	unjudging := p.Suite.unjudgingAlternatives()
+	judging := func(id, alt string) bool { return !unjudging[id+"="+alt] }
+	p.search(js, choice, judging)
+	if len(unjudging) > 0 {
+		p.search(js, choice, func(string, string) bool { return true })
+	}
+	return choice
+}
+
+// unjudgingAlternatives are the alternatives ("ID=alternative") under which some vector's
+// `alternatives` entry leaves devices unjudged.
+func (s *Suite) unjudgingAlternatives() map[string]bool {
+	out := map[string]bool{}
+	for _, v := range s.Vectors {
+		for _, alt := range v.Alternatives {
+			for id := range alt.Unjudged {
+				out[id+"="+alt.Choices[id]] = true
+			}
+		}
+	}
+	return out
+}
+
+// search moves choice as step 4 says, trying only the alternatives allowed. Only an
+// interpretation some failed answer touches can move (a passing answer passes under the followed
+// alternatives), so only those are tried.
+func (p *Plan) search(js []judged, choice map[string]string, allowed func(id, alt string) bool) {
 	touched := map[string]bool{}
 	for _, j := range js {
 		for _, id := range j.c.Vector.Outcome.Interpretations {
@@ -279,7 +307,7 @@ func (p *Plan) choose(js []judged) map[string]string {
 			current := choice[id]
 			best, bestAlt := score(id), current
 			for _, alt := range alternatives[id] {
-				if alt == current {
+				if alt == current || !allowed(id, alt) {
 					continue
 				}
 				choice[id] = alt
@@ -291,7 +319,6 @@ func (p *Plan) choose(js []judged) map[string]string {
 			changed = changed || bestAlt != current
 		}
 	}
-	return choice
 }
 
 // caseOf is the case of a vector id in the report's plan (nil for a stale id).

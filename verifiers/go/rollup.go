@@ -45,7 +45,7 @@ func (r *Report) RollUp() string {
 	var b strings.Builder
 	if len(rd.explained) > 0 {
 		fmt.Fprintf(&b, "READINGS: %d of %d failing vectors pass under other alternatives:\n", len(rd.explained), len(rd.failing))
-		r.writeGroups(&b, rd.explained, rd.unexplained, "failing vectors")
+		r.writeGroups(&b, rd.explained, rd.unexplained, rd.broken)
 		changes := map[string]string{}
 		for id, alt := range rd.choice {
 			if r.Plan.Choices[id].Alternative != alt {
@@ -53,12 +53,16 @@ func (r *Report) RollUp() string {
 			}
 		}
 		fmt.Fprintf(&b, "%sdeclare: %s\n", indent, r.declaration(changes))
-		if rd.broken > 0 {
-			fmt.Fprintf(&b, "%s(so declared, %d vectors that pass now would fail)\n", indent, rd.broken)
+		if len(rd.broken) > 0 {
+			fmt.Fprintf(&b, "%s(so declared, %d vectors that pass now would fail)\n", indent, len(rd.broken))
 		}
-		if p := r.nearUnexplained(rd.explained, rd.unexplained); len(p) > 0 {
-			fmt.Fprintf(&b, "%spartial: %d failing vectors that no reading explains are of the same families; "+
-				"a declaration may hide part of a bug there\n", indent, len(p))
+		families := map[string]bool{}
+		for i := range rd.explained {
+			families[r.Verdicts[i].Family] = true
+		}
+		if near, lost := r.near(families, rd.unexplained, rd.broken); len(near)+len(lost) > 0 {
+			fmt.Fprintf(&b, "%spartial: %d vectors no reading explains and %d vectors that pass now are of the same "+
+				"families; the declaration may hide part of a bug there\n", indent, len(near), len(lost))
 		}
 	}
 	if len(rd.unexplained) > 0 {
@@ -67,7 +71,7 @@ func (r *Report) RollUp() string {
 	if len(rd.knownExplained) > 0 {
 		fmt.Fprintf(&b, "KNOWN FAILURES: %d of %d known failures pass under other alternatives:\n", len(rd.knownExplained), len(rd.known))
 		others := append(append([]int(nil), rd.unexplained...), rd.knownUnexplained...)
-		r.writeGroups(&b, rd.knownExplained, others, "failing vectors and known failures")
+		r.writeGroups(&b, rd.knownExplained, others, rd.broken)
 		changes := map[string]string{}
 		for _, items := range rd.knownExplained {
 			for _, item := range items {
@@ -82,8 +86,10 @@ func (r *Report) RollUp() string {
 }
 
 // writeGroups writes one line per smallest change of explained, largest group first, each
-// marked partial when a vector of others (unexplained) is of a family one of its vectors is of.
-func (r *Report) writeGroups(b *strings.Builder, explained map[int][]string, others []int, what string) {
+// marked partial when a vector of others (not explained) or of broken (passes now, would fail
+// under the choice; by family) is of a family one of its vectors is of: the reading does not
+// account for everything the implementation does there.
+func (r *Report) writeGroups(b *strings.Builder, explained map[int][]string, others []int, broken []string) {
 	groups := map[string]*group{}
 	for i, items := range explained {
 		text := strings.Join(items, ", ")
@@ -94,38 +100,39 @@ func (r *Report) writeGroups(b *strings.Builder, explained map[int][]string, oth
 		groups[text].items = append(groups[text].items, i)
 	}
 	for _, g := range sortGroups(groups) {
-		mark := ""
 		families := map[string]bool{}
 		for _, i := range g.items {
 			families[r.Verdicts[i].Family] = true
 		}
-		var near []int
-		named := map[string]bool{}
-		for _, i := range others {
-			if f := r.Verdicts[i].Family; families[f] {
-				near, named[f] = append(near, i), true
+		mark := ""
+		if near, lost := r.near(families, others, broken); len(near)+len(lost) > 0 {
+			named := map[string]bool{}
+			for _, i := range near {
+				named[r.Verdicts[i].Family] = true
 			}
-		}
-		if len(near) > 0 {
-			mark = fmt.Sprintf(" (partial: %d %s of %s not explained)", len(near), what, strings.Join(sortedKeysOf(named), ", "))
+			for _, f := range lost {
+				named[f] = true
+			}
+			mark = fmt.Sprintf(" (partial: %d not explained, %d would fail, in %s)", len(near), len(lost),
+				strings.Join(sortedKeysOf(named), ", "))
 		}
 		fmt.Fprintf(b, "%s%6d  %s%s\n", indent, g.n, g.text, mark)
 	}
 }
 
-// nearUnexplained are the vectors of unexplained whose family some explained vector is of.
-func (r *Report) nearUnexplained(explained map[int][]string, unexplained []int) []int {
-	families := map[string]bool{}
-	for i := range explained {
-		families[r.Verdicts[i].Family] = true
-	}
-	var out []int
-	for _, i := range unexplained {
+// near are the vectors of others (verdict indexes) and of broken (families) that are of families.
+func (r *Report) near(families map[string]bool, others []int, broken []string) (near []int, lost []string) {
+	for _, i := range others {
 		if families[r.Verdicts[i].Family] {
-			out = append(out, i)
+			near = append(near, i)
 		}
 	}
-	return out
+	for _, f := range broken {
+		if families[f] {
+			lost = append(lost, f)
+		}
+	}
+	return near, lost
 }
 
 // writeUnexplained writes the failing vectors no reading explains, grouped by the clauses they
