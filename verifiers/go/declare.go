@@ -1,7 +1,6 @@
 package plcvec
 
 import (
-	"sort"
 	"strconv"
 	"strings"
 )
@@ -22,11 +21,7 @@ const (
 
 // declaration is changes (interpretation -> alternative) as r's syntax writes it, sorted by id.
 func (r *Report) declaration(changes map[string]string) string {
-	ids := make([]string, 0, len(changes))
-	for id := range changes {
-		ids = append(ids, id)
-	}
-	sort.Strings(ids)
+	ids := sortedKeysOf(changes)
 	parts := make([]string, len(ids))
 	for i, id := range ids {
 		if r.syntax == declareVerify {

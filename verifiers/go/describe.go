@@ -189,11 +189,7 @@ func (c *Case) notJudgedLines() []string {
 		}
 		unjudged, choices = en.unjudged, en.choices
 	}
-	ids := make([]string, 0, len(unjudged))
-	for id := range unjudged {
-		ids = append(ids, id)
-	}
-	sort.Strings(ids)
+	ids := sortedKeysOf(unjudged)
 	lines := make([]string, len(ids))
 	for i, id := range ids {
 		devices := append([]string(nil), unjudged[id]...)
