@@ -257,20 +257,6 @@ func (p *Plan) choose(js []judged) map[string]string {
 	return choice
 }
 
-// unjudgingAlternatives are the alternatives ("ID=alternative") under which some vector's
-// `alternatives` entry leaves devices unjudged.
-func (s *Suite) unjudgingAlternatives() map[string]bool {
-	out := map[string]bool{}
-	for _, v := range s.Vectors {
-		for _, alt := range v.Alternatives {
-			for id := range alt.Unjudged {
-				out[id+"="+alt.Choices[id]] = true
-			}
-		}
-	}
-	return out
-}
-
 // search moves choice as step 4 says, trying only the alternatives allowed. Only an
 // interpretation some failed answer touches can move (a passing answer passes under the followed
 // alternatives), so only those are tried.

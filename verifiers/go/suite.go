@@ -490,3 +490,17 @@ func (s *Suite) interpretations() ([]InterpretationInfo, error) {
 	sort.Slice(out, func(a, b int) bool { return out[a].ID < out[b].ID })
 	return out, nil
 }
+
+// unjudgingAlternatives are the alternatives ("ID=alternative") under which some vector's
+// `alternatives` entry leaves devices unjudged.
+func (s *Suite) unjudgingAlternatives() map[string]bool {
+	out := map[string]bool{}
+	for _, v := range s.Vectors {
+		for _, alt := range v.Alternatives {
+			for id := range alt.Unjudged {
+				out[id+"="+alt.Choices[id]] = true
+			}
+		}
+	}
+	return out
+}
