@@ -17,6 +17,7 @@ NAMED = [
     ("HOUR-M8004-REPEAT", "fc6a-hour-meter", ["every-check", "once"]),
     ("HOUR-D2-SPECIAL", "fc6a-hour-meter", ["accepted", "error", "undefined"]),
     ("HOUR-S1-CONSTANT-RANGE", "fc6a-hour-meter", ["error", "as-is", "low-16-bits", "undefined"]),
+    ("TADD-OVERLAP", "fx5-time-add", ["sources-first", "second-first", "hour-first"]),
 ]
 
 
@@ -234,3 +235,52 @@ def test_every_two_alternatives_are_told_apart_by_some_vector(iid, golden, famil
     for x, a in enumerate(alternatives):
         for b in alternatives[x + 1:]:
             assert any(expectation(v, a) != expectation(v, b) for v in vectors), (iid, a, b)
+def _words(vector, head, count=3, expect=None):
+    devices = (expect or vector)["final"]["devices"]
+    prefix, at = head[0], int(head[1:])
+    return [devices[f"{prefix}{at + k}"] for k in range(count)]
+
+
+def test_tadd_overlap_reads_what_each_reading_says(golden):
+    """(s1) = 11:30:30 in D100-D102, (s2) = 15:39:39 in D200-D202; the sum 27:10:09 wraps to 3:10:09
+    with carry. (d) one or two words off a source, worked word by word from the alternatives' wording."""
+    vectors = by_id(golden, "fx5-time-add")
+    v = vectors["fx5-time-add/TADD/overlap/d=s1+1"]
+    assert v["initial"]["operands"]["d"] == {"device": "D101"}
+    assert _words(v, "D100", 1) + [v["initial"]["devices"][d] for d in ("D101", "D102")] == [11, 30, 30]
+    # sources-first: D101-D103 = 3:10:09, carry on.
+    assert _words(v, "D101") == [3, 10, 9] and v["final"]["devices"]["SM700"] is True
+    # second-first: D103 <- 30+39 = 69 -> 9 carry 1; D102 <- 30+39+1 = 70 -> 10 carry 1 (D102, (s1)+2, was
+    # read already); D101 <- 11+15+1 = 27 -> 3: the same as sources-first.
+    assert _words(v, "D101", expect=alternative(v, TADD_OVERLAP="second-first")) == [3, 10, 9]
+    # hour-first: D101 <- 11+15 = 26; (s1)+1 is D101, now 26: D102 <- 26+39 = 65; (s1)+2 is D102, now 65:
+    # D103 <- 65+39 = 104; 26:65:104 = 97,604 s, less 86,400 = 11,204 s = 3:06:44, carry on.
+    hour_first = alternative(v, TADD_OVERLAP="hour-first")
+    assert _words(v, "D101", expect=hour_first) == [3, 6, 44] and hour_first["final"]["devices"]["SM700"] is True
+
+    v = vectors["fx5-time-add/TADD/overlap/d=s1-1"]
+    assert _words(v, "D99") == [3, 10, 9]
+    # second-first: D101 <- 30+39 = 69 -> 9 carry 1; (s1)+1 is D101, now 9: D100 <- 9+39+1 = 49 carry 0;
+    # (s1) is D100, now 49: D99 <- (49+15) mod 24 = 16. The words as read, 64:48:69, pass 24:00:00: carry.
+    second_first = alternative(v, TADD_OVERLAP="second-first")
+    assert _words(v, "D99", expect=second_first) == [16, 49, 9] and second_first["final"]["devices"]["SM700"] is True
+    # hour-first: D99 <- 26, D100 <- 30+39 = 69, D101 <- 30+39 = 69, each source word read before it is
+    # written; 26:69:69 = 3:10:09 after the wrap, as sources-first.
+    assert _words(v, "D99", expect=alternative(v, TADD_OVERLAP="hour-first")) == [3, 10, 9]
+
+    v = vectors["fx5-time-add/TADD/overlap/d=s2-2"]
+    assert v["initial"]["devices"]["SM700"] is False and _words(v, "D198") == [3, 10, 9]
+    # second-first: D200 <- 9 carry 1 (D200 is (s2)); D199 <- 30+39+1 = 70 -> 10 carry 1; D198 <- 11+9+1 = 21.
+    # The words as read, 20:69:69 = 76,209 s, stay below 24:00:00: no carry, the flags stay off.
+    second_first = alternative(v, TADD_OVERLAP="second-first")
+    assert _words(v, "D198", expect=second_first) == [21, 10, 9]
+    assert second_first["expect"][0]["devices"] == {"D198": 21, "D199": 10, "D200": 9}
+
+
+def test_tadd_same_device_is_alike_under_every_overlap_reading(golden):
+    """(d) = (s1) shares every word at the same offset: each source word is read before its own word of
+    (d) is written under every reading, so TADD-OVERLAP does not touch those vectors."""
+    for v in golden["fx5-time-add"]["vectors"]:
+        if "/same-device/" in v["id"] or "aliasing=s1=d" in v["id"] or "aliasing=s2=d" in v["id"]:
+            assert "TADD-OVERLAP" not in v["outcome"].get("interpretations", []), v["id"]
+

@@ -141,6 +141,22 @@ class AddCases:
                             description=f"(s1) and (d) are both {self.place[s1]}; EN on, on, off, on.",
                             values={s1: start, s2: step}, heads=heads, steps=steps, result_initial=self.ops.words(start))
 
+    def overlap(self):
+        """(d) one or two words from (s1) or (s2): whether a source word is read before or after (d)'s word at
+        the same device is written is TADD-OVERLAP. (s1) holds the middle of each range (one more below the
+        top field), (s2) two thirds of each: their sum carries out of every field and wraps, so a source word
+        read after (d) wrote it changes the result."""
+        start = self.ops.values()
+        values = {self.addends[0]: dict(start, **{n: start[n] + 1 for n in self.names[1:]}),
+                  self.addends[1]: {n: f["max"] * 2 // 3 for n, f in zip(self.names, self.fields)}}
+        for op in self.addends:
+            prefix, at = split_address(self.place[op])
+            for shift in (-2, -1, 1, 2):
+                heads = {self.result: f"{prefix}{at + shift}"}
+                yield self.case(self.every_scan, f"overlap/d={op}{shift:+d}", tags=["overlap"], values=values, heads=heads,
+                                description=f"(d) at {heads[self.result]}, {op}{shift:+d}: {abs(shift)} of their words are the same "
+                                            f"devices; {self.hms(values[self.addends[0]])} + {self.hms(values[self.addends[1]])}.")
+
     def pulse(self):
         s1, s2 = self.addends
         seq = [False, True, True, False, True, True]
@@ -195,7 +211,17 @@ class AddCases:
             rest = total - codec.to_units(values[op])
             if alias == "distinct" and 0 <= rest < codec.modulus():
                 values[other] = codec.from_units(rest)
-        if alias != "distinct":
+        if "-overlaps-" in alias:
+            # (d) one word after the addend (or the addend one before (d), when (d) is the operand placed at
+            # the top of its device range): two of their words are the same devices.
+            _, op = alias.split("-overlaps-")
+            if self.result in heads:
+                prefix, at = split_address(heads[self.result])
+                heads[op] = f"{prefix}{at - 1}"
+            else:
+                prefix, at = split_address(heads.get(op, self.place[op]))
+                heads[self.result] = f"{prefix}{at + 1}"
+        elif alias != "distinct":
             first, second = alias.split("=")
             heads[second] = heads.get(first, self.place[first])
             if second == self.result:
@@ -218,6 +244,6 @@ def clock_add_cases(fam, builder):
     c = AddCases(fam, builder)
     vectors = []
     for family in (c.manual_examples, c.carries, c.range_errors, c.device_range, c.both_errors, c.registers_after_success,
-                   c.same_device, c.pulse, c.random):
+                   c.same_device, c.overlap, c.pulse, c.random):
         vectors += family()
     return vectors + model_cases(builder, vectors, c.from_row, ("instructions",))

@@ -2,7 +2,7 @@
 execution, read from the vector's inputs and the engine's record of it."""
 import itertools
 
-from plcvec.engine.words import FieldCodec, in_device_range
+from plcvec.engine.words import FieldCodec, in_device_range, split_address
 
 
 def _ops(doc, *roles):
@@ -26,9 +26,12 @@ def sum_classes(doc):
 
 
 def aliasing_classes(doc):
-    """Every operand its own device, or two of them the same device."""
+    """Every operand its own device, or two of them the same device, or the result sharing some words
+    with an addend at another offset (its head fewer words from the addend's than the addend has)."""
     ops = list(doc["operands"])
-    return ["distinct"] + [f"{a}={b}" for a, b in itertools.combinations(ops, 2)]
+    (result,) = _ops(doc, "result")
+    overlaps = [f"{result}-overlaps-{op}" for op in _ops(doc, "addend") if doc["operands"][op]["words"] > 1]
+    return ["distinct"] + [f"{a}={b}" for a, b in itertools.combinations(ops, 2)] + overlaps
 
 
 DERIVE = {
@@ -63,20 +66,28 @@ class AddClassifier:
             where = "zero" if total == 0 else "exact-wrap" if total == modulus else "above-wrap"
         else:
             where = "below-wrap" if total < modulus else "above-wrap"
-        heads = [operands[op]["device"] for op in self.all_ops]
-        alias = "distinct"
-        for (a, ha), (b, hb) in itertools.combinations(zip(self.all_ops, heads), 2):
-            if ha == hb:
-                alias = f"{a}={b}"
-                break
         return {
             "instructions": instr["name"],
             "execution-condition": "off" if not en else "held" if record["en_before"] else "rising",
             "data-validity": self.data_class(operands, before),
             "sum": where,
             "flags-before": "on" if any(before.get(d) for d in self.flags) else "off",
-            "aliasing": alias,
+            "aliasing": self.aliasing(operands),
         }
+
+    def aliasing(self, operands):
+        heads = [operands[op]["device"] for op in self.all_ops]
+        for (a, ha), (b, hb) in itertools.combinations(zip(self.all_ops, heads), 2):
+            if ha == hb:
+                return f"{a}={b}"
+        (result,) = _ops(self.doc, "result")
+        prefix, head = split_address(operands[result]["device"])
+        for op in self.addends:
+            other, at = split_address(operands[op]["device"])
+            if (other == prefix and None not in (head, at)
+                    and head < at + self.words[op] and at < head + self.words[result]):
+                return f"{result}-overlaps-{op}"
+        return "distinct"
 
     def data_class(self, operands, before):
         for op in self.all_ops:

@@ -2,8 +2,10 @@
 
 The radix of each field is its range (max + 1); the sum past the top field's range wraps and sets the
 carry flags; a zero result sets the zero flags. Error checks run in the order the spec lists them.
+When the result shares words with an addend at another offset, the spec's `writes` says whether every
+addend word is read before the result is written, or the result is written field by field between reads.
 """
-from plcvec.engine.words import FieldCodec, in_device_range
+from plcvec.engine.words import FieldCodec, in_device_range, split_address
 
 
 class ClockAdd:
@@ -76,10 +78,7 @@ class ClockAdd:
 
     def _add(self, values, operands, state, trace):
         trace.add(self.doc["data"]["order_clause"])
-        total = 0
-        for op in self.addends:
-            v = values.get(op) or self.codec.read(state, operands[op]["device"])
-            total += self.codec.to_units(v)
+        total = self._total(values, operands, state)
         modulus = self.codec.modulus()
         # Whether the carry is set at the wrap itself or only past it decides something only at the wrap.
         carry = total > modulus or (total == modulus and self.flags["carry_at_wrap"])
@@ -94,3 +93,41 @@ class ClockAdd:
                     state[device] = on
                     trace.add(self.flags[name].get("device_clauses", {}).get(device))
         return total
+
+    def _total(self, values, operands, state):
+        """The sum of the addends in units of the last field, read as the spec's `writes` says.
+
+        When (d) is written between the reads decides something only when it shares words with an addend
+        at another offset (a word of the addend is then one of the result), so only then is it asked.
+        """
+        writes = self.doc["writes"] if self._shares_words(operands) else "after_reads"
+        if writes == "after_reads":
+            total = 0
+            for op in self.addends:
+                v = values.get(op) or self.codec.read(state, operands[op]["device"])
+                total += self.codec.to_units(v)
+            return total
+        # Field by field, each written to (d) before the next is read: from the last field up, the way the
+        # carry goes, writing the field's digit of the sum so far; or from the first field down, writing the
+        # field's plain sum (the whole result is written from the total afterwards, as for any reading).
+        from_last = writes == "each_field_from_last"
+        fields = self.codec.fields[::-1] if from_last else self.codec.fields
+        result, modulus, total = operands[self.result]["device"], self.codec.modulus(), 0
+        for f in fields:
+            part = sum(self.codec.read_field(state, operands[op]["device"], f) for op in self.addends)
+            total += part * self.codec.units(f)
+            digit = self.codec.from_units(total % modulus)[f["name"]] if from_last else part
+            self.codec.write_field(state, result, f, digit)
+        return total
+
+    def _shares_words(self, operands):
+        """Whether (d) and an addend share a word at different offsets ((d) = (s1)+1, (s2)-2, ...)."""
+        prefix, head = split_address(operands[self.result]["device"])
+        words = self.ops[self.result]["words"]
+        for op in self.addends:
+            other, at = split_address(operands[op]["device"])
+            if (other == prefix and head is not None and at is not None and head != at
+                    and head < at + self.ops[op]["words"] and at < head + words):
+                return True
+        return False
+

@@ -139,6 +139,26 @@ class FieldCodec:
         for address, word in zip(word_addresses(head, len(words)), words):
             state[address] = word
 
+    def read_field(self, state, head, field):
+        """The value one field of the operand at `head` holds now (None when not a valid encoding)."""
+        address = word_address(head, field["word"])
+        return decode(self.raw([0] * field["word"] + [state[address]], field), field["encoding"], field["width"])
+
+    def write_field(self, state, head, field, value):
+        """Store `value` in one field of the operand at `head`, leaving the other bits of its word as they are."""
+        address = word_address(head, field["word"])
+        mask = ((1 << field["width"]) - 1) << field["lsb"]
+        state[address] = (state[address] & ~mask) | (encode(value, field["encoding"], field["width"]) << field["lsb"] & mask)
+
+    def units(self, field):
+        """How many units of the least significant field one unit of `field` is worth."""
+        weight = 1
+        for f, radix in zip(reversed(self.fields), reversed(self._radices)):
+            if f is field:
+                return weight
+            weight *= radix
+        raise ValueError(f"{field['name']} is not a field of this codec")
+
     def in_range(self, field, value):
         return value is not None and field["min"] <= value <= field["max"]
 

@@ -16,6 +16,7 @@ TAGS = {
     "manual-example": "Reproduces an example printed in the manual; `printed` holds the manual's own expectation.",
     "model": "Exercises combinations of the family's coverage model (spec: coverage.model) that no other vector does; its id names the classes of its row.",
     "nonexistent-date": "A date no calendar has, whose fields are each within range.",
+    "overlap": "The destination shares words with a source at another offset (its head one or two words from the source's).",
     "pulse": "Execution on the rising edge of the execution condition, over a sequence of scans.",
     "random": "Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec.",
     "reconstructed": "The manual's input values were lost; these satisfy its printed table.",

@@ -13,10 +13,10 @@ const SuiteVersion = "0.2.0"
 const SchemaVersion = "1.1.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "bdf31f93923c3228945b93e4f1ee8b2f8963186485d498e97483dfa461058e55"
+const SpecSHA256 = "d7d50bb0d6bb1913b1b8597a7acc369b7e88707addef4ab00476f1eabcede6ce"
 
 // Total is the number of vectors in the exported copy.
-const Total = 3536
+const Total = 3571
 
 // Families (one vector file each).
 
@@ -138,6 +138,9 @@ const TagModel = "model"
 
 // TagNonexistentDate: A date no calendar has, whose fields are each within range.
 const TagNonexistentDate = "nonexistent-date"
+
+// TagOverlap: The destination shares words with a source at another offset (its head one or two words from the source's).
+const TagOverlap = "overlap"
 
 // TagPulse: Execution on the rising edge of the execution condition, over a sequence of scans.
 const TagPulse = "pulse"
@@ -447,6 +450,18 @@ const TaddErrorOrderDeviceRangeFirst = "device-range-first"
 // TaddErrorOrderFieldRangeFirst: 3405H is stored in SD0 and SD8067; nothing else is written ((d) and the flags keep their values under either alternative of TADD-ON-ERROR, since an operand past its device range cannot be read or written).
 const TaddErrorOrderFieldRangeFirst = "field-range-first"
 
+// InterpTaddOverlap: When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it?
+const InterpTaddOverlap = "TADD-OVERLAP"
+
+// TaddOverlapSourcesFirst: All six words of (s1) and (s2) are read before any word of (d) is written: (d) receives the sum of the times (s1) and (s2) held before the execution, wherever (d) lies. (the default)
+const TaddOverlapSourcesFirst = "sources-first"
+
+// TaddOverlapSecondFirst: Word by word from the second up, the way the carry goes: (s1)+2 and (s2)+2 are read and (d)+2 is written with their sum mod 60, the carry being their sum div 60; then (s1)+1 and (s2)+1 are read (a word of them that is (d)+2 now holds the new second) and (d)+1 is written with their sum plus the carry, mod 60, and the next carry; then (s1) and (s2) are read likewise and (d) is written with their sum plus the carry, mod 24. The carry and zero flags are those of the sum of the words as read (hours × 3600 + minutes × 60 + seconds), as TADD-EXACT-24 and TADD-FLAGS-OFF say.
+const TaddOverlapSecondFirst = "second-first"
+
+// TaddOverlapHourFirst: Word by word from the hour down, without carrying: (s1) and (s2) are read and (d) is written with their plain sum; then (s1)+1 and (s2)+1 are read (a word of them that is (d) now holds that sum) and (d)+1 is written with their plain sum; then (s1)+2 and (s2)+2 are read and (d)+2 is written likewise. Then (d), (d)+1, (d)+2 are written with the time of day those three sums make: hours × 3600 + minutes × 60 + seconds, modulo 24:00:00; the carry and zero flags are those of that total, as TADD-EXACT-24 and TADD-FLAGS-OFF say.
+const TaddOverlapHourFirst = "hour-first"
+
 // Family is one instruction family: its vector file's name, kind, title and instructions.
 type Family struct {
 	Name         string
@@ -599,7 +614,7 @@ var Families = []Family{
 	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags}},
 	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagForbiddenOperand, TagInputOff, TagInvalidRange, TagLatch, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero, InterpHourFirstScan, InterpHourPresetCheck, InterpHourM8004Off, InterpHourD1OutOfRange, InterpHourWrapReach, InterpHourM8004Repeat, InterpHourD2Special, InterpHourS1ConstantRange}},
 	{Name: FamilyFx5DateCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 date comparison (LDDT\U000025a1, ANDDT\U000025a1, ORDT\U000025a1)", Instructions: []string{InstrAnddtLt, InstrAnddtLe, InstrAnddtNe, InstrAnddtEq, InstrAnddtGt, InstrAnddtGe, InstrLddtLt, InstrLddtLe, InstrLddtNe, InstrLddtEq, InstrLddtGt, InstrLddtGe, InstrOrdtLt, InstrOrdtLe, InstrOrdtNe, InstrOrdtEq, InstrOrdtGt, InstrOrdtGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagNonexistentDate, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
-	{Name: FamilyFx5TimeAdd, Kind: "clock_add", Title: "Mitsubishi MELSEC iQ-F FX5 clock data addition (TADD, TADDP)", Instructions: []string{InstrTadd, InstrTaddp}, Tags: []string{TagBoundary, TagDeviceRange, TagInvalidRange, TagManualExample, TagModel, TagPulse, TagRandom, TagRegression, TagSameDevice, TagWrap}, Interpretations: []string{InterpTaddFlagsOff, InterpTaddExact24, InterpTaddOnError, InterpTaddErrorOrder}},
+	{Name: FamilyFx5TimeAdd, Kind: "clock_add", Title: "Mitsubishi MELSEC iQ-F FX5 clock data addition (TADD, TADDP)", Instructions: []string{InstrTadd, InstrTaddp}, Tags: []string{TagBoundary, TagDeviceRange, TagInvalidRange, TagManualExample, TagModel, TagOverlap, TagPulse, TagRandom, TagRegression, TagSameDevice, TagWrap}, Interpretations: []string{InterpTaddFlagsOff, InterpTaddExact24, InterpTaddOnError, InterpTaddErrorOrder, InterpTaddOverlap}},
 	{Name: FamilyFx5TimeCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 time comparison (LDTM\U000025a1, ANDTM\U000025a1, ORTM\U000025a1)", Instructions: []string{InstrAndtmLt, InstrAndtmLe, InstrAndtmNe, InstrAndtmEq, InstrAndtmGt, InstrAndtmGe, InstrLdtmLt, InstrLdtmLe, InstrLdtmNe, InstrLdtmEq, InstrLdtmGt, InstrLdtmGe, InstrOrtmLt, InstrOrtmLe, InstrOrtmNe, InstrOrtmEq, InstrOrtmGt, InstrOrtmGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
 }
 
@@ -631,4 +646,5 @@ var Interpretations = []Interpretation{
 	{ID: InterpTaddExact24, Question: "Does a sum of exactly 24:00:00 turn the carry flag on?", Default: TaddExact24CarryAt24, Alternatives: []string{TaddExact24CarryAt24, TaddExact24CarryAbove24}, Families: []string{"fx5-time-add"}},
 	{ID: InterpTaddOnError, Question: "What happens to (d) and the flags when an operation error (3405H) occurs?", Default: TaddOnErrorNotExecuted, Alternatives: []string{TaddOnErrorNotExecuted, TaddOnErrorComputed}, Families: []string{"fx5-time-add"}},
 	{ID: InterpTaddErrorOrder, Question: "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?", Default: TaddErrorOrderDeviceRangeFirst, Alternatives: []string{TaddErrorOrderDeviceRangeFirst, TaddErrorOrderFieldRangeFirst}, Families: []string{"fx5-time-add"}},
+	{ID: InterpTaddOverlap, Question: "When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it?", Default: TaddOverlapSourcesFirst, Alternatives: []string{TaddOverlapSourcesFirst, TaddOverlapSecondFirst, TaddOverlapHourFirst}, Families: []string{"fx5-time-add"}},
 }

@@ -4,13 +4,14 @@ Written from the manual page fx5-time-add-TADD.txt.
 """
 from __future__ import annotations
 
-from .machine import DeviceMemory, to_signed16
+from .machine import DeviceMemory, to_signed16, to_word
 
 ALTERNATIVES = {
     "TADD-FLAGS-OFF": ("written-each-execution", "set-only"),
     "TADD-EXACT-24": ("carry-at-24", "carry-above-24"),
     "TADD-ON-ERROR": ("not-executed", "computed"),
     "TADD-ERROR-ORDER": ("device-range-first", "field-range-first"),
+    "TADD-OVERLAP": ("sources-first", "second-first", "hour-first"),
 }
 
 DEFAULTS = {
@@ -18,6 +19,7 @@ DEFAULTS = {
     "TADD-EXACT-24": "carry-at-24",               # or "carry-above-24"
     "TADD-ON-ERROR": "not-executed",              # or "computed"
     "TADD-ERROR-ORDER": "device-range-first",     # or "field-range-first"
+    "TADD-OVERLAP": "sources-first",              # or "second-first", "hour-first"
 }
 
 DAY = 24 * 3600
@@ -32,6 +34,9 @@ ERR_VALUE_RANGE = 0x3405
 
 # "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)"
 RANGES = [(0, 23), (0, 59), (0, 59)]
+# Seconds in one hour, minute, second; and what each word counts up to before it carries.
+WEIGHTS = (3600, 60, 1)
+RADIX = (24, 60, 60)
 
 
 class TADDMachine:
@@ -105,20 +110,52 @@ class TADDMachine:
                 self._error(ERR_DEVICE_RANGE)
             return
 
-        s1 = [to_signed16(w) for w in mem.read_block(s1_dev, 3)]
-        s2 = [to_signed16(w) for w in mem.read_block(s2_dev, 3)]
         if value_bad:
             self._error(ERR_VALUE_RANGE)
             if self.choices["TADD-ON-ERROR"] == "not-executed":
                 return
 
-        total = (s1[0] + s2[0]) * 3600 + (s1[1] + s2[1]) * 60 + (s1[2] + s2[2])
+        total = self.sum_seconds(s1_dev, s2_dev, d_dev)
         result, carry = self.wrap(total)
         h, rest = divmod(result, 3600)
         m, s = divmod(rest, 60)
         mem.write_block(d_dev, [h, m, s])
         # "If the result is 0 (0:00:00), the zero flag turns on."
         self._set_flags(carry, result == 0)
+
+    def sum_seconds(self, s1_dev: str, s2_dev: str, d_dev: str) -> int:
+        """(s1) + (s2) in seconds, read in the order TADD-OVERLAP says.
+
+        The order shows only when (d) overlaps (s1) or (s2) at another offset ((d) = (s1)+1, ...):
+        then a source word read after a word of (d) was written holds what was written.
+        """
+        mem = self.mem
+
+        def word(dev, k):
+            return to_signed16(mem.read(mem.address(dev, k)))
+
+        order = self.choices["TADD-OVERLAP"]
+        if order == "sources-first":
+            s1 = [word(s1_dev, k) for k in range(3)]
+            s2 = [word(s2_dev, k) for k in range(3)]
+            return sum((a + b) * w for a, b, w in zip(s1, s2, WEIGHTS))
+        total = 0
+        if order == "second-first":
+            # Second, minute, hour: each word of (d) gets its digit as soon as it is known.
+            carry = 0
+            for k in (2, 1, 0):
+                a, b = word(s1_dev, k), word(s2_dev, k)
+                total += (a + b) * WEIGHTS[k]
+                carry, digit = divmod(a + b + carry, RADIX[k])
+                mem.write(mem.address(d_dev, k), to_word(digit))
+            return total
+        # hour-first: the plain sum of each pair of words into (d), hour to second; the
+        # carries are settled afterwards, from the three sums.
+        for k in (0, 1, 2):
+            a, b = word(s1_dev, k), word(s2_dev, k)
+            total += (a + b) * WEIGHTS[k]
+            mem.write(mem.address(d_dev, k), to_word(a + b))
+        return total
 
     def execute(self, instruction: str, operands: dict, step: dict):
         en = bool(step["en"])

@@ -227,6 +227,7 @@ const char *const plcvec_tag_names[PLCVEC_TAG_COUNT] = {
     "manual-example",
     "model",
     "nonexistent-date",
+    "overlap",
     "pulse",
     "random",
     "reconstructed",
@@ -357,6 +358,11 @@ static const char *const alternatives_tadd_error_order[] = {
     "device-range-first",
     "field-range-first",
 };
+static const char *const alternatives_tadd_overlap[] = {
+    "sources-first",
+    "second-first",
+    "hour-first",
+};
 
 const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_COUNT] = {
     {"CP1E-NON-BCD", "What happens when a field of S1 or S2 is not BCD (a nibble above 9)\?", alternatives_cp1e_non_bcd, 2, PLCVEC_CP1E_NON_BCD_ERROR,
@@ -411,6 +417,8 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
      0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},
     {"TADD-ERROR-ORDER", "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored\?", alternatives_tadd_error_order, 2, PLCVEC_TADD_ERROR_ORDER_DEVICE_RANGE_FIRST,
      0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},
+    {"TADD-OVERLAP", "When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it\?", alternatives_tadd_overlap, 3, PLCVEC_TADD_OVERLAP_SOURCES_FIRST,
+     0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},
 };
 
 const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT] = {
@@ -421,12 +429,18 @@ const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT] = {
     {"D100", "D", 100},
     {"D101", "D", 101},
     {"D102", "D", 102},
+    {"D103", "D", 103},
+    {"D104", "D", 104},
     {"D11", "D", 11},
     {"D12", "D", 12},
+    {"D198", "D", 198},
+    {"D199", "D", 199},
     {"D20", "D", 20},
     {"D200", "D", 200},
     {"D201", "D", 201},
     {"D202", "D", 202},
+    {"D203", "D", 203},
+    {"D204", "D", 204},
     {"D21", "D", 21},
     {"D22", "D", 22},
     {"D30", "D", 30},
@@ -441,6 +455,8 @@ const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT] = {
     {"D8189", "D", 8189},
     {"D8190", "D", 8190},
     {"D8191", "D", 8191},
+    {"D98", "D", 98},
+    {"D99", "D", 99},
     {"M10", "M", 10},
     {"M8003", "M", 8003},
     {"M8004", "M", 8004},

@@ -58,9 +58,9 @@ class DeviceRangeUncheckedTADD(DeviceRangeUnchecked, TADDMachine):
 
 
 @mutant("tadd-d-cleared-first", FAMILY,
-        "(d) is cleared to 0:00:00 before (s1) and (s2) are read, so a source that is also the "
-        "destination is added as 0.",
-        exercises={"aliasing": ["s1=d", "s2=d"]})
+        "(d) is cleared to 0:00:00 before (s1) and (s2) are read, so a source word that is also a "
+        "word of the destination is added as 0.",
+        exercises={"aliasing": ["s1=d", "s2=d", "d-overlaps-*"]})
 class DClearedFirst(TADDMachine):
     def add(self, operands):
         devices = [operands[k]["device"] for k in ("s1", "s2", "d")]
@@ -93,3 +93,16 @@ class ZeroFlagSetOnly(TADDMachine):
         super()._set_flags(carry, zero)
         if was:
             self.mem.write(ZERO_FLAG, True)
+
+
+@mutant("tadd-s1-copied-into-d-first", FAMILY,
+        "(s1) is copied into (d) word by word from the hour, then (s2) is added to (d) in place, so a word "
+        "of (s2), or a later word of (s1), that is also a word of (d) is overwritten before it is read.",
+        exercises={"aliasing": ["s2=d", "d-overlaps-*"]})
+class S1CopiedIntoDFirst(TADDMachine):
+    def sum_seconds(self, s1_dev, s2_dev, d_dev):
+        mem = self.mem
+        for k in range(3):
+            mem.write(mem.address(d_dev, k), mem.read(mem.address(s1_dev, k)))
+        return super().sum_seconds(d_dev, s2_dev, d_dev)
+

@@ -10,9 +10,9 @@ pub const SUITE_VERSION: &str = "0.2.0";
 /// The vector files' `schema_version`.
 pub const SCHEMA_VERSION: &str = "1.1.0";
 /// The hash of the spec the embedded vectors were generated from.
-pub const SPEC_SHA256: &str = "bdf31f93923c3228945b93e4f1ee8b2f8963186485d498e97483dfa461058e55";
+pub const SPEC_SHA256: &str = "d7d50bb0d6bb1913b1b8597a7acc369b7e88707addef4ab00476f1eabcede6ce";
 /// How many vectors the embedded copy holds.
-pub const TOTAL: usize = 3536;
+pub const TOTAL: usize = 3571;
 
 /// An instruction family: one vector file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -755,6 +755,8 @@ pub enum Tag {
     Model,
     #[doc = "A date no calendar has, whose fields are each within range."]
     NonexistentDate,
+    #[doc = "The destination shares words with a source at another offset (its head one or two words from the source's)."]
+    Overlap,
     #[doc = "Execution on the rising edge of the execution condition, over a sequence of scans."]
     Pulse,
     #[doc = "Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec."]
@@ -783,7 +785,7 @@ pub enum Tag {
 
 impl Tag {
     /// Every tag, sorted by name.
-    pub const ALL: &'static [Tag] = &[Tag::Boundary, Tag::Condition, Tag::Constant, Tag::CurrentClock, Tag::DeviceRange, Tag::ForbiddenOperand, Tag::InputOff, Tag::InvalidBcd, Tag::InvalidRange, Tag::Latch, Tag::Logic, Tag::ManualExample, Tag::Model, Tag::NonexistentDate, Tag::Pulse, Tag::Random, Tag::Reconstructed, Tag::Regression, Tag::ReservedBit, Tag::SameDevice, Tag::ScanSequence, Tag::Selector, Tag::Subsecond, Tag::Wrap, Tag::ZeroPreset, Tag::ZeroSelector];
+    pub const ALL: &'static [Tag] = &[Tag::Boundary, Tag::Condition, Tag::Constant, Tag::CurrentClock, Tag::DeviceRange, Tag::ForbiddenOperand, Tag::InputOff, Tag::InvalidBcd, Tag::InvalidRange, Tag::Latch, Tag::Logic, Tag::ManualExample, Tag::Model, Tag::NonexistentDate, Tag::Overlap, Tag::Pulse, Tag::Random, Tag::Reconstructed, Tag::Regression, Tag::ReservedBit, Tag::SameDevice, Tag::ScanSequence, Tag::Selector, Tag::Subsecond, Tag::Wrap, Tag::ZeroPreset, Tag::ZeroSelector];
 
     /// The spec's name (`manual-example`).
     pub const fn as_str(self) -> &'static str {
@@ -802,6 +804,7 @@ impl Tag {
             Tag::ManualExample => "manual-example",
             Tag::Model => "model",
             Tag::NonexistentDate => "nonexistent-date",
+            Tag::Overlap => "overlap",
             Tag::Pulse => "pulse",
             Tag::Random => "random",
             Tag::Reconstructed => "reconstructed",
@@ -834,6 +837,7 @@ impl Tag {
             Tag::ManualExample => "Reproduces an example printed in the manual; `printed` holds the manual's own expectation.",
             Tag::Model => "Exercises combinations of the family's coverage model (spec: coverage.model) that no other vector does; its id names the classes of its row.",
             Tag::NonexistentDate => "A date no calendar has, whose fields are each within range.",
+            Tag::Overlap => "The destination shares words with a source at another offset (its head one or two words from the source's).",
             Tag::Pulse => "Execution on the rising edge of the execution condition, over a sequence of scans.",
             Tag::Random => "Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec.",
             Tag::Reconstructed => "The manual's input values were lost; these satisfy its printed table.",
@@ -898,6 +902,7 @@ pub const INTERPRETATIONS: &[Interpretation] = &[
     TaddExact24::INTERPRETATION,
     TaddOnError::INTERPRETATION,
     TaddErrorOrder::INTERPRETATION,
+    TaddOverlap::INTERPRETATION,
 ];
 
 #[doc = "`CP1E-NON-BCD`: What happens when a field of S1 or S2 is not BCD (a nibble above 9)?"]
@@ -1794,6 +1799,42 @@ impl Alternative for TaddErrorOrder {
     }
 }
 
+#[doc = "`TADD-OVERLAP`: When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TaddOverlap {
+    #[doc = "`sources-first` (the default): All six words of (s1) and (s2) are read before any word of (d) is written: (d) receives the sum of the times (s1) and (s2) held before the execution, wherever (d) lies."]
+    SourcesFirst,
+    #[doc = "`second-first`: Word by word from the second up, the way the carry goes: (s1)+2 and (s2)+2 are read and (d)+2 is written with their sum mod 60, the carry being their sum div 60; then (s1)+1 and (s2)+1 are read (a word of them that is (d)+2 now holds the new second) and (d)+1 is written with their sum plus the carry, mod 60, and the next carry; then (s1) and (s2) are read likewise and (d) is written with their sum plus the carry, mod 24. The carry and zero flags are those of the sum of the words as read (hours \u{d7} 3600 + minutes \u{d7} 60 + seconds), as TADD-EXACT-24 and TADD-FLAGS-OFF say."]
+    SecondFirst,
+    #[doc = "`hour-first`: Word by word from the hour down, without carrying: (s1) and (s2) are read and (d) is written with their plain sum; then (s1)+1 and (s2)+1 are read (a word of them that is (d) now holds that sum) and (d)+1 is written with their plain sum; then (s1)+2 and (s2)+2 are read and (d)+2 is written likewise. Then (d), (d)+1, (d)+2 are written with the time of day those three sums make: hours \u{d7} 3600 + minutes \u{d7} 60 + seconds, modulo 24:00:00; the carry and zero flags are those of that total, as TADD-EXACT-24 and TADD-FLAGS-OFF say."]
+    HourFirst,
+}
+
+impl TaddOverlap {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "TADD-OVERLAP",
+        question: "When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it?",
+        default: "sources-first",
+        alternatives: &["sources-first", "second-first", "hour-first"],
+        families: &[Family::Fx5TimeAdd],
+    };
+}
+
+impl Alternative for TaddOverlap {
+    const ID: &'static str = "TADD-OVERLAP";
+    const DEFAULT: Self = TaddOverlap::SourcesFirst;
+    const ALL: &'static [Self] = &[TaddOverlap::SourcesFirst, TaddOverlap::SecondFirst, TaddOverlap::HourFirst];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            TaddOverlap::SourcesFirst => "sources-first",
+            TaddOverlap::SecondFirst => "second-first",
+            TaddOverlap::HourFirst => "hour-first",
+        }
+    }
+}
+
 /// The enum and the variant that declare `id=alternative` (`("Fx5Sm709Scope", "AllWords")`): the
 /// roll-up writes a declaration in the crate's own syntax (TEXT.md, "The declaration in each
 /// runner").
@@ -1863,6 +1904,9 @@ pub(crate) fn declaration(id: &str, alternative: &str) -> Option<(&'static str, 
         ("TADD-ON-ERROR", "computed") => Some(("TaddOnError", "Computed")),
         ("TADD-ERROR-ORDER", "device-range-first") => Some(("TaddErrorOrder", "DeviceRangeFirst")),
         ("TADD-ERROR-ORDER", "field-range-first") => Some(("TaddErrorOrder", "FieldRangeFirst")),
+        ("TADD-OVERLAP", "sources-first") => Some(("TaddOverlap", "SourcesFirst")),
+        ("TADD-OVERLAP", "second-first") => Some(("TaddOverlap", "SecondFirst")),
+        ("TADD-OVERLAP", "hour-first") => Some(("TaddOverlap", "HourFirst")),
         _ => None,
     }
 }

@@ -8,8 +8,8 @@
 #define PLCVEC_SUITE_VERSION "0.2.0"
 #define PLCVEC_SCHEMA_VERSION "1.1.0"
 #define PLCVEC_SCHEMA_MAJOR 1
-#define PLCVEC_SPEC_SHA256 "bdf31f93923c3228945b93e4f1ee8b2f8963186485d498e97483dfa461058e55"
-#define PLCVEC_TOTAL_VECTORS 3536
+#define PLCVEC_SPEC_SHA256 "d7d50bb0d6bb1913b1b8597a7acc369b7e88707addef4ab00476f1eabcede6ce"
+#define PLCVEC_TOTAL_VECTORS 3571
 
 /* Instruction families, in the order of the manifest. */
 typedef enum plcvec_family {
@@ -126,6 +126,7 @@ typedef enum plcvec_tag {
     PLCVEC_TAG_MANUAL_EXAMPLE,  /* manual-example */
     PLCVEC_TAG_MODEL,  /* model */
     PLCVEC_TAG_NONEXISTENT_DATE,  /* nonexistent-date */
+    PLCVEC_TAG_OVERLAP,  /* overlap */
     PLCVEC_TAG_PULSE,  /* pulse */
     PLCVEC_TAG_RANDOM,  /* random */
     PLCVEC_TAG_RECONSTRUCTED,  /* reconstructed */
@@ -169,6 +170,7 @@ typedef enum plcvec_interpretation {
     PLCVEC_INTERP_TADD_EXACT_24,  /* TADD-EXACT-24 */
     PLCVEC_INTERP_TADD_ON_ERROR,  /* TADD-ON-ERROR */
     PLCVEC_INTERP_TADD_ERROR_ORDER,  /* TADD-ERROR-ORDER */
+    PLCVEC_INTERP_TADD_OVERLAP,  /* TADD-OVERLAP */
     PLCVEC_INTERPRETATION_COUNT
 } plcvec_interpretation;
 
@@ -289,6 +291,11 @@ enum {
     PLCVEC_TADD_ERROR_ORDER_DEVICE_RANGE_FIRST = 0,  /* default */
     PLCVEC_TADD_ERROR_ORDER_FIELD_RANGE_FIRST = 1,
 };
+enum {
+    PLCVEC_TADD_OVERLAP_SOURCES_FIRST = 0,  /* default */
+    PLCVEC_TADD_OVERLAP_SECOND_FIRST = 1,
+    PLCVEC_TADD_OVERLAP_HOUR_FIRST = 2,
+};
 
 /* Every device a vector names. */
 typedef enum plcvec_device_id {
@@ -299,12 +306,18 @@ typedef enum plcvec_device_id {
     PLCVEC_DEV_D100,
     PLCVEC_DEV_D101,
     PLCVEC_DEV_D102,
+    PLCVEC_DEV_D103,
+    PLCVEC_DEV_D104,
     PLCVEC_DEV_D11,
     PLCVEC_DEV_D12,
+    PLCVEC_DEV_D198,
+    PLCVEC_DEV_D199,
     PLCVEC_DEV_D20,
     PLCVEC_DEV_D200,
     PLCVEC_DEV_D201,
     PLCVEC_DEV_D202,
+    PLCVEC_DEV_D203,
+    PLCVEC_DEV_D204,
     PLCVEC_DEV_D21,
     PLCVEC_DEV_D22,
     PLCVEC_DEV_D30,
@@ -319,6 +332,8 @@ typedef enum plcvec_device_id {
     PLCVEC_DEV_D8189,
     PLCVEC_DEV_D8190,
     PLCVEC_DEV_D8191,
+    PLCVEC_DEV_D98,
+    PLCVEC_DEV_D99,
     PLCVEC_DEV_M10,
     PLCVEC_DEV_M8003,
     PLCVEC_DEV_M8004,

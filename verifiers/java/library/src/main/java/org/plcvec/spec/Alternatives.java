@@ -965,4 +965,42 @@ public final class Alternatives {
             return Interpretation.TADD_ERROR_ORDER.id() + "=" + id;
         }
     }
+
+    /** TADD-OVERLAP: When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it? */
+    public enum TaddOverlap implements Alternative {
+        /** All six words of (s1) and (s2) are read before any word of (d) is written: (d) receives the sum of the times (s1) and (s2) held before the execution, wherever (d) lies. (the default) */
+        SOURCES_FIRST("sources-first", "All six words of (s1) and (s2) are read before any word of (d) is written: (d) receives the sum of the times (s1) and (s2) held before the execution, wherever (d) lies."),
+        /** Word by word from the second up, the way the carry goes: (s1)+2 and (s2)+2 are read and (d)+2 is written with their sum mod 60, the carry being their sum div 60; then (s1)+1 and (s2)+1 are read (a word of them that is (d)+2 now holds the new second) and (d)+1 is written with their sum plus the carry, mod 60, and the next carry; then (s1) and (s2) are read likewise and (d) is written with their sum plus the carry, mod 24. The carry and zero flags are those of the sum of the words as read (hours × 3600 + minutes × 60 + seconds), as TADD-EXACT-24 and TADD-FLAGS-OFF say. */
+        SECOND_FIRST("second-first", "Word by word from the second up, the way the carry goes: (s1)+2 and (s2)+2 are read and (d)+2 is written with their sum mod 60, the carry being their sum div 60; then (s1)+1 and (s2)+1 are read (a word of them that is (d)+2 now holds the new second) and (d)+1 is written with their sum plus the carry, mod 60, and the next carry; then (s1) and (s2) are read likewise and (d) is written with their sum plus the carry, mod 24. The carry and zero flags are those of the sum of the words as read (hours \u00d7 3600 + minutes \u00d7 60 + seconds), as TADD-EXACT-24 and TADD-FLAGS-OFF say."),
+        /** Word by word from the hour down, without carrying: (s1) and (s2) are read and (d) is written with their plain sum; then (s1)+1 and (s2)+1 are read (a word of them that is (d) now holds that sum) and (d)+1 is written with their plain sum; then (s1)+2 and (s2)+2 are read and (d)+2 is written likewise. Then (d), (d)+1, (d)+2 are written with the time of day those three sums make: hours × 3600 + minutes × 60 + seconds, modulo 24:00:00; the carry and zero flags are those of that total, as TADD-EXACT-24 and TADD-FLAGS-OFF say. */
+        HOUR_FIRST("hour-first", "Word by word from the hour down, without carrying: (s1) and (s2) are read and (d) is written with their plain sum; then (s1)+1 and (s2)+1 are read (a word of them that is (d) now holds that sum) and (d)+1 is written with their plain sum; then (s1)+2 and (s2)+2 are read and (d)+2 is written likewise. Then (d), (d)+1, (d)+2 are written with the time of day those three sums make: hours \u00d7 3600 + minutes \u00d7 60 + seconds, modulo 24:00:00; the carry and zero flags are those of that total, as TADD-EXACT-24 and TADD-FLAGS-OFF say.");
+
+        private final String id;
+        private final String says;
+
+        TaddOverlap(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.TADD_OVERLAP;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.TADD_OVERLAP.id() + "=" + id;
+        }
+    }
 }

@@ -61,7 +61,9 @@ public enum Interpretation {
     /** What happens to (d) and the flags when an operation error (3405H) occurs? */
     TADD_ON_ERROR("TADD-ON-ERROR", "What happens to (d) and the flags when an operation error (3405H) occurs?"),
     /** When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored? */
-    TADD_ERROR_ORDER("TADD-ERROR-ORDER", "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?");
+    TADD_ERROR_ORDER("TADD-ERROR-ORDER", "When one execution meets both the 2820H condition (an operand's three words pass the end of its device range) and the 3405H condition (a field of (s1) or (s2) out of range, among the operands whose three words are all within the device range), which code is stored?"),
+    /** When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it? */
+    TADD_OVERLAP("TADD-OVERLAP", "When (d) shares words with (s1) or (s2) at another offset (its head one or two words from theirs, as in (d) = (s1)+1 or (d) = (s2)-2), does the addition read each source word as it was before the execution, or as the words of (d) already written by then leave it?");
 
     private final String id;
     private final String question;
@@ -148,6 +150,8 @@ public enum Interpretation {
                 return Alternatives.TaddOnError.NOT_EXECUTED;
             case TADD_ERROR_ORDER:
                 return Alternatives.TaddErrorOrder.DEVICE_RANGE_FIRST;
+            case TADD_OVERLAP:
+                return Alternatives.TaddOverlap.SOURCES_FIRST;
             default:
                 throw new AssertionError(this);
         }
@@ -212,6 +216,8 @@ public enum Interpretation {
                 return List.of(Alternatives.TaddOnError.values());
             case TADD_ERROR_ORDER:
                 return List.of(Alternatives.TaddErrorOrder.values());
+            case TADD_OVERLAP:
+                return List.of(Alternatives.TaddOverlap.values());
             default:
                 throw new AssertionError(this);
         }
@@ -275,6 +281,8 @@ public enum Interpretation {
             case TADD_ON_ERROR:
                 return List.of(Family.FX5_TIME_ADD);
             case TADD_ERROR_ORDER:
+                return List.of(Family.FX5_TIME_ADD);
+            case TADD_OVERLAP:
                 return List.of(Family.FX5_TIME_ADD);
             default:
                 throw new AssertionError(this);

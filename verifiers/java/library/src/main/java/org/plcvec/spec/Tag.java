@@ -31,6 +31,8 @@ public enum Tag {
     MODEL("model", "Exercises combinations of the family's coverage model (spec: coverage.model) that no other vector does; its id names the classes of its row."),
     /** A date no calendar has, whose fields are each within range. */
     NONEXISTENT_DATE("nonexistent-date", "A date no calendar has, whose fields are each within range."),
+    /** The destination shares words with a source at another offset (its head one or two words from the source's). */
+    OVERLAP("overlap", "The destination shares words with a source at another offset (its head one or two words from the source's)."),
     /** Execution on the rising edge of the execution condition, over a sequence of scans. */
     PULSE("pulse", "Execution on the rising edge of the execution condition, over a sequence of scans."),
     /** Drawn from the spec's ranges, around and past them, by the project's own seeded generator (SplitMix64, seed in the spec's generation section): the same for ever from the same spec. */
