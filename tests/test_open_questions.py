@@ -18,6 +18,9 @@ NAMED = [
     ("HOUR-D2-SPECIAL", "fc6a-hour-meter", ["accepted", "error", "undefined"]),
     ("HOUR-S1-CONSTANT-RANGE", "fc6a-hour-meter", ["error", "as-is", "low-16-bits", "undefined"]),
     ("TADD-OVERLAP", "fx5-time-add", ["sources-first", "second-first", "hour-first"]),
+    ("FX5-INVALID-S3-DEVICE-RANGE", "fx5-time-compare", ["device-range-first", "s3-first"]),
+    ("FX5-INVALID-S3-DEVICE-RANGE", "fx5-date-compare", ["device-range-first", "s3-first"]),
+    ("CP1E-PAST-AREA-END", "cp1e-time-compare", ["error", "program-error"]),
 ]
 
 
@@ -283,4 +286,55 @@ def test_tadd_same_device_is_alike_under_every_overlap_reading(golden):
     for v in golden["fx5-time-add"]["vectors"]:
         if "/same-device/" in v["id"] or "aliasing=s1=d" in v["id"] or "aliasing=s2=d" in v["id"]:
             assert "TADD-OVERLAP" not in v["outcome"].get("interpretations", []), v["id"]
+
+
+def test_fx5_invalid_s3_with_an_operand_past_the_device_range(golden):
+    """D holds 8000 points (D0 to D7999): (s1) or (s2) at D7998 has its third word past D7999, which turns
+    SM709 on. (s3) = 0000H selects no field, 0008H sets reserved bit 3 alone, 4004H the top field with
+    reserved bit 14: each gives non-continuity. SM709 is off before; the LD form's contact is the result.
+    The vectors are the coverage model's rows for these selector classes with each operand past its range."""
+    for family, form in (("fx5-time-compare", "LDTM"), ("fx5-date-compare", "LDDT")):
+        vectors = by_id(golden, family)
+        for symbol, selector, op, s3 in (("=", "reserved", "s1", 0x0008), (">=", "none", "s1", 0x0000),
+                                         ("=", "reserved+fields", "s2", 0x4004), ("<", "none", "s2", 0x0000)):
+            v = vectors[f"{family}/{form}{symbol}/model/selector={selector}/source=operands/ordering=none/"
+                        f"data={op}.device-range/error-before=off"]
+            assert v["initial"]["operands"][op] == {"device": "D7998"}, v["id"]
+            assert v["initial"]["devices"]["D300"] == s3 and v["initial"]["devices"]["SM709"] is False
+            # device-range-first: the device range turns SM709 on; non-continuity.
+            assert v["steps"][0]["expect"] == {"devices": {"SM709": True}, "result": False}, v["id"]
+            # s3-first: (s3) gives non-continuity before the range is looked at; SM709 keeps its value.
+            s3_first = alternative(v, FX5_INVALID_S3_DEVICE_RANGE="s3-first")
+            assert s3_first["expect"] == [{"devices": {}, "result": False}], v["id"]
+        # A valid (s3) (0007H): the device range turns SM709 on under either order.
+        v = vectors[f"{family}/{form}=/device-range/s1=D7999/0007H"]
+        assert "FX5-INVALID-S3-DEVICE-RANGE" not in v["outcome"].get("interpretations", [])
+        assert v["steps"][0]["expect"] == {"devices": {"SM709": True}, "result": False}
+
+
+def test_cp1e_operand_past_the_end_of_the_data_area(golden):
+    """D holds 8192 words (D0 to D8191). S1 or S2 at D8190 has S1+2 at D8192, at D8191 S1+1 and S1+2 past
+    the end. The condition <>DT would conduct for any ordering a comparison found; the form's preceding
+    logic lets the instruction decide (AND on, OR off). Before: P_ER off, the flags opposite of an equal
+    result (P_NE, P_LT, P_GT on; P_EQ, P_LE, P_GE off)."""
+    vectors = by_id(golden, "cp1e-time-compare")
+    for form, rlo in (("LD", None), ("AND", True), ("OR", False)):
+        for op, head in (("S1", "D8191"), ("S2", "D8190")):
+            v = vectors[f"cp1e-time-compare/{form} <>DT/device-range/{op}={head}"]
+            assert v["initial"]["operands"][op] == {"device": head} and v["steps"][0].get("rlo_in") == rlo
+            assert v["initial"]["devices"]["P_ER"] is False
+            # error: P_ER on, an OFF execution condition (AND: on AND off; OR: off OR off); the flags keep
+            # their values (CP1E-ERROR-FLAGS=kept).
+            assert v["steps"][0]["expect"] == {"devices": {"P_ER": True}, "result": False}, v["id"]
+            # error with CP1E-ERROR-FLAGS=off: the three flags that were on are written off.
+            off = alternative(v, CP1E_PAST_AREA_END="error", CP1E_ERROR_FLAGS="off")
+            assert off["expect"] == [{"devices": {"P_ER": True, "P_GT": False, "P_LT": False, "P_NE": False},
+                                      "result": False}]
+            # program-error: not executed; nothing written, an OFF execution condition.
+            for flags in ("kept", "off"):
+                program = alternative(v, CP1E_PAST_AREA_END="program-error", CP1E_ERROR_FLAGS=flags)
+                assert program["expect"] == [{"devices": {}, "result": False}], v["id"]
+    # S1 at D8189 ends at the last word: compared as usual, the reading does not touch it.
+    v = vectors["cp1e-time-compare/LD >DT/device-range/S1=D8189"]
+    assert "CP1E-PAST-AREA-END" not in v["outcome"].get("interpretations", [])
 

@@ -98,7 +98,7 @@ def test_unknown_interpretation_is_refused(all_vectors):
 
 # CP1E has 144 combinations of alternatives over 1,500 vectors: its share is split in parts, so that
 # a parallel run (pytest -n) spreads it over the workers instead of waiting for it at the end.
-COMBINATION_PARTS = {"cp1e-time-compare": 4, "fc6a-hour-meter": 2}
+COMBINATION_PARTS = {"cp1e-time-compare": 8, "fc6a-hour-meter": 2}
 def test_a_family_past_the_bound_runs_a_set_that_holds_every_pair_of_alternatives():
     interps = {"A": ["a1", "a2", "a3"], "B": ["b1", "b2"], "C": ["c1", "c2", "c3", "c4"], "D": ["d1", "d2"],
                "E": ["e1", "e2", "e3"], "F": ["f1", "f2"], "G": ["g1", "g2", "g3"], "H": ["h1", "h2"],

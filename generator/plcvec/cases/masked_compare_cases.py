@@ -284,8 +284,12 @@ class CompareCases:
 
     def device_range(self):
         dr = self.doc["validity"]["device_range"]
-        if not dr["check"]:
+        if "clause" not in dr:
+            # The page states no check: each operand at the top of its area, and past it where the spec
+            # checks it all the same (what an operand past the end does is then an interpretation's).
             yield from self._top_of_area()
+            if dr["check"]:
+                yield from self._past_area_end()
             return
         eq_symbol = self.symbol_for("eq")
         equal = self.ops.words(self.ops.values())
@@ -325,6 +329,27 @@ class CompareCases:
                             description=f"{op} at {head}: its last word is the last {prefix} device ({prefix}{size - 1}); "
                                         f"{self.first} is after {self.second} in the {self.names[-1]} alone.",
                             s1=self.ops.words(s1), s2=self.ops.words(s2), sel=self.all_fields(), heads={op: head})
+
+    def _past_area_end(self):
+        """Without a device-range check the page states: S1 and S2 at the last one and two words of their
+        area, in each form whose logic lets the instruction decide, the data differing in the least
+        significant field. An implementation that reads the missing words as anything still finds an
+        ordering, and the condition that holds for either ordering shows it."""
+        s1, s2 = self.pair_with(self.names[-1], "gt")
+        symbol = next(c["symbol"] for c in self.doc["instructions"]["conditions"] if set(c["true_when"]) == {"lt", "gt"})
+        for op in (self.first, self.second):
+            prefix = split_address(self.place[op])[0]
+            size = self.b.sizes[prefix]
+            for beyond in (1, 2):
+                head = top_head(prefix, size, self.words, beyond)
+                words = {self.first: self.ops.words(s1), self.second: self.ops.words(s2)}
+                words[op] = words[op][:self.words - beyond]
+                for form in self.forms:
+                    yield self.case(form, symbol, f"device-range/{op}={head}", tags=["device-range"],
+                                    description=f"{op} at {head}, the last {self.words - beyond} of the {prefix} words: {op}+{self.words - beyond} "
+                                                f"would be {prefix}{size}, past the last ({prefix}{size - 1}); {self.first} is after "
+                                                f"{self.second} in the {self.names[-1]} alone.",
+                                    s1=words[self.first], s2=words[self.second], sel=self.all_fields(), heads={op: head})
 
     def current_clock(self):
         if not self.clock_bit:

@@ -14,6 +14,14 @@ class _Error(Exception):
     pass
 
 
+class _NotExecuted(Exception):
+    """The instruction is not executed at all: nothing is written, the contact does not conduct."""
+
+
+# What _judge_selector() returns when the selector leaves fields to compare.
+_COMPARE = object()
+
+
 class MaskedCompare:
     def __init__(self, doc):
         self.doc = doc
@@ -40,7 +48,7 @@ class MaskedCompare:
         self._sel_operand = self.sel["operand"]
         self._source_bit = self.sel.get("source_bit")
         self._range_check = self._device_range["check"]
-        self._range_clause = self._device_range["clause"] if self._range_check else None
+        self._range_clause = self._device_range.get("clause") if self._range_check else None
         self._valid_clause, self._unselected_clause = self.sel.get("valid_clause"), self.sel.get("unselected_clause")
         self._order_clause = doc["data"]["order_clause"]
         self._source_mask = 1 << self._source_bit["bit"] if self._source_bit else 0
@@ -88,6 +96,8 @@ class MaskedCompare:
         """
         try:
             ordering = self.compare(operands, state, step, ctx, trace)
+        except _NotExecuted:
+            return None
         except _Error:
             device = self._error_device
             state[device] = True
@@ -122,18 +132,17 @@ class MaskedCompare:
         first, second = self.data_ops
         compared_ops = [first] if clock_mode else [first, second]
 
-        if self._range_check:
-            sizes = ctx["device_sizes"]
-            for op in compared_ops:
-                if not in_device_range(operands[op]["device"], self.words[op], sizes):
-                    trace.add(self._range_clause)
-                    raise _Error
-            # In clock mode the second operand is not compared; whether its range is checked all the
-            # same decides something only when it runs past its device, so only then is it asked.
-            if (clock_mode and not in_device_range(operands[second]["device"], self.words[second], sizes)
-                    and self._device_range["s2_in_clock_mode"]):
-                trace.add(self._range_clause)
-                raise _Error
+        if self._range_check and self._past_device_range(operands, compared_ops, clock_mode, ctx["device_sizes"]):
+            # Whether a selector that compares nothing is judged before the device range decides
+            # something only when an operand runs past it, so only then is the order asked.
+            if self._device_range["order"][0] == "selector":
+                verdict, _ = self._judge_selector(sel, trace)
+                if verdict is not _COMPARE:
+                    return verdict
+            trace.add(self._range_clause)
+            if self._device_range["on_past"] == "not_executed":
+                raise _NotExecuted
+            raise _Error
         # Whether any field of the compared operands is out of range or not a valid encoding comes
         # with the values (the clock's are not checked).
         read = self.codec.read_checked
@@ -151,27 +160,9 @@ class MaskedCompare:
         if invalid and self.validity["scope"] == "all":
             self._check(values, compared_ops, self.fields, trace)
 
-        if sel & self.reserved_mask:
-            trace.add(self.sel.get("reserved_clause"))
-            action = self.sel["on_reserved"]
-            if action == "non_continuity":
-                return None
-            if action == "error":
-                raise _Error
-        selected = self._selections.get(sel & self._field_mask)
-        if selected is None:
-            want = self._want
-            selected = self._selections[sel & self._field_mask] = [f for f, bit in self._field_bits
-                                                                    if (sel >> bit & 1) == want]
-        trace.update(self._field_clauses)
-        if not selected:
-            trace.add(self.sel["no_field_clause"])
-            action = self.sel["on_no_field"]
-            if action == "non_continuity":
-                return None
-            if action == "error":
-                raise _Error
-            return "eq"
+        verdict, selected = self._judge_selector(sel, trace)
+        if verdict is not _COMPARE:
+            return verdict
         # Reached with at least one field selected: a selector value the manual lists as valid when no
         # reserved bit is set; a field left out is the masking the manual describes.
         if not sel & self.reserved_mask:
@@ -196,6 +187,44 @@ class MaskedCompare:
             if a != b:
                 return "lt" if a < b else "gt"
         return "eq"
+
+    def _past_device_range(self, operands, compared_ops, clock_mode, sizes):
+        """Whether a compared operand runs past the end of its device range."""
+        for op in compared_ops:
+            if not in_device_range(operands[op]["device"], self.words[op], sizes):
+                return True
+        # In clock mode the second operand is not compared; whether its range is checked all the
+        # same decides something only when it runs past its device, so only then is it asked.
+        second = self.data_ops[1]
+        return (clock_mode and not in_device_range(operands[second]["device"], self.words[second], sizes)
+                and self._device_range["s2_in_clock_mode"])
+
+    def _judge_selector(self, sel, trace):
+        """(verdict, selected fields): what the selector decides by itself. The verdict is compare()'s
+        outcome when it compares nothing (None for non-continuity, "eq"; an error is raised), or _COMPARE
+        with the fields to compare."""
+        if sel & self.reserved_mask:
+            trace.add(self.sel.get("reserved_clause"))
+            action = self.sel["on_reserved"]
+            if action == "non_continuity":
+                return None, []
+            if action == "error":
+                raise _Error
+        selected = self._selections.get(sel & self._field_mask)
+        if selected is None:
+            want = self._want
+            selected = self._selections[sel & self._field_mask] = [f for f, bit in self._field_bits
+                                                                    if (sel >> bit & 1) == want]
+        trace.update(self._field_clauses)
+        if not selected:
+            trace.add(self.sel["no_field_clause"])
+            action = self.sel["on_no_field"]
+            if action == "non_continuity":
+                return None, []
+            if action == "error":
+                raise _Error
+            return "eq", []
+        return _COMPARE, selected
 
     def _check(self, values, compared_ops, fields, trace):
         for op in compared_ops:

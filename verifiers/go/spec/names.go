@@ -13,10 +13,10 @@ const SuiteVersion = "0.2.0"
 const SchemaVersion = "1.1.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "d7d50bb0d6bb1913b1b8597a7acc369b7e88707addef4ab00476f1eabcede6ce"
+const SpecSHA256 = "45cee03f9622cde72b6e55eb833f534ee0e6d22abbc0c8c63d996ace4a876f33"
 
 // Total is the number of vectors in the exported copy.
-const Total = 3571
+const Total = 3615
 
 // Families (one vector file each).
 
@@ -249,6 +249,15 @@ const Cp1eErrorFlagsKept = "kept"
 // Cp1eErrorFlagsOff: An execution that ends in error writes all six flags off, whatever they were before.
 const Cp1eErrorFlagsOff = "off"
 
+// InterpCp1ePastAreaEnd: What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end?
+const InterpCp1ePastAreaEnd = "CP1E-PAST-AREA-END"
+
+// Cp1ePastAreaEndError: An S1 or S2 whose words pass the end of the data area is an error, found before C or any data is read: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. (the default)
+const Cp1ePastAreaEndError = "error"
+
+// Cp1ePastAreaEndProgramError: Such an operand is a program error, which the CPU reports by its own means (outside the vector): the instruction is not executed, whatever C and the data hold. It writes nothing (P_ER and the six arithmetic flags keep their values) and creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition.
+const Cp1ePastAreaEndProgramError = "program-error"
+
 // InterpHourOutputOff: What turns D2 off, other than an invalid preset?
 const InterpHourOutputOff = "HOUR-OUTPUT-OFF"
 
@@ -413,6 +422,15 @@ const Fx5OrOnErrorContactOff = "contact-off"
 
 // Fx5OrOnErrorResultOff: An execution that turns SM709 on passes on off whatever the form: an OR form passes on off even when rlo_in is on; an LD or AND form passes on off as under contact-off.
 const Fx5OrOnErrorResultOff = "result-off"
+
+// InterpFx5InvalidS3DeviceRange: When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)?
+const InterpFx5InvalidS3DeviceRange = "FX5-INVALID-S3-DEVICE-RANGE"
+
+// Fx5InvalidS3DeviceRangeDeviceRangeFirst: The device range is checked before (s3) is judged: SM709 turns on and the result is non-continuity, whatever (s3) holds. (the default)
+const Fx5InvalidS3DeviceRangeDeviceRangeFirst = "device-range-first"
+
+// Fx5InvalidS3DeviceRangeS3First: (s3) is judged before the device range: an (s3) with any of bits 3 to 14 set, or with none of bits 0 to 2 set, gives non-continuity and SM709 keeps the value it had; only an (s3) that selects fields (0001H to 0007H, 8001H to 8007H) leaves the device range to turn SM709 on.
+const Fx5InvalidS3DeviceRangeS3First = "s3-first"
 
 // InterpTaddFlagsOff: Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?
 const InterpTaddFlagsOff = "TADD-FLAGS-OFF"
@@ -611,11 +629,11 @@ func InstructionOf(name string) (Instruction, bool) {
 
 // Families lists every family in the exported copy.
 var Families = []Family{
-	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags}},
+	{Name: FamilyCp1eTimeCompare, Kind: "masked_compare", Title: "Omron SYSMAC CP1E time comparison (=DT, <>DT, <DT, <=DT, >DT, >=DT)", Instructions: []string{InstrAndLeDt, InstrAndNeDt, InstrAndLtDt, InstrAndEqDt, InstrAndGeDt, InstrAndGtDt, InstrLdLeDt, InstrLdNeDt, InstrLdLtDt, InstrLdEqDt, InstrLdGeDt, InstrLdGtDt, InstrOrLeDt, InstrOrNeDt, InstrOrLtDt, InstrOrEqDt, InstrOrGeDt, InstrOrGtDt}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidBcd, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpCp1eNonBcd, InterpCp1eOutOfRange, InterpCp1eAllMasked, InterpCp1eCHighBits, InterpCp1eAndOrWhenOff, InterpCp1eErFlag, InterpCp1eErrorFlags, InterpCp1ePastAreaEnd}},
 	{Name: FamilyFc6aHourMeter, Kind: "hour_meter", Title: "IDEC FC6A MICROSmart hour meter (HOUR)", Instructions: []string{InstrHour}, Tags: []string{TagBoundary, TagConstant, TagForbiddenOperand, TagInputOff, TagInvalidRange, TagLatch, TagModel, TagRandom, TagRegression, TagScanSequence, TagSubsecond, TagWrap, TagZeroPreset}, Interpretations: []string{InterpHourOutputOff, InterpHourInputOff, InterpHourPresetZero, InterpHourFirstScan, InterpHourPresetCheck, InterpHourM8004Off, InterpHourD1OutOfRange, InterpHourWrapReach, InterpHourM8004Repeat, InterpHourD2Special, InterpHourS1ConstantRange}},
-	{Name: FamilyFx5DateCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 date comparison (LDDT\U000025a1, ANDDT\U000025a1, ORDT\U000025a1)", Instructions: []string{InstrAnddtLt, InstrAnddtLe, InstrAnddtNe, InstrAnddtEq, InstrAnddtGt, InstrAnddtGe, InstrLddtLt, InstrLddtLe, InstrLddtNe, InstrLddtEq, InstrLddtGt, InstrLddtGe, InstrOrdtLt, InstrOrdtLe, InstrOrdtNe, InstrOrdtEq, InstrOrdtGt, InstrOrdtGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagNonexistentDate, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
+	{Name: FamilyFx5DateCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 date comparison (LDDT\U000025a1, ANDDT\U000025a1, ORDT\U000025a1)", Instructions: []string{InstrAnddtLt, InstrAnddtLe, InstrAnddtNe, InstrAnddtEq, InstrAnddtGt, InstrAnddtGe, InstrLddtLt, InstrLddtLe, InstrLddtNe, InstrLddtEq, InstrLddtGt, InstrLddtGe, InstrOrdtLt, InstrOrdtLe, InstrOrdtNe, InstrOrdtEq, InstrOrdtGt, InstrOrdtGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagNonexistentDate, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError, InterpFx5InvalidS3DeviceRange}},
 	{Name: FamilyFx5TimeAdd, Kind: "clock_add", Title: "Mitsubishi MELSEC iQ-F FX5 clock data addition (TADD, TADDP)", Instructions: []string{InstrTadd, InstrTaddp}, Tags: []string{TagBoundary, TagDeviceRange, TagInvalidRange, TagManualExample, TagModel, TagOverlap, TagPulse, TagRandom, TagRegression, TagSameDevice, TagWrap}, Interpretations: []string{InterpTaddFlagsOff, InterpTaddExact24, InterpTaddOnError, InterpTaddErrorOrder, InterpTaddOverlap}},
-	{Name: FamilyFx5TimeCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 time comparison (LDTM\U000025a1, ANDTM\U000025a1, ORTM\U000025a1)", Instructions: []string{InstrAndtmLt, InstrAndtmLe, InstrAndtmNe, InstrAndtmEq, InstrAndtmGt, InstrAndtmGe, InstrLdtmLt, InstrLdtmLe, InstrLdtmNe, InstrLdtmEq, InstrLdtmGt, InstrLdtmGe, InstrOrtmLt, InstrOrtmLe, InstrOrtmNe, InstrOrtmEq, InstrOrtmGt, InstrOrtmGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError}},
+	{Name: FamilyFx5TimeCompare, Kind: "masked_compare", Title: "Mitsubishi MELSEC iQ-F FX5 time comparison (LDTM\U000025a1, ANDTM\U000025a1, ORTM\U000025a1)", Instructions: []string{InstrAndtmLt, InstrAndtmLe, InstrAndtmNe, InstrAndtmEq, InstrAndtmGt, InstrAndtmGe, InstrLdtmLt, InstrLdtmLe, InstrLdtmNe, InstrLdtmEq, InstrLdtmGt, InstrLdtmGe, InstrOrtmLt, InstrOrtmLe, InstrOrtmNe, InstrOrtmEq, InstrOrtmGt, InstrOrtmGe}, Tags: []string{TagBoundary, TagCondition, TagCurrentClock, TagDeviceRange, TagInvalidRange, TagLatch, TagLogic, TagManualExample, TagModel, TagRandom, TagReconstructed, TagRegression, TagReservedBit, TagSelector, TagZeroSelector}, Interpretations: []string{InterpFx5Sm709Scope, InterpFx5AndOrWhenOff, InterpFx5ClockS2DeviceRange, InterpFx5OrOnError, InterpFx5InvalidS3DeviceRange}},
 }
 
 // Interpretations lists every interpretation once, even when several families share it.
@@ -627,6 +645,7 @@ var Interpretations = []Interpretation{
 	{ID: InterpCp1eAndOrWhenOff, Question: "Does an AND form execute, and update the flags, while its execution condition is OFF?", Default: Cp1eAndOrWhenOffAlwaysExecuted, Alternatives: []string{Cp1eAndOrWhenOffAlwaysExecuted, Cp1eAndOrWhenOffAndSkipped, Cp1eAndOrWhenOffShortCircuit}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpCp1eErFlag, Question: "Once the Error Flag is on, does the next execution that ends without error turn it off again?", Default: Cp1eErFlagReflectsEachExecution, Alternatives: []string{Cp1eErFlagReflectsEachExecution, Cp1eErFlagHeld}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpCp1eErrorFlags, Question: "On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE?", Default: Cp1eErrorFlagsKept, Alternatives: []string{Cp1eErrorFlagsKept, Cp1eErrorFlagsOff}, Families: []string{"cp1e-time-compare"}},
+	{ID: InterpCp1ePastAreaEnd, Question: "What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end?", Default: Cp1ePastAreaEndError, Alternatives: []string{Cp1ePastAreaEndError, Cp1ePastAreaEndProgramError}, Families: []string{"cp1e-time-compare"}},
 	{ID: InterpHourOutputOff, Question: "What turns D2 off, other than an invalid preset?", Default: HourOutputOffLatched, Alternatives: []string{HourOutputOffLatched, HourOutputOffRecompared}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourInputOff, Question: "Does D1 hold its value while the input is off, or is it cleared?", Default: HourInputOffHold, Alternatives: []string{HourInputOffHold, HourInputOffReset, HourInputOffHoldDropFraction}, Families: []string{"fc6a-hour-meter"}},
 	{ID: InterpHourPresetZero, Question: "Does a preset of 0:00:00 turn D2 on?", Default: HourPresetZeroImmediate, Alternatives: []string{HourPresetZeroImmediate, HourPresetZeroNever}, Families: []string{"fc6a-hour-meter"}},
@@ -642,6 +661,7 @@ var Interpretations = []Interpretation{
 	{ID: InterpFx5AndOrWhenOff, Question: "Does an AND form execute (and so possibly set SM709) while the preceding logic is off, and does an OR form execute while it is on?", Default: Fx5AndOrWhenOffAndSkipped, Alternatives: []string{Fx5AndOrWhenOffAndSkipped, Fx5AndOrWhenOffAlwaysExecuted, Fx5AndOrWhenOffShortCircuit}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5ClockS2DeviceRange, Question: "In current-date mode (s2) is dummy data; is its device range still checked?", Default: Fx5ClockS2DeviceRangeIgnored, Alternatives: []string{Fx5ClockS2DeviceRangeIgnored, Fx5ClockS2DeviceRangeChecked}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpFx5OrOnError, Question: "In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off?", Default: Fx5OrOnErrorContactOff, Alternatives: []string{Fx5OrOnErrorContactOff, Fx5OrOnErrorResultOff}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
+	{ID: InterpFx5InvalidS3DeviceRange, Question: "When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)?", Default: Fx5InvalidS3DeviceRangeDeviceRangeFirst, Alternatives: []string{Fx5InvalidS3DeviceRangeDeviceRangeFirst, Fx5InvalidS3DeviceRangeS3First}, Families: []string{"fx5-date-compare", "fx5-time-compare"}},
 	{ID: InterpTaddFlagsOff, Question: "Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?", Default: TaddFlagsOffWrittenEachExecution, Alternatives: []string{TaddFlagsOffWrittenEachExecution, TaddFlagsOffSetOnly}, Families: []string{"fx5-time-add"}},
 	{ID: InterpTaddExact24, Question: "Does a sum of exactly 24:00:00 turn the carry flag on?", Default: TaddExact24CarryAt24, Alternatives: []string{TaddExact24CarryAt24, TaddExact24CarryAbove24}, Families: []string{"fx5-time-add"}},
 	{ID: InterpTaddOnError, Question: "What happens to (d) and the flags when an operation error (3405H) occurs?", Default: TaddOnErrorNotExecuted, Alternatives: []string{TaddOnErrorNotExecuted, TaddOnErrorComputed}, Families: []string{"fx5-time-add"}},

@@ -14,6 +14,7 @@ ALTERNATIVES = {
     "CP1E-AND-OR-WHEN-OFF": ("always-executed", "and-skipped", "short-circuit"),
     "CP1E-ER-FLAG": ("reflects-each-execution", "held"),
     "CP1E-ERROR-FLAGS": ("kept", "off"),
+    "CP1E-PAST-AREA-END": ("error", "program-error"),
 }
 
 DEFAULTS = {
@@ -24,6 +25,7 @@ DEFAULTS = {
     "CP1E-AND-OR-WHEN-OFF": "always-executed",  # or "and-skipped", "short-circuit"
     "CP1E-ER-FLAG": "reflects-each-execution",  # or "held"
     "CP1E-ERROR-FLAGS": "kept",              # or "off"
+    "CP1E-PAST-AREA-END": "error",           # or "program-error"
 }
 
 ERROR_FLAG = "P_ER"
@@ -114,6 +116,13 @@ class CP1ETimeCompare:
 
     def evaluate(self, condition: str, operands: dict) -> bool:
         mem = self.mem
+        # "S1 to S1+2", "S2 to S2+2": three words each. One that is past the end of the
+        # data area (S1 in one of the last two words of D) is CP1E-PAST-AREA-END, found
+        # before C or the data are looked at.
+        if not (mem.block_in_range(operands["S1"]["device"], 3) and mem.block_in_range(operands["S2"]["device"], 3)):
+            if self.choices["CP1E-PAST-AREA-END"] == "program-error":
+                return False          # not executed: writes nothing, OFF execution condition
+            return self._error()
         s1 = mem.read_block(operands["S1"]["device"], 3)
         s2 = mem.read_block(operands["S2"]["device"], 3)
         c = operand_value(mem, operands["C"])

@@ -14,6 +14,7 @@ ALTERNATIVES = {
     "FX5-AND-OR-WHEN-OFF": ("and-skipped", "always-executed", "short-circuit"),
     "FX5-CLOCK-S2-DEVICE-RANGE": ("ignored", "checked"),
     "FX5-OR-ON-ERROR": ("contact-off", "result-off"),
+    "FX5-INVALID-S3-DEVICE-RANGE": ("device-range-first", "s3-first"),
 }
 
 DEFAULTS = {
@@ -21,6 +22,7 @@ DEFAULTS = {
     "FX5-AND-OR-WHEN-OFF": "and-skipped",          # or "always-executed", "short-circuit"
     "FX5-CLOCK-S2-DEVICE-RANGE": "ignored",        # or "checked"
     "FX5-OR-ON-ERROR": "contact-off",              # or "result-off"
+    "FX5-INVALID-S3-DEVICE-RANGE": "device-range-first",  # or "s3-first"
 }
 
 SM709 = "SM709"
@@ -120,13 +122,21 @@ class FX5CompareMachine:
         # (s2) is regarded as dummy data and ignored."
         use_clock = bool(s3 & 0x8000)
 
+        # "(4) Set 0. If a value other than 0 is set, the operation result will be
+        # non-continuity."  (bits 3 to 14)
+        # "When 0 is set to the 0 to 2 bits, the time data ... are not compared."
+        # Table: "Other than 0001H to 0007H, 8001H to 8007H  None ... (The operation
+        # result will be non-continuity.)"
+        s3_valid = (s3 & 0x7FF8) == 0 and (s3 & 0x0007) != 0
+
         # "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the
         # corresponding device range, SM709 turns on ... and the operation result will be
         # non-continuity as well."
-        if not mem.block_in_range(s1_dev, 3):
-            return self._error()
         s2_checked = (not use_clock) or self.choices["FX5-CLOCK-S2-DEVICE-RANGE"] == "checked"
-        if s2_checked and not mem.block_in_range(s2_dev, 3):
+        if not mem.block_in_range(s1_dev, 3) or (s2_checked and not mem.block_in_range(s2_dev, 3)):
+            # An invalid (s3) as well: which rule decides is FX5-INVALID-S3-DEVICE-RANGE.
+            if not s3_valid and self.choices["FX5-INVALID-S3-DEVICE-RANGE"] == "s3-first":
+                return False
             return self._error()
 
         s1 = mem.read_block(s1_dev, 3)
@@ -134,13 +144,6 @@ class FX5CompareMachine:
             s2 = [clock[name] for _o, name, *_ in self.fields]   # the current time/date
         else:
             s2 = mem.read_block(s2_dev, 3)
-
-        # "(4) Set 0. If a value other than 0 is set, the operation result will be
-        # non-continuity."  (bits 3 to 14)
-        # "When 0 is set to the 0 to 2 bits, the time data ... are not compared."
-        # Table: "Other than 0001H to 0007H, 8001H to 8007H  None ... (The operation
-        # result will be non-continuity.)"
-        s3_valid = (s3 & 0x7FF8) == 0 and (s3 & 0x0007) != 0
 
         # "If the comparison target data in the device are not recognized as time data,
         # SM709 turns on after the instruction is executed and the operation result will

@@ -272,6 +272,10 @@ static const char *const alternatives_cp1e_error_flags[] = {
     "kept",
     "off",
 };
+static const char *const alternatives_cp1e_past_area_end[] = {
+    "error",
+    "program-error",
+};
 static const char *const alternatives_hour_output_off[] = {
     "latched",
     "recompared",
@@ -342,6 +346,10 @@ static const char *const alternatives_fx5_or_on_error[] = {
     "contact-off",
     "result-off",
 };
+static const char *const alternatives_fx5_invalid_s3_device_range[] = {
+    "device-range-first",
+    "s3-first",
+};
 static const char *const alternatives_tadd_flags_off[] = {
     "written-each-execution",
     "set-only",
@@ -379,6 +387,8 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"CP1E-ERROR-FLAGS", "On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE\?", alternatives_cp1e_error_flags, 2, PLCVEC_CP1E_ERROR_FLAGS_KEPT,
      0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
+    {"CP1E-PAST-AREA-END", "What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end\?", alternatives_cp1e_past_area_end, 2, PLCVEC_CP1E_PAST_AREA_END_ERROR,
+     0 | (1u << PLCVEC_FAMILY_CP1E_TIME_COMPARE)},
     {"HOUR-OUTPUT-OFF", "What turns D2 off, other than an invalid preset\?", alternatives_hour_output_off, 2, PLCVEC_HOUR_OUTPUT_OFF_LATCHED,
      0 | (1u << PLCVEC_FAMILY_FC6A_HOUR_METER)},
     {"HOUR-INPUT-OFF", "Does D1 hold its value while the input is off, or is it cleared\?", alternatives_hour_input_off, 3, PLCVEC_HOUR_INPUT_OFF_HOLD,
@@ -408,6 +418,8 @@ const plcvec_interpretation_info plcvec_interpretations[PLCVEC_INTERPRETATION_CO
     {"FX5-CLOCK-S2-DEVICE-RANGE", "In current-date mode (s2) is dummy data; is its device range still checked\?", alternatives_fx5_clock_s2_device_range, 2, PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_IGNORED,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
     {"FX5-OR-ON-ERROR", "In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off\?", alternatives_fx5_or_on_error, 2, PLCVEC_FX5_OR_ON_ERROR_CONTACT_OFF,
+     0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
+    {"FX5-INVALID-S3-DEVICE-RANGE", "When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)\?", alternatives_fx5_invalid_s3_device_range, 2, PLCVEC_FX5_INVALID_S3_DEVICE_RANGE_DEVICE_RANGE_FIRST,
      0 | (1u << PLCVEC_FAMILY_FX5_DATE_COMPARE) | (1u << PLCVEC_FAMILY_FX5_TIME_COMPARE)},
     {"TADD-FLAGS-OFF", "Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on\?", alternatives_tadd_flags_off, 2, PLCVEC_TADD_FLAGS_OFF_WRITTEN_EACH_EXECUTION,
      0 | (1u << PLCVEC_FAMILY_FX5_TIME_ADD)},

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 from ..cp1e_dt import ERROR_FLAG, FLAG_TABLE, CP1ETimeCompare
 from ..machine import operand_value
-from .registry import mutant, with_operand
+from .registry import DeviceRangeUnchecked, mutant, with_operand
 
 FAMILY = ("cp1e-time-compare",)
 
@@ -105,3 +105,12 @@ class ErrorFlagBlocks(CP1ETimeCompare):
         if self.mem.read(ERROR_FLAG):
             return False
         return super().evaluate(condition, operands)
+
+
+@mutant("cp1e-past-area-compared", FAMILY,
+        "S1 or S2 at the last one or two words of the data area is compared all the same, the words "
+        "past the end read as 0, instead of the error or program error CP1E-PAST-AREA-END names.",
+        exercises={"data": ["*.device-range"]})
+class PastAreaCompared(DeviceRangeUnchecked, CP1ETimeCompare):
+    pass
+

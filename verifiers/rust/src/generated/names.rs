@@ -10,9 +10,9 @@ pub const SUITE_VERSION: &str = "0.2.0";
 /// The vector files' `schema_version`.
 pub const SCHEMA_VERSION: &str = "1.1.0";
 /// The hash of the spec the embedded vectors were generated from.
-pub const SPEC_SHA256: &str = "d7d50bb0d6bb1913b1b8597a7acc369b7e88707addef4ab00476f1eabcede6ce";
+pub const SPEC_SHA256: &str = "45cee03f9622cde72b6e55eb833f534ee0e6d22abbc0c8c63d996ace4a876f33";
 /// How many vectors the embedded copy holds.
-pub const TOTAL: usize = 3571;
+pub const TOTAL: usize = 3615;
 
 /// An instruction family: one vector file.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -883,6 +883,7 @@ pub const INTERPRETATIONS: &[Interpretation] = &[
     Cp1eAndOrWhenOff::INTERPRETATION,
     Cp1eErFlag::INTERPRETATION,
     Cp1eErrorFlags::INTERPRETATION,
+    Cp1ePastAreaEnd::INTERPRETATION,
     HourOutputOff::INTERPRETATION,
     HourInputOff::INTERPRETATION,
     HourPresetZero::INTERPRETATION,
@@ -898,6 +899,7 @@ pub const INTERPRETATIONS: &[Interpretation] = &[
     Fx5AndOrWhenOff::INTERPRETATION,
     Fx5ClockS2DeviceRange::INTERPRETATION,
     Fx5OrOnError::INTERPRETATION,
+    Fx5InvalidS3DeviceRange::INTERPRETATION,
     TaddFlagsOff::INTERPRETATION,
     TaddExact24::INTERPRETATION,
     TaddOnError::INTERPRETATION,
@@ -1138,6 +1140,39 @@ impl Alternative for Cp1eErrorFlags {
         match self {
             Cp1eErrorFlags::Kept => "kept",
             Cp1eErrorFlags::Off => "off",
+        }
+    }
+}
+
+#[doc = "`CP1E-PAST-AREA-END`: What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Cp1ePastAreaEnd {
+    #[doc = "`error` (the default): An S1 or S2 whose words pass the end of the data area is an error, found before C or any data is read: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."]
+    Error,
+    #[doc = "`program-error`: Such an operand is a program error, which the CPU reports by its own means (outside the vector): the instruction is not executed, whatever C and the data hold. It writes nothing (P_ER and the six arithmetic flags keep their values) and creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition."]
+    ProgramError,
+}
+
+impl Cp1ePastAreaEnd {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "CP1E-PAST-AREA-END",
+        question: "What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end?",
+        default: "error",
+        alternatives: &["error", "program-error"],
+        families: &[Family::Cp1eTimeCompare],
+    };
+}
+
+impl Alternative for Cp1ePastAreaEnd {
+    const ID: &'static str = "CP1E-PAST-AREA-END";
+    const DEFAULT: Self = Cp1ePastAreaEnd::Error;
+    const ALL: &'static [Self] = &[Cp1ePastAreaEnd::Error, Cp1ePastAreaEnd::ProgramError];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            Cp1ePastAreaEnd::Error => "error",
+            Cp1ePastAreaEnd::ProgramError => "program-error",
         }
     }
 }
@@ -1667,6 +1702,39 @@ impl Alternative for Fx5OrOnError {
     }
 }
 
+#[doc = "`FX5-INVALID-S3-DEVICE-RANGE`: When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)?"]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Fx5InvalidS3DeviceRange {
+    #[doc = "`device-range-first` (the default): The device range is checked before (s3) is judged: SM709 turns on and the result is non-continuity, whatever (s3) holds."]
+    DeviceRangeFirst,
+    #[doc = "`s3-first`: (s3) is judged before the device range: an (s3) with any of bits 3 to 14 set, or with none of bits 0 to 2 set, gives non-continuity and SM709 keeps the value it had; only an (s3) that selects fields (0001H to 0007H, 8001H to 8007H) leaves the device range to turn SM709 on."]
+    S3First,
+}
+
+impl Fx5InvalidS3DeviceRange {
+    /// The interpretation this enum answers.
+    pub const INTERPRETATION: Interpretation = Interpretation {
+        id: "FX5-INVALID-S3-DEVICE-RANGE",
+        question: "When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)?",
+        default: "device-range-first",
+        alternatives: &["device-range-first", "s3-first"],
+        families: &[Family::Fx5DateCompare, Family::Fx5TimeCompare],
+    };
+}
+
+impl Alternative for Fx5InvalidS3DeviceRange {
+    const ID: &'static str = "FX5-INVALID-S3-DEVICE-RANGE";
+    const DEFAULT: Self = Fx5InvalidS3DeviceRange::DeviceRangeFirst;
+    const ALL: &'static [Self] = &[Fx5InvalidS3DeviceRange::DeviceRangeFirst, Fx5InvalidS3DeviceRange::S3First];
+
+    fn as_str(self) -> &'static str {
+        match self {
+            Fx5InvalidS3DeviceRange::DeviceRangeFirst => "device-range-first",
+            Fx5InvalidS3DeviceRange::S3First => "s3-first",
+        }
+    }
+}
+
 #[doc = "`TADD-FLAGS-OFF`: Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?"]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum TaddFlagsOff {
@@ -1856,6 +1924,8 @@ pub(crate) fn declaration(id: &str, alternative: &str) -> Option<(&'static str, 
         ("CP1E-ER-FLAG", "held") => Some(("Cp1eErFlag", "Held")),
         ("CP1E-ERROR-FLAGS", "kept") => Some(("Cp1eErrorFlags", "Kept")),
         ("CP1E-ERROR-FLAGS", "off") => Some(("Cp1eErrorFlags", "Off")),
+        ("CP1E-PAST-AREA-END", "error") => Some(("Cp1ePastAreaEnd", "Error")),
+        ("CP1E-PAST-AREA-END", "program-error") => Some(("Cp1ePastAreaEnd", "ProgramError")),
         ("HOUR-OUTPUT-OFF", "latched") => Some(("HourOutputOff", "Latched")),
         ("HOUR-OUTPUT-OFF", "recompared") => Some(("HourOutputOff", "Recompared")),
         ("HOUR-INPUT-OFF", "hold") => Some(("HourInputOff", "Hold")),
@@ -1896,6 +1966,8 @@ pub(crate) fn declaration(id: &str, alternative: &str) -> Option<(&'static str, 
         ("FX5-CLOCK-S2-DEVICE-RANGE", "checked") => Some(("Fx5ClockS2DeviceRange", "Checked")),
         ("FX5-OR-ON-ERROR", "contact-off") => Some(("Fx5OrOnError", "ContactOff")),
         ("FX5-OR-ON-ERROR", "result-off") => Some(("Fx5OrOnError", "ResultOff")),
+        ("FX5-INVALID-S3-DEVICE-RANGE", "device-range-first") => Some(("Fx5InvalidS3DeviceRange", "DeviceRangeFirst")),
+        ("FX5-INVALID-S3-DEVICE-RANGE", "s3-first") => Some(("Fx5InvalidS3DeviceRange", "S3First")),
         ("TADD-FLAGS-OFF", "written-each-execution") => Some(("TaddFlagsOff", "WrittenEachExecution")),
         ("TADD-FLAGS-OFF", "set-only") => Some(("TaddFlagsOff", "SetOnly")),
         ("TADD-EXACT-24", "carry-at-24") => Some(("TaddExact24", "CarryAt24")),

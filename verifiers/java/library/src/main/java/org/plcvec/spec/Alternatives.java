@@ -262,6 +262,42 @@ public final class Alternatives {
         }
     }
 
+    /** CP1E-PAST-AREA-END: What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end? */
+    public enum Cp1ePastAreaEnd implements Alternative {
+        /** An S1 or S2 whose words pass the end of the data area is an error, found before C or any data is read: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS. (the default) */
+        ERROR("error", "An S1 or S2 whose words pass the end of the data area is an error, found before C or any data is read: P_ER turns on and the instruction creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. What the error does to the six arithmetic flags is CP1E-ERROR-FLAGS."),
+        /** Such an operand is a program error, which the CPU reports by its own means (outside the vector): the instruction is not executed, whatever C and the data hold. It writes nothing (P_ER and the six arithmetic flags keep their values) and creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition. */
+        PROGRAM_ERROR("program-error", "Such an operand is a program error, which the CPU reports by its own means (outside the vector): the instruction is not executed, whatever C and the data hold. It writes nothing (P_ER and the six arithmetic flags keep their values) and creates an OFF execution condition, which an AND or OR form combines with the preceding logic like any OFF condition.");
+
+        private final String id;
+        private final String says;
+
+        Cp1ePastAreaEnd(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.CP1E_PAST_AREA_END;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.CP1E_PAST_AREA_END.id() + "=" + id;
+        }
+    }
+
     /** HOUR-OUTPUT-OFF: What turns D2 off, other than an invalid preset? */
     public enum HourOutputOff implements Alternative {
         /** Nothing: once on, D2 stays on until the program resets it or the preset becomes invalid. (the default) */
@@ -819,6 +855,42 @@ public final class Alternatives {
         @Override
         public String toString() {
             return Interpretation.FX5_OR_ON_ERROR.id() + "=" + id;
+        }
+    }
+
+    /** FX5-INVALID-S3-DEVICE-RANGE: When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)? */
+    public enum Fx5InvalidS3DeviceRange implements Alternative {
+        /** The device range is checked before (s3) is judged: SM709 turns on and the result is non-continuity, whatever (s3) holds. (the default) */
+        DEVICE_RANGE_FIRST("device-range-first", "The device range is checked before (s3) is judged: SM709 turns on and the result is non-continuity, whatever (s3) holds."),
+        /** (s3) is judged before the device range: an (s3) with any of bits 3 to 14 set, or with none of bits 0 to 2 set, gives non-continuity and SM709 keeps the value it had; only an (s3) that selects fields (0001H to 0007H, 8001H to 8007H) leaves the device range to turn SM709 on. */
+        S3_FIRST("s3-first", "(s3) is judged before the device range: an (s3) with any of bits 3 to 14 set, or with none of bits 0 to 2 set, gives non-continuity and SM709 keeps the value it had; only an (s3) that selects fields (0001H to 0007H, 8001H to 8007H) leaves the device range to turn SM709 on.");
+
+        private final String id;
+        private final String says;
+
+        Fx5InvalidS3DeviceRange(String id, String says) {
+            this.id = id;
+            this.says = says;
+        }
+
+        @Override
+        public Interpretation interpretation() {
+            return Interpretation.FX5_INVALID_S3_DEVICE_RANGE;
+        }
+
+        @Override
+        public String id() {
+            return id;
+        }
+
+        @Override
+        public String says() {
+            return says;
+        }
+
+        @Override
+        public String toString() {
+            return Interpretation.FX5_INVALID_S3_DEVICE_RANGE.id() + "=" + id;
         }
     }
 

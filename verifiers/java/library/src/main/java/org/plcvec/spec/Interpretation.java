@@ -24,6 +24,8 @@ public enum Interpretation {
     CP1E_ER_FLAG("CP1E-ER-FLAG", "Once the Error Flag is on, does the next execution that ends without error turn it off again?"),
     /** On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE? */
     CP1E_ERROR_FLAGS("CP1E-ERROR-FLAGS", "On an execution that ends in error (any error another interpretation's alternative makes one - non-BCD data, a field out of range, every field masked, a bit of 06 to 15 of C), what happens to the six arithmetic flags P_EQ, P_NE, P_LT, P_LE, P_GT, P_GE?"),
+    /** What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end? */
+    CP1E_PAST_AREA_END("CP1E-PAST-AREA-END", "What happens when S1 or S2 is one of the last two words of its data area, so that S1+2 or S2+2 (and with the last word S1+1 or S2+1 too) lies past its end?"),
     /** What turns D2 off, other than an invalid preset? */
     HOUR_OUTPUT_OFF("HOUR-OUTPUT-OFF", "What turns D2 off, other than an invalid preset?"),
     /** Does D1 hold its value while the input is off, or is it cleared? */
@@ -54,6 +56,8 @@ public enum Interpretation {
     FX5_CLOCK_S2_DEVICE_RANGE("FX5-CLOCK-S2-DEVICE-RANGE", "In current-date mode (s2) is dummy data; is its device range still checked?"),
     /** In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off? */
     FX5_OR_ON_ERROR("FX5-OR-ON-ERROR", "In an OR form, when the execution turns SM709 on (data not recognized as date data, or an operand past its device range), is the result passed on rlo_in OR a non-conductive contact (that is, rlo_in), or off?"),
+    /** When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)? */
+    FX5_INVALID_S3_DEVICE_RANGE("FX5-INVALID-S3-DEVICE-RANGE", "When (s3) is outside 0001H to 0007H and 8001H to 8007H (a bit of 3 to 14 set, or none of bits 0 to 2) while (s1), or (s2) where its device range is checked, runs past the end of its device range, which rule decides the execution, the device range (SM709 on) or (s3) (non-continuity, SM709 untouched)?"),
     /** Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on? */
     TADD_FLAGS_OFF("TADD-FLAGS-OFF", "Do the carry and zero flags turn off when an execution does not carry or does not give 0:00:00, or do they only ever turn on?"),
     /** Does a sum of exactly 24:00:00 turn the carry flag on? */
@@ -112,6 +116,8 @@ public enum Interpretation {
                 return Alternatives.Cp1eErFlag.REFLECTS_EACH_EXECUTION;
             case CP1E_ERROR_FLAGS:
                 return Alternatives.Cp1eErrorFlags.KEPT;
+            case CP1E_PAST_AREA_END:
+                return Alternatives.Cp1ePastAreaEnd.ERROR;
             case HOUR_OUTPUT_OFF:
                 return Alternatives.HourOutputOff.LATCHED;
             case HOUR_INPUT_OFF:
@@ -142,6 +148,8 @@ public enum Interpretation {
                 return Alternatives.Fx5ClockS2DeviceRange.IGNORED;
             case FX5_OR_ON_ERROR:
                 return Alternatives.Fx5OrOnError.CONTACT_OFF;
+            case FX5_INVALID_S3_DEVICE_RANGE:
+                return Alternatives.Fx5InvalidS3DeviceRange.DEVICE_RANGE_FIRST;
             case TADD_FLAGS_OFF:
                 return Alternatives.TaddFlagsOff.WRITTEN_EACH_EXECUTION;
             case TADD_EXACT_24:
@@ -178,6 +186,8 @@ public enum Interpretation {
                 return List.of(Alternatives.Cp1eErFlag.values());
             case CP1E_ERROR_FLAGS:
                 return List.of(Alternatives.Cp1eErrorFlags.values());
+            case CP1E_PAST_AREA_END:
+                return List.of(Alternatives.Cp1ePastAreaEnd.values());
             case HOUR_OUTPUT_OFF:
                 return List.of(Alternatives.HourOutputOff.values());
             case HOUR_INPUT_OFF:
@@ -208,6 +218,8 @@ public enum Interpretation {
                 return List.of(Alternatives.Fx5ClockS2DeviceRange.values());
             case FX5_OR_ON_ERROR:
                 return List.of(Alternatives.Fx5OrOnError.values());
+            case FX5_INVALID_S3_DEVICE_RANGE:
+                return List.of(Alternatives.Fx5InvalidS3DeviceRange.values());
             case TADD_FLAGS_OFF:
                 return List.of(Alternatives.TaddFlagsOff.values());
             case TADD_EXACT_24:
@@ -244,6 +256,8 @@ public enum Interpretation {
                 return List.of(Family.CP1E_TIME_COMPARE);
             case CP1E_ERROR_FLAGS:
                 return List.of(Family.CP1E_TIME_COMPARE);
+            case CP1E_PAST_AREA_END:
+                return List.of(Family.CP1E_TIME_COMPARE);
             case HOUR_OUTPUT_OFF:
                 return List.of(Family.FC6A_HOUR_METER);
             case HOUR_INPUT_OFF:
@@ -273,6 +287,8 @@ public enum Interpretation {
             case FX5_CLOCK_S2_DEVICE_RANGE:
                 return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
             case FX5_OR_ON_ERROR:
+                return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
+            case FX5_INVALID_S3_DEVICE_RANGE:
                 return List.of(Family.FX5_DATE_COMPARE, Family.FX5_TIME_COMPARE);
             case TADD_FLAGS_OFF:
                 return List.of(Family.FX5_TIME_ADD);
