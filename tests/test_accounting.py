@@ -70,7 +70,14 @@ def test_hour_d2_row_is_recorded_as_its_erratum(families):
     assert d2[0]["erratum"] in {e["id"] for e in fam.doc["errata"]}
 
 
-def test_cp1e_heading_that_lost_lt_dt_is_a_wording_problem(families):
-    entries = families["cp1e-time-compare"].doc["accounting"]
-    heading = [e for e in entries if "=DT , <>DT , , <=DT , >DT , >=DT" in e["texts"]]
-    assert len(heading) == 1 and heading[0]["as"] == "wording" and "<DT" in heading[0]["instead"]
+def test_cp1e_heading_that_lost_lt_dt_is_recorded_as_its_erratum(families):
+    """The heading prints "=DT , <>DT , , <=DT , >DT , >=DT" (five names and an empty place); the function
+    text's six flags and "18 possible combinations" (three forms) make six instructions, <DT among them."""
+    fam = families["cp1e-time-compare"]
+    heading = [e for e in fam.doc["accounting"] if "=DT , <>DT , , <=DT , >DT , >=DT" in e["texts"]]
+    assert len(heading) == 1 and heading[0]["as"] == "erratum"
+    erratum = next(e for e in fam.doc["errata"] if e["id"] == heading[0]["erratum"])
+    assert erratum["quote"] == "=DT , <>DT , , <=DT , >DT , >=DT" and "<DT" in erratum["vectors_follow"]
+    # The vectors follow the function text: <DT is an instruction in each of the three forms.
+    symbols = {c["symbol"] for c in fam.doc["instructions"]["conditions"]}
+    assert "<DT" in symbols and len(symbols) == 6 and len(fam.doc["instructions"]["forms"]) == 3

@@ -13,7 +13,7 @@ const SuiteVersion = "0.2.0"
 const SchemaVersion = "1.1.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "45cee03f9622cde72b6e55eb833f534ee0e6d22abbc0c8c63d996ace4a876f33"
+const SpecSHA256 = "7200189ffec10e0e2f55930591998869e9a6df895ef8678b95044110d5a80520"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3615

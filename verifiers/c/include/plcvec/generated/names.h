@@ -8,7 +8,7 @@
 #define PLCVEC_SUITE_VERSION "0.2.0"
 #define PLCVEC_SCHEMA_VERSION "1.1.0"
 #define PLCVEC_SCHEMA_MAJOR 1
-#define PLCVEC_SPEC_SHA256 "45cee03f9622cde72b6e55eb833f534ee0e6d22abbc0c8c63d996ace4a876f33"
+#define PLCVEC_SPEC_SHA256 "7200189ffec10e0e2f55930591998869e9a6df895ef8678b95044110d5a80520"
 #define PLCVEC_TOTAL_VECTORS 3615
 
 /* Instruction families, in the order of the manifest. */
