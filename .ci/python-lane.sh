@@ -1,0 +1,37 @@
+#!/usr/bin/env bash
+# CI's Python lane (run by .ci/run beside the language lanes, after the README's first commands
+# installed plcvec): lint the CI recipes and the spec, check the API and the exports, the package as
+# a user installs it, the review against the manual, the reference through the gate, the table of
+# faults, the live differential run.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+# The CI recipes as yamllint's users lint them (its default rules, warnings as errors).
+python3 -m pip install --quiet --disable-pip-version-check yamllint
+python3 -m yamllint --strict action.yml verifiers/ci
+
+# Every fenced block of every README carries a marker: run by CI, or skipped with a reason.
+python3 .ci/readme_snippets.py check README.md verifiers/*/README.md
+
+python3 -m plcvec lint
+# The Python runner's public API against the previous release (griffe; each language's own check is
+# in its .ci/lang script): a breaking change CHANGES.md does not list fails.
+python3 .ci/api/python.py
+# The copies of the vectors and the spec's names rendered into each native verifier.
+python3 -m plcvec export --all --check
+
+# The package as a user installs it: the wheel and the sdist, each in a fresh virtual environment,
+# run from a temporary folder with no checkout in reach (builds with `build`, checks with `twine`).
+bash .ci/package-check.sh
+
+# Every quote found in the manual, every clause covered, every audit disagreement recorded.
+python3 -m plcvec review --check --manual-dir ../shared/manual --out build/review
+
+# The CI gate as an implementer runs it, on the reference implementation over the stdio protocol.
+# The reference implements every instruction, so it may skip nothing.
+python3 -m plcvec verify --adapter "python3 -m plcvec_reference.adapter" --junit build/verify-reference.xml -q --max-skipped 0
+# The shared table of faults (verifiers/parity/faults.toml), Python's rows: plcvec verify's verdicts
+# are the rule every native runner's rows (in .ci/lang/<lang>.sh) are held to.
+python3 verifiers/parity/run.py --lang python
+# Live differential run: fresh inputs through the reference and the spec engine (fixed seed: repeatable).
+python3 -m plcvec fuzz --adapter "python3 -m plcvec_reference.adapter" --examples 2000 --seed 1
