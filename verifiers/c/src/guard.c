@@ -215,20 +215,3 @@ int plcvec_guard_install(long bound_ms)
     pthread_once(&once, install);
     return installed ? 0 : -1;
 }
-
-long plcvec_timeout_ms(char *err, size_t errlen)
-{
-    const char *text = getenv("PLCVEC_TIMEOUT");
-    if (!text)
-        return 10000;
-    char *end = NULL;
-    errno = 0;
-    double s = strtod(text, &end);
-    if (!*text || end == text || *end || errno || !(s > 0) || s > 86400.0 * 365) {
-        snprintf(err, errlen, "PLCVEC_TIMEOUT=%s: the seconds each vector may take, a positive number (default 10)",
-                 text);
-        return -1;
-    }
-    long ms = (long)(s * 1000.0 + 0.5);
-    return ms > 0 ? ms : 1;
-}

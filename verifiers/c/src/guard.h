@@ -12,7 +12,5 @@ int plcvec_guard_install(long bound_ms);
 void plcvec_guard_enter(const char *id);
 void plcvec_guard_leave(void);
 const char *plcvec_guard_current(void);
-/* PLCVEC_TIMEOUT in ms (10000 when unset), or -1 with a message naming the variable. */
-long plcvec_timeout_ms(char *err, size_t errlen);
 
 #endif

@@ -1,385 +1,59 @@
-/* The known-failures file (CONTRACT.md, "The expectations file"), read and written as every
- * plcvec runner reads and writes it:
- *
- *     [[known-failure]]
- *     id = "fx5-date-compare/LDDT</nonexistent/2024-2-30/s1/vs-previous"
- *     reason = "our calendar check rejects 2008/02/31 (issue #12)"
- *
- * Debian packages no TOML library for C, and the library depends on libc alone, so this is a
- * small strict parser for exactly that format: comments, blank lines, [[known-failure]] headers
- * and `key = "string"` lines (basic strings with TOML's escapes, or 'literal' strings). Anything
- * else is refused with FILE:LINE, never guessed at. */
-#include <errno.h>
+/* Known failures (CONTRACT.md, "The expectations file"): a listed vector that fails or errors is
+ * XFAIL and does not fail the run; one that passes is STALE, and so is a listed id the suite does
+ * not have, so that the list can only shrink. The messages are TEXT.md's, naming the entry as
+ * FILE:LINE and, for an id the suite merged into another vector, the vector it became. */
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "table.h"
+#include "known.h"
 
-#define SECTION "known-failure"
-
-typedef struct parser {
-    const char *path;
-    int line;
-    char *err;
-    size_t errlen;
-} parser;
-
-static int fail(parser *p, const char *fmt, const char *arg)
+/* FILE:LINE of an entry; "in code" for one of a list given in code without a file. */
+static void where(const plcvec_known_failure *k, char *buf, size_t size)
 {
-    char what[400];
-    snprintf(what, sizeof what, fmt, arg ? arg : "");
-    snprintf(p->err, p->errlen, "%s:%d: %.400s", p->path, p->line, what);
-    return -1;
-}
-
-static const char *skip_ws(const char *s)
-{
-    while (*s == ' ' || *s == '\t')
-        s++;
-    return s;
-}
-
-/* The rest of a line after a value: blanks and an optional comment. */
-static int line_end(parser *p, const char *s)
-{
-    s = skip_ws(s);
-    if (*s && *s != '#')
-        return fail(p, "not valid TOML: unexpected text after the value", NULL);
-    return 0;
-}
-
-static int utf8_ok(const unsigned char *s, size_t n, size_t *bad)
-{
-    for (size_t i = 0; i < n;) {
-        unsigned c = s[i];
-        size_t len = c < 0x80 ? 1 : (c & 0xE0) == 0xC0 ? 2 : (c & 0xF0) == 0xE0 ? 3 : (c & 0xF8) == 0xF0 ? 4 : 0;
-        if (!len || i + len > n || (len == 2 && c < 0xC2) || (len == 4 && c > 0xF4)) {
-            *bad = i;
-            return 0;
-        }
-        for (size_t k = 1; k < len; k++)
-            if ((s[i + k] & 0xC0) != 0x80) {
-                *bad = i;
-                return 0;
-            }
-        i += len;
-    }
-    return 1;
-}
-
-static void put_utf8(char **o, unsigned long cp)
-{
-    char *q = *o;
-    if (cp < 0x80)
-        *q++ = (char)cp;
-    else if (cp < 0x800)
-        *q++ = (char)(0xC0 | cp >> 6), *q++ = (char)(0x80 | (cp & 0x3F));
-    else if (cp < 0x10000)
-        *q++ = (char)(0xE0 | cp >> 12), *q++ = (char)(0x80 | (cp >> 6 & 0x3F)), *q++ = (char)(0x80 | (cp & 0x3F));
+    if (!k->file)
+        snprintf(buf, size, "in code");
+    else if (k->line > 0)
+        snprintf(buf, size, "%s:%d", k->file, k->line);
     else
-        *q++ = (char)(0xF0 | cp >> 18), *q++ = (char)(0x80 | (cp >> 12 & 0x3F)), *q++ = (char)(0x80 | (cp >> 6 & 0x3F)),
-        *q++ = (char)(0x80 | (cp & 0x3F));
-    *o = q;
+        snprintf(buf, size, "%s", k->file);
 }
 
-/* A string value at s (on one line): a malloc'd copy in *out, *after past its closing quote. */
-static int string_value(parser *p, const char *s, char **out, const char **after)
+void plcvec_apply_known(plcvec_verdict *vd, const plcvec_known_failure *known, size_t n_known)
 {
-    char quote = *s;
-    if (quote != '"' && quote != '\'')
-        return fail(p, "not valid TOML here: `id` and `reason` are strings (\"...\")", NULL);
-    if (s[1] == quote && s[2] == quote)
-        return fail(p, "multi-line strings are not used in an expectations file; write the value on one line", NULL);
-    char *o = malloc(strlen(s) + 1), *start = o;
-    if (!o)
-        return fail(p, "out of memory", NULL);
-    for (s++; *s != quote; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (!c) {
-            free(start);
-            return fail(p, "not valid TOML: the string is not closed on its line", NULL);
-        }
-        if ((c < 0x20 && c != '\t') || c == 0x7F) {
-            free(start);
-            return fail(p, "not valid TOML: a control character inside a string", NULL);
-        }
-        if (quote == '\'' || c != '\\') {
-            *o++ = (char)c;
+    for (size_t i = 0; i < n_known; i++) {
+        const plcvec_known_failure *k = &known[i];
+        if (!k->id || !vd->vector || strcmp(k->id, vd->vector->id) != 0)
             continue;
+        char at[300];
+        where(k, at, sizeof at);
+        const char *reason = k->reason ? k->reason : "";
+        if (vd->status == PLCVEC_FAIL || vd->status == PLCVEC_ERROR) {
+            /* The differing fields stay: --verbose shows them, and the roll-up judges the known
+             * failure under the other readings. */
+            char was[sizeof vd->message];
+            snprintf(was, sizeof was, "%s", vd->message);
+            vd->status = PLCVEC_XFAIL;
+            snprintf(vd->message, sizeof vd->message, "known failure (%.200s): %.150s%s%.150s", at, reason,
+                     was[0] ? "; " : "", was);
+        } else if (vd->status == PLCVEC_PASS) {
+            vd->status = PLCVEC_STALE;
+            snprintf(vd->message, sizeof vd->message,
+                     "listed as a known failure (%.200s: %.200s) but it passes; remove it from the expectations file", at,
+                     reason);
         }
-        char e = *++s;
-        const char *simple = strchr("btnfr\"\\", e);
-        if (e && simple) {
-            static const char to[] = "\b\t\n\f\r\"\\";
-            *o++ = to[simple - "btnfr\"\\"];
-            continue;
-        }
-        int digits = e == 'u' ? 4 : e == 'U' ? 8 : 0;
-        unsigned long cp = 0;
-        for (int k = 1; k <= digits; k++) {
-            char h = s[k];
-            int v = h >= '0' && h <= '9' ? h - '0' : h >= 'a' && h <= 'f' ? h - 'a' + 10 : h >= 'A' && h <= 'F' ? h - 'A' + 10 : -1;
-            if (v < 0) {
-                digits = -1;
-                break;
-            }
-            cp = cp * 16 + (unsigned long)v;
-        }
-        if (digits <= 0 || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) {
-            free(start);
-            return fail(p, "not valid TOML: an unknown escape in a string", NULL);
-        }
-        put_utf8(&o, cp);
-        s += digits;
-    }
-    *o = '\0';
-    *out = start;
-    *after = s + 1;
-    return 0;
-}
-
-typedef struct entry {
-    char *id, *reason;
-    int line;
-} entry;
-
-/* A finished entry into the list (which takes its strings). */
-static int keep(parser *p, entry *e, plcvec_known_failure **list, int **lines, size_t *n, size_t *cap)
-{
-    if (*n == *cap) {
-        size_t c = *cap ? *cap * 2 : 8;
-        plcvec_known_failure *grown = realloc(*list, c * sizeof *grown);
-        if (grown)
-            *list = grown;
-        int *grown_lines = realloc(*lines, c * sizeof *grown_lines);
-        if (grown_lines)
-            *lines = grown_lines;
-        if (!grown || !grown_lines)
-            return fail(p, "out of memory", NULL);
-        *cap = c;
-    }
-    (*list)[*n].id = e->id, (*list)[*n].reason = e->reason;
-    (*lines)[*n] = e->line;
-    (*n)++;
-    e->id = e->reason = NULL;
-    return 0;
-}
-
-void plcvec_known_free(plcvec_known_failure *list, size_t n)
-{
-    if (!list)
         return;
-    for (size_t i = 0; i < n; i++) {
-        free((char *)list[i].id);
-        free((char *)list[i].reason);
     }
-    free(list);
 }
 
-static int finish(parser *p, entry *e, plcvec_known_failure *list, const int *lines, size_t n)
+void plcvec_known_unknown_message(const plcvec_known_failure *k, char *buf, size_t size)
 {
-    p->line = e->line;
-    if (!e->id || !*e->id)
-        return fail(p, "entry without an `id`", NULL);
-    const char *r = e->reason ? skip_ws(e->reason) : "";
-    if (!*r) {
-        char what[300];
-        snprintf(what, sizeof what, "%.200s: every known failure needs a `reason`", e->id);
-        return fail(p, "%s", what);
-    }
-    for (size_t i = 0; i < n; i++)
-        if (strcmp(list[i].id, e->id) == 0) {
-            char what[300];
-            snprintf(what, sizeof what, "%.200s is listed twice (first at line %d)", e->id, lines[i]);
-            return fail(p, "%s", what);
-        }
-    return 0;
-}
-
-int plcvec_known_load(const char *path, plcvec_known_failure **out, size_t *n_out, char *err, size_t errlen)
-{
-    parser p = {path, 0, err, errlen};
-    *out = NULL;
-    *n_out = 0;
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot read the expectations file: %s", path, strerror(errno));
-        return -1;
-    }
-    size_t cap = 4096, len = 0;
-    char *text = malloc(cap);
-    for (size_t got; text && (got = fread(text + len, 1, cap - len - 1, f)) > 0;) {
-        len += got;
-        if (len + 1 == cap) {
-            char *grown = realloc(text, cap *= 2);
-            if (!grown)
-                free(text);
-            text = grown;
-        }
-    }
-    int read_error = ferror(f);
-    fclose(f);
-    if (!text || read_error) {
-        free(text);
-        snprintf(err, errlen, "%s: cannot read the expectations file", path);
-        return -1;
-    }
-    text[len] = '\0';
-    size_t bad = 0;
-    if (!utf8_ok((const unsigned char *)text, len, &bad) || strlen(text) != len) {
-        p.line = 1;
-        for (size_t i = 0; i < len && i < bad; i++)
-            p.line += text[i] == '\n';
-        free(text);
-        return fail(&p, "not UTF-8 text (a TOML file is UTF-8)", NULL);
-    }
-
-    plcvec_known_failure *list = NULL;
-    int *lines = NULL;          /* the line of each entry's header, for "listed twice" */
-    size_t n = 0, cap_list = 0;
-    entry e = {NULL, NULL, 0};
-    int in_entry = 0, rc = 0;
-    char *line = text;
-    for (p.line = 1; line && rc == 0; p.line++) {
-        char *nl = strchr(line, '\n');
-        if (nl) {
-            *nl = '\0';
-            if (nl > line && nl[-1] == '\r')
-                nl[-1] = '\0';
-        }
-        const char *s = skip_ws(line);
-        line = nl ? nl + 1 : NULL;
-        if (!*s || *s == '#')
-            continue;
-        if (*s == '[') {
-            const char *q = s[1] == '[' ? skip_ws(s + 2) : NULL;
-            size_t k = strlen(SECTION);
-            if (!q || strncmp(q, SECTION, k) != 0 || strncmp(skip_ws(q + k), "]]", 2) != 0) {
-                char name[80];
-                snprintf(name, sizeof name, "%.60s", s);
-                rc = fail(&p, "unknown table %s; an expectations file holds only [[" SECTION "]] entries", name);
-                break;
-            }
-            if ((rc = line_end(&p, skip_ws(q + k) + 2)) != 0)
-                break;
-            if (in_entry) {
-                int here = p.line;
-                if ((rc = finish(&p, &e, list, lines, n)) != 0)
-                    break;
-                p.line = here;
-                if ((rc = keep(&p, &e, &list, &lines, &n, &cap_list)) != 0)
-                    break;
-            }
-            in_entry = 1;
-            e.line = p.line;
-            continue;
-        }
-        const char *k = s;
-        while ((*k >= 'a' && *k <= 'z') || (*k >= 'A' && *k <= 'Z') || (*k >= '0' && *k <= '9') || *k == '_' || *k == '-')
-            k++;
-        char key[64];
-        snprintf(key, sizeof key, "%.*s", (int)(k - s < 60 ? k - s : 60), s);
-        const char *eq = skip_ws(k);
-        if (k == s || *eq != '=') {
-            rc = fail(&p, "not valid TOML: expected `key = \"value\"` or [[" SECTION "]]", NULL);
-            break;
-        }
-        if (!in_entry) {
-            char what[200];
-            snprintf(what, sizeof what, "unknown key '%s'; an expectations file holds only [[" SECTION "]] entries", key);
-            rc = fail(&p, "%s", what);
-            break;
-        }
-        char **slot = strcmp(key, "id") == 0 ? &e.id : strcmp(key, "reason") == 0 ? &e.reason : NULL;
-        if (!slot) {
-            char what[120];
-            snprintf(what, sizeof what, "unknown key '%s' (an entry has `id` and `reason`)", key);
-            rc = fail(&p, "%s", what);
-            break;
-        }
-        if (*slot) {
-            rc = fail(&p, "not valid TOML: `%s` is given twice in one entry", key);
-            break;
-        }
-        const char *after = NULL;
-        if ((rc = string_value(&p, skip_ws(eq + 1), slot, &after)) != 0)
-            break;
-        rc = line_end(&p, after);
-    }
-    if (rc == 0 && in_entry) {
-        if ((rc = finish(&p, &e, list, lines, n)) == 0)
-            rc = keep(&p, &e, &list, &lines, &n, &cap_list);
-    }
-    free(e.id);
-    free(e.reason);
-    free(text);
-    free(lines);
-    if (rc) {
-        plcvec_known_free(list, n);
-        return -1;
-    }
-    *out = list;
-    *n_out = n;
-    return 0;
-}
-
-/* ---- writing: the failures of a run, as a starting list ------------------------------------- */
-
-static void toml_string(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\')
-            fprintf(f, "\\%c", c);
-        else if (c < 0x20 || c == 0x7F)
-            fprintf(f, "\\u%04X", c);
-        else
-            fputc(c, f);
-    }
-    fputc('"', f);
-}
-
-static int by_id(const void *a, const void *b)
-{
-    return strcmp(*(const char *const *)a, *(const char *const *)b);
-}
-
-int plcvec_known_write(const char *path, const char **ids, size_t n, const char *reason, char *err, size_t errlen)
-{
-    /* Written beside the target and renamed over it: a reader never sees half a file. */
-    size_t len = strlen(path);
-    char *tmp = malloc(len + 16);
-    if (!tmp) {
-        snprintf(err, errlen, "%s: out of memory", path);
-        return -1;
-    }
-    snprintf(tmp, len + 16, "%s.tmp-plcvec", path);
-    FILE *f = fopen(tmp, "wb");
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot write: %s", path, strerror(errno));
-        free(tmp);
-        return -1;
-    }
-    if (n > 1)
-        qsort(ids, n, sizeof *ids, by_id);
-    fputs("# Known failures: each passing entry fails the run as stale, so fix and delete.\n", f);
-    for (size_t i = 0; i < n; i++) {
-        fputs("\n[[" SECTION "]]\nid = ", f);
-        toml_string(f, ids[i]);
-        fputs("\nreason = ", f);
-        toml_string(f, reason);
-        fputc('\n', f);
-    }
-    int bad = ferror(f);
-    bad |= fclose(f) != 0;
-    if (bad || rename(tmp, path) != 0) {
-        snprintf(err, errlen, "%s: cannot write: %s", path, strerror(errno));
-        remove(tmp);
-        free(tmp);
-        return -1;
-    }
-    free(tmp);
-    return 0;
+    char at[300];
+    where(k, at, sizeof at);
+    const char *into = k->id ? plcvec_merged_into(k->id) : NULL;
+    if (into)
+        snprintf(buf, size, "listed as a known failure (%s) but the suite has no such vector: it was merged into %s; "
+                            "list that id instead", at, into);
+    else
+        snprintf(buf, size, "listed as a known failure (%s) but the suite has no such vector; remove it from the "
+                            "expectations file", at);
 }

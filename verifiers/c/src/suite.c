@@ -1,4 +1,6 @@
-/* The compiled-in suite: finding vectors and names, and choosing which vectors to run. */
+/* The compiled-in suite: its vectors, found by position or id, and their names (families,
+ * interpretations, devices, clauses, the ids merged into another vector). Choosing which vectors
+ * to run is selection.c's. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -44,6 +46,36 @@ const plcvec_vector *plcvec_find(const char *id)
         }
     }
     return NULL;
+}
+
+/* The manifest's `merged` map is sorted by the old id; a chain (an id merged into one merged
+ * again) is followed to its end, and a cycle, which the generator never writes, ends the walk. */
+static const char *merged_once(const char *id)
+{
+    size_t lo = 0, hi = plcvec_n_merged_ids;
+    while (lo < hi) {
+        size_t mid = lo + (hi - lo) / 2;
+        int c = strcmp(plcvec_merged_ids[mid].id, id);
+        if (c == 0)
+            return plcvec_merged_ids[mid].into;
+        if (c < 0)
+            lo = mid + 1;
+        else
+            hi = mid;
+    }
+    return NULL;
+}
+
+const char *plcvec_merged_into(const char *id)
+{
+    const char *into = merged_once(id);
+    for (size_t hops = 0; into && hops < plcvec_n_merged_ids; hops++) {
+        const char *next = merged_once(into);
+        if (!next)
+            break;
+        into = next;
+    }
+    return into;
 }
 
 const char *plcvec_clause(const plcvec_vector *v, size_t i)
@@ -187,183 +219,4 @@ size_t plcvec_test_name(const plcvec_vector *v, char *buf, size_t size)
     if (size)
         buf[len < size ? len : size - 1] = '\0';
     return len;
-}
-
-/* ---- selection ---------------------------------------------------------------------------- */
-
-uint32_t plcvec_crc32(const char *text)
-{
-    /* CRC-32 (IEEE 802.3, reflected, as zlib.crc32), bitwise: ids are short and selection runs once. */
-    uint32_t crc = 0xFFFFFFFFu;
-    for (const unsigned char *p = (const unsigned char *)text; *p; p++) {
-        crc ^= *p;
-        for (int k = 0; k < 8; k++)
-            crc = (crc >> 1) ^ (0xEDB88320u & (0u - (crc & 1u)));
-    }
-    return ~crc;
-}
-
-/* A [...] set at p (just after '['): sets *matched and returns the position after ']', or NULL
- * if the set is not closed (then '[' is an ordinary character, as in fnmatch). */
-static const char *glob_set(const char *p, unsigned char c, int *matched)
-{
-    int negate = 0, hit = 0;
-    if (*p == '!') {
-        negate = 1;
-        p++;
-    }
-    const char *start = p;
-    while (*p && (*p != ']' || p == start)) {
-        unsigned char lo = (unsigned char)*p, hi = lo;
-        if (p[1] == '-' && p[2] && p[2] != ']') {
-            hi = (unsigned char)p[2];
-            p += 2;
-        }
-        if (lo <= c && c <= hi)
-            hit = 1;
-        p++;
-    }
-    if (*p != ']')
-        return NULL;
-    *matched = hit != negate;
-    return p + 1;
-}
-
-int plcvec_glob(const char *pattern, const char *text)
-{
-    /* Iterative matching with one backtrack point for the last '*': linear in practice. */
-    const char *p = pattern, *t = text, *star = NULL, *resume = NULL;
-    while (*t) {
-        if (*p == '*') {
-            star = ++p;
-            resume = t;
-            continue;
-        }
-        if (*p == '[') {
-            int matched = 0;
-            const char *after = glob_set(p + 1, (unsigned char)*t, &matched);
-            if (after && matched) {
-                p = after;
-                t++;
-                continue;
-            }
-            if (!after && *t == '[') {
-                p++;
-                t++;
-                continue;
-            }
-        } else if (*p && (*p == '?' || *p == *t)) {
-            p++;
-            t++;
-            continue;
-        }
-        if (!star)
-            return 0;
-        p = star;
-        t = ++resume;
-    }
-    while (*p == '*')
-        p++;
-    return *p == '\0';
-}
-
-static int in_list(const char *const *list, size_t n, const char *name)
-{
-    for (size_t i = 0; i < n; i++)
-        if (strcmp(list[i], name) == 0)
-            return 1;
-    return 0;
-}
-
-int plcvec_selected(const plcvec_selection *sel, const plcvec_vector *v)
-{
-    if (sel->n_families && !in_list(sel->families, sel->n_families, plcvec_family_names[v->family]))
-        return 0;
-    if (sel->n_instructions && !in_list(sel->instructions, sel->n_instructions, plcvec_instruction_names[v->instruction]))
-        return 0;
-    if (sel->n_tags) {
-        int any = 0;
-        for (size_t i = 0; i < sel->n_tags && !any; i++)
-            for (int t = 0; t < PLCVEC_TAG_COUNT; t++)
-                if ((v->tags >> t & 1) && strcmp(plcvec_tag_names[t], sel->tags[i]) == 0)
-                    any = 1;
-        if (!any)
-            return 0;
-    }
-    if (sel->n_ids) {
-        int any = 0;
-        for (size_t i = 0; i < sel->n_ids && !any; i++)
-            any = plcvec_glob(sel->ids[i], v->id);
-        if (!any)
-            return 0;
-    }
-    if (sel->n_interpretations) {
-        int any = 0;
-        for (size_t i = 0; i < v->n_interpretations && !any; i++)
-            any = in_list(sel->interpretations, sel->n_interpretations, plcvec_interpretations[v->interpretations[i]].id);
-        if (!any)
-            return 0;
-    }
-    if (sel->shard_n && plcvec_crc32(v->id) % sel->shard_n + 1 != sel->shard_k)
-        return 0;
-    return 1;
-}
-
-/* An unknown name is a usage error that lists the known ones: a typo in a CI file must not turn a
- * gate off by selecting nothing. */
-static int check_names(const char *what, const char *const *list, size_t n, const char *const *names,
-                       size_t count, char *err, size_t errlen)
-{
-    for (size_t i = 0; i < n; i++)
-        if (!in_list(names, count, list[i])) {
-            size_t len = (size_t)snprintf(err, errlen, "unknown %s '%s': the suite has no such %s; known:", what, list[i], what);
-            for (size_t k = 0; k < count && len < errlen; k++)
-                len += (size_t)snprintf(err + len, errlen - len, "%s %s", k ? "," : "", names[k]);
-            return -1;
-        }
-    return 0;
-}
-
-long plcvec_select(const plcvec_selection *sel, const plcvec_vector ***out, char *err, size_t errlen)
-{
-    static const plcvec_selection all;
-    if (!sel)
-        sel = &all;
-    const char *interps[PLCVEC_INTERPRETATION_COUNT];
-    for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
-        interps[i] = plcvec_interpretations[i].id;
-    if (check_names("family", sel->families, sel->n_families, plcvec_family_names, PLCVEC_FAMILY_COUNT, err, errlen) ||
-        check_names("instruction", sel->instructions, sel->n_instructions, plcvec_instruction_names,
-                    PLCVEC_INSTRUCTION_COUNT, err, errlen) ||
-        check_names("tag", sel->tags, sel->n_tags, plcvec_tag_names, PLCVEC_TAG_COUNT, err, errlen) ||
-        check_names("interpretation", sel->interpretations, sel->n_interpretations, interps,
-                    PLCVEC_INTERPRETATION_COUNT, err, errlen))
-        return -1;
-    if ((sel->shard_n || sel->shard_k) && !(sel->shard_k >= 1 && sel->shard_k <= sel->shard_n)) {
-        snprintf(err, errlen, "shard %u/%u: K must be between 1 and N", sel->shard_k, sel->shard_n);
-        return -1;
-    }
-    size_t total = plcvec_count(), n = 0;
-    for (size_t i = 0; i < sel->n_ids; i++) {
-        size_t k = 0;
-        while (k < total && !plcvec_glob(sel->ids[i], plcvec_at(k)->id))
-            k++;
-        if (k == total) {
-            snprintf(err, errlen, "id %s: matches no vector id in the suite (ids look like %s; a glob matches the whole id)",
-                     sel->ids[i], total ? plcvec_at(0)->id : "family/instruction/...");
-            return -1;
-        }
-    }
-    const plcvec_vector **list = malloc((total ? total : 1) * sizeof *list);
-    if (!list) {
-        snprintf(err, errlen, "out of memory");
-        return -1;
-    }
-    for (size_t i = 0; i < total; i++) {
-        const plcvec_vector *v = plcvec_at(i);
-        if (plcvec_selected(sel, v))
-            list[n++] = v;
-    }
-    *out = list;
-    return (long)n;
 }

@@ -253,13 +253,13 @@ static void test_run_and_known_failures(void)
     opt.log = log;
     plcvec_summary sum;
     CHECK(plcvec_run(&impl, &opt, &sum) == 1 && sum.failed == 1);
-    plcvec_known_failure known[] = {{v->id, "planted"}};
+    plcvec_known_failure known[] = {{v->id, "planted", "known.toml", 3}};
     opt.known = known, opt.n_known = 1;
     /* A known failure does not fail the run; but a run in which nothing passed proves nothing. */
     CHECK(plcvec_run(&impl, &opt, &sum) == PLCVEC_EXIT_NOTHING_TESTED && sum.xfail == 1);
     t.how = NOTHING;                            /* fixed: the entry is stale */
     CHECK(plcvec_run(&impl, &opt, &sum) == 1 && sum.stale == 1);
-    plcvec_known_failure unknown[] = {{"fx5-time-add/no/such/vector", "gone"}};
+    plcvec_known_failure unknown[] = {{"fx5-time-add/no/such/vector", "gone", NULL, 0}};
     opt.known = unknown;
     CHECK(plcvec_run(&impl, &opt, &sum) == 1 && sum.stale == 1 && sum.passed == 1);
     opt.known = NULL, opt.n_known = 0;

@@ -7,7 +7,10 @@ drift). This check writes a C program whose implementation answers each case fro
 text/answers.json (declaring the cases' hello: its interpretations and cpu_writes), selects the
 cases by id, builds it against the built library, and compares what plcvec_run prints (the failure
 blocks, the roll-up by reading, the skips by reason and the summary; the header line and the time
-left out) with text/expected.txt.
+left out) with text/expected.txt, then, with text/known.toml as its known-failures file (read from
+the folder text/, as `known.toml`), with text/expected-known.txt. The expected texts hold the
+`plcvec verify` form of a declaration (--choose); the program asks the roll-up for it, and the C
+form is checked against TEXT.md's table by tests/test_rollup.c.
 
     python3 verifiers/c/tests/text_blocks.py BUILD_DIR     # BUILD_DIR holds libplcvec.a
 Exit 0 identical, 1 a difference (shown as a diff) or a case the golden set no longer has.
@@ -42,7 +45,7 @@ def current_cases() -> list[str]:
 
 
 def program(ids: list[str], answers: dict) -> str:
-    lines = ['#include <stdio.h>', '#include <string.h>', '#include "plcvec/plcvec.h"', '',
+    lines = ['#include <stdio.h>', '#include <string.h>', '#include "plcvec/plcvec.h"', '#include "rollup.h"', '',
              'static int run(void *ctx, const plcvec_vector *v, plcvec_out *o)', '{', '    (void)ctx;']
     for vid in ids:
         a = answers["answers"][vid]
@@ -60,7 +63,7 @@ def program(ids: list[str], answers: dict) -> str:
                     lines.append(f"        plcvec_out_named(o, {c_str(device)}, {kind}, {int(value)}u);")
             lines.append("        return 0;")
         lines.append("    }")
-    lines += ['    return plcvec_out_skip(o, "not a shared case");', '}', '', 'int main(void)', '{']
+    lines += ['    return plcvec_out_skip(o, "not a shared case");', '}', '', 'int main(int argc, char **argv)', '{']
     hello = answers["hello"]
     lines.append("    static const char *const cpu[] = {" + "".join(f"{c_str(d)}, " for d in hello.get("cpu_writes", []))
                  + "NULL};")
@@ -77,7 +80,12 @@ def program(ids: list[str], answers: dict) -> str:
     lines.append("    plcvec_judge_free(j);")
     lines.append("    static const char *const ids[] = {" + "".join(f"{c_str(i)}, " for i in ids) + "};")
     lines += ["    plcvec_options opt = {0};", f"    opt.selection.ids = ids, opt.selection.n_ids = {len(ids)};",
-              "    plcvec_run(&impl, &opt, NULL);", "    return 0;", "}"]
+              "    plcvec_known_failure *known = NULL;", "    size_t n_known = 0;",
+              "    if (argc > 1 && plcvec_known_load(argv[1], &known, &n_known, err, sizeof err) != 0) {",
+              '        fprintf(stderr, "%s\\n", err);', "        return 2;", "    }",
+              "    opt.known = known, opt.n_known = n_known;",
+              "    plcvec_rollup_declaration_form(PLCVEC_DECLARE_CHOOSE);",
+              "    plcvec_run(&impl, &opt, NULL);", "    plcvec_known_free(known, n_known);", "    return 0;", "}"]
     return "\n".join(lines) + "\n"
 
 
@@ -102,17 +110,23 @@ def main() -> int:
     with tempfile.TemporaryDirectory() as tmp:
         source, exe = Path(tmp) / "text_blocks.c", Path(tmp) / "text_blocks"
         source.write_text(program(ids, answers), encoding="utf-8")
-        subprocess.run(["cc", "-std=c11", "-Wall", "-Werror", f"-I{REPO / 'verifiers/c/include'}", str(source),
-                        str(build / "libplcvec.a"), "-pthread", "-o", str(exe)], check=True)
-        got = subprocess.run([str(exe)], capture_output=True, text=True, check=True).stdout
-    want = (TEXT / "expected.txt").read_text(encoding="utf-8")
-    got = machine_free(got, "plcvec: ")
-    if got != want:
-        sys.stdout.writelines(difflib.unified_diff(want.splitlines(True), got.splitlines(True), "expected.txt", "C"))
-        return 1
-    print(f"text_blocks: the C run's text of the {len(ids)} shared cases is byte for byte expected.txt's "
-          f"({want.count(chr(10))} lines: failure blocks, roll-up by reading, skips, summary)")
-    return 0
+        subprocess.run(["cc", "-std=c11", "-Wall", "-Werror", f"-I{REPO / 'verifiers/c/include'}",
+                        f"-I{REPO / 'verifiers/c/src'}", str(source), str(build / "libplcvec.a"), "-pthread", "-o",
+                        str(exe)], check=True)
+        runs = {"expected.txt": [str(exe)], "expected-known.txt": [str(exe), "known.toml"]}
+        got = {name: subprocess.run(cmd, cwd=TEXT, capture_output=True, text=True, check=True).stdout
+               for name, cmd in runs.items()}
+    failed = 0
+    for name, text in got.items():
+        want = (TEXT / name).read_text(encoding="utf-8")
+        text = machine_free(text, "plcvec: ")
+        if text != want:
+            sys.stdout.writelines(difflib.unified_diff(want.splitlines(True), text.splitlines(True), name, "C"))
+            failed = 1
+            continue
+        print(f"text_blocks: the C run's text of the {len(ids)} shared cases is byte for byte {name}'s "
+              f"({want.count(chr(10))} lines: failure blocks, roll-up by reading, skips, summary)")
+    return failed
 
 
 if __name__ == "__main__":

@@ -88,6 +88,15 @@ typedef struct plcvec_choice {
     uint8_t alternative;
 } plcvec_choice;
 
+/* Devices an alternative leaves unjudged: where the pages define no behaviour for a state, the
+ * alternative that reads them so does not compare these devices (they are in the vector's
+ * initial.devices, so writing them is no stray write). */
+typedef struct plcvec_unjudged {
+    uint8_t interpretation;     /* one of the entry's choices (plcvec_interpretation) */
+    const uint16_t *devices;    /* plcvec_device_ids, sorted by name */
+    uint16_t n_devices;
+} plcvec_unjudged;
+
 /* The expectation of a vector under one combination of alternatives other than the defaults. */
 typedef struct plcvec_alternative {
     const plcvec_choice *choices;
@@ -95,6 +104,8 @@ typedef struct plcvec_alternative {
     uint8_t category;           /* plcvec_category */
     const plcvec_expect *expect;    /* one per step */
     uint16_t n_expect;
+    const plcvec_unjudged *unjudged;    /* sorted by interpretation id; none: every device is judged */
+    uint16_t n_unjudged;
 } plcvec_alternative;
 
 typedef struct plcvec_vector {
@@ -169,6 +180,9 @@ int plcvec_device_intern(const char *name);
 size_t plcvec_count(void);                              /* every vector of the suite */
 const plcvec_vector *plcvec_at(size_t index);           /* in family order, then by id */
 const plcvec_vector *plcvec_find(const char *id);       /* NULL if the suite has no such vector */
+/* The id a vector id that the suite merged into another became (the vector files' `merged` map,
+ * followed to its end), or NULL when the id was never merged. */
+const char *plcvec_merged_into(const char *id);
 const char *plcvec_clause(const plcvec_vector *v, size_t i);    /* "fx5-time-add#carry" */
 const char *plcvec_operand_device_name(const plcvec_operand *op);
 const plcvec_operand *plcvec_operand_named(const plcvec_vector *v, const char *name);
@@ -316,17 +330,24 @@ typedef struct plcvec_problem {
 } plcvec_problem;
 
 /* A known failure: listed vectors that fail are XFAIL; listed vectors that pass are STALE (a
- * failure), and so is an id the suite does not have. Ids are exact, never patterns. */
+ * failure), and so is an id the suite does not have. Ids are exact, never patterns. Messages name
+ * the entry as FILE:LINE; a list written in code may give its own (__FILE__, __LINE__), and an entry
+ * without a file is named "(in code)". */
 typedef struct plcvec_known_failure {
     const char *id;
     const char *reason;
+    const char *file;           /* the known-failures file that lists it; NULL: a list in code */
+    int line;                   /* the line of its [[known-failure]] header; 0: none */
 } plcvec_known_failure;
 
 /* Read a known-failures TOML file (CONTRACT.md: [[known-failure]] entries of `id` and `reason`):
- * 0 and a malloc'd list (free it with plcvec_known_free), or -1 with "FILE:LINE: why" in err. */
+ * 0 and a malloc'd list (free it with plcvec_known_free), or -1 with "FILE:LINE: why" in err. A
+ * path that is not a regular file (a named pipe, a device, a folder, a loop of symbolic links) is
+ * refused by name before it is opened. */
 int plcvec_known_load(const char *path, plcvec_known_failure **list, size_t *n, char *err, size_t errlen);
 void plcvec_known_free(plcvec_known_failure *list, size_t n);
-/* Write ids (sorted in place) as a known-failures file, each with `reason`; 0, or -1 and err. */
+/* Write ids (sorted in place) as a known-failures file, each with `reason`, replacing the file
+ * whole or not at all (a path that is there and is not a regular file is refused); 0, or -1 and err. */
 int plcvec_known_write(const char *path, const char **ids, size_t n, const char *reason, char *err, size_t errlen);
 
 /* The verdict on one vector. */
@@ -360,8 +381,9 @@ void plcvec_apply_known(plcvec_verdict *verdict, const plcvec_known_failure *kno
 /* The expectation of v for step i under the judge's alternatives. */
 const plcvec_expect *plcvec_expected(const plcvec_judge *j, const plcvec_vector *v, size_t step);
 
-/* The verdict as people read it: status and id, description, the alternatives it was judged
- * by, one line per field (step, device, expected, actual), the message, the spec clauses. */
+/* The verdict as people read it (verifiers/parity/TEXT.md, "The failure block"): status and id,
+ * description, the alternatives it was judged by, the devices the alternative followed leaves
+ * unjudged, one line per field (step, device, expected, actual), the message, the spec clauses. */
 void plcvec_print_verdict(FILE *f, const plcvec_verdict *verdict);
 /* The same into a buffer (truncated to size); returns the length it needed. */
 size_t plcvec_format_verdict(char *buf, size_t size, const plcvec_verdict *verdict);
@@ -382,7 +404,7 @@ enum {
     PLCVEC_EXIT_PASSED = 0,     /* every selected vector passed or is a known failure; one passed */
     PLCVEC_EXIT_FAILED = 1,     /* a failure, an error, a stale known failure, a run ended early */
     PLCVEC_EXIT_USAGE = 2,      /* an unknown name, a bad variable or file, a bad declaration */
-    PLCVEC_EXIT_NOTHING_TESTED = 5  /* no vector selected, or none passed (all skipped) */
+    PLCVEC_EXIT_NOTHING_TESTED = 5  /* no vector selected, or none passed (all skipped or known failures) */
 };
 
 typedef struct plcvec_summary {
@@ -390,20 +412,43 @@ typedef struct plcvec_summary {
     size_t stale_unknown;       /* of the stale: known failures naming no vector of the suite */
 } plcvec_summary;
 
-/* Judge every selected vector, print each failure as a field-level diff, then the skips by reason
- * and the summary (every alternative followed, the declared CPU writes, "N vectors: a pass, b fail,
- * c skip"), in the words of verifiers/parity/TEXT.md. Returns a
- * PLCVEC_EXIT_*: 1 on any failure, error or stale entry; 5 when nothing was selected or nothing
- * passed; 2 on a usage error (an unknown name, an id glob matching no id, a bad shard, an unknown
- * declared alternative, a bad PLCVEC_TIMEOUT). */
+/* Judge every selected vector, print each failure as a field-level diff, then the end of the run
+ * (plcvec_report_end: the roll-up by reading, the skips by reason, the summary), in the words of
+ * verifiers/parity/TEXT.md. Returns a PLCVEC_EXIT_*: 1 on any failure, error or stale entry; 5 when
+ * nothing was selected or nothing passed (every vector skipped or a known failure); 2 on a usage
+ * error (an unknown name, an id glob matching no id, a bad shard, an unknown declared alternative,
+ * a bad PLCVEC_TIMEOUT, a known-failures file that cannot be written). */
 int plcvec_run(const plcvec_impl *impl, const plcvec_options *opt, plcvec_summary *summary);
+
+/* A run's record, for a test runner of your own (plcvec/gtest.hpp is one): add each vector's
+ * verdict as it is judged, then print the end of the run as plcvec_run does. */
+typedef struct plcvec_report plcvec_report;
+/* A record of verdicts judged by j (its alternatives and declarations go into the summary); NULL
+ * when out of memory. */
+plcvec_report *plcvec_report_new(const plcvec_judge *j);
+void plcvec_report_free(plcvec_report *r);
+/* One vector's verdict, with the known failures applied (plcvec_apply_known); 0, or -1 when out
+ * of memory. */
+int plcvec_report_add(plcvec_report *r, const plcvec_verdict *verdict);
+/* The end of the run, in the words of verifiers/parity/TEXT.md: a STALE block for each of `known`
+ * that names no vector of the suite, the roll-up by reading (the failures and known failures that
+ * another alternative explains, the declaration that does it, the failures no reading explains),
+ * the skips by reason, why a run without failures did not pass, and the summary lines. Returns the
+ * run's PLCVEC_EXIT_* status. */
+int plcvec_report_end(plcvec_report *r, FILE *log, const plcvec_known_failure *known, size_t n_known, double seconds);
+
+/* The value of a PLCVEC_* setting ("PLCVEC_KNOWN_FAILURES"), read under its old name too
+ * ("PLCVEC_EXPECTATIONS") for as long as CONTRACT.md says; NULL when unset. The first call in a
+ * process prints, on stderr, one warning for each old name and each PLCVEC_* variable that is no
+ * setting (with the nearest setting), as every plcvec runner does. */
+const char *plcvec_setting(const char *name);
 
 /* A test program's main(): the options of `plcvec verify` (--family, --instruction, --tag,
  * --id GLOB, --interpretation, each repeatable; --shard K/N, --choose ID=ALT, --expectations FILE,
  * --write-expectations FILE, --list, --verbose), each defaulting to its environment variable
- * (PLCVEC_FAMILY ... PLCVEC_SHARD, PLCVEC_KNOWN_FAILURES, PLCVEC_WRITE_EXPECTATIONS; lists
- * comma-separated; PLCVEC_TIMEOUT bounds each vector), then plcvec_run(). `known` (may be NULL)
- * is added to the file's entries. */
+ * (PLCVEC_FAMILY ... PLCVEC_SHARD, PLCVEC_KNOWN_FAILURES (or its old name PLCVEC_EXPECTATIONS),
+ * PLCVEC_WRITE_EXPECTATIONS; lists comma-separated; PLCVEC_TIMEOUT bounds each vector), then
+ * plcvec_run(). `known` (may be NULL) is added to the file's entries. */
 int plcvec_main(const plcvec_impl *impl, const plcvec_known_failure *known, size_t n_known,
                 int argc, char **argv);
 

@@ -488,6 +488,329 @@ const plcvec_device_info plcvec_devices[PLCVEC_DEVICE_COUNT] = {
     {"SM8022", "SM", 8022},
 };
 
+/* How a C implementer declares each alternative: the enumerators' own names (TEXT.md). */
+static const char *const declared_cp1e_non_bcd[] = {
+    "PLCVEC_CP1E_NON_BCD_ERROR",
+    "PLCVEC_CP1E_NON_BCD_RAW_BYTES",
+};
+static const char *const declared_cp1e_out_of_range[] = {
+    "PLCVEC_CP1E_OUT_OF_RANGE_COMPARED",
+    "PLCVEC_CP1E_OUT_OF_RANGE_ERROR",
+};
+static const char *const declared_cp1e_all_masked[] = {
+    "PLCVEC_CP1E_ALL_MASKED_ERROR",
+    "PLCVEC_CP1E_ALL_MASKED_EQUAL",
+    "PLCVEC_CP1E_ALL_MASKED_NOT_COMPARED",
+};
+static const char *const declared_cp1e_c_high_bits[] = {
+    "PLCVEC_CP1E_C_HIGH_BITS_IGNORED",
+    "PLCVEC_CP1E_C_HIGH_BITS_ERROR",
+};
+static const char *const declared_cp1e_and_or_when_off[] = {
+    "PLCVEC_CP1E_AND_OR_WHEN_OFF_ALWAYS_EXECUTED",
+    "PLCVEC_CP1E_AND_OR_WHEN_OFF_AND_SKIPPED",
+    "PLCVEC_CP1E_AND_OR_WHEN_OFF_SHORT_CIRCUIT",
+};
+static const char *const declared_cp1e_er_flag[] = {
+    "PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION",
+    "PLCVEC_CP1E_ER_FLAG_HELD",
+};
+static const char *const declared_cp1e_error_flags[] = {
+    "PLCVEC_CP1E_ERROR_FLAGS_KEPT",
+    "PLCVEC_CP1E_ERROR_FLAGS_OFF",
+};
+static const char *const declared_hour_output_off[] = {
+    "PLCVEC_HOUR_OUTPUT_OFF_LATCHED",
+    "PLCVEC_HOUR_OUTPUT_OFF_RECOMPARED",
+};
+static const char *const declared_hour_input_off[] = {
+    "PLCVEC_HOUR_INPUT_OFF_HOLD",
+    "PLCVEC_HOUR_INPUT_OFF_RESET",
+    "PLCVEC_HOUR_INPUT_OFF_HOLD_DROP_FRACTION",
+};
+static const char *const declared_hour_preset_zero[] = {
+    "PLCVEC_HOUR_PRESET_ZERO_IMMEDIATE",
+    "PLCVEC_HOUR_PRESET_ZERO_NEVER",
+};
+static const char *const declared_hour_first_scan[] = {
+    "PLCVEC_HOUR_FIRST_SCAN_COUNTS",
+    "PLCVEC_HOUR_FIRST_SCAN_FROM_NEXT_SCAN",
+    "PLCVEC_HOUR_FIRST_SCAN_AFTER_CPU_START",
+};
+static const char *const declared_hour_preset_check[] = {
+    "PLCVEC_HOUR_PRESET_CHECK_INPUT_ON",
+    "PLCVEC_HOUR_PRESET_CHECK_EVERY_EXECUTION",
+};
+static const char *const declared_hour_m8004_off[] = {
+    "PLCVEC_HOUR_M8004_OFF_NEVER",
+    "PLCVEC_HOUR_M8004_OFF_VALID_PRESET",
+};
+static const char *const declared_hour_d1_out_of_range[] = {
+    "PLCVEC_HOUR_D1_OUT_OF_RANGE_AS_SECONDS",
+    "PLCVEC_HOUR_D1_OUT_OF_RANGE_ERROR",
+    "PLCVEC_HOUR_D1_OUT_OF_RANGE_AS_SECONDS_IF_ADDED",
+    "PLCVEC_HOUR_D1_OUT_OF_RANGE_BY_FIELD",
+    "PLCVEC_HOUR_D1_OUT_OF_RANGE_UNDEFINED",
+};
+static const char *const declared_hour_wrap_reach[] = {
+    "PLCVEC_HOUR_WRAP_REACH_AFTER_WRAP",
+    "PLCVEC_HOUR_WRAP_REACH_BEFORE_WRAP",
+};
+static const char *const declared_hour_m8004_repeat[] = {
+    "PLCVEC_HOUR_M8004_REPEAT_EVERY_CHECK",
+    "PLCVEC_HOUR_M8004_REPEAT_ONCE",
+};
+static const char *const declared_hour_d2_special[] = {
+    "PLCVEC_HOUR_D2_SPECIAL_ACCEPTED",
+    "PLCVEC_HOUR_D2_SPECIAL_ERROR",
+    "PLCVEC_HOUR_D2_SPECIAL_UNDEFINED",
+};
+static const char *const declared_hour_s1_constant_range[] = {
+    "PLCVEC_HOUR_S1_CONSTANT_RANGE_ERROR",
+    "PLCVEC_HOUR_S1_CONSTANT_RANGE_AS_IS",
+    "PLCVEC_HOUR_S1_CONSTANT_RANGE_LOW_16_BITS",
+    "PLCVEC_HOUR_S1_CONSTANT_RANGE_UNDEFINED",
+};
+static const char *const declared_fx5_sm709_scope[] = {
+    "PLCVEC_FX5_SM709_SCOPE_SELECTED_FIELDS",
+    "PLCVEC_FX5_SM709_SCOPE_ALL_WORDS",
+    "PLCVEC_FX5_SM709_SCOPE_COMPARED_OPERANDS",
+};
+static const char *const declared_fx5_and_or_when_off[] = {
+    "PLCVEC_FX5_AND_OR_WHEN_OFF_AND_SKIPPED",
+    "PLCVEC_FX5_AND_OR_WHEN_OFF_ALWAYS_EXECUTED",
+    "PLCVEC_FX5_AND_OR_WHEN_OFF_SHORT_CIRCUIT",
+};
+static const char *const declared_fx5_clock_s2_device_range[] = {
+    "PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_IGNORED",
+    "PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_CHECKED",
+};
+static const char *const declared_fx5_or_on_error[] = {
+    "PLCVEC_FX5_OR_ON_ERROR_CONTACT_OFF",
+    "PLCVEC_FX5_OR_ON_ERROR_RESULT_OFF",
+};
+static const char *const declared_tadd_flags_off[] = {
+    "PLCVEC_TADD_FLAGS_OFF_WRITTEN_EACH_EXECUTION",
+    "PLCVEC_TADD_FLAGS_OFF_SET_ONLY",
+};
+static const char *const declared_tadd_exact_24[] = {
+    "PLCVEC_TADD_EXACT_24_CARRY_AT_24",
+    "PLCVEC_TADD_EXACT_24_CARRY_ABOVE_24",
+};
+static const char *const declared_tadd_on_error[] = {
+    "PLCVEC_TADD_ON_ERROR_NOT_EXECUTED",
+    "PLCVEC_TADD_ON_ERROR_COMPUTED",
+};
+static const char *const declared_tadd_error_order[] = {
+    "PLCVEC_TADD_ERROR_ORDER_DEVICE_RANGE_FIRST",
+    "PLCVEC_TADD_ERROR_ORDER_FIELD_RANGE_FIRST",
+};
+
+const plcvec_declaration_names plcvec_declarations[PLCVEC_INTERPRETATION_COUNT] = {
+    {"PLCVEC_INTERP_CP1E_NON_BCD", declared_cp1e_non_bcd},
+    {"PLCVEC_INTERP_CP1E_OUT_OF_RANGE", declared_cp1e_out_of_range},
+    {"PLCVEC_INTERP_CP1E_ALL_MASKED", declared_cp1e_all_masked},
+    {"PLCVEC_INTERP_CP1E_C_HIGH_BITS", declared_cp1e_c_high_bits},
+    {"PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF", declared_cp1e_and_or_when_off},
+    {"PLCVEC_INTERP_CP1E_ER_FLAG", declared_cp1e_er_flag},
+    {"PLCVEC_INTERP_CP1E_ERROR_FLAGS", declared_cp1e_error_flags},
+    {"PLCVEC_INTERP_HOUR_OUTPUT_OFF", declared_hour_output_off},
+    {"PLCVEC_INTERP_HOUR_INPUT_OFF", declared_hour_input_off},
+    {"PLCVEC_INTERP_HOUR_PRESET_ZERO", declared_hour_preset_zero},
+    {"PLCVEC_INTERP_HOUR_FIRST_SCAN", declared_hour_first_scan},
+    {"PLCVEC_INTERP_HOUR_PRESET_CHECK", declared_hour_preset_check},
+    {"PLCVEC_INTERP_HOUR_M8004_OFF", declared_hour_m8004_off},
+    {"PLCVEC_INTERP_HOUR_D1_OUT_OF_RANGE", declared_hour_d1_out_of_range},
+    {"PLCVEC_INTERP_HOUR_WRAP_REACH", declared_hour_wrap_reach},
+    {"PLCVEC_INTERP_HOUR_M8004_REPEAT", declared_hour_m8004_repeat},
+    {"PLCVEC_INTERP_HOUR_D2_SPECIAL", declared_hour_d2_special},
+    {"PLCVEC_INTERP_HOUR_S1_CONSTANT_RANGE", declared_hour_s1_constant_range},
+    {"PLCVEC_INTERP_FX5_SM709_SCOPE", declared_fx5_sm709_scope},
+    {"PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF", declared_fx5_and_or_when_off},
+    {"PLCVEC_INTERP_FX5_CLOCK_S2_DEVICE_RANGE", declared_fx5_clock_s2_device_range},
+    {"PLCVEC_INTERP_FX5_OR_ON_ERROR", declared_fx5_or_on_error},
+    {"PLCVEC_INTERP_TADD_FLAGS_OFF", declared_tadd_flags_off},
+    {"PLCVEC_INTERP_TADD_EXACT_24", declared_tadd_exact_24},
+    {"PLCVEC_INTERP_TADD_ON_ERROR", declared_tadd_on_error},
+    {"PLCVEC_INTERP_TADD_ERROR_ORDER", declared_tadd_error_order},
+};
+
+/* The ids merged into the vector that is the same test, sorted by the old id. */
+const plcvec_merged_id plcvec_merged_ids[] = {
+    {"cp1e-time-compare/AND <=DT/ordering/eq", "cp1e-time-compare/AND <=DT/logic/rlo-on/eq"},
+    {"cp1e-time-compare/AND <=DT/ordering/year-gt", "cp1e-time-compare/AND <=DT/logic/rlo-on/gt"},
+    {"cp1e-time-compare/AND <=DT/ordering/year-lt", "cp1e-time-compare/AND <=DT/logic/rlo-on/lt"},
+    {"cp1e-time-compare/AND <>DT/ordering/eq", "cp1e-time-compare/AND <>DT/logic/rlo-on/eq"},
+    {"cp1e-time-compare/AND <>DT/ordering/year-gt", "cp1e-time-compare/AND <>DT/logic/rlo-on/gt"},
+    {"cp1e-time-compare/AND <>DT/ordering/year-lt", "cp1e-time-compare/AND <>DT/logic/rlo-on/lt"},
+    {"cp1e-time-compare/AND <DT/ordering/eq", "cp1e-time-compare/AND <DT/logic/rlo-on/eq"},
+    {"cp1e-time-compare/AND <DT/ordering/year-gt", "cp1e-time-compare/AND <DT/logic/rlo-on/gt"},
+    {"cp1e-time-compare/AND <DT/ordering/year-lt", "cp1e-time-compare/AND <DT/logic/rlo-on/lt"},
+    {"cp1e-time-compare/AND =DT/ordering/eq", "cp1e-time-compare/AND =DT/logic/rlo-on/eq"},
+    {"cp1e-time-compare/AND =DT/ordering/year-gt", "cp1e-time-compare/AND =DT/logic/rlo-on/gt"},
+    {"cp1e-time-compare/AND =DT/ordering/year-lt", "cp1e-time-compare/AND =DT/logic/rlo-on/lt"},
+    {"cp1e-time-compare/AND >=DT/ordering/eq", "cp1e-time-compare/AND >=DT/logic/rlo-on/eq"},
+    {"cp1e-time-compare/AND >=DT/ordering/year-gt", "cp1e-time-compare/AND >=DT/logic/rlo-on/gt"},
+    {"cp1e-time-compare/AND >=DT/ordering/year-lt", "cp1e-time-compare/AND >=DT/logic/rlo-on/lt"},
+    {"cp1e-time-compare/AND >DT/ordering/eq", "cp1e-time-compare/AND >DT/logic/rlo-on/eq"},
+    {"cp1e-time-compare/AND >DT/ordering/year-gt", "cp1e-time-compare/AND >DT/logic/rlo-on/gt"},
+    {"cp1e-time-compare/AND >DT/ordering/year-lt", "cp1e-time-compare/AND >DT/logic/rlo-on/lt"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.day=1/all", "cp1e-time-compare/LD =DT/boundary/S1.day=1/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.day=1/only", "cp1e-time-compare/LD =DT/boundary/S1.day=1/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.day=31/all", "cp1e-time-compare/LD =DT/boundary/S1.day=31/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.day=31/only", "cp1e-time-compare/LD =DT/boundary/S1.day=31/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.hour=0/all", "cp1e-time-compare/LD =DT/boundary/S1.hour=0/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.hour=0/only", "cp1e-time-compare/LD =DT/boundary/S1.hour=0/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.hour=23/all", "cp1e-time-compare/LD =DT/boundary/S1.hour=23/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.hour=23/only", "cp1e-time-compare/LD =DT/boundary/S1.hour=23/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.minute=0/all", "cp1e-time-compare/LD =DT/boundary/S1.minute=0/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.minute=0/only", "cp1e-time-compare/LD =DT/boundary/S1.minute=0/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.minute=59/all", "cp1e-time-compare/LD =DT/boundary/S1.minute=59/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.minute=59/only", "cp1e-time-compare/LD =DT/boundary/S1.minute=59/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.month=1/all", "cp1e-time-compare/LD =DT/boundary/S1.month=1/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.month=1/only", "cp1e-time-compare/LD =DT/boundary/S1.month=1/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.month=12/all", "cp1e-time-compare/LD =DT/boundary/S1.month=12/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.month=12/only", "cp1e-time-compare/LD =DT/boundary/S1.month=12/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.second=0/all", "cp1e-time-compare/LD =DT/boundary/S1.second=0/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.second=0/only", "cp1e-time-compare/LD =DT/boundary/S1.second=0/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.second=59/all", "cp1e-time-compare/LD =DT/boundary/S1.second=59/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.second=59/only", "cp1e-time-compare/LD =DT/boundary/S1.second=59/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.year=0/all", "cp1e-time-compare/LD =DT/boundary/S1.year=0/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.year=0/only", "cp1e-time-compare/LD =DT/boundary/S1.year=0/only"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.year=99/all", "cp1e-time-compare/LD =DT/boundary/S1.year=99/all"},
+    {"cp1e-time-compare/LD =DT/boundary/S2.year=99/only", "cp1e-time-compare/LD =DT/boundary/S1.year=99/only"},
+    {"cp1e-time-compare/OR <=DT/ordering/eq", "cp1e-time-compare/OR <=DT/logic/rlo-off/eq"},
+    {"cp1e-time-compare/OR <=DT/ordering/year-gt", "cp1e-time-compare/OR <=DT/logic/rlo-off/gt"},
+    {"cp1e-time-compare/OR <=DT/ordering/year-lt", "cp1e-time-compare/OR <=DT/logic/rlo-off/lt"},
+    {"cp1e-time-compare/OR <>DT/ordering/eq", "cp1e-time-compare/OR <>DT/logic/rlo-off/eq"},
+    {"cp1e-time-compare/OR <>DT/ordering/year-gt", "cp1e-time-compare/OR <>DT/logic/rlo-off/gt"},
+    {"cp1e-time-compare/OR <>DT/ordering/year-lt", "cp1e-time-compare/OR <>DT/logic/rlo-off/lt"},
+    {"cp1e-time-compare/OR <DT/ordering/eq", "cp1e-time-compare/OR <DT/logic/rlo-off/eq"},
+    {"cp1e-time-compare/OR <DT/ordering/year-gt", "cp1e-time-compare/OR <DT/logic/rlo-off/gt"},
+    {"cp1e-time-compare/OR <DT/ordering/year-lt", "cp1e-time-compare/OR <DT/logic/rlo-off/lt"},
+    {"cp1e-time-compare/OR =DT/ordering/eq", "cp1e-time-compare/OR =DT/logic/rlo-off/eq"},
+    {"cp1e-time-compare/OR =DT/ordering/year-gt", "cp1e-time-compare/OR =DT/logic/rlo-off/gt"},
+    {"cp1e-time-compare/OR =DT/ordering/year-lt", "cp1e-time-compare/OR =DT/logic/rlo-off/lt"},
+    {"cp1e-time-compare/OR >=DT/ordering/eq", "cp1e-time-compare/OR >=DT/logic/rlo-off/eq"},
+    {"cp1e-time-compare/OR >=DT/ordering/year-gt", "cp1e-time-compare/OR >=DT/logic/rlo-off/gt"},
+    {"cp1e-time-compare/OR >=DT/ordering/year-lt", "cp1e-time-compare/OR >=DT/logic/rlo-off/lt"},
+    {"cp1e-time-compare/OR >DT/ordering/eq", "cp1e-time-compare/OR >DT/logic/rlo-off/eq"},
+    {"cp1e-time-compare/OR >DT/ordering/year-gt", "cp1e-time-compare/OR >DT/logic/rlo-off/gt"},
+    {"cp1e-time-compare/OR >DT/ordering/year-lt", "cp1e-time-compare/OR >DT/logic/rlo-off/lt"},
+    {"fx5-date-compare/ANDDT</ordering/eq", "fx5-date-compare/ANDDT</logic/rlo-on/eq"},
+    {"fx5-date-compare/ANDDT</ordering/year-gt", "fx5-date-compare/ANDDT</logic/rlo-on/gt"},
+    {"fx5-date-compare/ANDDT</ordering/year-lt", "fx5-date-compare/ANDDT</logic/rlo-on/lt"},
+    {"fx5-date-compare/ANDDT<=/ordering/eq", "fx5-date-compare/ANDDT<=/logic/rlo-on/eq"},
+    {"fx5-date-compare/ANDDT<=/ordering/year-gt", "fx5-date-compare/ANDDT<=/logic/rlo-on/gt"},
+    {"fx5-date-compare/ANDDT<=/ordering/year-lt", "fx5-date-compare/ANDDT<=/logic/rlo-on/lt"},
+    {"fx5-date-compare/ANDDT<>/ordering/eq", "fx5-date-compare/ANDDT<>/logic/rlo-on/eq"},
+    {"fx5-date-compare/ANDDT<>/ordering/year-gt", "fx5-date-compare/ANDDT<>/logic/rlo-on/gt"},
+    {"fx5-date-compare/ANDDT<>/ordering/year-lt", "fx5-date-compare/ANDDT<>/logic/rlo-on/lt"},
+    {"fx5-date-compare/ANDDT=/ordering/eq", "fx5-date-compare/ANDDT=/logic/rlo-on/eq"},
+    {"fx5-date-compare/ANDDT=/ordering/year-gt", "fx5-date-compare/ANDDT=/logic/rlo-on/gt"},
+    {"fx5-date-compare/ANDDT=/ordering/year-lt", "fx5-date-compare/ANDDT=/logic/rlo-on/lt"},
+    {"fx5-date-compare/ANDDT>/ordering/eq", "fx5-date-compare/ANDDT>/logic/rlo-on/eq"},
+    {"fx5-date-compare/ANDDT>/ordering/year-gt", "fx5-date-compare/ANDDT>/logic/rlo-on/gt"},
+    {"fx5-date-compare/ANDDT>/ordering/year-lt", "fx5-date-compare/ANDDT>/logic/rlo-on/lt"},
+    {"fx5-date-compare/ANDDT>=/ordering/eq", "fx5-date-compare/ANDDT>=/logic/rlo-on/eq"},
+    {"fx5-date-compare/ANDDT>=/ordering/year-gt", "fx5-date-compare/ANDDT>=/logic/rlo-on/gt"},
+    {"fx5-date-compare/ANDDT>=/ordering/year-lt", "fx5-date-compare/ANDDT>=/logic/rlo-on/lt"},
+    {"fx5-date-compare/LDDT=/boundary/s2.day=1/all", "fx5-date-compare/LDDT=/boundary/s1.day=1/all"},
+    {"fx5-date-compare/LDDT=/boundary/s2.day=1/only", "fx5-date-compare/LDDT=/boundary/s1.day=1/only"},
+    {"fx5-date-compare/LDDT=/boundary/s2.day=31/all", "fx5-date-compare/LDDT=/boundary/s1.day=31/all"},
+    {"fx5-date-compare/LDDT=/boundary/s2.day=31/only", "fx5-date-compare/LDDT=/boundary/s1.day=31/only"},
+    {"fx5-date-compare/LDDT=/boundary/s2.month=1/all", "fx5-date-compare/LDDT=/boundary/s1.month=1/all"},
+    {"fx5-date-compare/LDDT=/boundary/s2.month=1/only", "fx5-date-compare/LDDT=/boundary/s1.month=1/only"},
+    {"fx5-date-compare/LDDT=/boundary/s2.month=12/all", "fx5-date-compare/LDDT=/boundary/s1.month=12/all"},
+    {"fx5-date-compare/LDDT=/boundary/s2.month=12/only", "fx5-date-compare/LDDT=/boundary/s1.month=12/only"},
+    {"fx5-date-compare/LDDT=/boundary/s2.year=1980/all", "fx5-date-compare/LDDT=/boundary/s1.year=1980/all"},
+    {"fx5-date-compare/LDDT=/boundary/s2.year=1980/only", "fx5-date-compare/LDDT=/boundary/s1.year=1980/only"},
+    {"fx5-date-compare/LDDT=/boundary/s2.year=2079/all", "fx5-date-compare/LDDT=/boundary/s1.year=2079/all"},
+    {"fx5-date-compare/LDDT=/boundary/s2.year=2079/only", "fx5-date-compare/LDDT=/boundary/s1.year=2079/only"},
+    {"fx5-date-compare/LDDT=/nonexistent/2006-2-30/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2006-2-30/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2008-2-31/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2008-2-31/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2023-2-29/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2023-2-29/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2024-2-30/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2024-2-30/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2025-11-31/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2025-11-31/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2025-2-31/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2025-2-31/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2025-4-31/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2025-4-31/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2025-6-31/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2025-6-31/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2025-9-31/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2025-9-31/s1/vs-same"},
+    {"fx5-date-compare/LDDT=/nonexistent/2079-2-29/s2/vs-same", "fx5-date-compare/LDDT=/nonexistent/2079-2-29/s1/vs-same"},
+    {"fx5-date-compare/ORDT</ordering/eq", "fx5-date-compare/ORDT</logic/rlo-off/eq"},
+    {"fx5-date-compare/ORDT</ordering/year-gt", "fx5-date-compare/ORDT</logic/rlo-off/gt"},
+    {"fx5-date-compare/ORDT</ordering/year-lt", "fx5-date-compare/ORDT</logic/rlo-off/lt"},
+    {"fx5-date-compare/ORDT<=/ordering/eq", "fx5-date-compare/ORDT<=/logic/rlo-off/eq"},
+    {"fx5-date-compare/ORDT<=/ordering/year-gt", "fx5-date-compare/ORDT<=/logic/rlo-off/gt"},
+    {"fx5-date-compare/ORDT<=/ordering/year-lt", "fx5-date-compare/ORDT<=/logic/rlo-off/lt"},
+    {"fx5-date-compare/ORDT<>/ordering/eq", "fx5-date-compare/ORDT<>/logic/rlo-off/eq"},
+    {"fx5-date-compare/ORDT<>/ordering/year-gt", "fx5-date-compare/ORDT<>/logic/rlo-off/gt"},
+    {"fx5-date-compare/ORDT<>/ordering/year-lt", "fx5-date-compare/ORDT<>/logic/rlo-off/lt"},
+    {"fx5-date-compare/ORDT=/ordering/eq", "fx5-date-compare/ORDT=/logic/rlo-off/eq"},
+    {"fx5-date-compare/ORDT=/ordering/year-gt", "fx5-date-compare/ORDT=/logic/rlo-off/gt"},
+    {"fx5-date-compare/ORDT=/ordering/year-lt", "fx5-date-compare/ORDT=/logic/rlo-off/lt"},
+    {"fx5-date-compare/ORDT>/ordering/eq", "fx5-date-compare/ORDT>/logic/rlo-off/eq"},
+    {"fx5-date-compare/ORDT>/ordering/year-gt", "fx5-date-compare/ORDT>/logic/rlo-off/gt"},
+    {"fx5-date-compare/ORDT>/ordering/year-lt", "fx5-date-compare/ORDT>/logic/rlo-off/lt"},
+    {"fx5-date-compare/ORDT>=/ordering/eq", "fx5-date-compare/ORDT>=/logic/rlo-off/eq"},
+    {"fx5-date-compare/ORDT>=/ordering/year-gt", "fx5-date-compare/ORDT>=/logic/rlo-off/gt"},
+    {"fx5-date-compare/ORDT>=/ordering/year-lt", "fx5-date-compare/ORDT>=/logic/rlo-off/lt"},
+    {"fx5-time-add/TADD/carry/exact-wrap-top/flags-off-before", "fx5-time-add/TADD/carry/carry-out-of-hour/flags-off-before"},
+    {"fx5-time-add/TADD/carry/exact-wrap-top/flags-on-before", "fx5-time-add/TADD/carry/carry-out-of-hour/flags-on-before"},
+    {"fx5-time-add/TADD/carry/ripple-from-second/flags-off-before", "fx5-time-add/TADD/carry/carry-out-of-second/flags-off-before"},
+    {"fx5-time-add/TADD/carry/ripple-from-second/flags-on-before", "fx5-time-add/TADD/carry/carry-out-of-second/flags-on-before"},
+    {"fx5-time-compare/ANDTM</ordering/eq", "fx5-time-compare/ANDTM</logic/rlo-on/eq"},
+    {"fx5-time-compare/ANDTM</ordering/hour-gt", "fx5-time-compare/ANDTM</logic/rlo-on/gt"},
+    {"fx5-time-compare/ANDTM</ordering/hour-lt", "fx5-time-compare/ANDTM</logic/rlo-on/lt"},
+    {"fx5-time-compare/ANDTM<=/ordering/eq", "fx5-time-compare/ANDTM<=/logic/rlo-on/eq"},
+    {"fx5-time-compare/ANDTM<=/ordering/hour-gt", "fx5-time-compare/ANDTM<=/logic/rlo-on/gt"},
+    {"fx5-time-compare/ANDTM<=/ordering/hour-lt", "fx5-time-compare/ANDTM<=/logic/rlo-on/lt"},
+    {"fx5-time-compare/ANDTM<>/ordering/eq", "fx5-time-compare/ANDTM<>/logic/rlo-on/eq"},
+    {"fx5-time-compare/ANDTM<>/ordering/hour-gt", "fx5-time-compare/ANDTM<>/logic/rlo-on/gt"},
+    {"fx5-time-compare/ANDTM<>/ordering/hour-lt", "fx5-time-compare/ANDTM<>/logic/rlo-on/lt"},
+    {"fx5-time-compare/ANDTM=/ordering/eq", "fx5-time-compare/ANDTM=/logic/rlo-on/eq"},
+    {"fx5-time-compare/ANDTM=/ordering/hour-gt", "fx5-time-compare/ANDTM=/logic/rlo-on/gt"},
+    {"fx5-time-compare/ANDTM=/ordering/hour-lt", "fx5-time-compare/ANDTM=/logic/rlo-on/lt"},
+    {"fx5-time-compare/ANDTM>/ordering/eq", "fx5-time-compare/ANDTM>/logic/rlo-on/eq"},
+    {"fx5-time-compare/ANDTM>/ordering/hour-gt", "fx5-time-compare/ANDTM>/logic/rlo-on/gt"},
+    {"fx5-time-compare/ANDTM>/ordering/hour-lt", "fx5-time-compare/ANDTM>/logic/rlo-on/lt"},
+    {"fx5-time-compare/ANDTM>=/ordering/eq", "fx5-time-compare/ANDTM>=/logic/rlo-on/eq"},
+    {"fx5-time-compare/ANDTM>=/ordering/hour-gt", "fx5-time-compare/ANDTM>=/logic/rlo-on/gt"},
+    {"fx5-time-compare/ANDTM>=/ordering/hour-lt", "fx5-time-compare/ANDTM>=/logic/rlo-on/lt"},
+    {"fx5-time-compare/LDTM=/boundary/s2.hour=0/all", "fx5-time-compare/LDTM=/boundary/s1.hour=0/all"},
+    {"fx5-time-compare/LDTM=/boundary/s2.hour=0/only", "fx5-time-compare/LDTM=/boundary/s1.hour=0/only"},
+    {"fx5-time-compare/LDTM=/boundary/s2.hour=23/all", "fx5-time-compare/LDTM=/boundary/s1.hour=23/all"},
+    {"fx5-time-compare/LDTM=/boundary/s2.hour=23/only", "fx5-time-compare/LDTM=/boundary/s1.hour=23/only"},
+    {"fx5-time-compare/LDTM=/boundary/s2.minute=0/all", "fx5-time-compare/LDTM=/boundary/s1.minute=0/all"},
+    {"fx5-time-compare/LDTM=/boundary/s2.minute=0/only", "fx5-time-compare/LDTM=/boundary/s1.minute=0/only"},
+    {"fx5-time-compare/LDTM=/boundary/s2.minute=59/all", "fx5-time-compare/LDTM=/boundary/s1.minute=59/all"},
+    {"fx5-time-compare/LDTM=/boundary/s2.minute=59/only", "fx5-time-compare/LDTM=/boundary/s1.minute=59/only"},
+    {"fx5-time-compare/LDTM=/boundary/s2.second=0/all", "fx5-time-compare/LDTM=/boundary/s1.second=0/all"},
+    {"fx5-time-compare/LDTM=/boundary/s2.second=0/only", "fx5-time-compare/LDTM=/boundary/s1.second=0/only"},
+    {"fx5-time-compare/LDTM=/boundary/s2.second=59/all", "fx5-time-compare/LDTM=/boundary/s1.second=59/all"},
+    {"fx5-time-compare/LDTM=/boundary/s2.second=59/only", "fx5-time-compare/LDTM=/boundary/s1.second=59/only"},
+    {"fx5-time-compare/ORTM</ordering/eq", "fx5-time-compare/ORTM</logic/rlo-off/eq"},
+    {"fx5-time-compare/ORTM</ordering/hour-gt", "fx5-time-compare/ORTM</logic/rlo-off/gt"},
+    {"fx5-time-compare/ORTM</ordering/hour-lt", "fx5-time-compare/ORTM</logic/rlo-off/lt"},
+    {"fx5-time-compare/ORTM<=/ordering/eq", "fx5-time-compare/ORTM<=/logic/rlo-off/eq"},
+    {"fx5-time-compare/ORTM<=/ordering/hour-gt", "fx5-time-compare/ORTM<=/logic/rlo-off/gt"},
+    {"fx5-time-compare/ORTM<=/ordering/hour-lt", "fx5-time-compare/ORTM<=/logic/rlo-off/lt"},
+    {"fx5-time-compare/ORTM<>/ordering/eq", "fx5-time-compare/ORTM<>/logic/rlo-off/eq"},
+    {"fx5-time-compare/ORTM<>/ordering/hour-gt", "fx5-time-compare/ORTM<>/logic/rlo-off/gt"},
+    {"fx5-time-compare/ORTM<>/ordering/hour-lt", "fx5-time-compare/ORTM<>/logic/rlo-off/lt"},
+    {"fx5-time-compare/ORTM=/ordering/eq", "fx5-time-compare/ORTM=/logic/rlo-off/eq"},
+    {"fx5-time-compare/ORTM=/ordering/hour-gt", "fx5-time-compare/ORTM=/logic/rlo-off/gt"},
+    {"fx5-time-compare/ORTM=/ordering/hour-lt", "fx5-time-compare/ORTM=/logic/rlo-off/lt"},
+    {"fx5-time-compare/ORTM>/ordering/eq", "fx5-time-compare/ORTM>/logic/rlo-off/eq"},
+    {"fx5-time-compare/ORTM>/ordering/hour-gt", "fx5-time-compare/ORTM>/logic/rlo-off/gt"},
+    {"fx5-time-compare/ORTM>/ordering/hour-lt", "fx5-time-compare/ORTM>/logic/rlo-off/lt"},
+    {"fx5-time-compare/ORTM>=/ordering/eq", "fx5-time-compare/ORTM>=/logic/rlo-off/eq"},
+    {"fx5-time-compare/ORTM>=/ordering/hour-gt", "fx5-time-compare/ORTM>=/logic/rlo-off/gt"},
+    {"fx5-time-compare/ORTM>=/ordering/hour-lt", "fx5-time-compare/ORTM>=/logic/rlo-off/lt"},
+    {NULL, NULL}    /* the end (C has no empty array) */
+};
+const size_t plcvec_n_merged_ids = 170;
+
 extern const plcvec_family_table plcvec_table_cp1e_time_compare;
 extern const plcvec_family_table plcvec_table_fc6a_hour_meter;
 extern const plcvec_family_table plcvec_table_fx5_date_compare;

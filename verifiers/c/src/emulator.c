@@ -1,8 +1,9 @@
-/* The thin helper: an emulator that only executes instructions on its own memory. The runner
- * writes each vector's devices into that memory, executes each step, and reads them back. */
+/* The "execute this instruction on my memory" helper (plcvec_machine, VOCABULARY.md's Emulator): an
+ * emulator that only executes instructions on its own memory. The runner writes each vector's
+ * devices into that memory, executes each step, and reads them back. */
 #include <string.h>
 
-#include "table.h"
+#include "plcvec/plcvec.h"
 
 static int machine_supports(void *ctx, plcvec_instruction instruction)
 {
