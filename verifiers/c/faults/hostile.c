@@ -1,11 +1,14 @@
 /* The hostile implementations of the shared table of faults (verifiers/parity/faults.toml), run
  * through the README's entry point, plcvec_main. Each is the C reference with one misbehaviour,
  * chosen by PLCVEC_HOSTILE, on the vector PLCVEC_HOSTILE_ON (the reference on every other one):
- * the runner must give `plcvec verify`'s verdict on each. verifiers/c/faults-entry runs it. */
+ * the runner must give `plcvec verify`'s verdict on each. verifiers/c/faults-entry runs it.
+ * `not-a-number` has no C hostile: a word is an unsigned integer, which cannot hold a NaN. */
+#define _POSIX_C_SOURCE 200809L /* fork, close */
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "reference.h"
 
@@ -57,10 +60,12 @@ static int forward(hostile *h, const plcvec_vector *v, plcvec_out *out, int targ
             plcvec_type type = (plcvec_type)c->type;
             int compared = c->device >= 0 && listed_unscratched(v, c->device);
             if (target && !changed && compared && type == PLCVEC_WORD) {
-                if (is(h, "wrong-result"))
+                if (is(h, "wrong-result") || is(h, "closes-fds"))
                     value = (value + 1) & 0xFFFF, changed = 1;
                 else if (is(h, "out-of-range"))
                     value = 70000, changed = 1;
+                else if (is(h, "word-65536"))
+                    value = 65536, changed = 1;
             }
             if (target && is(h, "cpu-writes") && c->device >= 0 && strcmp(plcvec_device(c->device)->name, "SD0") == 0)
                 continue;       /* written below, as the CPU's own value */
@@ -88,6 +93,15 @@ static int forward(hostile *h, const plcvec_vector *v, plcvec_out *out, int targ
     return 0;
 }
 
+/* A process that inherits stdout and stderr and sleeps 300 s, left running. */
+static void child_holding_stdout(void)
+{
+    if (fork() == 0) {
+        execlp("sleep", "sleep", "300", (char *)NULL);
+        _exit(127);
+    }
+}
+
 static int run(void *ctx, const plcvec_vector *v, plcvec_out *out)
 {
     hostile *h = ctx;
@@ -95,6 +109,11 @@ static int run(void *ctx, const plcvec_vector *v, plcvec_out *out)
         return plcvec_out_skip(out, "this implementation skips every vector");
     int target = h->on && strcmp(v->id, h->on) == 0;
     if (target) {
+        if (is(h, "closes-fds"))
+            for (int fd = 3; fd < 1024; fd++)
+                close(fd);      /* what it inherited or the runner opened; then answers wrong */
+        if (is(h, "child-holds-stdout"))
+            child_holding_stdout();
         if (is(h, "panic"))
             return plcvec_out_error(out, "the implementation failed (a hostile error)");
         if (is(h, "loop-forever"))
@@ -126,7 +145,24 @@ static int supports_nothing(void *ctx, plcvec_instruction instruction)
 static const char *const kinds[] = {
     "reference", "wrong-result", "panic", "loop-forever", "empty-answer", "stray-write", "duplicate-write",
     "wrong-type", "out-of-range", "exit-zero", "exit-nonzero", "crash", "mutates-request", "supports-nothing",
-    "skips-everything", "bad-choice", "cpu-writes", NULL};
+    "skips-everything", "bad-choice", "cpu-writes", "word-65536", "closes-fds", "child-holds-stdout",
+    "follows-alternative", NULL};
+
+/* follows-alternative: the reference following PLCVEC_HOSTILE_CHOICE (ID=alternative) and declaring
+ * nothing, a reading followed but not declared. 0, or 2 with a message. */
+static int follow_undeclared(plcvec_reference *ref, plcvec_impl *impl)
+{
+    const char *choice = getenv("PLCVEC_HOSTILE_CHOICE");
+    const char *eq = choice ? strchr(choice, '=') : NULL;
+    char id[96];
+    snprintf(id, sizeof id, "%.*s", eq ? (int)(eq - choice < 90 ? eq - choice : 90) : 0, choice ? choice : "");
+    if (!eq || plcvec_reference_choose(ref, id, eq + 1) != 0) {
+        fprintf(stderr, "hostile: PLCVEC_HOSTILE_CHOICE=%s: ID=alternative of the suite\n", choice ? choice : "");
+        return 2;
+    }
+    impl->choices = NULL, impl->n_choices = 0;
+    return 0;
+}
 
 int main(int argc, char **argv)
 {
@@ -148,10 +184,12 @@ int main(int argc, char **argv)
     h.reference = plcvec_reference_impl(&ref);
     h.scratch = plcvec_out_new();
     plcvec_impl impl = h.reference;
+    if (is(&h, "follows-alternative") && follow_undeclared(&ref, &impl) != 0)
+        return 2;
     /* The reference itself is run as the README shows; every other one wraps it. `mutates-request`
      * is the reference too: the request is const data (read-only memory), which the interface gives
      * an implementation no way to change. */
-    if (!is(&h, "reference") && !is(&h, "mutates-request")) {
+    if (!is(&h, "reference") && !is(&h, "mutates-request") && !is(&h, "follows-alternative")) {
         impl.name = h.kind;
         impl.ctx = &h;
         impl.run = run;
