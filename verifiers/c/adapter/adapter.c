@@ -159,49 +159,10 @@ static int8_t flag_of(const cJSON *step, const char *key)
     return x ? (int8_t)(cJSON_IsTrue(x) ? 1 : 0) : (int8_t)PLCVEC_NONE;
 }
 
-static int build(building *b, const cJSON *req)
+/* initial.scratch, initial.operands and assumes.device_sizes. */
+static int initial_of(building *b, const cJSON *scratch, const cJSON *operands, const cJSON *sizes)
 {
     plcvec_vector *v = &b->v;
-    const cJSON *family = cJSON_GetObjectItemCaseSensitive(req, "family");
-    const cJSON *instruction = cJSON_GetObjectItemCaseSensitive(req, "instruction");
-    const cJSON *initial = cJSON_GetObjectItemCaseSensitive(req, "initial");
-    const cJSON *devices = cJSON_GetObjectItemCaseSensitive(initial, "devices");
-    const cJSON *operands = cJSON_GetObjectItemCaseSensitive(initial, "operands");
-    const cJSON *scratch = cJSON_GetObjectItemCaseSensitive(initial, "scratch");
-    const cJSON *steps = cJSON_GetObjectItemCaseSensitive(req, "steps");
-    const cJSON *sizes = cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(req, "assumes"), "device_sizes");
-    if (!cJSON_IsString(family) || !cJSON_IsString(instruction) || !cJSON_IsObject(devices) ||
-        !cJSON_IsObject(operands) || !cJSON_IsArray(steps))
-        return fail(b, "the request needs family, instruction, initial.devices, initial.operands and steps");
-    int f = family_named(family->valuestring), ins = instruction_named(instruction->valuestring);
-    if (f < 0 || ins < 0 || (int)plcvec_instruction_family[ins] != f)
-        return fail(b, "unknown family or instruction: %.60s %.60s", family->valuestring, instruction->valuestring);
-    v->family = (plcvec_family)f;
-    v->instruction = (plcvec_instruction)ins;
-    v->description = "";
-
-    int n_dev = cJSON_GetArraySize(devices), n_steps = cJSON_GetArraySize(steps), n_set = 0;
-    const cJSON *step;
-    cJSON_ArrayForEach(step, steps) {
-        if (!cJSON_IsObject(step))
-            return fail(b, "every step is an object");
-        n_set += cJSON_GetArraySize(cJSON_GetObjectItemCaseSensitive(step, "set"));
-    }
-    if (n_steps == 0 || n_steps > 65535 || n_dev > 65535 || n_set > 65535)
-        return fail(b, "a vector has 1 to 65535 steps");
-    b->devices = calloc((size_t)n_dev + 1, sizeof *b->devices);
-    b->sets = calloc((size_t)n_set + 1, sizeof *b->sets);
-    b->operands = calloc((size_t)cJSON_GetArraySize(operands) + 1, sizeof *b->operands);
-    b->scratch = calloc((size_t)cJSON_GetArraySize(scratch) + 1, sizeof *b->scratch);
-    b->sizes = calloc((size_t)cJSON_GetArraySize(sizes) + 1, sizeof *b->sizes);
-    b->steps = calloc((size_t)n_steps, sizeof *b->steps);
-    b->clocks = calloc((size_t)n_steps, sizeof *b->clocks);
-    if (!b->devices || !b->sets || !b->operands || !b->scratch || !b->sizes || !b->steps || !b->clocks)
-        return fail(b, "out of memory");
-
-    if (cells_of(b, devices, b->devices, &v->n_devices) < 0)
-        return -1;
-    v->devices = b->devices;
     const cJSON *item;
     cJSON_ArrayForEach(item, scratch) {
         int d = cJSON_IsString(item) ? device_of(b, item->valuestring) : fail(b, "scratch lists device names");
@@ -235,9 +196,31 @@ static int build(building *b, const cJSON *req)
         b->sizes[v->n_sizes++].points = (uint32_t)item->valuedouble;
     }
     v->sizes = b->sizes;
+    return 0;
+}
 
+/* A step's clock: the fields it gives, each marked in `fields`. */
+static const plcvec_clock *clock_of(const cJSON *clock, plcvec_clock *c)
+{
     static const char *const clock_keys[6] = {"year", "month", "day", "hour", "minute", "second"};
+    if (!cJSON_IsObject(clock))
+        return NULL;
+    int32_t *fields[6] = {&c->year, &c->month, &c->day, &c->hour, &c->minute, &c->second};
+    for (int k = 0; k < 6; k++) {
+        const cJSON *x = cJSON_GetObjectItemCaseSensitive(clock, clock_keys[k]);
+        if (cJSON_IsNumber(x) && x->valuedouble > -1e9 && x->valuedouble < 1e9) {
+            c->fields |= (uint8_t)(1 << k);
+            *fields[k] = (int32_t)x->valuedouble;
+        }
+    }
+    return c;
+}
+
+/* The steps' inputs and `set`s (a request carries no expectation). */
+static int steps_of(building *b, const cJSON *steps)
+{
     size_t s = 0, set_at = 0;
+    const cJSON *step;
     cJSON_ArrayForEach(step, steps) {
         plcvec_step *st = &b->steps[s];
         st->rlo_in = flag_of(step, "rlo_in");
@@ -246,19 +229,7 @@ static int build(building *b, const cJSON *req)
         const cJSON *elapsed = cJSON_GetObjectItemCaseSensitive(step, "elapsed_ms");
         st->elapsed_ms = cJSON_IsNumber(elapsed) && elapsed->valuedouble >= 0 && elapsed->valuedouble < 9e15
                              ? (int64_t)elapsed->valuedouble : PLCVEC_NONE;
-        const cJSON *clock = cJSON_GetObjectItemCaseSensitive(step, "clock");
-        if (cJSON_IsObject(clock)) {
-            plcvec_clock *c = &b->clocks[s];
-            int32_t *fields[6] = {&c->year, &c->month, &c->day, &c->hour, &c->minute, &c->second};
-            for (int k = 0; k < 6; k++) {
-                const cJSON *x = cJSON_GetObjectItemCaseSensitive(clock, clock_keys[k]);
-                if (cJSON_IsNumber(x) && x->valuedouble > -1e9 && x->valuedouble < 1e9) {
-                    c->fields |= (uint8_t)(1 << k);
-                    *fields[k] = (int32_t)x->valuedouble;
-                }
-            }
-            st->clock = c;
-        }
+        st->clock = clock_of(cJSON_GetObjectItemCaseSensitive(step, "clock"), &b->clocks[s]);
         st->set = b->sets + set_at;
         if (cells_of(b, cJSON_GetObjectItemCaseSensitive(step, "set"), b->sets + set_at, &st->n_set) < 0)
             return -1;
@@ -266,9 +237,62 @@ static int build(building *b, const cJSON *req)
         st->expect.result = PLCVEC_NONE;
         s++;
     }
-    v->steps = b->steps;
-    v->n_steps = (uint16_t)n_steps;
+    b->v.steps = b->steps;
+    b->v.n_steps = (uint16_t)s;
     return 0;
+}
+
+/* Room for the request's lists; 0, or -1 (answered) when it is too large or out of memory. */
+static int allocate(building *b, const cJSON *devices, const cJSON *operands, const cJSON *scratch, const cJSON *sizes,
+                    const cJSON *steps)
+{
+    int n_dev = cJSON_GetArraySize(devices), n_steps = cJSON_GetArraySize(steps), n_set = 0;
+    const cJSON *step;
+    cJSON_ArrayForEach(step, steps) {
+        if (!cJSON_IsObject(step))
+            return fail(b, "every step is an object");
+        n_set += cJSON_GetArraySize(cJSON_GetObjectItemCaseSensitive(step, "set"));
+    }
+    if (n_steps == 0 || n_steps > 65535 || n_dev > 65535 || n_set > 65535)
+        return fail(b, "a vector has 1 to 65535 steps");
+    b->devices = calloc((size_t)n_dev + 1, sizeof *b->devices);
+    b->sets = calloc((size_t)n_set + 1, sizeof *b->sets);
+    b->operands = calloc((size_t)cJSON_GetArraySize(operands) + 1, sizeof *b->operands);
+    b->scratch = calloc((size_t)cJSON_GetArraySize(scratch) + 1, sizeof *b->scratch);
+    b->sizes = calloc((size_t)cJSON_GetArraySize(sizes) + 1, sizeof *b->sizes);
+    b->steps = calloc((size_t)n_steps, sizeof *b->steps);
+    b->clocks = calloc((size_t)n_steps, sizeof *b->clocks);
+    if (!b->devices || !b->sets || !b->operands || !b->scratch || !b->sizes || !b->steps || !b->clocks)
+        return fail(b, "out of memory");
+    return 0;
+}
+
+static int build(building *b, const cJSON *req)
+{
+    plcvec_vector *v = &b->v;
+    const cJSON *family = cJSON_GetObjectItemCaseSensitive(req, "family");
+    const cJSON *instruction = cJSON_GetObjectItemCaseSensitive(req, "instruction");
+    const cJSON *initial = cJSON_GetObjectItemCaseSensitive(req, "initial");
+    const cJSON *devices = cJSON_GetObjectItemCaseSensitive(initial, "devices");
+    const cJSON *operands = cJSON_GetObjectItemCaseSensitive(initial, "operands");
+    const cJSON *scratch = cJSON_GetObjectItemCaseSensitive(initial, "scratch");
+    const cJSON *steps = cJSON_GetObjectItemCaseSensitive(req, "steps");
+    const cJSON *sizes = cJSON_GetObjectItemCaseSensitive(cJSON_GetObjectItemCaseSensitive(req, "assumes"), "device_sizes");
+    if (!cJSON_IsString(family) || !cJSON_IsString(instruction) || !cJSON_IsObject(devices) ||
+        !cJSON_IsObject(operands) || !cJSON_IsArray(steps))
+        return fail(b, "the request needs family, instruction, initial.devices, initial.operands and steps");
+    int f = family_named(family->valuestring), ins = instruction_named(instruction->valuestring);
+    if (f < 0 || ins < 0 || (int)plcvec_instruction_family[ins] != f)
+        return fail(b, "unknown family or instruction: %.60s %.60s", family->valuestring, instruction->valuestring);
+    v->family = (plcvec_family)f;
+    v->instruction = (plcvec_instruction)ins;
+    v->description = "";
+    if (allocate(b, devices, operands, scratch, sizes, steps) < 0 || cells_of(b, devices, b->devices, &v->n_devices) < 0)
+        return -1;
+    v->devices = b->devices;
+    if (initial_of(b, scratch, operands, sizes) < 0)
+        return -1;
+    return steps_of(b, steps);
 }
 
 static void release(building *b)
@@ -330,11 +354,9 @@ static cJSON *run_one(const plcvec_impl *impl, plcvec_out *out, const cJSON *req
 
 /* ---- the loop ------------------------------------------------------------------------------ */
 
-int main(int argc, char **argv)
+/* The command line: --mutant NAME, --choose ID=ALT; 0, or 2 after saying what is wrong. */
+static int options(int argc, char **argv, plcvec_reference *ref, char *name, size_t size)
 {
-    static plcvec_reference ref;
-    plcvec_reference_init(&ref);
-    char name[128] = "plcvec-c-reference";
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--mutant") == 0 && i + 1 < argc) {
             const plcvec_mutant *m = plcvec_mutant_named(argv[++i]);
@@ -345,13 +367,13 @@ int main(int argc, char **argv)
                 fprintf(stderr, "\n");
                 return 2;
             }
-            m->apply(&ref);
-            snprintf(name, sizeof name, "plcvec-c-reference (mutant %s)", m->name);
+            m->apply(ref);
+            snprintf(name, size, "plcvec-c-reference (mutant %s)", m->name);
         } else if (strcmp(argv[i], "--choose") == 0 && i + 1 < argc) {
             char choice[256];
             snprintf(choice, sizeof choice, "%s", argv[++i]);
             char *eq = strchr(choice, '=');
-            if (!eq || (*eq = '\0', plcvec_reference_choose(&ref, choice, eq + 1) != 0)) {
+            if (!eq || (*eq = '\0', plcvec_reference_choose(ref, choice, eq + 1) != 0)) {
                 fprintf(stderr, "plcvec-c-reference-adapter: --choose %s: not an ID=ALTERNATIVE of the suite\n", argv[i]);
                 return 2;
             }
@@ -360,6 +382,44 @@ int main(int argc, char **argv)
             return 2;
         }
     }
+    return 0;
+}
+
+/* One message of the protocol: 0 to go on, 1 at `bye`, or the status of a fatal answer. */
+static int answer(const cJSON *msg, long number, plcvec_reference *ref, const char *name, const plcvec_impl *impl,
+                  plcvec_out *out)
+{
+    const cJSON *type = cJSON_GetObjectItemCaseSensitive(msg, "type");
+    if (!msg || !cJSON_IsString(type))
+        return fatal("input line %ld is not a JSON object with a \"type\"", number);
+    if (strcmp(type->valuestring, "hello") == 0) {
+        const cJSON *protocol = cJSON_GetObjectItemCaseSensitive(msg, "protocol");
+        if (!cJSON_IsNumber(protocol) || protocol->valuedouble != PROTOCOL)
+            return fatal("this adapter speaks protocol %d, not %s", PROTOCOL,
+                         cJSON_IsNumber(protocol) ? "another" : "(none given)");
+        emit(hello(ref, name, msg));
+    } else if (strcmp(type->valuestring, "run") == 0) {
+        const cJSON *vectors = cJSON_GetObjectItemCaseSensitive(msg, "vectors");
+        if (!cJSON_IsArray(vectors))
+            return fatal("input line %ld: a run request holds \"vectors\", a list", number);
+        const cJSON *req;
+        cJSON_ArrayForEach(req, vectors)
+            emit(run_one(impl, out, req));
+    } else if (strcmp(type->valuestring, "bye") == 0)
+        return 1;
+    else
+        return fatal("input line %ld: unknown message type \"%.40s\"", number, type->valuestring);
+    fflush(stdout);     /* once per message: a run's batch is answered whole */
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    static plcvec_reference ref;
+    plcvec_reference_init(&ref);
+    char name[128] = "plcvec-c-reference";
+    if (options(argc, argv, &ref, name, sizeof name) != 0)
+        return 2;
     plcvec_impl impl = plcvec_reference_impl(&ref);
     plcvec_out *out = plcvec_out_new();
     if (!out)
@@ -376,44 +436,12 @@ int main(int argc, char **argv)
         if (strspn(line, " \t\r\n") == (size_t)len)
             continue;
         cJSON *msg = cJSON_ParseWithLength(line, (size_t)len);
-        const cJSON *type = cJSON_GetObjectItemCaseSensitive(msg, "type");
-        if (!msg || !cJSON_IsString(type)) {
-            rc = fatal("input line %ld is not a JSON object with a \"type\"", number);
-            cJSON_Delete(msg);
-            break;
-        }
-        if (strcmp(type->valuestring, "hello") == 0) {
-            const cJSON *protocol = cJSON_GetObjectItemCaseSensitive(msg, "protocol");
-            if (!cJSON_IsNumber(protocol) || protocol->valuedouble != PROTOCOL) {
-                rc = fatal("this adapter speaks protocol %d, not %s", PROTOCOL,
-                           cJSON_IsNumber(protocol) ? "another" : "(none given)");
-                cJSON_Delete(msg);
-                break;
-            }
-            emit(hello(&ref, name, msg));
-            fflush(stdout);
-        } else if (strcmp(type->valuestring, "run") == 0) {
-            const cJSON *vectors = cJSON_GetObjectItemCaseSensitive(msg, "vectors");
-            if (!cJSON_IsArray(vectors)) {
-                rc = fatal("input line %ld: a run request holds \"vectors\", a list", number);
-                cJSON_Delete(msg);
-                break;
-            }
-            const cJSON *req;
-            cJSON_ArrayForEach(req, vectors)
-                emit(run_one(&impl, out, req));
-            fflush(stdout);     /* once per batch */
-        } else if (strcmp(type->valuestring, "bye") == 0) {
-            cJSON_Delete(msg);
-            break;
-        } else {
-            rc = fatal("input line %ld: unknown message type \"%.40s\"", number, type->valuestring);
-            cJSON_Delete(msg);
-            break;
-        }
+        rc = answer(msg, number, &ref, name, &impl, out);
         cJSON_Delete(msg);
+        if (rc != 0)
+            break;
     }
     free(line);
     plcvec_out_free(out);
-    return rc;
+    return rc == 1 ? 0 : rc;
 }

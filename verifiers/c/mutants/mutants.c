@@ -1,6 +1,7 @@
 /* Mutants: the reference with one plausible bug each, so that the tests can show the vectors
- * and the runner catch it. Each replaces one rule of one family (see reference.h), or, for the
- * interpretation mutant, does one thing while declaring another. */
+ * and the runner catch it. Each replaces one rule of one family (see reference.h). None is a
+ * reading: a mutant whose failures one alternative explains is an implementation that follows
+ * that alternative, not a bug (tests/test_rollup.c holds every mutant to it). */
 #include <string.h>
 
 #include "reference.h"
@@ -42,11 +43,15 @@ static void fx5_device_range_unchecked(plcvec_reference *ref) { ref->fx5.in_rang
 static const fx5_field time_fields_hour_24[3] = {{0, 0, 24, 2}, {1, 0, 59, 1}, {2, 0, 59, 0}};
 static void fx5_time_hour_24_accepted(plcvec_reference *ref) { ref->fx5.time_fields = time_fields_hour_24; }
 
-/* Declares the default (AND skipped while the preceding logic is off) but always executes it. */
-static void fx5_and_executed_when_off(plcvec_reference *ref)
+/* ANDTM/ANDDT pass their own comparison on whatever the preceding logic, as LD does. (Until 0.2.0
+ * this mutant executed AND while the logic was off and passed on off: that is the reading
+ * FX5-AND-OR-WHEN-OFF=always-executed, which a declaration explains, so it was no bug.) */
+static int and_ignores_preceding(int rlo, int contact)
 {
-    ref->follows[PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF] = PLCVEC_FX5_AND_OR_WHEN_OFF_ALWAYS_EXECUTED;
+    (void)rlo;
+    return contact;
 }
+static void fx5_and_ignores_preceding_off(plcvec_reference *ref) { ref->fx5.and_form = and_ignores_preceding; }
 
 /* -- FX5 TADD/TADDP -- */
 
@@ -77,12 +82,10 @@ static void cp1e_and_as_or(plcvec_reference *ref) { ref->cp1e.and_form = and_as_
 
 static void cp1e_flags_not_reflected(plcvec_reference *ref) { ref->cp1e.reflect_flags = 0; }
 
-static int any_byte(unsigned b)
-{
-    (void)b;
-    return 1;
-}
-static void cp1e_bcd_read_as_binary(plcvec_reference *ref) { ref->cp1e.is_bcd = any_byte; }
+/* The BCD check looks at the byte's value, not at each digit: up to 99H passes, so 1AH is compared.
+ * (Until 0.2.0 no byte was checked: that is the reading CP1E-NON-BCD=raw-bytes, so it was no bug.) */
+static int byte_up_to_99h(unsigned b) { return b <= 0x99; }
+static void cp1e_bcd_read_as_binary(plcvec_reference *ref) { ref->cp1e.is_bcd = byte_up_to_99h; }
 
 const plcvec_mutant plcvec_mutants[] = {
     {"fx5-low-field-first", "fx5-time-compare fx5-date-compare",
@@ -100,10 +103,10 @@ const plcvec_mutant plcvec_mutants[] = {
     {"fx5-time-hour-24-accepted", "fx5-time-compare",
      "The hour range check is off by one: hour 24 is compared instead of turning SM709 on (a flag).",
      fx5_time_hour_24_accepted},
-    {"fx5-and-executed-when-off", "fx5-time-compare fx5-date-compare",
-     "Declares FX5-AND-OR-WHEN-OFF=and-skipped but executes AND forms while the preceding logic is off "
-     "(an interpretation alternative not followed).",
-     fx5_and_executed_when_off},
+    {"fx5-and-ignores-preceding-off", "fx5-time-compare fx5-date-compare",
+     "ANDTM/ANDDT are executed while the preceding logic is off (as FX5-AND-OR-WHEN-OFF=always-executed says) "
+     "but pass their own comparison on, as LD does (an interpretation alternative half followed: contact result).",
+     fx5_and_ignores_preceding_off},
     {"tadd-flags-not-written", "fx5-time-add", "The carry flags SM700/SM8022 and the zero flag SM8020 are never written (a flag).",
      tadd_flags_not_written},
     {"taddp-every-scan", "fx5-time-add",
@@ -124,7 +127,8 @@ const plcvec_mutant plcvec_mutants[] = {
      "flags' (a flag).",
      cp1e_flags_not_reflected},
     {"cp1e-bcd-read-as-binary", "cp1e-time-compare",
-     "The time bytes are compared as binary without checking that they are BCD, so 1AH does not turn P_ER on (a flag).",
+     "The BCD check looks at the byte's value instead of each digit: up to 99H passes, so 1AH is compared instead "
+     "of turning P_ER on, while A0H still turns it on (a flag).",
      cp1e_bcd_read_as_binary},
 };
 const size_t plcvec_mutant_count = sizeof plcvec_mutants / sizeof plcvec_mutants[0];

@@ -3,7 +3,8 @@
  * same text with hour/minute/second replaced by year/month/day, so one machine serves both. */
 #include <string.h>
 
-#include "reference.h"
+#include "condition.h"
+#include "fx5_compare.h"
 
 static int sm709_id = -1;     /* memory_device_named() */
 
@@ -41,7 +42,14 @@ static void sm709(memory *m, int error)
         memory_write_named(m, memory_device_named("SM709", &sm709_id), PLCVEC_BIT, 1);
 }
 
-const fx5_rules fx5_reference_rules = {time_fields, date_fields, order, 0x8000, selector_valid, memory_in_range, sm709};
+/* "(Devices are used as a normally open contact.)": in series with the preceding logic. */
+static int and_form(int rlo, int contact)
+{
+    return rlo && contact;
+}
+
+const fx5_compare_rules fx5_compare_reference_rules = {time_fields, date_fields, order, 0x8000, selector_valid,
+                                                       memory_in_range, sm709, and_form};
 
 static int out_of_range(const fx5_field *fields, const uint16_t *w, int all, unsigned s3)
 {
@@ -61,11 +69,25 @@ static void read_block(const memory *m, address base, uint16_t *w)
         w[i] = memory_read(m, memory_offset(base, i));
 }
 
+/* One execution of the comparison: the machine and the rules, the vector and the step, whether it
+ * is the date page's, and (set by the comparison) whether it turned SM709 on. */
+typedef struct fx5_call {
+    machine *mc;
+    const fx5_compare_rules *r;
+    const plcvec_vector *v;
+    const plcvec_step *step;
+    int date;
+    int failed;
+} fx5_call;
+
 /* The comparison itself (the "contact"). */
-static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step, int date, plcvec_condition condition)
+static int evaluate(fx5_call *call, plcvec_condition condition)
 {
-    const fx5_rules *r = &ref->fx5;
-    memory *m = &ref->mem;
+    const fx5_compare_rules *r = call->r;
+    memory *m = &call->mc->mem;
+    const uint8_t *follows = call->mc->follows;
+    const plcvec_vector *v = call->v;
+    int date = call->date;
     const fx5_field *fields = date ? r->date_fields : r->time_fields;
     const plcvec_operand *op1 = plcvec_operand_named(v, "s1"), *op2 = plcvec_operand_named(v, "s2"),
                          *op3 = plcvec_operand_named(v, "s3");
@@ -79,9 +101,9 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
      * corresponding device range, SM709 turns on ... non-continuity." Whether (s2) is checked
      * while it is ignored: FX5-CLOCK-S2-DEVICE-RANGE. */
     int s2_checked = !use_clock ||
-                     ref->follows[PLCVEC_INTERP_FX5_CLOCK_S2_DEVICE_RANGE] == PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_CHECKED;
+                     follows[PLCVEC_INTERP_FX5_CLOCK_S2_DEVICE_RANGE] == PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_CHECKED;
     if (!r->in_range(m, s1_dev, 3) || (s2_checked && !r->in_range(m, s2_dev, 3))) {
-        ref->fx5_failed = 1;
+        call->failed = 1;
         r->sm709(m, 1);
         return 0;
     }
@@ -89,11 +111,11 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
     read_block(m, s1_dev, s1);
     if (use_clock) {
         /* The clock as an emulator reads it: only the fields its `fields` mask says are given. */
-        const plcvec_clock *c = step->clock;
+        const plcvec_clock *c = call->step->clock;
         unsigned need = date ? PLCVEC_CLOCK_YEAR | PLCVEC_CLOCK_MONTH | PLCVEC_CLOCK_DAY
                              : PLCVEC_CLOCK_HOUR | PLCVEC_CLOCK_MINUTE | PLCVEC_CLOCK_SECOND;
         if (!c || (c->fields & need) != need) {
-            ref->input_error = date ? "the step gives no current clock with year, month and day"
+            call->mc->input_error = date ? "the step gives no current clock with year, month and day"
                                     : "the step gives no current clock with hour, minute and second";
             return 0;
         }
@@ -106,10 +128,10 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
     int valid = r->selector_valid(s3), error;
     /* "If the comparison target data in the device are not recognized as time data, SM709
      * turns on ... non-continuity." Which words are comparison target data: FX5-SM709-SCOPE. */
-    if (ref->follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_ALL_WORDS) {
+    if (follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_ALL_WORDS) {
         error = out_of_range(fields, s1, 1, s3) || (!use_clock && out_of_range(fields, s2, 1, s3));
         if (error || !valid) {
-            ref->fx5_failed = error;
+            call->failed = error;
             r->sm709(m, error);
             return 0;
         }
@@ -120,10 +142,10 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
         }
         /* selected-fields: a masked word is not comparison target data; compared-operands: the
          * operands are, as a whole, but only when a comparison is made at all. */
-        int all = ref->follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_COMPARED_OPERANDS;
+        int all = follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_COMPARED_OPERANDS;
         error = out_of_range(fields, s1, all, s3) || (!use_clock && out_of_range(fields, s2, all, s3));
         if (error) {
-            ref->fx5_failed = 1;
+            call->failed = 1;
             r->sm709(m, 1);
             return 0;
         }
@@ -131,34 +153,34 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, const plcvec_
     /* Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
      * the data are within the setting range." So 02/30 is compared as it is. */
     r->sm709(m, 0);
-    return reference_condition_holds(condition, r->order(fields, s1, s2, s3));
+    return condition_holds(condition, r->order(fields, s1, s2, s3));
 }
 
-int fx5_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step)
+int fx5_compare_execute(machine *mc, const fx5_compare_rules *r, const plcvec_vector *v, const plcvec_step *step)
 {
     /* The instruction as values: LD/AND/OR, and the condition (no parsing of "ANDTM<="). */
     const plcvec_instruction_info *info = &plcvec_instructions[v->instruction];
-    int date = v->family == PLCVEC_FAMILY_FX5_DATE_COMPARE;
+    fx5_call call = {mc, r, v, step, v->family == PLCVEC_FAMILY_FX5_DATE_COMPARE, 0};
     plcvec_condition condition = info->condition;
     if (info->form == PLCVEC_FORM_LD)
-        return evaluate(ref, v, step, date, condition);
+        return evaluate(&call, condition);
     int rlo = step->rlo_in == 1;
-    int logic = ref->follows[PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF];
+    int logic = mc->follows[PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF];
     /* "(Devices are used as a normally open contact.)"; the MELSEC iQ-R Programming Manual (CPU
      * Module Instructions), processing-time tables: an AND/OR comparison is not executed while the
-     * preceding logic is off: FX5-AND-OR-WHEN-OFF. */
+     * preceding logic is off: FX5-AND-OR-WHEN-OFF. A preceding logic that is off decides an AND
+     * (and_form(0, 1) is off) unless the rules say otherwise. */
     if (info->form == PLCVEC_FORM_AND) {
-        if (!rlo && logic != PLCVEC_FX5_AND_OR_WHEN_OFF_ALWAYS_EXECUTED)
+        if (!rlo && logic != PLCVEC_FX5_AND_OR_WHEN_OFF_ALWAYS_EXECUTED && !r->and_form(0, 1))
             return 0;
-        return evaluate(ref, v, step, date, condition) && rlo;
+        return r->and_form(rlo, evaluate(&call, condition));
     }
     if (rlo && logic == PLCVEC_FX5_AND_OR_WHEN_OFF_SHORT_CIRCUIT)
         return 1;
-    ref->fx5_failed = 0;
-    int contact = evaluate(ref, v, step, date, condition);
+    int contact = evaluate(&call, condition);
     /* "SM709 turns on ... and the operation result will be non-continuity": a non-conductive
      * contact in parallel (contact-off), or the rung's result itself off (result-off). */
-    if (ref->fx5_failed && ref->follows[PLCVEC_INTERP_FX5_OR_ON_ERROR] == PLCVEC_FX5_OR_ON_ERROR_RESULT_OFF)
+    if (call.failed && mc->follows[PLCVEC_INTERP_FX5_OR_ON_ERROR] == PLCVEC_FX5_OR_ON_ERROR_RESULT_OFF)
         return 0;
     return contact || rlo;
 }

@@ -18,7 +18,7 @@ int main(void)
             plcvec_reference ref;
             plcvec_reference_init(&ref);
             for (int k = 0; k < n; k++)
-                ref.declared[interps[k]] = ref.follows[interps[k]] = (uint8_t)pick[k];
+                ref.declared[interps[k]] = ref.machine.follows[interps[k]] = (uint8_t)pick[k];
             plcvec_impl impl = plcvec_reference_impl(&ref);
             char err[256];
             plcvec_judge *j = plcvec_judge_new(&impl, err, sizeof err);

@@ -2,7 +2,8 @@
  * From cp1e-time-compare-DT.txt (W483 p. 2-93). */
 #include <string.h>
 
-#include "reference.h"
+#include "condition.h"
+#include "cp1e_time_compare.h"
 
 /* "A351.00 to A351.07 Second (00 to 59, BCD)  A351.08 to A351.15 Minute ... A352 Hour, Day of
  * month; A353 Month, Year"; "Bits 00 to 05 of C mask the seconds, minutes, hours, day, month,
@@ -21,39 +22,28 @@ static int and_form(int rlo, int contact)
     return rlo && contact;
 }
 
-const cp1e_rules cp1e_reference_rules = {fields, is_bcd, and_form, 1};
+const cp1e_time_compare_rules cp1e_time_compare_reference_rules = {fields, is_bcd, and_form, 1};
 
 /* The flag table: rows S1 = S2, S1 > S2, S1 < S2; columns =, <>, <, <=, >, >=. */
 static const char *const flag_names[6] = {"P_EQ", "P_NE", "P_LT", "P_LE", "P_GT", "P_GE"};
+static const plcvec_condition flag_conditions[6] = {PLCVEC_CONDITION_EQ, PLCVEC_CONDITION_NE, PLCVEC_CONDITION_LT,
+                                                    PLCVEC_CONDITION_LE, PLCVEC_CONDITION_GT, PLCVEC_CONDITION_GE};
 static int flag_devices[6] = {-1, -1, -1, -1, -1, -1}, p_er = -1;
-
-static int holds(int symbol, int order)
-{
-    switch (symbol) {
-    case 0: return order == 0;
-    case 1: return order != 0;
-    case 2: return order < 0;
-    case 3: return order <= 0;
-    case 4: return order > 0;
-    default: return order >= 0;
-    }
-}
 
 /* Error: P_ER on, the execution condition OFF. The flag table has no row for an execution without
  * a comparison result: the six flags keep their values, or (CP1E-ERROR-FLAGS=off) are written off. */
-static int error(plcvec_reference *ref, memory *m)
+static int error(const machine *mc, memory *m)
 {
     memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 1);
-    if (ref->follows[PLCVEC_INTERP_CP1E_ERROR_FLAGS] == PLCVEC_CP1E_ERROR_FLAGS_OFF)
+    if (mc->follows[PLCVEC_INTERP_CP1E_ERROR_FLAGS] == PLCVEC_CP1E_ERROR_FLAGS_OFF)
         for (int s = 0; s < 6; s++)
             memory_write_named(m, memory_device_named(flag_names[s], &flag_devices[s]), PLCVEC_BIT, 0);
     return 0;
 }
 
-static int evaluate(plcvec_reference *ref, const plcvec_vector *v, plcvec_condition condition)
+static int evaluate(machine *mc, const cp1e_time_compare_rules *r, const plcvec_vector *v, plcvec_condition condition)
 {
-    const cp1e_rules *r = &ref->cp1e;
-    memory *m = &ref->mem;
+    memory *m = &mc->mem;
     address s1 = memory_device(plcvec_operand_named(v, "S1")->device);
     address s2 = memory_device(plcvec_operand_named(v, "S2")->device);
     const plcvec_operand *cop = plcvec_operand_named(v, "C");
@@ -64,17 +54,17 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, plcvec_condit
         b[i] = memory_read(m, memory_offset(s2, i));
     }
     /* Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS). */
-    if ((c & 0xFFC0) && ref->follows[PLCVEC_INTERP_CP1E_C_HIGH_BITS] == PLCVEC_CP1E_C_HIGH_BITS_ERROR)
-        return error(ref, m);
+    if ((c & 0xFFC0) && mc->follows[PLCVEC_INTERP_CP1E_C_HIGH_BITS] == PLCVEC_CP1E_C_HIGH_BITS_ERROR)
+        return error(mc, m);
     /* "To mask a time value, set the corresponding bit in the control word (C) to 1." */
     int unmasked = 0;
     for (int f = 0; f < 6; f++)
         unmasked += !(c >> r->fields[f].bit & 1);
-    if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_ERROR)
-        return error(ref, m);
-    if (!unmasked && ref->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_NOT_COMPARED) {
+    if (!unmasked && mc->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_ERROR)
+        return error(mc, m);
+    if (!unmasked && mc->follows[PLCVEC_INTERP_CP1E_ALL_MASKED] == PLCVEC_CP1E_ALL_MASKED_NOT_COMPARED) {
         /* Nothing compared, no result: OFF, the flags untouched, no error. */
-        if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
+        if (mc->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
             memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 0);
         return 0;
     }
@@ -88,13 +78,13 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, plcvec_condit
         for (int k = 0; k < 2; k++) {
             if (!r->is_bcd(raw[k])) {
                 /* "Second (00 to 59, BCD)" ...: CP1E-NON-BCD */
-                if (ref->follows[PLCVEC_INTERP_CP1E_NON_BCD] == PLCVEC_CP1E_NON_BCD_ERROR)
-                    return error(ref, m);
+                if (mc->follows[PLCVEC_INTERP_CP1E_NON_BCD] == PLCVEC_CP1E_NON_BCD_ERROR)
+                    return error(mc, m);
             } else {
                 int value = (int)(raw[k] >> 4) * 10 + (int)(raw[k] & 0xF);
                 if ((value < fd->lo || value > fd->hi) &&
-                    ref->follows[PLCVEC_INTERP_CP1E_OUT_OF_RANGE] == PLCVEC_CP1E_OUT_OF_RANGE_ERROR)
-                    return error(ref, m);
+                    mc->follows[PLCVEC_INTERP_CP1E_OUT_OF_RANGE] == PLCVEC_CP1E_OUT_OF_RANGE_ERROR)
+                    return error(mc, m);
             }
         }
         /* "limited to comparing 8-bit time values": for BCD the byte order is the numeric order. */
@@ -104,29 +94,30 @@ static int evaluate(plcvec_reference *ref, const plcvec_vector *v, plcvec_condit
     /* "the result of a time comparison instruction is reflected in the arithmetic flags" */
     if (r->reflect_flags)
         for (int s = 0; s < 6; s++)
-            memory_write_named(m, memory_device_named(flag_names[s], &flag_devices[s]), PLCVEC_BIT, (uint16_t)holds(s, order));
+            memory_write_named(m, memory_device_named(flag_names[s], &flag_devices[s]), PLCVEC_BIT, (uint16_t)condition_holds(flag_conditions[s], order));
     /* P_ER is a condition flag reflecting the instruction just executed: CP1E-ER-FLAG. */
-    if (ref->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
+    if (mc->follows[PLCVEC_INTERP_CP1E_ER_FLAG] == PLCVEC_CP1E_ER_FLAG_REFLECTS_EACH_EXECUTION)
         memory_write_named(m, memory_device_named("P_ER", &p_er), PLCVEC_BIT, 0);
-    return reference_condition_holds(condition, order);
+    return condition_holds(condition, order);
 }
 
-int cp1e_execute(plcvec_reference *ref, const plcvec_vector *v, const plcvec_step *step)
+int cp1e_time_compare_execute(machine *mc, const cp1e_time_compare_rules *r, const plcvec_vector *v,
+                              const plcvec_step *step)
 {
     /* The instruction as values: LD/AND/OR, and the condition (no parsing of "AND <=DT"). */
     const plcvec_instruction_info *info = &plcvec_instructions[v->instruction];
     plcvec_condition condition = info->condition;
     /* "treated just like the LD, AND, and OR instructions" */
     if (info->form == PLCVEC_FORM_LD)
-        return evaluate(ref, v, condition);
+        return evaluate(mc, r, v, condition);
     int rlo = step->rlo_in == 1;
-    int logic = ref->follows[PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF];
+    int logic = mc->follows[PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF];
     if (info->form == PLCVEC_FORM_AND) {
         if (!rlo && logic != PLCVEC_CP1E_AND_OR_WHEN_OFF_ALWAYS_EXECUTED)   /* and-skipped, short-circuit */
             return 0;
-        return ref->cp1e.and_form(rlo, evaluate(ref, v, condition));
+        return r->and_form(rlo, evaluate(mc, r, v, condition));
     }
     if (rlo && logic == PLCVEC_CP1E_AND_OR_WHEN_OFF_SHORT_CIRCUIT)
         return 1;
-    return evaluate(ref, v, condition) || rlo;
+    return evaluate(mc, r, v, condition) || rlo;
 }

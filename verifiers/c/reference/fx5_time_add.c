@@ -1,5 +1,5 @@
 /* Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data). From fx5-time-add-TADD.txt. */
-#include "reference.h"
+#include "fx5_time_add.h"
 
 static int sd0 = -1, sd8067 = -1;     /* memory_device_named() */
 
@@ -15,7 +15,7 @@ static int pulse(int en, int previous_en, plcvec_instruction instruction)
     return plcvec_instructions[instruction].execution == PLCVEC_EXECUTION_RISING_EDGE ? en && !previous_en : en;
 }
 
-const tadd_rules tadd_reference_rules = {carry_flags, 2, 23, memory_in_range, pulse, 1};
+const fx5_time_add_rules fx5_time_add_reference_rules = {carry_flags, 2, 23, memory_in_range, pulse, 1};
 
 static void error_code(memory *m, uint16_t code)
 {
@@ -33,7 +33,7 @@ static void flag(memory *m, const char *name, int on, int set_only)
 }
 
 /* Hour 0 to 23; minute, second 0 to 59: a field out of range is the 3405H condition. */
-static int out_of_range(const tadd_rules *r, const int *hms)
+static int out_of_range(const fx5_time_add_rules *r, const int *hms)
 {
     for (int i = 0; i < 3; i++)
         if (hms[i] < 0 || hms[i] > (i == 0 ? r->hour_max : 59))
@@ -42,7 +42,7 @@ static int out_of_range(const tadd_rules *r, const int *hms)
 }
 
 /* An operand whose three words exist and hold a field out of range. */
-static int fields_bad(const tadd_rules *r, const memory *m, address base)
+static int fields_bad(const fx5_time_add_rules *r, const memory *m, address base)
 {
     if (!r->in_range(m, base, 3))
         return 0;
@@ -52,10 +52,9 @@ static int fields_bad(const tadd_rules *r, const memory *m, address base)
     return out_of_range(r, hms);
 }
 
-static void add(plcvec_reference *ref, const plcvec_vector *v)
+static void add(machine *mc, const fx5_time_add_rules *r, const plcvec_vector *v)
 {
-    const tadd_rules *r = &ref->tadd;
-    memory *m = &ref->mem;
+    memory *m = &mc->mem;
     address s1 = memory_device(plcvec_operand_named(v, "s1")->device);
     address s2 = memory_device(plcvec_operand_named(v, "s2")->device);
     address d = memory_device(plcvec_operand_named(v, "d")->device);
@@ -65,7 +64,7 @@ static void add(plcvec_reference *ref, const plcvec_vector *v)
         /* Both conditions at once (a readable s1/s2 holds a field out of range too):
          * TADD-ERROR-ORDER says which code is stored. */
         int both = fields_bad(r, m, s1) || fields_bad(r, m, s2);
-        error_code(m, both && ref->follows[PLCVEC_INTERP_TADD_ERROR_ORDER] == PLCVEC_TADD_ERROR_ORDER_FIELD_RANGE_FIRST
+        error_code(m, both && mc->follows[PLCVEC_INTERP_TADD_ERROR_ORDER] == PLCVEC_TADD_ERROR_ORDER_FIELD_RANGE_FIRST
                           ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
         return;
     }
@@ -76,14 +75,14 @@ static void add(plcvec_reference *ref, const plcvec_vector *v)
     }
     if (out_of_range(r, a) || out_of_range(r, b)) {
         error_code(m, ERR_VALUE_RANGE);
-        if (ref->follows[PLCVEC_INTERP_TADD_ON_ERROR] == PLCVEC_TADD_ON_ERROR_NOT_EXECUTED)
+        if (mc->follows[PLCVEC_INTERP_TADD_ON_ERROR] == PLCVEC_TADD_ON_ERROR_NOT_EXECUTED)
             return;
     }
     long total = (long)(a[0] + b[0]) * 3600 + (long)(a[1] + b[1]) * 60 + (a[2] + b[2]);
     /* "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result will be
      * the sum minus 24:00:00", but "If 1 second is added to 23:59:59, the result will be
      * 0:00:00. This turns on both the carry flag and the zero flag.": TADD-EXACT-24. */
-    int carry = ref->follows[PLCVEC_INTERP_TADD_EXACT_24] == PLCVEC_TADD_EXACT_24_CARRY_AT_24 ? total >= DAY
+    int carry = mc->follows[PLCVEC_INTERP_TADD_EXACT_24] == PLCVEC_TADD_EXACT_24_CARRY_AT_24 ? total >= DAY
                                                                                                : total > DAY;
     long result = ((total % DAY) + DAY) % DAY;
     long hms[3] = {result / 3600, result / 60 % 60, result % 60};
@@ -91,18 +90,19 @@ static void add(plcvec_reference *ref, const plcvec_vector *v)
         memory_write(m, memory_offset(d, i), PLCVEC_WORD, (uint16_t)hms[i]);
     if (!r->flags_written)
         return;
-    int set_only = ref->follows[PLCVEC_INTERP_TADD_FLAGS_OFF] == PLCVEC_TADD_FLAGS_OFF_SET_ONLY;
+    int set_only = mc->follows[PLCVEC_INTERP_TADD_FLAGS_OFF] == PLCVEC_TADD_FLAGS_OFF_SET_ONLY;
     for (int i = 0; i < r->n_carry_flags; i++)
         flag(m, r->carry_flags[i], carry, set_only);
     flag(m, "SM8020", result == 0, set_only);       /* "If the result is 0 (0:00:00), the zero flag turns on." */
 }
 
-int tadd_execute(plcvec_reference *ref, tadd_state *st, const plcvec_vector *v, const plcvec_step *step)
+int fx5_time_add_execute(machine *mc, const fx5_time_add_rules *r, fx5_time_add_state *st, const plcvec_vector *v,
+                         const plcvec_step *step)
 {
     int en = step->en == 1;
-    int run = ref->tadd.pulse(en, st->previous_en, v->instruction);
+    int run = r->pulse(en, st->previous_en, v->instruction);
     st->previous_en = en;       /* TADDP: the state before the first scan is off */
     if (run)
-        add(ref, v);
+        add(mc, r, v);
     return PLCVEC_NONE;
 }
