@@ -1,10 +1,12 @@
 // The reference under the README's GoogleTest pattern (plcvec/gtest.hpp), for the row of the
 // table of faults in which GoogleTest's own filter matches no test, and with
 // PLCVEC_HOSTILE=skips-everything for an implementation that skips every vector: neither run may
-// be green.
+// be green. PLCVEC_HOSTILE=follows-alternative follows PLCVEC_HOSTILE_CHOICE (ID=alternative)
+// undeclared, so that the end of a GoogleTest run shows the known failures another reading explains.
 #include "plcvec/gtest.hpp"
 
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "reference.h"
@@ -22,6 +24,13 @@ plcvec_judge *judge() {
         const char *hostile = std::getenv("PLCVEC_HOSTILE");
         if (hostile && std::string(hostile) == "skips-everything")
             impl.run = skip;            // the README's pattern must not turn this green
+        const char *choice = std::getenv("PLCVEC_HOSTILE_CHOICE");
+        if (hostile && std::string(hostile) == "follows-alternative" && choice && std::strchr(choice, '=')) {
+            std::string id(choice, std::strchr(choice, '='));
+            if (plcvec_reference_choose(&ref, id.c_str(), std::strchr(choice, '=') + 1) != 0)
+                std::fprintf(stderr, "hostile: PLCVEC_HOSTILE_CHOICE=%s: ID=alternative of the suite\n", choice);
+            impl.choices = nullptr, impl.n_choices = 0;
+        }
         char err[256];
         plcvec_judge *made = plcvec_judge_new(&impl, err, sizeof err);
         if (!made)

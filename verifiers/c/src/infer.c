@@ -125,8 +125,13 @@ int plcvec_infer(plcvec_judged *judged, size_t n, const uint8_t *followed, plcve
         ;
     inf->broken = 0;
     for (size_t r = 0; r < n; r++)
-        inf->broken += judged[r].answer == PLCVEC_ANSWER_PASSED && !passes_under(&judged[r], inf->choice);
+        inf->broken += plcvec_broken(inf, &judged[r]);
     return 0;
+}
+
+int plcvec_broken(const plcvec_inference *inf, const plcvec_judged *r)
+{
+    return r->status == PLCVEC_PASS && r->answer == PLCVEC_ANSWER_PASSED && !passes_under(r, inf->choice);
 }
 
 int plcvec_explained(const plcvec_inference *inf, const plcvec_judged *r)

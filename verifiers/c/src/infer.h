@@ -12,7 +12,7 @@ enum { PLCVEC_ANSWER_NONE, PLCVEC_ANSWER_PASSED, PLCVEC_ANSWER_FAILED };
 typedef struct plcvec_judged {
     const plcvec_vector *v;
     uint8_t status;             /* the verdict's, known failures applied */
-    uint8_t answer;             /* PLCVEC_ANSWER_*: an xfail whose answer failed counts as failed */
+    uint8_t answer;             /* PLCVEC_ANSWER_*: a pass, a fail; an xfail whose answer failed counts as failed */
     uint64_t passes;            /* the offered expectations (bit o: plcvec_verdict.offered_passes) it passes under */
 } plcvec_judged;
 
@@ -28,6 +28,8 @@ int plcvec_infer(plcvec_judged *judged, size_t n, const uint8_t *followed, plcve
 /* Whether the choice explains a failing vector or a known failure: its answer failed and passes
  * under the choice (an error or a vector not run is never explained). */
 int plcvec_explained(const plcvec_inference *inf, const plcvec_judged *r);
+/* Whether r passes now and would fail under the choice (the inference's `broken`). */
+int plcvec_broken(const plcvec_inference *inf, const plcvec_judged *r);
 /* The smallest change that explains r (the interpretations, sorted by id, into `out`); its size. */
 int plcvec_smallest_change(const plcvec_inference *inf, const plcvec_judged *r, int *out);
 

@@ -211,51 +211,131 @@ static int finish(parser *p, entry *e, const plcvec_known_failure *list, size_t 
     return 0;
 }
 
-int plcvec_known_load(const char *path, plcvec_known_failure **out, size_t *n_out, char *err, size_t errlen)
+/* What the parse has so far: the entries kept, and the entry being read. */
+typedef struct reading {
+    plcvec_known_failure *list;
+    size_t n, cap;
+    entry e;
+    int in_entry;
+} reading;
+
+/* `[[known-failure]]` at s: the entry before it is finished and kept, a new one begins. */
+static int header_line(parser *p, reading *r, const char *s)
 {
-    parser p = {path, 0, err, errlen};
-    *out = NULL;
-    *n_out = 0;
-    if (plcvec_file_check(path, err, errlen) != 0)
-        return -1;          /* a named pipe, a folder, a loop of symbolic links: by name, unopened */
-    char why[256];
-    FILE *f = plcvec_file_open(path, why, sizeof why);
-    if (!f) {
-        snprintf(err, errlen, "%s: cannot read the expectations file: %s", path, why);
-        return -1;
+    const char *q = s[1] == '[' ? skip_ws(s + 2) : NULL;
+    size_t k = strlen(SECTION);
+    if (!q || strncmp(q, SECTION, k) != 0 || strncmp(skip_ws(q + k), "]]", 2) != 0) {
+        char name[80];
+        snprintf(name, sizeof name, "%.60s", s);
+        return fail(p, "unknown table %s; an expectations file holds only [[" SECTION "]] entries", name);
     }
-    size_t cap = 4096, len = 0;
+    if (line_end(p, skip_ws(q + k) + 2) != 0)
+        return -1;
+    if (r->in_entry) {
+        int here = p->line;
+        if (finish(p, &r->e, r->list, r->n) != 0)
+            return -1;
+        p->line = here;
+        if (keep(p, &r->e, &r->list, &r->n, &r->cap) != 0)
+            return -1;
+    }
+    r->in_entry = 1;
+    r->e.line = p->line;
+    return 0;
+}
+
+/* `key = "value"` at s, inside an entry: `id` or `reason`, each once. */
+static int key_line(parser *p, reading *r, const char *s)
+{
+    const char *k = s;
+    while ((*k >= 'a' && *k <= 'z') || (*k >= 'A' && *k <= 'Z') || (*k >= '0' && *k <= '9') || *k == '_' || *k == '-')
+        k++;
+    char key[64], what[200];
+    snprintf(key, sizeof key, "%.*s", (int)(k - s < 60 ? k - s : 60), s);
+    const char *eq = skip_ws(k);
+    if (k == s || *eq != '=')
+        return fail(p, "not valid TOML: expected `key = \"value\"` or [[" SECTION "]]", NULL);
+    if (!r->in_entry) {
+        snprintf(what, sizeof what, "unknown key '%s'; an expectations file holds only [[" SECTION "]] entries", key);
+        return fail(p, "%s", what);
+    }
+    char **slot = strcmp(key, "id") == 0 ? &r->e.id : strcmp(key, "reason") == 0 ? &r->e.reason : NULL;
+    if (!slot) {
+        snprintf(what, sizeof what, "unknown key '%s' (an entry has `id` and `reason`)", key);
+        return fail(p, "%s", what);
+    }
+    if (*slot)
+        return fail(p, "not valid TOML: `%s` is given twice in one entry", key);
+    const char *after = NULL;
+    if (string_value(p, skip_ws(eq + 1), slot, &after) != 0)
+        return -1;
+    return line_end(p, after);
+}
+
+/* The whole file, NUL-terminated, into a malloc'd buffer; NULL when it cannot be read. */
+static char *read_all(FILE *f, size_t *len)
+{
+    size_t cap = 4096;
     char *text = malloc(cap);
-    for (size_t got; text && (got = fread(text + len, 1, cap - len - 1, f)) > 0;) {
-        len += got;
-        if (len + 1 == cap) {
+    *len = 0;
+    for (size_t got; text && (got = fread(text + *len, 1, cap - *len - 1, f)) > 0;) {
+        *len += got;
+        if (*len + 1 == cap) {
             char *grown = realloc(text, cap *= 2);
             if (!grown)
                 free(text);
             text = grown;
         }
     }
-    int read_error = ferror(f);
-    fclose(f);
-    if (!text || read_error) {
+    if (text && ferror(f)) {
         free(text);
-        snprintf(err, errlen, "%s: cannot read the expectations file", path);
-        return -1;
+        text = NULL;
     }
-    text[len] = '\0';
+    if (text)
+        text[*len] = '\0';
+    return text;
+}
+
+/* The text of a known-failures file, which must be UTF-8 without a NUL; NULL with err otherwise. */
+static char *file_text(parser *p)
+{
+    if (plcvec_file_check(p->path, p->err, p->errlen) != 0)
+        return NULL;        /* a named pipe, a folder, a loop of symbolic links: by name, unopened */
+    char why[256];
+    FILE *f = plcvec_file_open(p->path, why, sizeof why);
+    if (!f) {
+        snprintf(p->err, p->errlen, "%s: cannot read the expectations file: %s", p->path, why);
+        return NULL;
+    }
+    size_t len;
+    char *text = read_all(f, &len);
+    fclose(f);
+    if (!text) {
+        snprintf(p->err, p->errlen, "%s: cannot read the expectations file", p->path);
+        return NULL;
+    }
     size_t bad = 0;
     if (!utf8_ok((const unsigned char *)text, len, &bad) || strlen(text) != len) {
-        p.line = 1;
+        p->line = 1;
         for (size_t i = 0; i < len && i < bad; i++)
-            p.line += text[i] == '\n';
+            p->line += text[i] == '\n';
         free(text);
-        return fail(&p, "not UTF-8 text (a TOML file is UTF-8)", NULL);
+        fail(p, "not UTF-8 text (a TOML file is UTF-8)", NULL);
+        return NULL;
     }
+    return text;
+}
 
-    plcvec_known_failure *list = NULL;
-    size_t n = 0, cap_list = 0;
-    entry e = {NULL, NULL, 0};
-    int in_entry = 0, rc = 0;
+int plcvec_known_load(const char *path, plcvec_known_failure **out, size_t *n_out, char *err, size_t errlen)
+{
+    parser p = {path, 0, err, errlen};
+    *out = NULL;
+    *n_out = 0;
+    char *text = file_text(&p);
+    if (!text)
+        return -1;
+    reading r = {NULL, 0, 0, {NULL, NULL, 0}, 0};
+    int rc = 0;
     char *line = text;
     for (p.line = 1; line && rc == 0; p.line++) {
         char *nl = strchr(line, '\n');
@@ -266,76 +346,20 @@ int plcvec_known_load(const char *path, plcvec_known_failure **out, size_t *n_ou
         }
         const char *s = skip_ws(line);
         line = nl ? nl + 1 : NULL;
-        if (!*s || *s == '#')
-            continue;
-        if (*s == '[') {
-            const char *q = s[1] == '[' ? skip_ws(s + 2) : NULL;
-            size_t k = strlen(SECTION);
-            if (!q || strncmp(q, SECTION, k) != 0 || strncmp(skip_ws(q + k), "]]", 2) != 0) {
-                char name[80];
-                snprintf(name, sizeof name, "%.60s", s);
-                rc = fail(&p, "unknown table %s; an expectations file holds only [[" SECTION "]] entries", name);
-                break;
-            }
-            if ((rc = line_end(&p, skip_ws(q + k) + 2)) != 0)
-                break;
-            if (in_entry) {
-                int here = p.line;
-                if ((rc = finish(&p, &e, list, n)) != 0)
-                    break;
-                p.line = here;
-                if ((rc = keep(&p, &e, &list, &n, &cap_list)) != 0)
-                    break;
-            }
-            in_entry = 1;
-            e.line = p.line;
-            continue;
-        }
-        const char *k = s;
-        while ((*k >= 'a' && *k <= 'z') || (*k >= 'A' && *k <= 'Z') || (*k >= '0' && *k <= '9') || *k == '_' || *k == '-')
-            k++;
-        char key[64];
-        snprintf(key, sizeof key, "%.*s", (int)(k - s < 60 ? k - s : 60), s);
-        const char *eq = skip_ws(k);
-        if (k == s || *eq != '=') {
-            rc = fail(&p, "not valid TOML: expected `key = \"value\"` or [[" SECTION "]]", NULL);
-            break;
-        }
-        if (!in_entry) {
-            char what[200];
-            snprintf(what, sizeof what, "unknown key '%s'; an expectations file holds only [[" SECTION "]] entries", key);
-            rc = fail(&p, "%s", what);
-            break;
-        }
-        char **slot = strcmp(key, "id") == 0 ? &e.id : strcmp(key, "reason") == 0 ? &e.reason : NULL;
-        if (!slot) {
-            char what[120];
-            snprintf(what, sizeof what, "unknown key '%s' (an entry has `id` and `reason`)", key);
-            rc = fail(&p, "%s", what);
-            break;
-        }
-        if (*slot) {
-            rc = fail(&p, "not valid TOML: `%s` is given twice in one entry", key);
-            break;
-        }
-        const char *after = NULL;
-        if ((rc = string_value(&p, skip_ws(eq + 1), slot, &after)) != 0)
-            break;
-        rc = line_end(&p, after);
+        if (*s && *s != '#')
+            rc = *s == '[' ? header_line(&p, &r, s) : key_line(&p, &r, s);
     }
-    if (rc == 0 && in_entry) {
-        if ((rc = finish(&p, &e, list, n)) == 0)
-            rc = keep(&p, &e, &list, &n, &cap_list);
-    }
-    free(e.id);
-    free(e.reason);
+    if (rc == 0 && r.in_entry && (rc = finish(&p, &r.e, r.list, r.n)) == 0)
+        rc = keep(&p, &r.e, &r.list, &r.n, &r.cap);
+    free(r.e.id);
+    free(r.e.reason);
     free(text);
     if (rc) {
-        plcvec_known_free(list, n);
+        plcvec_known_free(r.list, r.n);
         return -1;
     }
-    *out = list;
-    *n_out = n;
+    *out = r.list;
+    *n_out = r.n;
     return 0;
 }
 

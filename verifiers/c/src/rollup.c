@@ -1,7 +1,8 @@
 /* The roll-up by reading (TEXT.md): built on the inference (infer.c), what a failing run's failures
  * and known failures would need to pass, in the words every plcvec runner prints. A reading is
  * proposed without the `partial` mark only when it explains every failure of the families it
- * touches: a bug that only part of a reading's vectors show is never explained away. */
+ * touches and breaks no pass there: a bug that only part of a reading's vectors show is never
+ * explained away. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -153,12 +154,11 @@ static uint32_t families_of(const group *grp)
     return families;
 }
 
-/* How many vectors `select` takes of `families`; the families they are of into *found. */
+/* How many vectors `select` takes of `families`; the families they are of added to *found. */
 static size_t count_of(const plcvec_judged *judged, size_t n, const plcvec_inference *inf, selector select,
                        uint32_t families, uint32_t *found)
 {
     size_t count = 0;
-    *found = 0;
     for (size_t r = 0; r < n; r++)
         if ((families >> judged[r].v->family & 1) && select(inf, &judged[r]))
             count++, *found |= UINT32_C(1) << judged[r].v->family;
@@ -181,19 +181,21 @@ static void print_families(FILE *log, uint32_t families)
         fprintf(log, "%s%s", k ? ", " : "", plcvec_family_names[list[k]]);
 }
 
-/* One line per group of explained vectors, marked partial when a vector `others` takes, of a
- * family some vector of the group is of, stays unexplained. */
+/* One line per group of explained vectors, marked partial when, in a family some vector of the
+ * group is of, a vector `others` takes stays unexplained or a vector that passes now would fail:
+ * the reading does not account for everything the implementation does there. */
 static void change_lines(FILE *log, const groups *g, const plcvec_judged *judged, size_t n, const plcvec_inference *inf,
-                         selector others, const char *what)
+                         selector others)
 {
     for (size_t i = 0; i < g->n; i++) {
         fprintf(log, "    %6zu  %s", g->items[i].n, g->items[i].key);
-        uint32_t near;
-        size_t u = count_of(judged, n, inf, others, families_of(&g->items[i]), &near);
-        if (u) {
-            fprintf(log, " (partial: %zu %s of ", u, what);
+        uint32_t families = families_of(&g->items[i]), near = 0;
+        size_t u = count_of(judged, n, inf, others, families, &near);
+        size_t w = count_of(judged, n, inf, plcvec_broken, families, &near);
+        if (u || w) {
+            fprintf(log, " (partial: %zu not explained, %zu would fail, in ", u, w);
             print_families(log, near);
-            fprintf(log, " not explained)");
+            fprintf(log, ")");
         }
         fprintf(log, "\n");
     }
@@ -204,49 +206,60 @@ static int by_interpretation_id(const void *a, const void *b)
     return strcmp(plcvec_interpretations[*(const int *)a].id, plcvec_interpretations[*(const int *)b].id);
 }
 
-/* `declare:` the inferred alternative of each interpretation of `which` (bit i), sorted by id, as
- * the runner in use declares it (TEXT.md, "The declaration in each runner"). */
-static void declare_line(FILE *log, uint64_t which, const uint8_t *choice)
+size_t plcvec_declaration_text(char *buf, size_t size, uint64_t which, const uint8_t *choice)
 {
     int list[PLCVEC_INTERPRETATION_COUNT], n = 0;
     for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
         if (which >> i & 1)
             list[n++] = i;
     qsort(list, (size_t)n, sizeof *list, by_interpretation_id);
-    fprintf(log, "    declare:");
+    size_t len = 0;
+    if (size)
+        buf[0] = '\0';
     for (int k = 0; k < n; k++) {
         int i = list[k];
+        size_t room = len < size ? size - len : 0;
         if (declaration_form == PLCVEC_DECLARE_CHOOSE)
-            fprintf(log, " --choose %s=%s", plcvec_interpretations[i].id, plcvec_interpretations[i].alternatives[choice[i]]);
+            len += (size_t)snprintf(room ? buf + len : NULL, room, "%s--choose %s=%s", k ? " " : "",
+                                    plcvec_interpretations[i].id, plcvec_interpretations[i].alternatives[choice[i]]);
         else
-            fprintf(log, "%s {%s, %s}", k ? "," : "", plcvec_declarations[i].interpretation,
-                    plcvec_declarations[i].alternatives[choice[i]]);
+            len += (size_t)snprintf(room ? buf + len : NULL, room, "%s{%s, %s}", k ? ", " : "",
+                                    plcvec_declarations[i].interpretation, plcvec_declarations[i].alternatives[choice[i]]);
     }
-    fprintf(log, "\n");
+    return len;
+}
+
+/* `declare:` the inferred alternative of each interpretation of `which` (bit i). */
+static void declare_line(FILE *log, uint64_t which, const uint8_t *choice)
+{
+    char text[4096];
+    plcvec_declaration_text(text, sizeof text, which, choice);
+    fprintf(log, "    declare: %s\n", text);
 }
 
 /* READINGS: the failing vectors another alternative explains, the declaration, what it would
- * break, and how many failures of the same families no reading explains. */
+ * break, and how many vectors of the same families no reading explains or the declaration breaks. */
 static int readings_part(FILE *log, plcvec_judged *judged, size_t n, const plcvec_inference *inf, size_t failing)
 {
     groups g;
     int rc = group_by(&g, judged, n, inf, explained_failing, change_key);
     if (rc == 0 && g.n) {
         fprintf(log, "READINGS: %zu of %zu failing vectors pass under other alternatives:\n", total(&g), failing);
-        change_lines(log, &g, judged, n, inf, unexplained_failing, "failing vectors");
+        change_lines(log, &g, judged, n, inf, unexplained_failing);
         uint64_t changed = 0;
         for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
             changed |= (uint64_t)(inf->choice[i] != inf->followed[i]) << i;
         declare_line(log, changed, inf->choice);
         if (inf->broken)
             fprintf(log, "    (so declared, %zu vectors that pass now would fail)\n", inf->broken);
-        uint32_t families = 0, near;
+        uint32_t families = 0, near = 0;
         for (size_t i = 0; i < g.n; i++)
             families |= families_of(&g.items[i]);
         size_t p = count_of(judged, n, inf, unexplained_failing, families, &near);
-        if (p)
-            fprintf(log, "    partial: %zu failing vectors that no reading explains are of the same families; a "
-                         "declaration may hide part of a bug there\n", p);
+        size_t q = count_of(judged, n, inf, plcvec_broken, families, &near);
+        if (p || q)
+            fprintf(log, "    partial: %zu vectors no reading explains and %zu vectors that pass now are of the same "
+                         "families; the declaration may hide part of a bug there\n", p, q);
     }
     groups_free(&g);
     return rc;
@@ -322,7 +335,7 @@ static int known_part(FILE *log, plcvec_judged *judged, size_t n, const plcvec_i
                 changed |= UINT64_C(1) << change[q - 1];
         }
         fprintf(log, "KNOWN FAILURES: %zu of %zu known failures pass under other alternatives:\n", total(&g), all);
-        change_lines(log, &g, judged, n, inf, unexplained_failing_or_known, "failing vectors and known failures");
+        change_lines(log, &g, judged, n, inf, unexplained_failing_or_known);
         declare_line(log, changed, inf->choice);
         fprintf(log, "    then remove those %zu known failures from ", total(&g));
         print_known_files(log, &g, known, n_known);

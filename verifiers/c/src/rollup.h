@@ -11,6 +11,10 @@
  * cases' expected text, and the text compared with plcvec verify's). */
 typedef enum plcvec_declaration_form { PLCVEC_DECLARE_C, PLCVEC_DECLARE_CHOOSE } plcvec_declaration_form;
 void plcvec_rollup_declaration_form(plcvec_declaration_form form);
+/* The declaration of the alternatives choice[i] of the interpretations of `which` (bit i), sorted
+ * by id, in the form in use (TEXT.md, "The declaration in each runner"). Returns the length it
+ * needed (truncated to size). */
+size_t plcvec_declaration_text(char *buf, size_t size, uint64_t which, const uint8_t *choice);
 
 /* The roll-up of a run's vectors: READINGS (failing vectors another alternative explains, grouped
  * by their smallest change, each group marked partial where failures of its families stay

@@ -41,13 +41,12 @@ void plcvec_report_free(plcvec_report *r)
     free(r);
 }
 
-/* What the inference may judge of a verdict: the answer passed (a stale known failure passed too),
- * failed (a known failure with differing fields failed), or none to judge. */
+/* What the inference judges of a verdict (TEXT.md, "The inference", step 2): a pass, a fail (a
+ * known failure with differing fields failed), or nothing (an error, a skip, a stale entry). */
 static uint8_t answer_of(const plcvec_verdict *vd)
 {
     switch (vd->status) {
-    case PLCVEC_PASS:
-    case PLCVEC_STALE: return PLCVEC_ANSWER_PASSED;
+    case PLCVEC_PASS: return PLCVEC_ANSWER_PASSED;
     case PLCVEC_FAIL: return PLCVEC_ANSWER_FAILED;
     case PLCVEC_XFAIL: return vd->n_problems ? PLCVEC_ANSWER_FAILED : PLCVEC_ANSWER_NONE;
     default: return PLCVEC_ANSWER_NONE;

@@ -5,7 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "table.h"
+#include "suite.h"
 
 size_t plcvec_count(void)
 {
@@ -48,16 +48,15 @@ const plcvec_vector *plcvec_find(const char *id)
     return NULL;
 }
 
-/* The manifest's `merged` map is sorted by the old id; a chain (an id merged into one merged
- * again) is followed to its end, and a cycle, which the generator never writes, ends the walk. */
-static const char *merged_once(const char *id)
+/* The id `id` became in a `merged` map sorted by the old id, or NULL. */
+static const char *merged_once(const plcvec_merged_id *table, size_t n, const char *id)
 {
-    size_t lo = 0, hi = plcvec_n_merged_ids;
+    size_t lo = 0, hi = n;
     while (lo < hi) {
         size_t mid = lo + (hi - lo) / 2;
-        int c = strcmp(plcvec_merged_ids[mid].id, id);
+        int c = strcmp(table[mid].id, id);
         if (c == 0)
-            return plcvec_merged_ids[mid].into;
+            return table[mid].into;
         if (c < 0)
             lo = mid + 1;
         else
@@ -66,16 +65,23 @@ static const char *merged_once(const char *id)
     return NULL;
 }
 
-const char *plcvec_merged_into(const char *id)
+const char *plcvec_merged_follow(const plcvec_merged_id *table, size_t n, const char *id)
 {
-    const char *into = merged_once(id);
-    for (size_t hops = 0; into && hops < plcvec_n_merged_ids; hops++) {
-        const char *next = merged_once(into);
+    /* A chain (an id merged into one merged again) is followed to its end; a cycle, which the
+     * generator never writes, ends the walk after as many steps as the map has entries. */
+    const char *into = merged_once(table, n, id);
+    for (size_t hops = 0; into && hops < n; hops++) {
+        const char *next = merged_once(table, n, into);
         if (!next)
             break;
         into = next;
     }
     return into;
+}
+
+const char *plcvec_merged_into(const char *id)
+{
+    return plcvec_merged_follow(plcvec_merged_ids, plcvec_n_merged_ids, id);
 }
 
 const char *plcvec_clause(const plcvec_vector *v, size_t i)

@@ -12,15 +12,20 @@
 //
 // vectors() selects as plcvec_main does, from the PLCVEC_* variables. check() judges one vector:
 // a failure is a test failure with the field-level text, a skip is a skipped test, a vector listed
-// in PLCVEC_KNOWN_FAILURES that fails is skipped as a known failure and one that passes fails as
-// stale; PLCVEC_WRITE_EXPECTATIONS writes the run's failures as a known-failures file. run_all_tests() is RUN_ALL_TESTS() followed by the checks GoogleTest does not make: exit 5
-// when no vector was judged (a --gtest_filter that matches nothing, an empty selection) or none
-// passed (an implementation that skips everything), 1 when a listed known failure names no vector.
+// in PLCVEC_KNOWN_FAILURES (or its old name, PLCVEC_EXPECTATIONS) that fails is skipped as a known
+// failure and one that passes fails as stale; PLCVEC_WRITE_EXPECTATIONS writes the run's failures
+// as a known-failures file. run_all_tests() is RUN_ALL_TESTS() followed by what GoogleTest does not
+// print or check: the end of the run in the words of every plcvec runner (the roll-up by reading,
+// with the known failures another reading explains; the skips by reason; the summary), exit 5 when
+// no vector was judged (a --gtest_filter that matches nothing, an empty selection) or none passed
+// (an implementation that skips everything, a list of known failures alone), 1 on a failure or a
+// stale known failure.
 #ifndef PLCVEC_GTEST_HPP
 #define PLCVEC_GTEST_HPP
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -33,10 +38,12 @@ namespace plcvec::gtest {
 
 namespace detail {
 struct Run {
-    size_t judged = 0, passed = 0, skipped = 0, known = 0;
+    size_t judged = 0;
+    plcvec_report *report = nullptr;        // every verdict, for the end of the run
     std::vector<const char *> failing;      // for PLCVEC_WRITE_EXPECTATIONS: failures and known failures
     std::vector<plcvec_known_failure> known_failures;
     bool known_loaded = false;
+    std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
 };
 inline Run &run() {
     static Run r;
@@ -53,7 +60,7 @@ inline const std::vector<plcvec_known_failure> &known_failures() {
     Run &r = run();
     if (!r.known_loaded) {
         r.known_loaded = true;
-        if (const char *path = std::getenv("PLCVEC_KNOWN_FAILURES")) {
+        if (const char *path = plcvec_setting("PLCVEC_KNOWN_FAILURES")) {
             plcvec_known_failure *list = nullptr;
             size_t n = 0;
             char err[1024];
@@ -102,15 +109,16 @@ inline void check(plcvec_judge *judge, const plcvec_vector *v) {
     plcvec_apply_known(&vd, known.data(), known.size());
     detail::Run &r = detail::run();
     r.judged++;
+    if (!r.report)
+        r.report = plcvec_report_new(judge);
+    if (!r.report || plcvec_report_add(r.report, &vd) != 0)
+        detail::usage_error("out of memory");
     switch (vd.status) {
     case PLCVEC_PASS:
-        r.passed++;
         return;
     case PLCVEC_SKIP:
-        r.skipped++;
         GTEST_SKIP() << v->id << ": " << vd.message;
     case PLCVEC_XFAIL:
-        r.known++;
         r.failing.push_back(v->id);
         GTEST_SKIP() << v->id << ": " << vd.message;
     default:
@@ -120,12 +128,14 @@ inline void check(plcvec_judge *judge, const plcvec_vector *v) {
     }
 }
 
-// RUN_ALL_TESTS(), then what makes a run of nothing a failure. Use it as main's return value.
+// RUN_ALL_TESTS(), then the end of the run and what makes a run of nothing a failure. Use it as
+// main's return value.
 inline int run_all_tests() {
     int rc = RUN_ALL_TESTS();
     detail::Run &r = detail::run();
+    const auto &known = detail::known_failures();
     // PLCVEC_WRITE_EXPECTATIONS: this run's failures as a known-failures file, as plcvec verify writes it.
-    if (const char *path = std::getenv("PLCVEC_WRITE_EXPECTATIONS")) {
+    if (const char *path = plcvec_setting("PLCVEC_WRITE_EXPECTATIONS")) {
         char err[1024];
         if (plcvec_known_write(path, r.failing.data(), r.failing.size(), "not yet triaged", err, sizeof err) != 0) {
             std::printf("plcvec: %s\n", err);
@@ -133,38 +143,23 @@ inline int run_all_tests() {
         }
         std::printf("plcvec: %zu known failures written to %s\n", r.failing.size(), path);
     }
-    int stale = 0;
-    for (const plcvec_known_failure &k : detail::known_failures())
-        if (!plcvec_find(k.id)) {
-            std::printf("STALE %s\n    listed as a known failure (%s) but the suite has no such vector; remove it\n", k.id,
-                        k.reason);
-            stale++;
-        }
-    size_t failed = r.judged - r.passed - r.skipped - r.known;
-    std::printf("%zu vectors: %zu pass, %zu fail, %zu skip", r.judged + stale, r.passed, failed, r.skipped);
-    if (r.known)
-        std::printf(", %zu xfail", r.known);
-    if (stale)
-        std::printf(", %d stale", stale);
-    std::printf("\n");
-    if (stale)
-        return PLCVEC_EXIT_FAILED;
     // No vector judged: GoogleTest may fail the run itself (a parameterized suite with no values),
     // which is the same fact; either way nothing was tested.
     if (r.judged == 0) {
+        int stale = 0;
+        for (const plcvec_known_failure &k : known)
+            stale += !plcvec_find(k.id);
         std::printf("NOT PASSED (exit 5): no vector selected: the test filter or the selection matched none (an empty "
                     "run never passes). Select vectors with PLCVEC_ID (an id or glob, comma-separated) rather than "
                     "--gtest_filter, whose names are not the ids\n");
-        return PLCVEC_EXIT_NOTHING_TESTED;
+        return stale ? PLCVEC_EXIT_FAILED : PLCVEC_EXIT_NOTHING_TESTED;
     }
-    if (rc != 0)
-        return PLCVEC_EXIT_FAILED;
-    if (r.passed == 0) {
-        std::printf("NOT PASSED (exit 5): nothing passed (%zu skipped, %zu known failures): the run proves nothing\n",
-                    r.skipped, r.known);
-        return PLCVEC_EXIT_NOTHING_TESTED;
-    }
-    return PLCVEC_EXIT_PASSED;
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.started).count();
+    int end = plcvec_report_end(r.report, stdout, known.data(), known.size(), seconds);
+    plcvec_report_free(r.report);
+    r.report = nullptr;
+    // A test of the program's own that failed fails the run too.
+    return rc != 0 && end != PLCVEC_EXIT_USAGE ? PLCVEC_EXIT_FAILED : end;
 }
 
 }  // namespace plcvec::gtest
