@@ -125,7 +125,8 @@ static void warn(void)
         memcpy(names[k], *e, len);
         names[k++][len] = '\0';
     }
-    qsort(names, k, sizeof *names, by_name);
+    if (k > 1)
+        qsort(names, k, sizeof *names, by_name);
     for (size_t i = 0; i < k; i++) {
         if (!is_known(names[i]))
             warn_about(names[i]);

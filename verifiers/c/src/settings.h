@@ -1,6 +1,6 @@
 /* The PLCVEC_* settings (CONTRACT.md, "The environment"): read under their old names too, each
  * PLCVEC_* variable that is no setting named once per process, and PLCVEC_TIMEOUT's one rule. The
- * tables are generated (src/generated/settings.c) from plcvec_verify/settings.py. */
+ * tables are generated (src/generated/setting_names.c) from plcvec_verify/settings.py. */
 #ifndef PLCVEC_SETTINGS_H
 #define PLCVEC_SETTINGS_H
 

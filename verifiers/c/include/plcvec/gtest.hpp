@@ -42,8 +42,14 @@ struct Run {
     plcvec_report *report = nullptr;        // every verdict, for the end of the run
     std::vector<const char *> failing;      // for PLCVEC_WRITE_EXPECTATIONS: failures and known failures
     std::vector<plcvec_known_failure> known_failures;
+    plcvec_known_failure *loaded = nullptr;  // the file's entries, which known_failures points into
+    size_t n_loaded = 0;
     bool known_loaded = false;
     std::chrono::steady_clock::time_point started = std::chrono::steady_clock::now();
+    ~Run() {
+        plcvec_report_free(report);
+        plcvec_known_free(loaded, n_loaded);
+    }
 };
 inline Run &run() {
     static Run r;
@@ -61,12 +67,10 @@ inline const std::vector<plcvec_known_failure> &known_failures() {
     if (!r.known_loaded) {
         r.known_loaded = true;
         if (const char *path = plcvec_setting("PLCVEC_KNOWN_FAILURES")) {
-            plcvec_known_failure *list = nullptr;
-            size_t n = 0;
             char err[1024];
-            if (plcvec_known_load(path, &list, &n, err, sizeof err) != 0)
+            if (plcvec_known_load(path, &r.loaded, &r.n_loaded, err, sizeof err) != 0)
                 usage_error(err);
-            r.known_failures.assign(list, list + n);    // kept for the whole program
+            r.known_failures.assign(r.loaded, r.loaded + r.n_loaded);   // freed with the run, at exit
         }
     }
     return r.known_failures;
@@ -156,8 +160,6 @@ inline int run_all_tests() {
     }
     double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - r.started).count();
     int end = plcvec_report_end(r.report, stdout, known.data(), known.size(), seconds);
-    plcvec_report_free(r.report);
-    r.report = nullptr;
     // A test of the program's own that failed fails the run too.
     return rc != 0 && end != PLCVEC_EXIT_USAGE ? PLCVEC_EXIT_FAILED : end;
 }

@@ -4,7 +4,7 @@
 set(PLCVEC_SUITE_VERSION "0.2.0")
 set(PLCVEC_GENERATED_SOURCES
     src/generated/names.c
-    src/generated/settings.c
+    src/generated/setting_names.c
     src/generated/cp1e-time-compare.c
     src/generated/fc6a-hour-meter.c
     src/generated/fx5-date-compare.c
