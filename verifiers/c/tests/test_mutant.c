@@ -2,11 +2,13 @@
  * vector of each family its bug is in fails. Prints the first vectors that catch it.
  * `test_mutant --list` prints the mutants' names (checked against the tests CMake registers);
  * `test_mutant NAME --run` runs the whole suite through plcvec_run, whose text CI compares with
- * plcvec verify's over the stdio adapter serving the same mutant. */
+ * plcvec verify's over the stdio adapter serving the same mutant (so its declarations are written
+ * as plcvec verify takes them, --choose ID=ALT; test_rollup checks the C form). */
 #include <stdio.h>
 #include <string.h>
 
 #include "reference.h"
+#include "rollup.h"
 
 int main(int argc, char **argv)
 {
@@ -25,8 +27,10 @@ int main(int argc, char **argv)
     plcvec_reference_init(&ref);
     mutant->apply(&ref);
     plcvec_impl impl = plcvec_reference_impl(&ref);
-    if (whole_run)
+    if (whole_run) {
+        plcvec_rollup_declaration_form(PLCVEC_DECLARE_CHOOSE);
         return plcvec_run(&impl, NULL, NULL);
+    }
     char err[256];
     plcvec_judge *j = plcvec_judge_new(&impl, err, sizeof err);
     if (!j)
