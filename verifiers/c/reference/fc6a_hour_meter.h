@@ -11,10 +11,13 @@ typedef struct fc6a_hour_meter_rules {
     int fraction_offset;                            /* where the fraction lives: 0 = its own work area */
 } fc6a_hour_meter_rules;
 
+/* What the instruction keeps from one execution to the next (all 0 at power on). */
 typedef struct fc6a_hour_meter_state {
     long fraction_ms;
-    int wrapped;
-    int input_was_on;
+    int wrapped;                /* recompared: D2 stays on across a wrap */
+    int input_was_on;           /* the input before the first scan counts as off */
+    int executed;               /* an execution since the CPU started */
+    int last_check_invalid;     /* the last check of S1 found it invalid (none yet: valid) */
 } fc6a_hour_meter_state;
 
 extern const fc6a_hour_meter_rules fc6a_hour_meter_reference_rules;

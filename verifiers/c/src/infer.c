@@ -1,7 +1,8 @@
 /* The inference (TEXT.md, "The inference"): starting from the alternatives followed, each
  * interpretation in id order takes, of its alternatives in the order the vector files list them,
  * the first that lets strictly the most judged vectors pass, every other interpretation as it
- * stands, until a round changes nothing. A vector passes under a combination when its answer has no
+ * stands, until a round changes nothing; first among the alternatives that judge every device,
+ * then among all. A vector passes under a combination when its answer has no
  * problem against the expectation offered for it (a failed answer), or when that expectation
  * judges alike what the followed one judges (an answer that passed). */
 #include <stdlib.h>
@@ -74,15 +75,36 @@ static size_t score(const plcvec_judged *judged, size_t n, const uint8_t *combo,
     return total;
 }
 
-/* One round over the interpretations in id order; whether it changed the choice. */
-static int round_of_choices(const plcvec_judged *judged, size_t n, const int *order, int n_order, uint8_t *choice)
+/* The alternatives (bit a of [i]) some vector of the suite leaves devices unjudged under: an entry
+ * of its `alternatives` whose unjudged map names i, and whose choice for i is a. Worked out once. */
+static const uint32_t *unjudging(void)
+{
+    static uint32_t leaves[PLCVEC_INTERPRETATION_COUNT];
+    static int done;
+    for (size_t k = 0; !done && k < plcvec_count(); k++) {
+        const plcvec_vector *v = plcvec_at(k);
+        for (size_t a = 0; a < v->n_alternatives; a++)
+            for (size_t u = 0; u < v->alternatives[a].n_unjudged; u++) {
+                int i = v->alternatives[a].unjudged[u].interpretation, alt = plcvec_expect_offered(&v->alternatives[a], i);
+                if (alt >= 0 && alt < 32)
+                    leaves[i] |= UINT32_C(1) << alt;
+            }
+    }
+    done = 1;
+    return leaves;
+}
+
+/* One round over the interpretations in id order, each taking only alternatives of `allowed[i]`
+ * (bit a); whether it changed the choice. */
+static int round_of_choices(const plcvec_judged *judged, size_t n, const int *order, int n_order, uint8_t *choice,
+                            const uint32_t *allowed)
 {
     int changed = 0;
     for (int k = 0; k < n_order; k++) {
         int i = order[k], keep = choice[i], best_alt = -1;
         size_t current = score(judged, n, choice, i), best = 0;
         for (int a = 0; a < plcvec_interpretations[i].n_alternatives; a++) {
-            if (a == keep)
+            if (a == keep || !(allowed[i] >> a & 1))
                 continue;
             choice[i] = (uint8_t)a;
             size_t sc = score(judged, n, choice, i);
@@ -121,7 +143,16 @@ int plcvec_infer(plcvec_judged *judged, size_t n, const uint8_t *followed, plcve
     qsort(order, (size_t)n_order, sizeof *order, by_interpretation_id);
     memcpy(inf->followed, followed, sizeof inf->followed);
     memcpy(inf->choice, followed, sizeof inf->choice);
-    while (round_of_choices(judged, n, order, n_order, inf->choice))
+    /* Twice (TEXT.md, step 4): first without the alternatives that leave devices unjudged, which
+     * explain any answer there and so would take another reading's failures; then, from where the
+     * first ended, with every alternative. */
+    uint32_t judging[PLCVEC_INTERPRETATION_COUNT], every[PLCVEC_INTERPRETATION_COUNT];
+    const uint32_t *leaves = unjudging();
+    for (int i = 0; i < PLCVEC_INTERPRETATION_COUNT; i++)
+        every[i] = UINT32_MAX, judging[i] = ~leaves[i];
+    while (round_of_choices(judged, n, order, n_order, inf->choice, judging))
+        ;
+    while (round_of_choices(judged, n, order, n_order, inf->choice, every))
         ;
     inf->broken = 0;
     for (size_t r = 0; r < n; r++)

@@ -49,18 +49,12 @@ static void test_declaration_is_texts(const char *text_md)
     plcvec_rollup_declaration_form(PLCVEC_DECLARE_C);
 }
 
-/* The run's text of one mutant, in C's own declaration syntax. */
-static char *run_text(const plcvec_mutant *mutant)
+/* The run's text of impl over `opt` (its log set here), malloc'd; its status must be `rc`. */
+static char *run_text_of(const plcvec_impl *impl, plcvec_options *opt, int rc)
 {
-    static plcvec_reference ref;
-    plcvec_reference_init(&ref);
-    mutant->apply(&ref);
-    plcvec_impl impl = plcvec_reference_impl(&ref);
     FILE *log = tmpfile();
-    plcvec_options opt = {0};
-    opt.log = log;
-    int rc = plcvec_run(&impl, &opt, NULL);
-    CHECK(rc == PLCVEC_EXIT_FAILED);
+    opt->log = log;
+    CHECK(plcvec_run(impl, opt, NULL) == rc);
     long size = ftell(log);
     char *text = malloc((size_t)size + 1);
     rewind(log);
@@ -69,6 +63,17 @@ static char *run_text(const plcvec_mutant *mutant)
         text[got] = '\0';
     fclose(log);
     return text;
+}
+
+/* The run's text of one mutant, in C's own declaration syntax. */
+static char *run_text(const plcvec_mutant *mutant)
+{
+    static plcvec_reference ref;
+    plcvec_reference_init(&ref);
+    mutant->apply(&ref);
+    plcvec_impl impl = plcvec_reference_impl(&ref);
+    plcvec_options opt = {0};
+    return run_text_of(&impl, &opt, PLCVEC_EXIT_FAILED);
 }
 
 /* Every proposal of the roll-up (a line under READINGS or KNOWN FAILURES) is marked partial. */
@@ -104,6 +109,33 @@ static void test_no_mutant_is_a_reading(void)
     }
 }
 
+/* An implementation that follows HOUR-FIRST-SCAN=after-cpu-start undeclared: its failures pass under
+ * that reading, and also under the readings that leave D1, D2 and M8004 unjudged (whose ids come
+ * first). The search takes first the readings that judge every device, so after-cpu-start alone is
+ * proposed, explaining everything (TEXT.md, "The inference", step 4). */
+static void test_a_reading_that_judges_comes_first(void)
+{
+    static plcvec_reference ref;
+    plcvec_reference_init(&ref);
+    CHECK(plcvec_reference_choose(&ref, "HOUR-FIRST-SCAN", "after-cpu-start") == 0);
+    plcvec_impl impl = plcvec_reference_impl(&ref);
+    impl.choices = NULL, impl.n_choices = 0;
+    const char *family[] = {"fc6a-hour-meter"};
+    plcvec_options opt = {0};
+    opt.selection.families = family, opt.selection.n_families = 1;
+    char *text = run_text_of(&impl, &opt, PLCVEC_EXIT_FAILED);
+    const char *readings = text ? strstr(text, "READINGS: ") : NULL;
+    CHECK(readings != NULL && !strstr(text, "NOT EXPLAINED"));
+    if (readings) {
+        char failing[32];
+        int e = 0, f = 0;
+        CHECK(sscanf(readings, "READINGS: %d of %d %31s", &e, &f, failing) == 3 && e == f && e > 0);
+        CHECK_HAS(readings, "  HOUR-FIRST-SCAN=after-cpu-start\n"
+                            "    declare: {PLCVEC_INTERP_HOUR_FIRST_SCAN, PLCVEC_HOUR_FIRST_SCAN_AFTER_CPU_START}\n\n");
+    }
+    free(text);
+}
+
 int main(int argc, char **argv)
 {
     if (argc != 2) {
@@ -112,6 +144,7 @@ int main(int argc, char **argv)
     }
     test_declaration_is_texts(argv[1]);
     test_no_mutant_is_a_reading();
+    test_a_reading_that_judges_comes_first();
     printf("test_rollup: %d failures\n", failures);
     return failures ? 1 : 0;
 }
