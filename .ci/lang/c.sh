@@ -157,9 +157,10 @@ for v in Selection(shard=(2, 3)).apply(Suite.load("vectors").vectors): print(v["
 start=$SECONDS
 python3 -m plcvec verify -q --adapter "verifiers/c/reference-adapter --choose FX5-SM709-SCOPE=compared-operands \
     --choose CP1E-ALL-MASKED=not-compared --choose TADD-FLAGS-OFF=set-only --choose HOUR-INPUT-OFF=reset \
-    --choose CP1E-ERROR-FLAGS=off --choose HOUR-FIRST-SCAN=from-next-scan --choose FX5-OR-ON-ERROR=result-off \
+    --choose CP1E-ERROR-FLAGS=off --choose HOUR-FIRST-SCAN=after-cpu-start --choose FX5-OR-ON-ERROR=result-off \
     --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset \
-    --choose HOUR-D1-OUT-OF-RANGE=error" >/dev/null
+    --choose HOUR-D1-OUT-OF-RANGE=by-field --choose HOUR-WRAP-REACH=before-wrap --choose HOUR-M8004-REPEAT=once \
+    --choose HOUR-D2-SPECIAL=undefined --choose HOUR-S1-CONSTANT-RANGE=low-16-bits" >/dev/null
 gate_rejects c "verifiers/c/reference-adapter --mutant cp1e-and-as-or" >/dev/null
 # The whole run's text (the failure blocks, the roll-up by reading, the skips, the summary) is
 # plcvec verify's: each mutant judged in process by the C library, and served to plcvec verify by
