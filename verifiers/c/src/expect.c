@@ -55,24 +55,6 @@ int plcvec_expect_unjudged(const plcvec_alternative *entry, int device)
     return 0;
 }
 
-int plcvec_expect_scratch(const plcvec_vector *v, int device)
-{
-    for (size_t i = 0; i < v->n_scratch; i++)
-        if (v->scratch[i] == device)
-            return 1;
-    return 0;
-}
-
-void plcvec_state_put(plcvec_cell *state, size_t *n, const plcvec_cell *c)
-{
-    for (size_t i = 0; i < *n; i++)
-        if (state[i].device == c->device) {
-            state[i] = *c;
-            return;
-        }
-    state[(*n)++] = *c;
-}
-
 const plcvec_cell *plcvec_state_cell(const plcvec_cell *state, size_t n, int device)
 {
     for (size_t i = 0; i < n; i++)
@@ -97,10 +79,19 @@ static void put_all(const plcvec_vector *v, plcvec_cell *state, size_t *n, const
             plcvec_state_put(state, n, &list[i]);
 }
 
-size_t plcvec_expect_before(const plcvec_vector *v, const plcvec_alternative *entry, size_t k, plcvec_cell *state)
+/* The initial devices, scratch left out: each listed once, so appended without a search. */
+static size_t initial_state(const plcvec_vector *v, plcvec_cell *state)
 {
     size_t n = 0;
-    put_all(v, state, &n, v->devices, v->n_devices);
+    for (size_t i = 0; i < v->n_devices; i++)
+        if (!v->n_scratch || !plcvec_expect_scratch(v, v->devices[i].device))
+            state[n++] = v->devices[i];
+    return n;
+}
+
+size_t plcvec_expect_before(const plcvec_vector *v, const plcvec_alternative *entry, size_t k, plcvec_cell *state)
+{
+    size_t n = initial_state(v, state);
     for (size_t s = 0; s <= k && s < v->n_steps; s++) {
         put_all(v, state, &n, v->steps[s].set, v->steps[s].n_set);
         if (s < k) {
@@ -158,10 +149,8 @@ int plcvec_expect_same(const plcvec_vector *v, const plcvec_alternative *entry, 
     plcvec_cell *x = malloc(2 * cap * sizeof *x), *y = x ? x + cap : NULL;
     if (!x)
         return -1;
-    size_t nx = 0, ny = 0;
+    size_t nx = initial_state(v, x), ny = initial_state(v, y);
     int same = 1;
-    put_all(v, x, &nx, v->devices, v->n_devices);
-    put_all(v, y, &ny, v->devices, v->n_devices);
     for (size_t s = 0; s < v->n_steps && same; s++) {
         const plcvec_expect *ex = plcvec_expect_step(v, entry, s), *ey = plcvec_expect_step(v, followed, s);
         put_all(v, x, &nx, v->steps[s].set, v->steps[s].n_set);

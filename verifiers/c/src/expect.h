@@ -17,10 +17,27 @@ const plcvec_expect *plcvec_expect_step(const plcvec_vector *v, const plcvec_alt
 int plcvec_expect_offered(const plcvec_alternative *entry, int interp);
 /* 1 when `entry` leaves `device` unjudged (schema 1.1's unjudged map). */
 int plcvec_expect_unjudged(const plcvec_alternative *entry, int device);
-int plcvec_expect_scratch(const plcvec_vector *v, int device);
+
+/* Inline: they run for every device of every vector judged. */
+static inline int plcvec_expect_scratch(const plcvec_vector *v, int device)
+{
+    for (size_t i = 0; i < v->n_scratch; i++)
+        if (v->scratch[i] == device)
+            return 1;
+    return 0;
+}
 
 /* A state: devices and their values, each device once. */
-void plcvec_state_put(plcvec_cell *state, size_t *n, const plcvec_cell *c);
+static inline void plcvec_state_put(plcvec_cell *state, size_t *n, const plcvec_cell *c)
+{
+    for (size_t i = 0; i < *n; i++)
+        if (state[i].device == c->device) {
+            state[i] = *c;
+            return;
+        }
+    state[(*n)++] = *c;
+}
+
 const plcvec_cell *plcvec_state_cell(const plcvec_cell *state, size_t n, int device);
 /* The most cells a state of v under `entry` can hold. */
 size_t plcvec_expect_capacity(const plcvec_vector *v, const plcvec_alternative *entry);

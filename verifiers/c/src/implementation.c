@@ -10,10 +10,8 @@
 const char plcvec_out_overflow_message[] =
     "a device reported before plcvec_out_step(), an unknown device id, or out of memory";
 
-int plcvec_grow(void **p, size_t *cap, size_t need, size_t size)
+int plcvec_grow_to(void **p, size_t *cap, size_t need, size_t size)
 {
-    if (need <= *cap)
-        return 1;
     size_t n = *cap ? *cap * 2 : 64;
     while (n < need)
         n *= 2;

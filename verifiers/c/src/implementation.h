@@ -23,8 +23,13 @@ extern const char plcvec_out_overflow_message[];
 
 /* The cells reported after step s: [*lo, *hi). */
 void plcvec_out_span(const plcvec_out *out, size_t s, size_t *lo, size_t *hi);
-/* Grow *p (of *cap items of `size` bytes) to hold `need`; 0 when out of memory. */
-int plcvec_grow(void **p, size_t *cap, size_t need, size_t size);
+/* Grow *p (of *cap items of `size` bytes) to hold `need`; 0 when out of memory. Inline: the room
+ * is there but for the first vectors, and every device reported asks. */
+int plcvec_grow_to(void **p, size_t *cap, size_t need, size_t size);
+static inline int plcvec_grow(void **p, size_t *cap, size_t need, size_t size)
+{
+    return need <= *cap || plcvec_grow_to(p, cap, need, size);
+}
 /* Free what a plcvec_out owns, leaving it empty (for one embedded in another struct). */
 void plcvec_out_release(plcvec_out *out);
 

@@ -110,8 +110,11 @@ static const plcvec_verdict *judge_answer(plcvec_judge *j, const plcvec_vector *
     plcvec_verdict *vd = &j->verdict;
     if (plcvec_compare(v, entry, &j->out, j->impl.cpu_writes, &j->states, &j->problems) != 0)
         return verdict_of(vd, PLCVEC_ERROR, "", "out of memory");
-    if (j->problems.n)
-        vd->offered_passes = offered_passes(j, v);
+    if (!j->problems.n) {
+        vd->status = PLCVEC_PASS;   /* the common case: nothing more to work out */
+        return vd;
+    }
+    vd->offered_passes = offered_passes(j, v);
     if (j->problems.n > 1)
         qsort(j->problems.items, j->problems.n, sizeof *j->problems.items, plcvec_problem_order);
     uint64_t which = 0;
@@ -124,7 +127,7 @@ static const plcvec_verdict *judge_answer(plcvec_judge *j, const plcvec_vector *
     vd->n_choices = plcvec_choices_judged_by(which, j->alternative, vd->choices);
     vd->problems = j->problems.items;
     vd->n_problems = j->problems.n;
-    vd->status = j->problems.n ? PLCVEC_FAIL : PLCVEC_PASS;
+    vd->status = PLCVEC_FAIL;
     return vd;
 }
 
@@ -132,8 +135,13 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
 {
     plcvec_verdict *vd = &j->verdict;
     plcvec_out *out = &j->out;
-    memset(vd, 0, sizeof *vd);
+    /* What the previous vector's verdict set (not the whole struct: this runs for every vector). */
     vd->vector = v;
+    vd->message[0] = '\0';
+    vd->problems = NULL;
+    vd->n_problems = vd->n_choices = 0;
+    vd->applied = NULL;
+    vd->offered_passes = 0;
     j->problems.n = 0;
     const plcvec_alternative *entry = plcvec_expect_entry(v, j->alternative);
     if (entry == &plcvec_expect_missing || (entry && entry->n_expect != v->n_steps))
