@@ -35,7 +35,8 @@ export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
 export TMPDIR="$PWD/$C/build-tmp"
 mkdir -p "$TMPDIR"
 
-# ---- the README's blocks, extracted (never retyped), each run from an empty folder -----------------
+# ---- the README's blocks, extracted (never retyped), each run from an empty folder ---------------
+# (with bash -e: a block whose first command fails does not pass on its last one's status)
 start=$SECONDS
 python3 .ci/readme_snippets.py check "$C/README.md" >/dev/null
 skipped=$(python3 .ci/readme_snippets.py list "$C/README.md" | grep -c ': snippet-skip: ' || true)
@@ -58,7 +59,7 @@ cmake() {
     fi
 }
 export -f cmake
-(cd "$out/work" && HOME="$out/home" bash "$snippets/install/install.sh" >"$out/install.txt" 2>&1) ||
+(cd "$out/work" && HOME="$out/home" bash -e "$snippets/install/install.sh" >"$out/install.txt" 2>&1) ||
     { cat "$out/install.txt"; echo "c: the README's install fails where cJSON cannot be found"; exit 1; }
 unset -f cmake
 grep -q "plcvec: building the library alone" "$out/install.txt" || { cat "$out/install.txt"; echo "c: the install configured the tests"; exit 1; }
@@ -66,7 +67,7 @@ test -f "$prefix/lib/cmake/plcvec/plcvecConfigVersion.cmake" && test -f "$prefix
 cmp "$prefix/share/licenses/plcvec/LICENSE" LICENSE
 
 # The GoogleTest project, found by find_package after the install.
-(cd "$snippets/consumer" && CMAKE_PREFIX_PATH="$prefix" bash run.sh >"$out/consumer.txt" 2>&1) ||
+(cd "$snippets/consumer" && CMAKE_PREFIX_PATH="$prefix" bash -e run.sh >"$out/consumer.txt" 2>&1) ||
     { cat "$out/consumer.txt"; exit 1; }
 tests="$snippets/consumer/build/my_emulator_tests"
 # GoogleTest's own filter matching nothing, and a run of nothing but skips, are not green (exit 5).
@@ -85,7 +86,7 @@ set -e
 # PLCVEC_WRITE_EXPECTATIONS under GoogleTest: a run without failures writes a list without entries.
 PLCVEC_WRITE_EXPECTATIONS="$out/written.toml" "$tests" >/dev/null
 [ "$(cat "$out/written.toml")" = "# Known failures: each passing entry fails the run as stale, so fix and delete." ]
-(cd "$snippets/consumer" && PKG_CONFIG_PATH="$prefix/lib/pkgconfig" bash pkgconfig.sh && ./my_emulator_tests >/dev/null)
+(cd "$snippets/consumer" && PKG_CONFIG_PATH="$prefix/lib/pkgconfig" bash -e pkgconfig.sh && ./my_emulator_tests >/dev/null)
 # The version file: 0.2 is found (the projects above), 0.3 is not.
 mkdir -p "$out/version"
 printf 'cmake_minimum_required(VERSION 3.16)\nproject(v NONE)\nfind_package(plcvec 0.3 QUIET)\nif(plcvec_FOUND)\n  message(FATAL_ERROR "0.3 found")\nendif()\n' \
@@ -93,7 +94,7 @@ printf 'cmake_minimum_required(VERSION 3.16)\nproject(v NONE)\nfind_package(plcv
 cmake -S "$out/version" -B "$out/version/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 
 # The C program at the level of the contract, run by CTest and by hand.
-(cd "$snippets/c-program" && CMAKE_PREFIX_PATH="$prefix" bash run.sh >"$out/c-program.txt" 2>&1) ||
+(cd "$snippets/c-program" && CMAKE_PREFIX_PATH="$prefix" bash -e run.sh >"$out/c-program.txt" 2>&1) ||
     { cat "$out/c-program.txt"; exit 1; }
 grep -q "vectors: [1-9][0-9]* pass, 0 fail" "$out/c-program.txt" || { cat "$out/c-program.txt"; exit 1; }
 
@@ -116,7 +117,7 @@ mkdir -p "$out/export/verifiers"
 cp -r "$out/archive/plcvec-c-$version" "$out/export/verifiers/c"
 cp verifiers/CONTRACT.md "$out/export/verifiers/"
 ln -s "$PWD/vectors" "$out/export/vectors"
-(cd "$out/export" && bash "$snippets/export/export.sh" >/dev/null)
+(cd "$out/export" && bash -e "$snippets/export/export.sh" >/dev/null)
 diff -r "$out/export/verifiers/c/src/generated" "$C/src/generated" >/dev/null
 diff -r "$out/export/verifiers/c/include/plcvec/generated" "$C/include/plcvec/generated" >/dev/null
 echo "c: the README's blocks (install without cJSON, CMake package, pkg-config, C program, FetchContent, export) in $((SECONDS - start)) s"
@@ -124,7 +125,7 @@ echo "c: the README's blocks (install without cJSON, CMake package, pkg-config, 
 # The project's own build and checks, as the README gives them (its build folder is the one the
 # steps below use).
 start=$SECONDS
-(cd "$out/work" && bash "$snippets/project/build.sh" >"$out/project.txt" 2>&1) || { cat "$out/project.txt"; exit 1; }
+(cd "$out/work" && bash -e "$snippets/project/build.sh" >"$out/project.txt" 2>&1) || { cat "$out/project.txt"; exit 1; }
 grep -q "100% tests passed" "$out/project.txt" && grep -q "vectors: [1-9][0-9]* pass, 0 fail, 0 skip" "$out/project.txt" ||
     { cat "$out/project.txt"; exit 1; }
 python3 "$C/tests/house.py" "$C/build"
