@@ -519,6 +519,10 @@ static const char *const declared_cp1e_error_flags[] = {
     "PLCVEC_CP1E_ERROR_FLAGS_KEPT",
     "PLCVEC_CP1E_ERROR_FLAGS_OFF",
 };
+static const char *const declared_cp1e_past_area_end[] = {
+    "PLCVEC_CP1E_PAST_AREA_END_ERROR",
+    "PLCVEC_CP1E_PAST_AREA_END_PROGRAM_ERROR",
+};
 static const char *const declared_hour_output_off[] = {
     "PLCVEC_HOUR_OUTPUT_OFF_LATCHED",
     "PLCVEC_HOUR_OUTPUT_OFF_RECOMPARED",
@@ -589,6 +593,10 @@ static const char *const declared_fx5_or_on_error[] = {
     "PLCVEC_FX5_OR_ON_ERROR_CONTACT_OFF",
     "PLCVEC_FX5_OR_ON_ERROR_RESULT_OFF",
 };
+static const char *const declared_fx5_invalid_s3_device_range[] = {
+    "PLCVEC_FX5_INVALID_S3_DEVICE_RANGE_DEVICE_RANGE_FIRST",
+    "PLCVEC_FX5_INVALID_S3_DEVICE_RANGE_S3_FIRST",
+};
 static const char *const declared_tadd_flags_off[] = {
     "PLCVEC_TADD_FLAGS_OFF_WRITTEN_EACH_EXECUTION",
     "PLCVEC_TADD_FLAGS_OFF_SET_ONLY",
@@ -605,6 +613,11 @@ static const char *const declared_tadd_error_order[] = {
     "PLCVEC_TADD_ERROR_ORDER_DEVICE_RANGE_FIRST",
     "PLCVEC_TADD_ERROR_ORDER_FIELD_RANGE_FIRST",
 };
+static const char *const declared_tadd_overlap[] = {
+    "PLCVEC_TADD_OVERLAP_SOURCES_FIRST",
+    "PLCVEC_TADD_OVERLAP_SECOND_FIRST",
+    "PLCVEC_TADD_OVERLAP_HOUR_FIRST",
+};
 
 const plcvec_declaration_names plcvec_declarations[PLCVEC_INTERPRETATION_COUNT] = {
     {"PLCVEC_INTERP_CP1E_NON_BCD", declared_cp1e_non_bcd},
@@ -614,6 +627,7 @@ const plcvec_declaration_names plcvec_declarations[PLCVEC_INTERPRETATION_COUNT] 
     {"PLCVEC_INTERP_CP1E_AND_OR_WHEN_OFF", declared_cp1e_and_or_when_off},
     {"PLCVEC_INTERP_CP1E_ER_FLAG", declared_cp1e_er_flag},
     {"PLCVEC_INTERP_CP1E_ERROR_FLAGS", declared_cp1e_error_flags},
+    {"PLCVEC_INTERP_CP1E_PAST_AREA_END", declared_cp1e_past_area_end},
     {"PLCVEC_INTERP_HOUR_OUTPUT_OFF", declared_hour_output_off},
     {"PLCVEC_INTERP_HOUR_INPUT_OFF", declared_hour_input_off},
     {"PLCVEC_INTERP_HOUR_PRESET_ZERO", declared_hour_preset_zero},
@@ -629,10 +643,12 @@ const plcvec_declaration_names plcvec_declarations[PLCVEC_INTERPRETATION_COUNT] 
     {"PLCVEC_INTERP_FX5_AND_OR_WHEN_OFF", declared_fx5_and_or_when_off},
     {"PLCVEC_INTERP_FX5_CLOCK_S2_DEVICE_RANGE", declared_fx5_clock_s2_device_range},
     {"PLCVEC_INTERP_FX5_OR_ON_ERROR", declared_fx5_or_on_error},
+    {"PLCVEC_INTERP_FX5_INVALID_S3_DEVICE_RANGE", declared_fx5_invalid_s3_device_range},
     {"PLCVEC_INTERP_TADD_FLAGS_OFF", declared_tadd_flags_off},
     {"PLCVEC_INTERP_TADD_EXACT_24", declared_tadd_exact_24},
     {"PLCVEC_INTERP_TADD_ON_ERROR", declared_tadd_on_error},
     {"PLCVEC_INTERP_TADD_ERROR_ORDER", declared_tadd_error_order},
+    {"PLCVEC_INTERP_TADD_OVERLAP", declared_tadd_overlap},
 };
 
 /* The ids merged into the vector that is the same test, sorted by the old id. */
