@@ -161,7 +161,8 @@ python3 -m plcvec verify -q --adapter "verifiers/c/reference-adapter --choose FX
     --choose CP1E-ERROR-FLAGS=off --choose HOUR-FIRST-SCAN=after-cpu-start --choose FX5-OR-ON-ERROR=result-off \
     --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset \
     --choose HOUR-D1-OUT-OF-RANGE=by-field --choose HOUR-WRAP-REACH=before-wrap --choose HOUR-M8004-REPEAT=once \
-    --choose HOUR-D2-SPECIAL=undefined --choose HOUR-S1-CONSTANT-RANGE=low-16-bits" >/dev/null
+    --choose HOUR-D2-SPECIAL=undefined --choose HOUR-S1-CONSTANT-RANGE=low-16-bits --choose TADD-OVERLAP=second-first \
+    --choose FX5-INVALID-S3-DEVICE-RANGE=s3-first --choose CP1E-PAST-AREA-END=program-error" >/dev/null
 gate_rejects c "verifiers/c/reference-adapter --mutant cp1e-and-as-or" >/dev/null
 # The whole run's text (the failure blocks, the roll-up by reading, the skips, the summary) is
 # plcvec verify's: each mutant judged in process by the C library, and served to plcvec verify by

@@ -66,6 +66,15 @@ static void taddp_every_scan(plcvec_reference *ref) { ref->tadd.pulse = every_sc
 
 static void tadd_hour_24_accepted(plcvec_reference *ref) { ref->tadd.hour_max = 24; }
 
+/* (s1) copied into (d) word by word from the hour, then (s2) added to (d) in place. */
+static long copy_s1_into_d_first(machine *mc, address s1, address s2, address d)
+{
+    for (int k = 0; k < 3; k++)
+        memory_write(&mc->mem, memory_offset(d, k), PLCVEC_WORD, memory_read(&mc->mem, memory_offset(s1, k)));
+    return fx5_time_add_sum_seconds(mc, d, s2, d);
+}
+static void tadd_s1_copied_into_d_first(plcvec_reference *ref) { ref->tadd.sum_seconds = copy_s1_into_d_first; }
+
 /* -- FC6A HOUR -- */
 
 static int above(long total, long preset) { return total > preset; }
@@ -81,6 +90,9 @@ static int and_as_or(int rlo, int contact) { return rlo || contact; }
 static void cp1e_and_as_or(plcvec_reference *ref) { ref->cp1e.and_form = and_as_or; }
 
 static void cp1e_flags_not_reflected(plcvec_reference *ref) { ref->cp1e.reflect_flags = 0; }
+
+/* The words past the end of D read as 0 (memory_read of a word never written). */
+static void cp1e_past_area_compared(plcvec_reference *ref) { ref->cp1e.in_range = always_in_range; }
 
 /* The BCD check looks at the byte's value, not at each digit: up to 99H passes, so 1AH is compared.
  * (Until 0.2.0 no byte was checked: that is the reading CP1E-NON-BCD=raw-bytes, so it was no bug.) */
@@ -113,6 +125,10 @@ const plcvec_mutant plcvec_mutants[] = {
      "TADDP adds on every scan while EN is on, instead of once on its rising edge (a changed word).", taddp_every_scan},
     {"tadd-hour-24-accepted", "fx5-time-add",
      "Hour 24 in (s1) or (s2) is added instead of raising error 3405H (a changed word).", tadd_hour_24_accepted},
+    {"tadd-s1-copied-into-d-first", "fx5-time-add",
+     "(s1) is copied into (d) word by word from the hour, then (s2) is added to (d) in place, so a word of (s2), "
+     "or a later word of (s1), that is also a word of (d) is overwritten before it is read (a changed word).",
+     tadd_s1_copied_into_d_first},
     {"hour-output-above-preset", "fc6a-hour-meter",
      "D2 turns on only once D1 is past S1, not when 'the D1 value reaches the S1 value' (a bit).", hour_output_above_preset},
     {"hour-drops-fraction", "fc6a-hour-meter",
@@ -130,6 +146,10 @@ const plcvec_mutant plcvec_mutants[] = {
      "The BCD check looks at the byte's value instead of each digit: up to 99H passes, so 1AH is compared instead "
      "of turning P_ER on, while A0H still turns it on (a flag).",
      cp1e_bcd_read_as_binary},
+    {"cp1e-past-area-compared", "cp1e-time-compare",
+     "S1 or S2 at the last one or two words of the data area is compared all the same, the words past the end "
+     "read as 0, instead of the error or program error CP1E-PAST-AREA-END names (a flag).",
+     cp1e_past_area_compared},
 };
 const size_t plcvec_mutant_count = sizeof plcvec_mutants / sizeof plcvec_mutants[0];
 

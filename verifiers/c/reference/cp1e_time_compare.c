@@ -22,7 +22,7 @@ static int and_form(int rlo, int contact)
     return rlo && contact;
 }
 
-const cp1e_time_compare_rules cp1e_time_compare_reference_rules = {fields, is_bcd, and_form, 1};
+const cp1e_time_compare_rules cp1e_time_compare_reference_rules = {fields, is_bcd, and_form, 1, memory_in_range};
 
 /* The flag table: rows S1 = S2, S1 > S2, S1 < S2; columns =, <>, <, <=, >, >=. */
 static const char *const flag_names[6] = {"P_EQ", "P_NE", "P_LT", "P_LE", "P_GT", "P_GE"};
@@ -47,6 +47,13 @@ static int evaluate(machine *mc, const cp1e_time_compare_rules *r, const plcvec_
     address s1 = memory_device(plcvec_operand_named(v, "S1")->device);
     address s2 = memory_device(plcvec_operand_named(v, "S2")->device);
     const plcvec_operand *cop = plcvec_operand_named(v, "C");
+    /* "S1 to S1+2", "S2 to S2+2": three words each. One past the end of the data area (S1 or S2 in
+     * one of the last two words of D) is CP1E-PAST-AREA-END, found before C or the data are read. */
+    if (!r->in_range(m, s1, 3) || !r->in_range(m, s2, 3)) {
+        if (mc->follows[PLCVEC_INTERP_CP1E_PAST_AREA_END] == PLCVEC_CP1E_PAST_AREA_END_PROGRAM_ERROR)
+            return 0;       /* not executed: nothing written, an OFF execution condition */
+        return error(mc, m);
+    }
     unsigned c = (cop->is_constant ? (unsigned)cop->constant : memory_read(m, memory_device(cop->device))) & 0xFFFF;
     uint16_t a[3], b[3];
     for (int i = 0; i < 3; i++) {

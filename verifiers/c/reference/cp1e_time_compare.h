@@ -13,6 +13,7 @@ typedef struct cp1e_time_compare_rules {
     int (*is_bcd)(unsigned byte);
     int (*and_form)(int rlo, int contact);          /* AND: rlo AND contact */
     int reflect_flags;                              /* the arithmetic flags are written */
+    int (*in_range)(const memory *m, address base, int words);
 } cp1e_time_compare_rules;
 
 extern const cp1e_time_compare_rules cp1e_time_compare_reference_rules;

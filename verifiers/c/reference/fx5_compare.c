@@ -102,7 +102,12 @@ static int evaluate(fx5_call *call, plcvec_condition condition)
      * while it is ignored: FX5-CLOCK-S2-DEVICE-RANGE. */
     int s2_checked = !use_clock ||
                      follows[PLCVEC_INTERP_FX5_CLOCK_S2_DEVICE_RANGE] == PLCVEC_FX5_CLOCK_S2_DEVICE_RANGE_CHECKED;
+    int valid = r->selector_valid(s3), error;
     if (!r->in_range(m, s1_dev, 3) || (s2_checked && !r->in_range(m, s2_dev, 3))) {
+        /* An (s3) that compares nothing as well: which rule decides is FX5-INVALID-S3-DEVICE-RANGE
+         * (s3-first: non-continuity, SM709 untouched). */
+        if (!valid && follows[PLCVEC_INTERP_FX5_INVALID_S3_DEVICE_RANGE] == PLCVEC_FX5_INVALID_S3_DEVICE_RANGE_S3_FIRST)
+            return 0;
         call->failed = 1;
         r->sm709(m, 1);
         return 0;
@@ -125,7 +130,6 @@ static int evaluate(fx5_call *call, plcvec_condition condition)
     } else
         read_block(m, s2_dev, s2);
 
-    int valid = r->selector_valid(s3), error;
     /* "If the comparison target data in the device are not recognized as time data, SM709
      * turns on ... non-continuity." Which words are comparison target data: FX5-SM709-SCOPE. */
     if (follows[PLCVEC_INTERP_FX5_SM709_SCOPE] == PLCVEC_FX5_SM709_SCOPE_ALL_WORDS) {

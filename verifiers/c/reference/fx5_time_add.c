@@ -15,7 +15,8 @@ static int pulse(int en, int previous_en, plcvec_instruction instruction)
     return plcvec_instructions[instruction].execution == PLCVEC_EXECUTION_RISING_EDGE ? en && !previous_en : en;
 }
 
-const fx5_time_add_rules fx5_time_add_reference_rules = {carry_flags, 2, 23, memory_in_range, pulse, 1};
+const fx5_time_add_rules fx5_time_add_reference_rules = {carry_flags, 2, 23, memory_in_range, pulse, 1,
+                                                           fx5_time_add_sum_seconds};
 
 static void error_code(memory *m, uint16_t code)
 {
@@ -52,6 +53,59 @@ static int fields_bad(const fx5_time_add_rules *r, const memory *m, address base
     return out_of_range(r, hms);
 }
 
+/* A word of (s1) or (s2) as "16-bit signed binary", read when the order of TADD-OVERLAP reads it. */
+static int source_word(const memory *m, address base, int k)
+{
+    return to_signed16(memory_read(m, memory_offset(base, k)));
+}
+
+static long floor_div(long a, long b)
+{
+    return a / b - (a % b != 0 && (a % b < 0) != (b < 0));
+}
+
+/* Seconds in an hour, a minute, a second; what each word counts up to before it carries. */
+static const long weights[3] = {3600, 60, 1};
+static const long radix[3] = {24, 60, 60};
+
+/* (s1) + (s2) in seconds, the words read in the order TADD-OVERLAP says. The order shows only when
+ * (d) shares words with (s1) or (s2) at another offset ((d) = (s1)+1, ...): a source word read after
+ * that word of (d) was written holds what was written. */
+long fx5_time_add_sum_seconds(machine *mc, address s1, address s2, address d)
+{
+    memory *m = &mc->mem;
+    int order = mc->follows[PLCVEC_INTERP_TADD_OVERLAP];
+    long total = 0, carry = 0;
+    if (order == PLCVEC_TADD_OVERLAP_SOURCES_FIRST) {
+        /* Both sources read, then (d) written. */
+        long a[3], b[3];
+        for (int k = 0; k < 3; k++)
+            a[k] = source_word(m, s1, k), b[k] = source_word(m, s2, k);
+        for (int k = 0; k < 3; k++)
+            total += (a[k] + b[k]) * weights[k];
+        return total;
+    }
+    if (order == PLCVEC_TADD_OVERLAP_SECOND_FIRST) {
+        /* Second, minute, hour, the carry's way: each word of (d) gets its digit as soon as it is known. */
+        for (int k = 2; k >= 0; k--) {
+            long sum = source_word(m, s1, k) + source_word(m, s2, k);
+            total += sum * weights[k];
+            long carried = sum + carry;
+            carry = floor_div(carried, radix[k]);
+            memory_write(m, memory_offset(d, k), PLCVEC_WORD, (uint16_t)(carried - carry * radix[k]));
+        }
+        return total;
+    }
+    /* hour-first: the plain sum of each pair of words into (d), hour to second; the carries are
+     * settled afterwards, from the three sums. */
+    for (int k = 0; k < 3; k++) {
+        long sum = source_word(m, s1, k) + source_word(m, s2, k);
+        total += sum * weights[k];
+        memory_write(m, memory_offset(d, k), PLCVEC_WORD, (uint16_t)sum);
+    }
+    return total;
+}
+
 static void add(machine *mc, const fx5_time_add_rules *r, const plcvec_vector *v)
 {
     memory *m = &mc->mem;
@@ -68,17 +122,12 @@ static void add(machine *mc, const fx5_time_add_rules *r, const plcvec_vector *v
                           ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
         return;
     }
-    int a[3], b[3];
-    for (int i = 0; i < 3; i++) {
-        a[i] = to_signed16(memory_read(m, memory_offset(s1, i)));
-        b[i] = to_signed16(memory_read(m, memory_offset(s2, i)));
-    }
-    if (out_of_range(r, a) || out_of_range(r, b)) {
+    if (fields_bad(r, m, s1) || fields_bad(r, m, s2)) {
         error_code(m, ERR_VALUE_RANGE);
         if (mc->follows[PLCVEC_INTERP_TADD_ON_ERROR] == PLCVEC_TADD_ON_ERROR_NOT_EXECUTED)
             return;
     }
-    long total = (long)(a[0] + b[0]) * 3600 + (long)(a[1] + b[1]) * 60 + (a[2] + b[2]);
+    long total = r->sum_seconds(mc, s1, s2, d);
     /* "If the sum of two values exceeds 24:00:00, the carry flag turns on, and the result will be
      * the sum minus 24:00:00", but "If 1 second is added to 23:59:59, the result will be
      * 0:00:00. This turns on both the carry flag and the zero flag.": TADD-EXACT-24. */
