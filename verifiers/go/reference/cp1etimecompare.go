@@ -47,6 +47,7 @@ type cp1eConfig struct {
 	nonBCDError, rangeError bool   // CP1E-NON-BCD, CP1E-OUT-OF-RANGE
 	highBitsErr, erEach     bool   // CP1E-C-HIGH-BITS, CP1E-ER-FLAG
 	errorFlagsOff           bool   // CP1E-ERROR-FLAGS
+	pastEndNotExecuted      bool   // CP1E-PAST-AREA-END: a program error, not an error
 	allMasked, andOrWhenOff string // CP1E-ALL-MASKED, CP1E-AND-OR-WHEN-OFF
 	cpus                    *spare[cp1eTimeCompare]
 }
@@ -94,6 +95,7 @@ func configureCP1E(r *Reference) (c cp1eConfig, err error) {
 		{spec.InterpCp1eCHighBits, spec.Cp1eCHighBitsError, spec.Cp1eCHighBitsIgnored, &c.highBitsErr},
 		{spec.InterpCp1eErFlag, spec.Cp1eErFlagReflectsEachExecution, spec.Cp1eErFlagHeld, &c.erEach},
 		{spec.InterpCp1eErrorFlags, spec.Cp1eErrorFlagsOff, spec.Cp1eErrorFlagsKept, &c.errorFlagsOff},
+		{spec.InterpCp1ePastAreaEnd, spec.Cp1ePastAreaEndProgramError, spec.Cp1ePastAreaEndError, &c.pastEndNotExecuted},
 	} {
 		alt, err := r.choice(q.id, q.when, q.other)
 		if err != nil {
@@ -135,6 +137,15 @@ func isBCD(b int) bool   { return b>>4 <= 9 && b&0xF <= 9 }
 func bcdValue(b int) int { return b>>4*10 + b&0xF }
 
 func (c *cp1eTimeCompare) evaluate(mem *plcvec.Memory) bool {
+	// "S 1 to S 1 +2", "S 2 to S 2 +2": three words each. One past the end of the data area (S1 or
+	// S2 at one of its last two words) cannot be read: CP1E-PAST-AREA-END, found before C or the
+	// data are looked at.
+	if !mem.InRange(c.s1, 3) || !mem.InRange(c.s2, 3) {
+		if c.pastEndNotExecuted {
+			return false // not executed: nothing written, an OFF execution condition
+		}
+		return c.error(mem)
+	}
 	var s1, s2 [3]uint16
 	mem.ReadWords(c.s1, s1[:])
 	mem.ReadWords(c.s2, s2[:])

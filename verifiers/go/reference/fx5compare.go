@@ -36,6 +36,7 @@ type fx5Config struct {
 	andOrWhenOff string // FX5-AND-OR-WHEN-OFF
 	checkClockS2 bool   // FX5-CLOCK-S2-DEVICE-RANGE
 	orErrorOff   bool   // FX5-OR-ON-ERROR: an error in an OR form turns the result off
+	s3First      bool   // FX5-INVALID-S3-DEVICE-RANGE: an (s3) that compares nothing is judged first
 	cpus         *spare[fx5Compare]
 }
 
@@ -99,6 +100,12 @@ func configureFX5(r *Reference) (c fx5Config, err error) {
 		return c, err
 	}
 	c.orErrorOff = orError == spec.Fx5OrOnErrorResultOff
+	order, err := r.choice(spec.InterpFx5InvalidS3DeviceRange, spec.Fx5InvalidS3DeviceRangeDeviceRangeFirst,
+		spec.Fx5InvalidS3DeviceRangeS3First)
+	if err != nil {
+		return c, err
+	}
+	c.s3First = order == spec.Fx5InvalidS3DeviceRangeS3First
 	return c, nil
 }
 
@@ -137,10 +144,18 @@ func (c *fx5Compare) evaluate(mem *plcvec.Memory, step *plcvec.Inputs) bool {
 	// with the current time ... The time data in the device specified by (s2) is regarded as
 	// dummy data and ignored."
 	useClock := c.parts.FX5UsesClock(s3)
+	// "(4) Set 0. If a value other than 0 is set, the operation result will be non-continuity."
+	// (bits 3 to 14); "When 0 is set to the 0 to 2 bits, the time data ... are not compared."
+	s3Valid := s3&0x7FF8 == 0 && s3&0x0007 != 0
 	// "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the
 	// corresponding device range, SM709 turns on ... and the operation result will be
 	// non-continuity as well."
 	if !mem.InRange(c.s1, 3) || ((!useClock || c.checkClockS2) && !mem.InRange(c.s2, 3)) {
+		// With an (s3) that compares nothing as well, FX5-INVALID-S3-DEVICE-RANGE says which
+		// rule decides: non-continuity both ways, SM709 on only when the device range does.
+		if !s3Valid && c.s3First {
+			return false
+		}
 		return c.invalid(mem)
 	}
 	var s1, s2 [3]int
@@ -159,9 +174,6 @@ func (c *fx5Compare) evaluate(mem *plcvec.Memory, step *plcvec.Inputs) bool {
 			s2[k] = signed16(raw[k])
 		}
 	}
-	// "(4) Set 0. If a value other than 0 is set, the operation result will be non-continuity."
-	// (bits 3 to 14); "When 0 is set to the 0 to 2 bits, the time data ... are not compared."
-	s3Valid := s3&0x7FF8 == 0 && s3&0x0007 != 0
 	// "If the comparison target data in the device are not recognized as time data, SM709 turns
 	// on after the instruction is executed and the operation result will be non-continuity."
 	// Which words are "comparison target data" is interpretation FX5-SM709-SCOPE.

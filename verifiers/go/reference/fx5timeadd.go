@@ -18,6 +18,9 @@ var (
 	errorRegisters = []plcvec.Addr{{Kind: "SD", N: 0}, {Kind: "SD", N: 8067}}
 	// "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)"
 	taddRanges = [3][2]int{{0, 23}, {0, 59}, {0, 59}}
+	// Seconds in one hour, minute and second, and what each word counts up to before it carries.
+	taddWeights = [3]int{3600, 60, 1}
+	taddRadix   = [3]int{24, 60, 60}
 )
 
 const (
@@ -29,11 +32,12 @@ type fx5TimeAdd struct {
 	parts        *Parts
 	pulse        bool
 	s1, s2, d    plcvec.Addr
-	flagsEach    bool // TADD-FLAGS-OFF: written-each-execution
-	carryAt24    bool // TADD-EXACT-24
-	computeOnErr bool // TADD-ON-ERROR: computed
-	fieldFirst   bool // TADD-ERROR-ORDER: 3405H stored when both conditions meet
-	previousEN   bool // TADDP: the state before the first scan is off
+	flagsEach    bool   // TADD-FLAGS-OFF: written-each-execution
+	carryAt24    bool   // TADD-EXACT-24
+	computeOnErr bool   // TADD-ON-ERROR: computed
+	fieldFirst   bool   // TADD-ERROR-ORDER: 3405H stored when both conditions meet
+	overlap      string // TADD-OVERLAP: when (d) is written, relative to the reads of (s1) and (s2)
+	previousEN   bool   // TADDP: the state before the first scan is off
 	cpus         *spare[fx5TimeAdd]
 }
 
@@ -86,7 +90,9 @@ func configureTADD(r *Reference) (t fx5TimeAdd, err error) {
 		return t, err
 	}
 	t.fieldFirst = order == spec.TaddErrorOrderFieldRangeFirst
-	return t, nil
+	t.overlap, err = r.choice(spec.InterpTaddOverlap, spec.TaddOverlapSourcesFirst, spec.TaddOverlapSecondFirst,
+		spec.TaddOverlapHourFirst)
+	return t, err
 }
 
 // taddRuns: TADD executes every scan while EN is on; TADDP on the rising edge of EN only.
@@ -122,28 +128,16 @@ func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 			return
 		}
 	}
-	var raw [3]uint16
-	var s1, s2 [3]int
-	mem.ReadWords(t.s1, raw[:])
-	for k := range raw {
-		s1[k] = signed16(raw[k])
-	}
-	mem.ReadWords(t.s2, raw[:])
-	for k := range raw {
-		s2[k] = signed16(raw[k])
-	}
-	failed := false
-	for k, r := range taddRanges {
-		if s1[k] < r[0] || s1[k] > r[1] || s2[k] < r[0] || s2[k] > r[1] {
-			t.error(mem, errValueRange)
-			if !t.computeOnErr {
-				return
-			}
-			failed = true
-			break
+	// "3405H Any of values specified by (s1) and (s2) is outside the following range": judged on
+	// the words as they were before the execution, whatever TADD-OVERLAP writes on the way.
+	failed := t.fieldOutOfRange(mem, t.s1) || t.fieldOutOfRange(mem, t.s2)
+	if failed {
+		t.error(mem, errValueRange)
+		if !t.computeOnErr {
+			return
 		}
 	}
-	total := (s1[0]+s2[0])*3600 + (s1[1]+s2[1])*60 + (s1[2] + s2[2])
+	total := t.sumSeconds(mem)
 	result, carry := t.parts.TADDWrap(total, t.carryAt24)
 	mem.SetWords(t.d, uint16(result/3600), uint16(result%3600/60), uint16(result%60))
 	if failed && !t.parts.TADDFlagsOnError {
@@ -151,6 +145,55 @@ func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 	}
 	// "If the result is 0 (0:00:00), the zero flag turns on."
 	t.setFlags(mem, carry, result == 0)
+}
+
+// sumSeconds is (s1) + (s2) in seconds, the words read in the order TADD-OVERLAP says. "These
+// instructions add the time data stored in the device numbers starting from (s2) to the clock data
+// stored in the device numbers starting from (s1), and store the result to the device numbers
+// starting from (d)." The order shows only when (d) shares words with (s1) or (s2) at another
+// offset: a source word read after that word of (d) is written holds what was written. Every
+// word of (d) is written again from the total afterwards (add).
+func (t *fx5TimeAdd) sumSeconds(mem *plcvec.Memory) int {
+	word := func(a plcvec.Addr, k int) int { return signed16(mem.Word(a.Offset(k))) }
+	total := 0
+	switch t.overlap {
+	case spec.TaddOverlapSecondFirst:
+		// Second, minute, hour, the carry's way: each word of (d) gets its digit once known.
+		carry := 0
+		for k := 2; k >= 0; k-- {
+			a, b := word(t.s1, k), word(t.s2, k)
+			total += (a + b) * taddWeights[k]
+			var digit int
+			carry, digit = floorDivMod(a+b+carry, taddRadix[k])
+			mem.SetWord(t.d.Offset(k), uint16(digit))
+		}
+	case spec.TaddOverlapHourFirst:
+		// Hour, minute, second: each word of (d) gets the plain sum of its pair, the carries
+		// settled afterwards from the three sums.
+		for k := 0; k < 3; k++ {
+			a, b := word(t.s1, k), word(t.s2, k)
+			total += (a + b) * taddWeights[k]
+			mem.SetWord(t.d.Offset(k), uint16(a+b))
+		}
+	default: // sources-first: all six words read before (d) is written
+		var s1, s2 [3]uint16
+		mem.ReadWords(t.s1, s1[:])
+		mem.ReadWords(t.s2, s2[:])
+		for k := range s1 {
+			total += (signed16(s1[k]) + signed16(s2[k])) * taddWeights[k]
+		}
+	}
+	return total
+}
+
+// floorDivMod is n div m and n mod m rounded toward minus infinity, so that a negative word
+// (invalid data computed under TADD-ON-ERROR=computed) borrows from the next word up.
+func floorDivMod(n, m int) (int, int) {
+	q, r := n/m, n%m
+	if r < 0 {
+		q, r = q-1, r+m
+	}
+	return q, r
 }
 
 // fieldOutOfRange: "3405H Any of values specified by (s1) and (s2) is outside the following
