@@ -92,6 +92,9 @@ var All = []Mutant{
 	{"tadd-on-error-computed-flags-kept", []string{spec.FamilyFx5TimeAdd}, "an interpretation alternative",
 		"On error 3405H the sum is still written to (d), as TADD-ON-ERROR=computed has it, while the implementation declares the default, not-executed; and the flags are left as they were, although that alternative updates them: half of a reading, undeclared.",
 		func(p *reference.Parts) { p.TADDOnError, p.TADDFlagsOnError = spec.TaddOnErrorComputed, false }},
+	{"tadd-s1-copied-into-d-first", []string{spec.FamilyFx5TimeAdd}, "a changed word",
+		"(s1) is copied into (d) first and (s2) then added to (d) in place, so a (d) that shares words with (s2) at another offset adds a changed (s2), under every reading of TADD-OVERLAP.",
+		func(p *reference.Parts) { p.TADDS1CopiedIntoD = true }},
 	{"hour-drops-fraction", []string{spec.FamilyFc6aHourMeter}, "a changed word",
 		"Each scan's ON time is cut to whole seconds and the remainder thrown away, so short scans never add up.",
 		func(p *reference.Parts) {
@@ -118,6 +121,9 @@ var All = []Mutant{
 	{"cp1e-and-as-or", []string{spec.FamilyCp1eTimeCompare}, "contact result",
 		"AND =DT ... AND >=DT combine the comparison with the preceding logic as OR does.",
 		func(p *reference.Parts) { p.CP1EAnd = func(rlo, contact bool) bool { return rlo || contact } }},
+	{"cp1e-past-area-compared", []string{spec.FamilyCp1eTimeCompare}, "a flag",
+		"S1 or S2 at the last one or two words of the data area is compared all the same, the words past the end read as 0, instead of the error or program error CP1E-PAST-AREA-END names.",
+		func(p *reference.Parts) { p.CP1EInArea = func(*plcvec.Memory, plcvec.Addr) bool { return true } }},
 }
 
 // Find returns the mutant of that name.

@@ -140,7 +140,7 @@ func (c *cp1eTimeCompare) evaluate(mem *plcvec.Memory) bool {
 	// "S 1 to S 1 +2", "S 2 to S 2 +2": three words each. One past the end of the data area (S1 or
 	// S2 at one of its last two words) cannot be read: CP1E-PAST-AREA-END, found before C or the
 	// data are looked at.
-	if !mem.InRange(c.s1, 3) || !mem.InRange(c.s2, 3) {
+	if !c.parts.CP1EInArea(mem, c.s1) || !c.parts.CP1EInArea(mem, c.s2) {
 		if c.pastEndNotExecuted {
 			return false // not executed: nothing written, an OFF execution condition
 		}

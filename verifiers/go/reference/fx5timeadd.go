@@ -155,13 +155,19 @@ func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 // word of (d) is written again from the total afterwards (add).
 func (t *fx5TimeAdd) sumSeconds(mem *plcvec.Memory) int {
 	word := func(a plcvec.Addr, k int) int { return signed16(mem.Word(a.Offset(k))) }
-	total := 0
+	total, s1 := 0, t.s1
+	if t.parts.TADDS1CopiedIntoD {
+		var w [3]uint16
+		mem.ReadWords(t.s1, w[:])
+		mem.SetWords(t.d, w[:]...)
+		s1 = t.d
+	}
 	switch t.overlap {
 	case spec.TaddOverlapSecondFirst:
 		// Second, minute, hour, the carry's way: each word of (d) gets its digit once known.
 		carry := 0
 		for k := 2; k >= 0; k-- {
-			a, b := word(t.s1, k), word(t.s2, k)
+			a, b := word(s1, k), word(t.s2, k)
 			total += (a + b) * taddWeights[k]
 			var digit int
 			carry, digit = floorDivMod(a+b+carry, taddRadix[k])
@@ -171,16 +177,16 @@ func (t *fx5TimeAdd) sumSeconds(mem *plcvec.Memory) int {
 		// Hour, minute, second: each word of (d) gets the plain sum of its pair, the carries
 		// settled afterwards from the three sums.
 		for k := 0; k < 3; k++ {
-			a, b := word(t.s1, k), word(t.s2, k)
+			a, b := word(s1, k), word(t.s2, k)
 			total += (a + b) * taddWeights[k]
 			mem.SetWord(t.d.Offset(k), uint16(a+b))
 		}
 	default: // sources-first: all six words read before (d) is written
-		var s1, s2 [3]uint16
-		mem.ReadWords(t.s1, s1[:])
-		mem.ReadWords(t.s2, s2[:])
-		for k := range s1 {
-			total += (signed16(s1[k]) + signed16(s2[k])) * taddWeights[k]
+		var w1, w2 [3]uint16
+		mem.ReadWords(s1, w1[:])
+		mem.ReadWords(t.s2, w2[:])
+		for k := range w1 {
+			total += (signed16(w1[k]) + signed16(w2[k])) * taddWeights[k]
 		}
 	}
 	return total

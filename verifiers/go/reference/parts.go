@@ -27,6 +27,9 @@ type Parts struct {
 	// TADDFlagsOnError: whether an execution that computes the sum on error 3405H
 	// (TADD-ON-ERROR=computed) writes the flags too ("flags updated"; the reference: yes).
 	TADDFlagsOnError bool
+	// TADDS1CopiedIntoD: whether the addition first copies (s1) into (d) and then adds (s2) to
+	// (d) in place (the reference: no, it adds (s2) to (s1) as TADD-OVERLAP says).
+	TADDS1CopiedIntoD bool
 	// HourMeasure: whole seconds measured and the fraction kept, from the kept fraction and
 	// this scan's elapsed milliseconds.
 	HourMeasure func(fractionMS, elapsedMS int64) (whole, keptMS int64)
@@ -41,6 +44,8 @@ type Parts struct {
 	CP1EReflectFlags func(mem *plcvec.Memory, order int)
 	// CP1EAnd combines an AND form's comparison with the preceding logic.
 	CP1EAnd func(rlo, contact bool) bool
+	// CP1EInArea: whether the three words of S1 or S2 from a lie in their data area.
+	CP1EInArea func(mem *plcvec.Memory, a plcvec.Addr) bool
 }
 
 // Correct is the reference's own parts.
@@ -60,5 +65,6 @@ func Correct() Parts {
 		CP1EMasked:       func(c uint16, bit uint) bool { return c>>bit&1 == 1 },
 		CP1EReflectFlags: reflectFlags,
 		CP1EAnd:          func(rlo, contact bool) bool { return rlo && contact },
+		CP1EInArea:       func(mem *plcvec.Memory, a plcvec.Addr) bool { return mem.InRange(a, 3) },
 	}
 }
