@@ -27,10 +27,6 @@ const maxTimeoutSeconds = 86400
 
 var timeoutPattern = regexp.MustCompile(`^[0-9]+(\.[0-9]+)?$`)
 
-// nearestDistance is the largest edit distance at which a PLCVEC_* variable that is no setting is
-// taken for a misspelling of one (CONTRACT.md, "Old names and misspellings").
-const nearestDistance = 3
-
 // environment is what the PLCVEC_* variables ask of a run.
 type environment struct {
 	narrow   Selection // narrows the selection the code gives (both must take a vector)

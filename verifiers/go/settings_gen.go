@@ -38,6 +38,10 @@ const EnvWriteExpectations = "PLCVEC_WRITE_EXPECTATIONS"
 // EnvTimeout (--timeout): the bound on an answer, in seconds.
 const EnvTimeout = "PLCVEC_TIMEOUT"
 
+// nearestDistance is the largest edit distance at which a PLCVEC_* variable that is no setting is
+// taken for a misspelling of the nearest setting (or old name) and the warning proposes it.
+const nearestDistance = 3
+
 // setting is one PLCVEC_* variable of a run.
 type setting struct{ name, option string }
 

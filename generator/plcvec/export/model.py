@@ -96,6 +96,8 @@ class SuiteModel:
     deprecated_settings: list = field(default_factory=list)
     reserved_settings: list = field(default_factory=list)
     reserved_setting_prefixes: list = field(default_factory=list)
+    # How far (edit distance) a misspelt PLCVEC_* name may be from the setting a warning proposes.
+    nearest_distance: int = 0
 
     @property
     def total(self) -> int:
@@ -210,7 +212,8 @@ def _settings() -> dict:
 
     return {"settings": list(settings.SETTINGS), "deprecated_settings": list(settings.DEPRECATED),
             "reserved_settings": list(settings.RESERVED),
-            "reserved_setting_prefixes": list(settings.RESERVED_PREFIXES)}
+            "reserved_setting_prefixes": list(settings.RESERVED_PREFIXES),
+            "nearest_distance": settings.NEAREST_DISTANCE}
 
 
 def _instruction(name: str, metadata: dict) -> Instruction:

@@ -16,8 +16,6 @@
 
 extern char **environ;
 
-/* CONTRACT.md: the nearest setting is named when its edit distance is at most 3. */
-#define NEAREST_DISTANCE 3
 #define TIMEOUT_MAX_S 86400L    /* CONTRACT.md: at most a day */
 #define TIMEOUT_DEFAULT_MS 10000L
 
@@ -80,7 +78,7 @@ static const char *nearest(const char *name)
         if (d < best_distance || (d == best_distance && strcmp(candidate, best) < 0))
             best = candidate, best_distance = d;
     }
-    if (!best || best_distance > NEAREST_DISTANCE)
+    if (!best || best_distance > plcvec_nearest_distance)
         return NULL;
     const plcvec_old_setting *old = old_name(best);
     return old ? old->replacement : best;

@@ -9,13 +9,9 @@ use std::time::Duration;
 
 use crate::error::{Error, Result};
 
-use crate::generated::settings::{DEPRECATED, RESERVED, RESERVED_PREFIXES, SETTINGS};
+use crate::generated::settings::{DEPRECATED, NEAREST_DISTANCE, RESERVED, RESERVED_PREFIXES, SETTINGS};
 
 const PREFIX: &str = "PLCVEC_";
-/// The largest edit distance at which an unknown variable is taken for a misspelling of a setting
-/// (CONTRACT.md, "Old names and misspellings": "when that distance is at most 3").
-const NEAREST_DISTANCE: usize = 3;
-
 /// The largest bound on an answer, a day (CONTRACT.md, "The environment"): no platform's clock
 /// overflows with it.
 const TIMEOUT_MAX_S: f64 = 86400.0;

@@ -10,11 +10,15 @@
 import { writeSync } from "node:fs";
 
 import { VerifyError } from "./errors.js";
-import { DEPRECATED_SETTINGS, RESERVED_SETTING_PREFIXES, RESERVED_SETTINGS, SETTINGS } from "./generated/settings.js";
+import {
+  DEPRECATED_SETTINGS,
+  NEAREST_DISTANCE,
+  RESERVED_SETTING_PREFIXES,
+  RESERVED_SETTINGS,
+  SETTINGS,
+} from "./generated/settings.js";
 
 const PREFIX = "PLCVEC_";
-/** The largest edit distance at which an unknown variable is taken for a misspelling (CONTRACT.md). */
-const NEAREST_DISTANCE = 3;
 
 /** Levenshtein distance: insert, delete or replace one character, each 1. */
 export function editDistance(a: string, b: string): number {

@@ -55,3 +55,7 @@ const char *const plcvec_reserved_setting_prefixes[] = {
     "PLCVEC_TEST_",
     NULL
 };
+
+/* The largest edit distance at which a PLCVEC_* name that is no setting is taken for a misspelling
+ * of the nearest setting (or old name), which the warning proposes. */
+const size_t plcvec_nearest_distance = 3;

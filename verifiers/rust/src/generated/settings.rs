@@ -47,3 +47,7 @@ pub(crate) const RESERVED: &[&str] = &["PLCVEC_CACHE_DIR", "PLCVEC_ADAPTER", "PL
 
 /// Prefixes of variables kept for the runners' own tests.
 pub(crate) const RESERVED_PREFIXES: &[&str] = &["PLCVEC_TEST_"];
+
+/// The largest edit distance at which a `PLCVEC_*` name that is no setting is taken for a
+/// misspelling of the nearest setting (or old name), which the warning proposes.
+pub(crate) const NEAREST_DISTANCE: usize = 3;

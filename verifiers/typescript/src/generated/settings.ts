@@ -63,3 +63,6 @@ export const RESERVED_SETTINGS: readonly string[] = [
 
 /** Prefixes of variables kept for the runners' own tests. */
 export const RESERVED_SETTING_PREFIXES: readonly string[] = ["PLCVEC_TEST_"];
+
+/** The largest edit distance at which a PLCVEC_* name that is no setting is taken for a misspelling of the nearest setting (or old name), which the warning proposes. */
+export const NEAREST_DISTANCE = 3;

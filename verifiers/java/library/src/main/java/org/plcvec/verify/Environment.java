@@ -56,9 +56,6 @@ public final class Environment {
     public static final int TIMEOUT_MAX_SECONDS = 86400;
     /** Digits with an optional fraction: no sign, no exponent, no spaces (CONTRACT.md's one rule). */
     private static final Pattern SECONDS = Pattern.compile("[0-9]+(\\.[0-9]+)?");
-    /** The farthest a misspelling is from the setting it is taken for (CONTRACT.md: at most 3 edits). */
-    private static final int NEAREST_DISTANCE = 3;
-
     /** The process's {@code PLCVEC_*} variables (or the fixed ones), by name. */
     private final Map<String, String> variables;
     /** The system property that overrides a setting, or nothing. */
@@ -192,7 +189,7 @@ public final class Environment {
                 distance = d;
             }
         }
-        if (best == null || distance > NEAREST_DISTANCE) {
+        if (best == null || distance > SettingNames.NEAREST_DISTANCE) {
             return null;
         }
         SettingNames.OldName old = oldName(best);

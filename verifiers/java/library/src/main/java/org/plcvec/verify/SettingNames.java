@@ -62,6 +62,12 @@ final class SettingNames {
     static final List<String> RESERVED_PREFIXES = List.of(
             "PLCVEC_TEST_");
 
+    /**
+     * The largest edit distance at which a PLCVEC_* name that is no setting is taken for a misspelling
+     * of the nearest setting (or old name), which the warning proposes.
+     */
+    static final int NEAREST_DISTANCE = 3;
+
     private SettingNames() {
     }
 }
