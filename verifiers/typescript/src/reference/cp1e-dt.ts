@@ -81,8 +81,17 @@ export class Cp1eTimeCompare extends BaseMachine {
 
   protected evaluate(condition: string, operands: Operands): boolean {
     const mem = this.mem;
-    const s1 = mem.words(deviceOf(operands["S1"], "S1"), 3);
-    const s2 = mem.words(deviceOf(operands["S2"], "S2"), 3);
+    const s1Dev = deviceOf(operands["S1"], "S1");
+    const s2Dev = deviceOf(operands["S2"], "S2");
+    // "S1 to S1+2", "S2 to S2+2": three words each. One past the end of the data area (S1 or S2 in
+    // one of its last two words) is CP1E-PAST-AREA-END, found before C or the data are looked at.
+    if (!mem.inRange(s1Dev, 3) || !mem.inRange(s2Dev, 3)) {
+      // A program error: not executed, nothing written, an OFF execution condition.
+      if (this.choice("CP1E-PAST-AREA-END") === "program-error") return false;
+      return this.error();
+    }
+    const s1 = mem.words(s1Dev, 3);
+    const s2 = mem.words(s2Dev, 3);
     const c = mem.operand(operands["C"]!);
     if (c & 0xffc0 && this.choice("CP1E-C-HIGH-BITS") === "error") return this.error();
     // "To mask a time value, set the corresponding bit in the control word (C) to 1."

@@ -89,14 +89,19 @@ export class Fx5CompareMachine extends BaseMachine {
     const s3 = mem.operand(operands["s3"]!);
     // "(5) When 1 is set to the 15 bit, ... compared with the current time ... (s2) is regarded as dummy data and ignored."
     const useClock = (s3 & 0x8000) !== 0;
+    // "(4) Set 0. If a value other than 0 is set, the operation result will be non-continuity" (bits 3
+    // to 14); "Other than 0001H to 0007H, 8001H to 8007H  None ... (The operation result will be non-continuity.)"
+    const valid = this.s3Valid(s3);
     // "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the corresponding device range, SM709 turns on"
-    if (!mem.inRange(s1Dev, 3)) return this.error();
     const s2Checked = !useClock || this.choice("FX5-CLOCK-S2-DEVICE-RANGE") === "checked";
-    if (s2Checked && !mem.inRange(s2Dev, 3)) return this.error();
+    if (!mem.inRange(s1Dev, 3) || (s2Checked && !mem.inRange(s2Dev, 3))) {
+      // An invalid (s3) as well: which rule decides is FX5-INVALID-S3-DEVICE-RANGE.
+      if (!valid && this.choice("FX5-INVALID-S3-DEVICE-RANGE") === "s3-first") return false;
+      return this.error();
+    }
 
     const s1 = mem.words(s1Dev, 3);
     const s2 = useClock ? this.fields.map((f) => clock?.[f.name] ?? 0) : mem.words(s2Dev, 3);
-    const valid = this.s3Valid(s3);
     // "If the comparison target data in the device are not recognized as time data, SM709 turns on":
     // which words are comparison target data is FX5-SM709-SCOPE.
     const scope = this.choice("FX5-SM709-SCOPE");

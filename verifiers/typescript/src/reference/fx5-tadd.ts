@@ -1,5 +1,5 @@
 /** Mitsubishi MELSEC iQ-F FX5: TADD / TADDP (adding clock data), from fx5-time-add-TADD.txt. */
-import type { StepInputs } from "../index.js";
+import { Memory, type StepInputs } from "../index.js";
 import { BaseMachine, deviceOf, signed16, type Operands } from "./machine.js";
 
 const DAY = 24 * 3600;
@@ -16,6 +16,15 @@ export const RANGES: readonly (readonly [number, number])[] = [
   [0, 59],
   [0, 59],
 ];
+// Seconds in one hour, minute, second; and what each word counts up to before it carries.
+const WEIGHTS: readonly number[] = [3600, 60, 1];
+const RADIX: readonly number[] = [24, 60, 60];
+
+/** The mathematical quotient and remainder (the remainder never negative), as "div" and "mod" say. */
+function divmod(n: number, d: number): [number, number] {
+  const q = Math.floor(n / d);
+  return [q, n - q * d];
+}
 
 export class TaddMachine extends BaseMachine {
   readonly contact = false;
@@ -64,11 +73,47 @@ export class TaddMachine extends BaseMachine {
       this.error(ERR_VALUE_RANGE);
       if (this.choice("TADD-ON-ERROR") === "not-executed") return;
     }
-    const total = (s1[0]! + s2[0]!) * 3600 + (s1[1]! + s2[1]!) * 60 + (s1[2]! + s2[2]!);
+    const total = this.sumSeconds(s1Dev, s2Dev, dDev);
     const { result, carry } = this.wrap(total);
     mem.writeWords(dDev, [Math.floor(result / 3600), Math.floor((result % 3600) / 60), result % 60]);
     // "If the result is 0 (0:00:00), the zero flag turns on."
     this.setFlags(carry, result === 0);
+  }
+
+  /**
+   * (s1) + (s2) in seconds, the words read in the order TADD-OVERLAP says. The order shows only
+   * when (d) shares words with (s1) or (s2) at another offset ((d) = (s1)+1, ...): a source word
+   * read after a word of (d) was written then holds what was written.
+   */
+  protected sumSeconds(s1Dev: string, s2Dev: string, dDev: string): number {
+    const mem = this.mem;
+    const word = (dev: string, k: number): number => signed16(mem.word(Memory.offset(dev, k)));
+    const order = this.choice("TADD-OVERLAP");
+    let total = 0;
+    if (order === "sources-first") {
+      // "add the time data stored in ... (s2) to the clock data stored in ... (s1)": all six words first.
+      const s1 = mem.words(s1Dev, 3).map(signed16);
+      const s2 = mem.words(s2Dev, 3).map(signed16);
+      for (let k = 0; k < 3; k++) total += (s1[k]! + s2[k]!) * WEIGHTS[k]!;
+    } else if (order === "second-first") {
+      // Second, minute, hour: each word of (d) gets its digit as soon as it is known, the carry going up.
+      let carry = 0;
+      for (const k of [2, 1, 0]) {
+        const sum = word(s1Dev, k) + word(s2Dev, k);
+        total += sum * WEIGHTS[k]!;
+        const [next, digit] = divmod(sum + carry, RADIX[k]!);
+        mem.write(Memory.offset(dDev, k), digit);
+        carry = next;
+      }
+    } else {
+      // hour-first: each pair's plain sum into (d), hour to second; the caller settles the carries.
+      for (const k of [0, 1, 2]) {
+        const sum = word(s1Dev, k) + word(s2Dev, k);
+        total += sum * WEIGHTS[k]!;
+        mem.write(Memory.offset(dDev, k), sum);
+      }
+    }
+    return total;
   }
 
   execute(instruction: string, operands: Operands, step: StepInputs): undefined {
