@@ -111,6 +111,17 @@ class PulseEveryScan extends TaddMachine {
   }
 }
 
+/**
+ * (s1) copied into (d) word by word from the hour, then (s2) added to (d) in place: a word of (s2),
+ * or a later word of (s1), that is also a word of (d) is overwritten before it is read.
+ */
+class S1CopiedIntoDFirst extends TaddMachine {
+  protected override sumSeconds(s1Dev: string, s2Dev: string, dDev: string): number {
+    for (let k = 0; k < 3; k++) this.mem.write(Memory.offset(dDev, k), this.mem.word(Memory.offset(s1Dev, k)));
+    return super.sumSeconds(dDev, s2Dev, dDev);
+  }
+}
+
 // -- FC6A HOUR ----------------------------------------------------------------------------------
 
 /** The measuring cycle one hour short: 65535:00:00 wraps to 0. */
@@ -169,6 +180,15 @@ class NibbleAbove9 extends Cp1eTimeCompare {
   }
 }
 
+/**
+ * No end to the data area: S1 or S2 at its last one or two words is compared all the same, the words
+ * past the end read as 0, instead of the error or program error CP1E-PAST-AREA-END names.
+ */
+function pastAreaCompared(mem: Memory, choices: Readonly<Record<string, string>>): Cp1eTimeCompare {
+  mem.inRange = () => true;
+  return new Cp1eTimeCompare(mem, choices);
+}
+
 function replacing(family: string, factory: MachineFactory): Readonly<Record<string, MachineFactory>> {
   return { ...MACHINES, [family]: factory };
 }
@@ -207,6 +227,12 @@ export const MUTANTS: Readonly<Record<string, Mutant>> = {
     bug: "(d) written past the end of its device",
     machines: replacing("fx5-time-add", (m, c) => new WritesPastRange(m, c)),
   },
+  "tadd-s1-copied-into-d-first": {
+    family: "fx5-time-add",
+    aspect: "changed word",
+    bug: "(s1) copied into (d) first, then (s2) added to (d) in place",
+    machines: replacing("fx5-time-add", (m, c) => new S1CopiedIntoDFirst(m, c)),
+  },
   "tadd-hour-not-wrapped": { family: "fx5-time-add", aspect: "changed word", bug: "a sum past 24:00:00 not wrapped", machines: replacing("fx5-time-add", (m, c) => new HourNotWrapped(m, c)) },
   "taddp-every-scan": { family: "fx5-time-add", aspect: "changed word", bug: "TADDP executed on every scan", machines: replacing("fx5-time-add", (m, c) => new PulseEveryScan(m, c)) },
   "hour-cycle-short": { family: "fc6a-hour-meter", aspect: "changed word", bug: "wraps at 65535:00:00", machines: replacing("fc6a-hour-meter", (m, c) => new CycleShort(m, c)) },
@@ -223,6 +249,12 @@ export const MUTANTS: Readonly<Record<string, Mutant>> = {
     aspect: "interpretation alternative",
     bug: "P_ER held, whatever is declared, and a held P_ER keeps the contact off",
     machines: replacing("cp1e-time-compare", (m, c) => new ErHeld(m, c)),
+  },
+  "cp1e-past-area-compared": {
+    family: "cp1e-time-compare",
+    aspect: "flag",
+    bug: "S1 or S2 past the end of the data area compared, the missing words read as 0",
+    machines: replacing("cp1e-time-compare", pastAreaCompared),
   },
   "cp1e-nibble-above-9": { family: "cp1e-time-compare", aspect: "flag", bug: "a nibble of 10 compared as BCD, and P_ER turned on as well", machines: replacing("cp1e-time-compare", (m, c) => new NibbleAbove9(m, c)) },
 };
