@@ -9,6 +9,7 @@ import importlib.util
 import json
 import os
 import re
+import shlex
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -24,7 +25,7 @@ ACTION = REPO / "action.yml"
 OLD_ACTION = REPO / "verifiers" / "ci" / "github" / "action.yml"
 GITLAB = REPO / "verifiers" / "ci" / "gitlab" / "plcvec-gate.yml"
 FAMILY = "fx5-time-add"
-REFERENCE = f"{sys.executable} -m plcvec_reference.adapter"
+REFERENCE = f"{shlex.quote(sys.executable)} -m plcvec_reference.adapter"
 MUTANT = "tadd-no-wrap-at-24"
 
 

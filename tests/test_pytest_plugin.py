@@ -1,4 +1,5 @@
 """The pytest plugin, as an implementer runs it: in an empty project folder, through pytest itself."""
+import shlex
 import subprocess
 import sys
 
@@ -48,7 +49,7 @@ def test_a_failing_vector_shows_the_field_diff_and_clauses_and_x_stops(tmp_path,
     assert rc == 1, out
     # Declared carry-at-24 by the reference, so the --plcvec-choose conflict is a usage error on every item.
     assert "but the adapter declares TADD-EXACT-24=carry-at-24" in out
-    faulty = f"{sys.executable} {REPO / 'tests' / 'adapters' / 'faulty.py'} wrong-shape {vid}"
+    faulty = shlex.join([sys.executable, str(REPO / 'tests' / 'adapters' / 'faulty.py'), 'wrong-shape', vid])
     rc, out = pytest_in(tmp_path, "--plcvec-adapter", faulty, "-k", "fx5-time-add", "-x")
     assert rc == 1 and f"FAILED ::plcvec::{vid}" in out and "stopping after 1 failures" in out, out
     assert "does not match result.schema.json" in out
@@ -57,7 +58,7 @@ def test_a_failing_vector_shows_the_field_diff_and_clauses_and_x_stops(tmp_path,
 def test_expectations_file_turns_a_failure_into_xfail(tmp_path):
     vid = "fx5-time-add/TADD/manual-example/program"
     (tmp_path / "known.toml").write_text(f'[[known-failure]]\nid = "{vid}"\nreason = "tracked"\n')
-    faulty = f"{sys.executable} {REPO / 'tests' / 'adapters' / 'faulty.py'} wrong-shape {vid}"
+    faulty = shlex.join([sys.executable, str(REPO / 'tests' / 'adapters' / 'faulty.py'), 'wrong-shape', vid])
     rc, out = pytest_in(tmp_path, "--plcvec-adapter", faulty, "--plcvec-expectations", "known.toml",
                         "-k", "manual-example and TADD")
     assert rc == 0 and "1 xfailed" in out, out
@@ -70,7 +71,7 @@ def test_write_expectations_from_the_environment_is_read_back_as_known_failures(
     import os
 
     vid = "fx5-time-add/TADD/manual-example/program"
-    faulty = f"{sys.executable} {REPO / 'tests' / 'adapters' / 'faulty.py'} wrong-shape {vid}"
+    faulty = shlex.join([sys.executable, str(REPO / 'tests' / 'adapters' / 'faulty.py'), 'wrong-shape', vid])
     env = {**os.environ, "PLCVEC_WRITE_EXPECTATIONS": str(tmp_path / "written.toml")}
     args = [sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q", "--plcvec-adapter", faulty,
             "-k", "manual-example and TADD"]

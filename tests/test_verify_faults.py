@@ -6,6 +6,7 @@ per batch as most real adapters do; the runner has to find the culprit itself.
 """
 import json
 import os
+import shlex
 import signal
 import subprocess
 import sys
@@ -140,7 +141,7 @@ def test_an_adapter_that_crashes_on_everything_is_given_up_and_results_are_kept(
     """Every vector crashes it: after the restart budget the run stops; the reports still get written."""
     jsonl = tmp_path / "r.jsonl"
     proc = subprocess.run([sys.executable, "-m", "plcvec", "verify", "--adapter",
-                           f"{sys.executable} {FAULTY} crash-all x", "--family", "fx5-time-add",
+                           shlex.join([sys.executable, str(FAULTY), "crash-all", "x"]), "--family", "fx5-time-add",
                            "--max-restarts", "2", "--batch-size", "4", "--jsonl", str(jsonl)],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 2, proc.stdout + proc.stderr
@@ -155,7 +156,7 @@ def test_an_adapter_that_crashes_on_everything_is_given_up_and_results_are_kept(
 def test_crash_mid_batch_via_cli_keeps_all_other_verdicts_in_the_reports(target, tmp_path):
     jsonl, junit = tmp_path / "r.jsonl", tmp_path / "r.xml"
     proc = subprocess.run([sys.executable, "-m", "plcvec", "verify", "--adapter",
-                           f"{sys.executable} {FAULTY} crash {target}", "--family", "fx5-time-add",
+                           shlex.join([sys.executable, str(FAULTY), "crash", target]), "--family", "fx5-time-add",
                            "--batch-size", "16", "--jsonl", str(jsonl), "--junit", str(junit)],
                           capture_output=True, text=True, timeout=120)
     assert proc.returncode == 1
@@ -230,7 +231,7 @@ def _reap(pids):
 def test_stopping_verify_ends_the_adapter_and_its_child_and_writes_the_reports(tmp_path, signum):
     pidfile, jsonl, junit = tmp_path / "pids", tmp_path / "r.jsonl", tmp_path / "r.xml"
     proc = subprocess.Popen([sys.executable, "-m", "plcvec", "verify", "--adapter",
-                             f"{sys.executable} {SPAWNER} {pidfile}", "--family", "fx5-time-add",
+                             shlex.join([sys.executable, str(SPAWNER), str(pidfile)]), "--family", "fx5-time-add",
                              "--timeout", "300", "--jsonl", str(jsonl), "--junit", str(junit)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     pids = []
@@ -282,7 +283,7 @@ def test_stopping_pytest_with_the_plugin_ends_the_adapter_and_its_child(tmp_path
     """pytest itself ends on SIGTERM without unwinding: the plugin turns it into an interrupt."""
     pidfile = tmp_path / "pids"
     proc = subprocess.Popen([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q",
-                             "--plcvec-adapter", f"{sys.executable} {SPAWNER} {pidfile}",
+                             "--plcvec-adapter", shlex.join([sys.executable, str(SPAWNER), str(pidfile)]),
                              "--plcvec-family", "fx5-time-add", "--plcvec-timeout", "300"],
                             cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     pids = []

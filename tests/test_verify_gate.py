@@ -3,6 +3,7 @@ that is not empty, an implementation that does more than skip.
 """
 import json
 import os
+import shlex
 import stat
 import subprocess
 import sys
@@ -26,7 +27,7 @@ def test_reports_are_written_with_the_umask_like_any_other_file(tmp_path, umask)
     """A report made 0600 cannot be read by a CI uploader running as another user."""
     # wrong-shape on one vector: a failing run, so --write-expectations has something to write.
     vid = "fx5-time-add/TADD/manual-example/program"
-    adapter = f"{sys.executable} {FAULTY} wrong-shape {vid}"
+    adapter = shlex.join([sys.executable, str(FAULTY), "wrong-shape", vid])
     files = [tmp_path / "r.jsonl", tmp_path / "r.xml", tmp_path / "known.toml"]
     old = os.umask(umask)
     try:
@@ -110,7 +111,7 @@ def test_an_empty_vector_file_exits_5(tmp_path, golden_files, capsys):
 @pytest.mark.parametrize("how", [
     ["--python", f"{LAZY}:SupportsNothing"],
     ["--python", f"{LAZY}:SkipsEverything"],
-    ["--adapter", f"{sys.executable} {LAZY} SkipsEverything"],
+    ["--adapter", shlex.join([sys.executable, str(LAZY), "SkipsEverything"])],
 ], ids=["supports-nothing", "skips-everything", "skips-everything-as-a-process"])
 def test_an_adapter_that_skips_everything_exits_5_and_says_so(tmp_path, capsys, golden_files, how):
     n = len(golden_files["fx5-time-add"]["vectors"])
