@@ -10,11 +10,11 @@ use std::cmp::Ordering;
 
 use plcvec::names::{
     Condition, Cp1eAllMasked, Cp1eAndOrWhenOff, Cp1eCHighBits, Cp1eErFlag, Cp1eErrorFlags, Cp1eNonBcd, Cp1eOutOfRange,
-    Form,
+    Cp1ePastAreaEnd, Form,
 };
 use plcvec::{Choices, Memory, Refusal, Vector};
 
-use super::{holds, read3, rlo_in, word_operand, Mutant};
+use super::{device, holds, read3, rlo_in, word_operand, Mutant};
 
 const ERROR_FLAG: &str = "P_ER";
 // "the result of a time comparison instruction is reflected in the arithmetic flags (=, <>, <,
@@ -54,6 +54,7 @@ pub(super) struct Cp1eTimeCompare {
     and_or: Cp1eAndOrWhenOff,
     er_flag: Cp1eErFlag,
     error_flags: Cp1eErrorFlags,
+    past_area_end: Cp1ePastAreaEnd,
     mutant: Option<Mutant>,
 }
 
@@ -76,6 +77,7 @@ impl Cp1eTimeCompare {
             and_or: choices.get(),
             er_flag,
             error_flags: choices.get(),
+            past_area_end: choices.get(),
             mutant,
         }
     }
@@ -116,9 +118,6 @@ impl Cp1eTimeCompare {
     }
 
     fn evaluate(&self, condition: Condition, vector: &Vector, mem: &mut Memory<'_>) -> Result<bool, Refusal> {
-        let s1 = read3(vector, mem, "S1")?;
-        let s2 = read3(vector, mem, "S2")?;
-        let c = word_operand(vector, mem, "C")?;
         // Error: P_ER on, the execution condition off. The flag table has no row for an
         // execution without a comparison result: the six flags keep their values, or
         // (CP1E-ERROR-FLAGS=off) are all written off.
@@ -136,6 +135,21 @@ impl Cp1eTimeCompare {
             Ok(false)
         };
 
+        // "S 1 to S 1 +2", "S 2 to S 2 +2": three words each. One past the end of the data area
+        // (S1 or S2 at one of the last two words of D) is CP1E-PAST-AREA-END, found before C or
+        // the data are read.
+        let within = |operand| device(vector, operand).map(|dev| mem.in_range(dev, 3));
+        let checked = !self.bug(Mutant::Cp1ePastAreaCompared);
+        if checked && !(within("S1")? && within("S2")?) {
+            return match self.past_area_end {
+                Cp1ePastAreaEnd::Error => error(mem),
+                // Not executed: nothing written, an OFF execution condition.
+                Cp1ePastAreaEnd::ProgramError => Ok(false),
+            };
+        }
+        let s1 = read3(vector, mem, "S1")?;
+        let s2 = read3(vector, mem, "S2")?;
+        let c = word_operand(vector, mem, "C")?;
         // Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS).
         if c & 0xFFC0 != 0 && self.c_high_bits == Cp1eCHighBits::Error {
             return error(mem);

@@ -6,7 +6,9 @@
 
 use std::cmp::Ordering;
 
-use plcvec::names::{Condition, Form, Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5OrOnError, Fx5Sm709Scope};
+use plcvec::names::{
+    Condition, Form, Fx5AndOrWhenOff, Fx5ClockS2DeviceRange, Fx5InvalidS3DeviceRange, Fx5OrOnError, Fx5Sm709Scope,
+};
 use plcvec::{Choices, Memory, Refusal, Step, Vector};
 
 use super::{device, holds, read3, rlo_in, signed, word_operand, Mutant};
@@ -52,6 +54,7 @@ pub(super) struct Fx5Compare {
     logic: Fx5AndOrWhenOff,
     clock_s2: Fx5ClockS2DeviceRange,
     or_on_error: Fx5OrOnError,
+    invalid_s3: Fx5InvalidS3DeviceRange,
     mutant: Option<Mutant>,
 }
 
@@ -64,7 +67,14 @@ enum Contact {
 impl Fx5Compare {
     pub(super) fn new(choices: &Choices, mutant: Option<Mutant>) -> Fx5Compare {
         let logic = choices.get::<Fx5AndOrWhenOff>();
-        Fx5Compare { scope: choices.get(), logic, clock_s2: choices.get(), or_on_error: choices.get(), mutant }
+        Fx5Compare {
+            scope: choices.get(),
+            logic,
+            clock_s2: choices.get(),
+            or_on_error: choices.get(),
+            invalid_s3: choices.get(),
+            mutant,
+        }
     }
 
     fn bug(&self, m: Mutant) -> bool {
@@ -174,15 +184,23 @@ impl Fx5Compare {
         // with the current time ... (s2) is regarded as dummy data and ignored."
         let use_clock = s3 & 0x8000 != 0;
 
+        // "(4) Set 0. If a value other than 0 is set, the operation result will be
+        // non-continuity." (bits 3 to 14) "When 0 is set to the 0 to 2 bits, the time data ...
+        // are not compared." Table: "Other than 0001H to 0007H, 8001H to 8007H  None ... (The
+        // operation result will be non-continuity.)"
+        let reserved = if self.bug(Mutant::Fx5ReservedBitsIgnored) { 0 } else { s3 & 0x7FF8 };
+        let s3_valid = reserved == 0 && s3 & 0x0007 != 0;
+
         // "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the
         // corresponding device range, SM709 turns on ... and the operation result will be
-        // non-continuity as well."
-        let range_checked = !self.bug(Mutant::Fx5DeviceRangeUnchecked);
-        if range_checked && !mem.in_range(s1_dev, 3) {
-            return Ok(Contact::Error);
-        }
+        // non-continuity as well." With an invalid (s3) too, FX5-INVALID-S3-DEVICE-RANGE says
+        // which rule decides: the device range (SM709 on), or (s3) (non-continuity alone).
         let s2_checked = !use_clock || self.clock_s2 == Fx5ClockS2DeviceRange::Checked;
-        if range_checked && s2_checked && !mem.in_range(s2_dev, 3) {
+        let past = !mem.in_range(s1_dev, 3) || (s2_checked && !mem.in_range(s2_dev, 3));
+        if past && !self.bug(Mutant::Fx5DeviceRangeUnchecked) {
+            if !s3_valid && self.invalid_s3 == Fx5InvalidS3DeviceRange::S3First {
+                return Ok(Contact::Compared(false));
+            }
             return Ok(Contact::Error);
         }
 
@@ -202,13 +220,6 @@ impl Fx5Compare {
         } else {
             read3(vector, mem, "s2")?
         };
-
-        // "(4) Set 0. If a value other than 0 is set, the operation result will be
-        // non-continuity." (bits 3 to 14) "When 0 is set to the 0 to 2 bits, the time data ...
-        // are not compared." Table: "Other than 0001H to 0007H, 8001H to 8007H  None ... (The
-        // operation result will be non-continuity.)"
-        let reserved = if self.bug(Mutant::Fx5ReservedBitsIgnored) { 0 } else { s3 & 0x7FF8 };
-        let s3_valid = reserved == 0 && s3 & 0x0007 != 0;
 
         // "If the comparison target data in the device are not recognized as time data, SM709
         // turns on ... and the operation result will be non-continuity." Which words are

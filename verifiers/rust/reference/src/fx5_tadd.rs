@@ -2,8 +2,8 @@
 //!
 //! Written from the manual page fx5-time-add-TADD.txt.
 
-use plcvec::names::{Execution, Instruction, TaddErrorOrder, TaddExact24, TaddFlagsOff, TaddOnError};
-use plcvec::{Choices, Memory, Refusal, Step, Value, Vector};
+use plcvec::names::{Execution, Instruction, TaddErrorOrder, TaddExact24, TaddFlagsOff, TaddOnError, TaddOverlap};
+use plcvec::{Address, Choices, Memory, Refusal, Step, Value, Vector};
 
 use super::{device, read3, signed, Mutant};
 
@@ -17,6 +17,10 @@ const ERROR_REGISTERS: [&str; 2] = ["SD0", "SD8067"];
 const ERR_DEVICE_RANGE: u16 = 0x2820;
 // "3405H Any of values specified by (s1) and (s2) is outside the following range."
 const ERR_VALUE_RANGE: u16 = 0x3405;
+// "(s1) hour ... (s1)+1 minute ... (s1)+2 second": the seconds one unit of each word is worth,
+// and what each word counts up to before it carries (24 hours, 60 minutes, 60 seconds).
+const WEIGHTS: [i64; 3] = [3600, 60, 1];
+const RADIX: [i64; 3] = [24, 60, 60];
 
 #[derive(Clone, Debug)]
 pub(super) struct Fx5TimeAdd {
@@ -24,6 +28,7 @@ pub(super) struct Fx5TimeAdd {
     exact_24: TaddExact24,
     on_error: TaddOnError,
     error_order: TaddErrorOrder,
+    overlap: TaddOverlap,
     mutant: Option<Mutant>,
     /// TADDP: the state of EN before this scan ("off" before the first).
     previous_en: bool,
@@ -36,6 +41,7 @@ impl Fx5TimeAdd {
             exact_24: choices.get(),
             on_error: choices.get(),
             error_order: choices.get(),
+            overlap: choices.get(),
             mutant,
             previous_en: false,
         }
@@ -94,15 +100,13 @@ impl Fx5TimeAdd {
             error(mem, first);
             return Ok(());
         }
-        let s1 = read3(vector, mem, "s1")?.map(signed);
-        let s2 = read3(vector, mem, "s2")?.map(signed);
         if bad {
             error(mem, ERR_VALUE_RANGE);
             if self.on_error == TaddOnError::NotExecuted {
                 return Ok(());
             }
         }
-        let total = (s1[0] + s2[0]) * 3600 + (s1[1] + s2[1]) * 60 + (s1[2] + s2[2]);
+        let total = self.sum_seconds(mem, [s1_dev, s2_dev, d_dev]);
         let (result, carry) = self.wrap(total);
         let (h, m, s) = (result / 3600, result % 3600 / 60, result % 60);
         for (offset, v) in [h, m, s].into_iter().enumerate() {
@@ -111,6 +115,53 @@ impl Fx5TimeAdd {
         // "If the result is 0 (0:00:00), the zero flag turns on."
         self.set_flags(mem, carry, result == 0);
         Ok(())
+    }
+
+    /// (s1) + (s2) in seconds, the words read in the order TADD-OVERLAP says. The order shows only
+    /// when (d) shares words with (s1) or (s2) at another offset ((d) = (s1)+1, ...): then a source
+    /// word read after that word of (d) was written holds what was written.
+    fn sum_seconds(&self, mem: &mut Memory<'_>, [s1, s2, d]: [&Address; 3]) -> i64 {
+        let word = |mem: &Memory<'_>, dev: &Address, k: usize| signed(mem.word(dev, k as u32));
+        let s1 = if self.bug(Mutant::TaddS1CopiedIntoDFirst) {
+            // (s1) copied into (d) from the hour down, then (s2) added to (d) in place.
+            for k in 0..3 {
+                let w = mem.word(s1, k);
+                mem.set_word(d, k, w);
+            }
+            d
+        } else {
+            s1
+        };
+        let mut total = 0;
+        match self.overlap {
+            // Every word of (s1) and (s2) is read before (d) is written.
+            TaddOverlap::SourcesFirst => {
+                let (a, b) = ([0, 1, 2].map(|k| word(mem, s1, k)), [0, 1, 2].map(|k| word(mem, s2, k)));
+                total = a.iter().zip(b).zip(WEIGHTS).map(|((a, b), weight)| (a + b) * weight).sum();
+            }
+            // Second, minute, hour, the carry's way: each word of (d) gets its digit as soon as it
+            // is known, and the next pair of words is read after that.
+            TaddOverlap::SecondFirst => {
+                let mut carry = 0;
+                for k in (0..3).rev() {
+                    let sum = word(mem, s1, k) + word(mem, s2, k);
+                    total += sum * WEIGHTS[k];
+                    let digit = (sum + carry).rem_euclid(RADIX[k]);
+                    carry = (sum + carry).div_euclid(RADIX[k]);
+                    mem.set_word(d, k as u32, digit as u16);
+                }
+            }
+            // Hour, minute, second, in the words' order: the plain sum of each pair into (d); the
+            // carries are settled afterwards, when the caller writes the time of day of the total.
+            TaddOverlap::HourFirst => {
+                for (k, weight) in WEIGHTS.into_iter().enumerate() {
+                    let sum = word(mem, s1, k) + word(mem, s2, k);
+                    total += sum * weight;
+                    mem.set_word(d, k as u32, sum as u16);
+                }
+            }
+        }
+        total
     }
 
     /// The sum in seconds -> (the result in seconds, the carry).

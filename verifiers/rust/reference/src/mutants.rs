@@ -25,6 +25,9 @@ pub enum Mutant {
     TaddpEveryScan,
     /// (s1), (s2) and (d) are not checked against the device range: D beyond D7999 is written.
     TaddDeviceRangeUnchecked,
+    /// (s1) is copied into (d) from the hour down, then (s2) is added to (d) in place, so a word of
+    /// (s2), or a later word of (s1), that is also a word of (d) is overwritten before it is read.
+    TaddS1CopiedIntoDFirst,
     /// D2 turns on only once D1 is past S1, not when it reaches it.
     HourOutputAbovePreset,
     /// Each scan's ON time is cut to whole seconds and the remainder thrown away.
@@ -39,6 +42,9 @@ pub enum Mutant {
     Cp1eFlagsNotReflected,
     /// An execution that ends in error does not turn P_ER on (the rest of the error is handled).
     Cp1eErFlagNotSet,
+    /// S1 or S2 at the last one or two words of the data area is compared all the same, the words
+    /// past the end read as 0, instead of the error or program error CP1E-PAST-AREA-END names.
+    Cp1ePastAreaCompared,
 }
 
 impl Mutant {
@@ -53,6 +59,7 @@ impl Mutant {
         Mutant::TaddSm8022NotWritten,
         Mutant::TaddpEveryScan,
         Mutant::TaddDeviceRangeUnchecked,
+        Mutant::TaddS1CopiedIntoDFirst,
         Mutant::HourOutputAbovePreset,
         Mutant::HourDropsFraction,
         Mutant::HourWrapClearsD2,
@@ -60,6 +67,7 @@ impl Mutant {
         Mutant::Cp1eAndAsOr,
         Mutant::Cp1eFlagsNotReflected,
         Mutant::Cp1eErFlagNotSet,
+        Mutant::Cp1ePastAreaCompared,
     ];
 
     /// The mutant's name (`tadd-no-wrap-at-24`), as the adapter's `--mutant` takes it.
@@ -74,6 +82,7 @@ impl Mutant {
             Mutant::TaddSm8022NotWritten => "tadd-sm8022-not-written",
             Mutant::TaddpEveryScan => "taddp-every-scan",
             Mutant::TaddDeviceRangeUnchecked => "tadd-device-range-unchecked",
+            Mutant::TaddS1CopiedIntoDFirst => "tadd-s1-copied-into-d-first",
             Mutant::HourOutputAbovePreset => "hour-output-above-preset",
             Mutant::HourDropsFraction => "hour-drops-fraction",
             Mutant::HourWrapClearsD2 => "hour-wrap-clears-d2",
@@ -81,6 +90,7 @@ impl Mutant {
             Mutant::Cp1eAndAsOr => "cp1e-and-as-or",
             Mutant::Cp1eFlagsNotReflected => "cp1e-flags-not-reflected",
             Mutant::Cp1eErFlagNotSet => "cp1e-er-flag-not-set",
+            Mutant::Cp1ePastAreaCompared => "cp1e-past-area-compared",
         }
     }
 
@@ -95,14 +105,16 @@ impl Mutant {
             Mutant::TaddNoWrapAt24
             | Mutant::TaddSm8022NotWritten
             | Mutant::TaddpEveryScan
-            | Mutant::TaddDeviceRangeUnchecked => &[Family::Fx5TimeAdd],
+            | Mutant::TaddDeviceRangeUnchecked
+            | Mutant::TaddS1CopiedIntoDFirst => &[Family::Fx5TimeAdd],
             Mutant::HourOutputAbovePreset | Mutant::HourDropsFraction | Mutant::HourWrapClearsD2 => {
                 &[Family::Fc6aHourMeter]
             }
             Mutant::Cp1eS2BcdUnchecked
             | Mutant::Cp1eAndAsOr
             | Mutant::Cp1eFlagsNotReflected
-            | Mutant::Cp1eErFlagNotSet => &[Family::Cp1eTimeCompare],
+            | Mutant::Cp1eErFlagNotSet
+            | Mutant::Cp1ePastAreaCompared => &[Family::Cp1eTimeCompare],
         }
     }
 

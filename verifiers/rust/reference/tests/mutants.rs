@@ -123,6 +123,11 @@ mutants! {
         ("fx5-time-add/TADD/device-range/d=D7998", "D8000"),
         ("fx5-time-add/TADD/device-range/d=D7998", "SD0"),
     ];
+    // A changed word: 11:30:30 + 15:39:39 is 3:10:09, whatever the order (s1), (s2) and (d) are read
+    // and written in (TADD-OVERLAP); the copy makes (d) = (s1)+1 11:11:11 first, and the sum 2:50:50.
+    tadd_s1_copied_into_d_first: TaddS1CopiedIntoDFirst => [
+        ("fx5-time-add/TADD/overlap/d=s1+1", "D101"),
+    ];
     // The output bit: D2 turns on when D1 reaches S1.
     hour_output_above_preset: HourOutputAbovePreset => [
         ("fc6a-hour-meter/HOUR/constant/one", "M10"),
@@ -150,5 +155,11 @@ mutants! {
     // The error flag: 'Error Flag: ON if ... is not BCD' (no reading leaves it off on an error).
     cp1e_er_flag_not_set: Cp1eErFlagNotSet => [
         ("cp1e-time-compare/AND <=DT/logic/rlo-on/invalid-data", "P_ER"),
+    ];
+    // The error flag and the contact result: S1 at D8190 runs past D8191, an error (P_ER on, an OFF
+    // execution condition); compared with D8192 read as 0, year 00 < 49 makes <>DT conduct.
+    cp1e_past_area_compared: Cp1ePastAreaCompared => [
+        ("cp1e-time-compare/AND <>DT/device-range/S1=D8190", "P_ER"),
+        ("cp1e-time-compare/AND <>DT/device-range/S1=D8190", "result"),
     ];
 }
