@@ -7,7 +7,9 @@
 Every change griffe calls breaking must be listed under **Breaking** in CHANGES.md's entry for this
 version, with its object in backticks (`plcvec_verify.compare.Problem`), and the version must move
 as CONTRACT.md's compatibility policy says; otherwise exit 1 naming each unlisted change. Exit 2 when
-the previous release cannot be read.
+the previous release cannot be read. A name the previous release had that is now an import of a name
+that no longer exists (a re-export left behind by a move) counts as removed: griffe's comparison does
+not follow it.
 """
 from __future__ import annotations
 
@@ -45,6 +47,50 @@ def unlisted(breakages, section: str) -> list[str]:
     return out
 
 
+def _modules(module):
+    yield module
+    for sub in module.modules.values():
+        yield from _modules(sub)
+
+
+def dangling_reexports(old, new) -> list[str]:
+    """Names of the previous release that are now an import of a name that no longer exists (a module
+    moved, its old home importing it back for its users, then the moved name renamed): griffe's
+    comparison does not follow such an import, and Python would fail on it at import time."""
+    import griffe
+
+    out = []
+    for module in _modules(new):
+        for name, member in module.members.items():
+            if not member.is_alias or not member.target_path.startswith(PACKAGE + "."):
+                continue
+            try:
+                member.final_target
+            except (griffe.AliasResolutionError, griffe.CyclicAliasError):
+                if _resolves(old, f"{module.path}.{name}"[len(PACKAGE) + 1:]):
+                    out.append(f"{module.path}.{name}")
+    return out
+
+
+def _resolves(package, path: str) -> bool:
+    """Whether `path` names an object of `package` that griffe can follow to its definition (not one the
+    previous release lacked, nor one griffe cannot see either way, such as `A, B = 1, 2`)."""
+    import griffe
+
+    try:
+        member = package[path]
+        if member.is_alias:
+            member.final_target
+    except (KeyError, griffe.AliasResolutionError, griffe.CyclicAliasError):
+        return False
+    return True
+
+
+def unlisted_names(paths, section: str) -> list[str]:
+    return [f"{p}: public object was removed (it imports {p.rpartition('.')[2]} from where it no longer is)"
+            for p in paths if f"`{p}`" not in section]
+
+
 def main(argv=None) -> int:
     import griffe
 
@@ -63,6 +109,9 @@ def main(argv=None) -> int:
     new = griffe.load(PACKAGE, search_paths=[args.new], try_relative_path=False)
     found = list(griffe.find_breaking_changes(old, new))
     missing = unlisted(found, breaking_section(__version__))
+    dangling = dangling_reexports(old, new)
+    found += dangling
+    missing += unlisted_names(dangling, breaking_section(__version__))
     major_or_minor = tuple(map(int, __version__.split(".")))[:2] > tuple(map(int, version.split(".")))[:2]
     if found and not major_or_minor:
         missing.append(f"{len(found)} breaking changes, but {__version__} is not a new minor or major release")
