@@ -1,16 +1,21 @@
-"""The verifier's fast path (compare.passes) accepts only what the full comparison accepts.
+"""The verifier's quick paths (compare.passes_at_once: an in-process answer's bytes, its steps value by
+value, a process's message through compare.passes) accept only what the full judging accepts.
 
 An answer is built from each vector's own expectation, as a conforming adapter would report it; the
-fast path must accept it, and must refuse every answer that differs from it in a value or in a JSON
+quick paths must accept it, and must refuse every answer that differs from it in a value or in a JSON
 type that Python's equality does not see (1 for true, 0 for false, 2105.0 for the word 2105), and
 the full comparison must refuse it too.
 """
+from marshal import dumps
+
 import pytest
 
 from plcvec_verify import Suite
-from plcvec_verify.compare import compare, passes
+from plcvec_verify.adapters import Answer, InProcess
+from plcvec_verify.compare import compare, judge, passes, passes_at_once, steps_pass_by_value
+from plcvec_verify.expect import PACKED_FORMAT
+from plcvec_verify.protocol import result_errors
 from plcvec_verify.runner import Plan, run
-from plcvec_verify.adapters import InProcess
 
 from conftest import REPO
 
@@ -68,6 +73,8 @@ def wrong_answers(exp):
             msg["steps"][i]["result"] = not result
             yield f"step {i} result inverted", msg
         for dev, value in state.items():
+            if dev in exp.left_out:     # unjudged: any word or bit is right there (below)
+                continue
             if isinstance(value, bool):
                 near = [int(value), float(value)]
             else:
@@ -77,6 +84,10 @@ def wrong_answers(exp):
                 msg = answer(exp)
                 msg["steps"][i]["devices"][dev] = swapped
                 yield f"step {i} {dev} = {swapped!r}", msg
+    for dev in sorted(exp.left_out):
+        msg = answer(exp)
+        msg["steps"][last]["devices"][dev] = 2.5
+        yield f"unjudged {dev} = 2.5, neither a word nor a bit", msg
     msg = answer(exp)
     msg["steps"][last]["devices"]["D9999"] = 0
     yield "an extra device", msg
@@ -94,7 +105,7 @@ def test_a_near_miss_never_passes_at_once(plan):
         for what, msg in wrong_answers(exp):
             msg = with_scratch(exp, msg)
             assert not passes(exp, msg), f"{exp.id}: {what}"
-            assert compare(exp, msg["steps"]) or "key" in what, f"{exp.id}: {what}"
+            assert compare(exp, msg["steps"]) or result_errors(msg), f"{exp.id}: {what}"
             checked += 1
     assert checked > 1000
 
@@ -200,3 +211,93 @@ def test_a_run_whose_devices_come_in_another_order_passes_and_still_sees_a_float
     assert report.counts["pass"] == len(some) and report.exit_code == 0
     report = run(suite, InProcess(_Reversed(plan, float)), vectors=some)
     assert report.counts["fail"] > 300 and report.exit_code == 1
+
+
+# -- each quick way agrees with the judging it spares ----------------------------------------------
+
+def unjudging_choices(suite):
+    """Every interpretation that has an alternative leaving devices unjudged, set to it: the vectors it
+    touches have devices never compared, which the quick paths must leave out too."""
+    chosen = {}
+    for v in suite.vectors:
+        for alt in v.get("alternatives", ()):
+            if alt.get("unjudged"):
+                for interp in alt["unjudged"]:
+                    chosen.setdefault(interp, alt["choices"][interp])
+    return chosen
+
+
+QUICK_WAYS = {
+    # The runner's three quick ways, each on its own: what it says of an answer's steps. The bytes are
+    # there only for a vector whose devices are all compared (the others' are the implementation's own).
+    "in-process bytes": lambda exp, steps: not exp.ignored and _packs_to(exp, steps),
+    "in-process value by value": lambda exp, steps: steps_pass_by_value(exp, steps),
+    "a process's message": lambda exp, steps: passes(exp, {"type": "result", "id": exp.id, "steps": steps}),
+}
+
+
+def _packs_to(exp, steps):
+    assert exp.packed_answer is not None, exp.id
+    try:
+        return dumps({"steps": steps}, PACKED_FORMAT) == exp.packed_answer
+    except ValueError:
+        return False
+
+
+def _forms(exp, msg):
+    """The answer `msg` (a result message) as each kind of adapter hands it to the runner."""
+    bare = {k: v for k, v in msg.items() if k not in ("type", "id")}
+    return {"in process": (exp.id, bare, None, True), "over stdio": Answer(exp.id, msg)}
+
+
+@pytest.fixture(scope="module")
+def expectations(plan):
+    """A sample of every family's expectations under the defaults, and of those whose followed
+    alternative leaves devices unjudged."""
+    suite = Suite.load(REPO / "vectors")
+    chosen = unjudging_choices(suite)
+    assert chosen, "no alternative leaves devices unjudged: the sample would miss that path"
+    unjudging = Plan(suite, [v for v in suite.vectors if set(chosen) & set(v["outcome"].get("interpretations", ()))],
+                     chosen)
+    out = list(plan.expected.values())[::9] + [e for e in unjudging.expected.values() if e.unjudged]
+    assert {e.family for e in out} == set(suite.headers) and sum(bool(e.scratch) for e in out) > 10
+    assert sum(bool(e.unjudged) for e in out) >= 10
+    return out
+
+
+@pytest.mark.parametrize("way", QUICK_WAYS)
+def test_each_quick_way_agrees_with_compare(expectations, way):
+    """A quick way accepts the conforming answer, which compare() and the result schema accept too (else
+    the runner would take the long way for every vector), and refuses the steps of every near miss,
+    in each of which compare() finds a problem or the schema one. (An extra key of the message is not in its steps:
+    the runner's own test of the message's keys refuses it, below.)"""
+    quick = QUICK_WAYS[way]
+    refused = 0
+    for exp in expectations:
+        conforming = with_scratch(exp, answer(exp))
+        assert compare(exp, conforming["steps"]) == [] and result_errors(conforming) == [], exp.id
+        assert quick(exp, conforming["steps"]) is (way != "in-process bytes" or not exp.ignored), \
+            f"{way}: {exp.id}: the conforming answer"
+        for what, msg in wrong_answers(exp):
+            if what == "an extra key":
+                continue
+            msg = with_scratch(exp, msg)
+            assert compare(exp, msg["steps"]) or result_errors(msg), f"{exp.id}: {what}"
+            assert not quick(exp, msg["steps"]), f"{way} passes {exp.id} with {what}"
+            refused += 1
+    assert refused > 1000
+
+
+def test_an_answer_passed_at_once_is_one_the_judging_passes(expectations):
+    """The runner's decision (passes_at_once, on an answer as each kind of adapter hands it over) against
+    the long way (judge): the conforming answer passes both ways; every near miss is refused at once,
+    and (a sixth of them: judging an answer the schema refuses is slow) fails or errs when judged."""
+    for n, exp in enumerate(expectations):
+        for kind, ans in _forms(exp, with_scratch(exp, answer(exp))).items():
+            assert passes_at_once(ans, exp) is True, f"{kind}: {exp.id}"
+            verdict = judge(ans, exp)
+            assert (verdict.status, verdict.problems, verdict.message) == ("pass", (), ""), f"{kind}: {exp.id}"
+        for what, msg in wrong_answers(exp):
+            for kind, ans in _forms(exp, with_scratch(exp, msg)).items():
+                assert not passes_at_once(ans, exp), f"{kind}: {exp.id}: {what}"
+                assert n % 6 or judge(ans, exp).status in ("fail", "error"), f"{kind}: {exp.id}: {what}"

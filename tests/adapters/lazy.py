@@ -8,6 +8,7 @@
 import sys
 
 from plcvec_reference.adapter import ReferenceAdapter
+from plcvec_verify.implementation import skip
 from plcvec_verify.serve import serve
 
 
@@ -18,7 +19,7 @@ class SupportsNothing(ReferenceAdapter):
 
 class SkipsEverything(ReferenceAdapter):
     def run(self, request):
-        return {"skip": "not implemented yet"}
+        return skip("not implemented yet")
 
 
 class OnlyTadd(ReferenceAdapter):

@@ -1,20 +1,8 @@
 """Adapters: how the runner reaches an implementation.
 
-A Python adapter object has two methods:
-
-    hello(request: dict) -> dict
-        `request` is the runner's hello message (suite version, spec hash, the families with their
-        instructions and interpretations). Returns {"adapter": {"name", "version"},
-        "instructions": [...], "interpretations": {id: alternative}, "cpu_writes"?: [device, ...]}:
-        the hello-response message without `type` and `protocol`. An object may instead carry the
-        devices its CPU writes on its own account as an attribute `cpu_writes` (CONTRACT.md).
-    run(request: dict) -> dict
-        `request` is one vector without its expectations (run-request.schema.json#/$defs/request).
-        Returns {"steps": [{"result"?, "devices"}]}, or {"skip": reason}, or {"error": message}:
-        a result message without `type` and `id`.
-
-`InProcess` drives such an object directly; `stdio.StdioAdapter` drives a process that speaks
-the same messages as JSON lines. Both hand the runner the same `Answer`s.
+`InProcess` drives an object in this process (the interface it provides is implementation.py's);
+`stdio.StdioAdapter` drives a process that speaks the same messages as JSON lines (PROTOCOL.md).
+Both hand the runner the same `Answer`s.
 """
 from __future__ import annotations
 
@@ -29,6 +17,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 from .errors import VerifyError
+from .implementation import Implementation
 from .protocol import PROTOCOL_VERSION, schema_errors
 
 
@@ -91,7 +80,7 @@ def check_hello(answer, source: str) -> dict:
 class InProcess:
     """Drive a Python adapter object in this process."""
 
-    def __init__(self, adapter, label: str | None = None, timeout: float | None = None):
+    def __init__(self, adapter: Implementation, label: str | None = None, timeout: float | None = None):
         self.adapter = adapter
         self.label = label or type(adapter).__name__
         self.notes: list[tuple[str | None, str]] = []

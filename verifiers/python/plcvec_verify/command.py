@@ -128,7 +128,7 @@ def parse_timeout(text: str, option: str) -> float:
 
 
 def build_selection(args, came: dict | None = None):
-    from .suite import Selection, parse_shard
+    from .selection import Selection, parse_shard
 
     came = came or {}
     return Selection(families=tuple(args.family), instructions=tuple(args.instruction), tags=tuple(args.tag),

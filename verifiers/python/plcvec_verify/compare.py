@@ -9,10 +9,13 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass
+from functools import partial
 from marshal import dumps
 
+from .adapters import result_message
 from .expect import PACKED_FORMAT, Expected
-from .protocol import WORD_MAX
+from .protocol import WORD_MAX, result_errors, result_shape_ok
+from .verdict import ERROR, FAIL, PASS, SKIP, VectorResult
 
 MISSING = "<not reported>"
 UNLISTED = "<not in the vector>"
@@ -82,6 +85,54 @@ def _json_type(value):
 
 def _same(expected, actual) -> bool:
     return expected == actual and _json_type(expected) is _json_type(actual)
+
+
+def passes_at_once(answer, expected: Expected) -> bool:
+    """Whether an adapter's answer passes, decided at once for the usual one; False means "look closer"
+    (judge). One of three quick ways, each accepting only what judge() passes (the test of this module
+    holds each of them to it, tests/test_compare_fast_path.py):
+
+    - an in-process adapter's answer (`bare`: the result message without `type` and `id`, never a
+      fault) whose bytes in marshal's format are the expectation's (`Expected.packed_answer`;
+      steps_pass says why equal bytes are exact, JSON types included);
+    - such an answer whose steps equal the expectation value for value and type for type (devices
+      listed in another order, values of types marshal refuses, devices never compared);
+    - a process's result message, through `passes`.
+    """
+    _, msg, fault, bare = answer
+    if not bare:
+        return fault is None and passes(expected, msg)
+    try:
+        if dumps(msg, PACKED_FORMAT) == expected.packed_answer:
+            return True
+    except ValueError:      # marshal refuses it: not plain dicts, lists and numbers
+        pass
+    return len(msg) == 1 and steps_pass_by_value(expected, msg.get("steps"))
+
+
+def judge(answer, expected: Expected, cpu_writes=frozenset()) -> VectorResult:
+    """The verdict on one adapter's answer (an adapters.Answer, or its fields as a plain tuple), the long
+    way: a fault or a message the schema refuses is an error, steps are compared field by field, a
+    `skip` skips and an `error` is one. Right for every answer; `passes_at_once` spares the usual one.
+    """
+    fault = answer[2]
+    msg = result_message(answer)
+    problems = None
+    if not fault and result_shape_ok(msg):
+        problems = compare(expected, msg["steps"], cpu_writes)     # shape fine: compare at once
+    # A comparison that passes has seen every reported value equal to one of the vector's, which
+    # are valid; the values of devices it does not compare (scratch, unjudged) it has not seen.
+    errors = () if fault or (problems == [] and not expected.ignored) else result_errors(msg)
+    verdict = partial(VectorResult, expected.id, expected.family, expected.instruction, choices=expected.choices)
+    if fault or errors:
+        return verdict(ERROR, message=fault or "the result does not match result.schema.json: " + "; ".join(errors))
+    if "steps" in msg:
+        if problems is None:
+            problems = compare(expected, msg["steps"], cpu_writes)
+        return verdict(FAIL if problems else PASS, tuple(problems), answer=msg["steps"] if problems else None)
+    if "skip" in msg:
+        return verdict(SKIP, message=msg["skip"])
+    return verdict(ERROR, message=f"the implementation reported an error: {msg['error']}")
 
 
 def passes(expected: Expected, msg) -> bool:

@@ -10,7 +10,8 @@ import re
 from collections import Counter
 
 from .compare import UNLISTED, Problem, show
-from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, XFAIL, RunReport, VectorResult
+from .runner import RunReport
+from .verdict import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, XFAIL, VectorResult
 
 SHOW_PROBLEMS = 12      # field lines shown per failing vector
 SHOW_REASONS = 12       # skip reasons shown

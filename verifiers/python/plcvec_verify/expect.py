@@ -16,14 +16,16 @@ from __future__ import annotations
 import marshal
 from dataclasses import dataclass, field
 
+from .choices import applied_choices
 from .errors import VerifyError
+from .vector import request_of
 
 # marshal's format 2 writes every object out in full (format 3 on refers back to an object met before,
 # so equal steps built from shared objects would give other bytes) and names each value's exact type:
 # true is not 1, 2105.0 is not 2105, and a subclass of int or dict is refused (ValueError).
 PACKED_FORMAT = 2
 
-# Step keys that are inputs; everything a step holds except `expect`.
+# A step's expectation; everything else a step holds is an input.
 _EXPECT = "expect"
 
 
@@ -67,23 +69,6 @@ class Expected:
         state = dict(self.states[step - 1] if step else self.initial)
         state.update(self.sets[step])
         return state
-
-
-def request_of(vector: dict) -> dict:
-    """The part of a vector an adapter receives: everything needed to run it, no expectation."""
-    return {
-        "id": vector["id"],
-        "family": vector["family"],
-        "instruction": vector["instruction"],
-        "assumes": vector.get("assumes", {}),
-        "initial": vector["initial"],
-        "steps": [{k: v for k, v in step.items() if k != _EXPECT} for step in vector["steps"]],
-    }
-
-
-def applied_choices(vector: dict, choices: dict, defaults: dict) -> dict:
-    """interpretation -> the alternative `vector` is judged by: those it touches, declared or default."""
-    return {i: choices.get(i, defaults.get(i)) for i in vector["outcome"].get("interpretations", ())}
 
 
 def expected_of(vector: dict, choices: dict, defaults: dict) -> Expected:

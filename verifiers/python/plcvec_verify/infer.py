@@ -14,7 +14,8 @@ from dataclasses import dataclass, field
 from itertools import combinations
 
 from .compare import compare
-from .runner import ERROR, FAIL, NOT_RUN, PASS, XFAIL, RunReport
+from .runner import RunReport
+from .verdict import ERROR, FAIL, NOT_RUN, PASS, XFAIL
 
 
 @dataclass(frozen=True)

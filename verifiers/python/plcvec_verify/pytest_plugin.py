@@ -79,16 +79,16 @@ class VectorItem(pytest.Item):
         self.keywords[vector["family"]] = True
 
     def runtest(self):
-        from . import runner
+        from .verdict import PASS, SKIP, XFAIL
 
         result = _results(self.session).get(self.vector["id"])
         if isinstance(result, str):            # the whole run could not be made
             raise VectorFailure(result)
-        if result.status == runner.SKIP:
+        if result.status == SKIP:
             pytest.skip(result.message)
-        if result.status == runner.XFAIL:
+        if result.status == XFAIL:
             pytest.xfail(result.message)
-        if result.status != runner.PASS:
+        if result.status != PASS:
             raise VectorFailure(self._detail(result))
 
     def _detail(self, result):
@@ -229,7 +229,7 @@ def _inferred_results(config, report) -> dict:
     """--plcvec-infer: a failure the inferred choice explains becomes xfail (naming the declaration that
     explains it); a vector that passes now but would fail under that choice fails, saying so."""
     from .infer import inference
-    from .runner import FAIL, XFAIL
+    from .verdict import FAIL, XFAIL
 
     inferred = config._plcvec_inference = inference(report, frozenset(report.cpu_writes))
     by_id = {r.id: r for r in report.results}
@@ -294,7 +294,7 @@ def pytest_terminal_summary(terminalreporter, config):
     from .describe import interpretations_line, rollup_lines, skipped_lines
     from .infer import inference
     from .reports import header
-    from .runner import FAILING
+    from .verdict import FAILING
 
     h = header(report)
     terminalreporter.write_sep("-", "plcvec")

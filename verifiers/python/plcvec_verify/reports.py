@@ -8,7 +8,8 @@ from __future__ import annotations
 import json
 import xml.etree.ElementTree as ET
 from .atomic import write_atomic
-from .runner import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL, RunReport
+from .runner import RunReport
+from .verdict import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL
 
 SHOW_PROBLEMS = 12     # field lines shown per failing vector in the summary
 

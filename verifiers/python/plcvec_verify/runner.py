@@ -8,19 +8,19 @@ happens to the adapter, the results gathered so far are kept, so the reports can
 from __future__ import annotations
 
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass, field
-from marshal import dumps
 from operator import itemgetter
 
-from .adapters import AdapterAbort, result_message
-from .compare import Problem, compare, passes, steps_pass_by_value
-from .errors import VerifyError
-from .expect import PACKED_FORMAT
+from .adapters import AdapterAbort
+from .choices import defaults_of, followed_alternatives, resolve_choices
+from .compare import Problem, judge, passes_at_once
 from .gate import NOTHING_TESTED, Gate
 from .known import KnownFailures
-from .protocol import hello_request, result_errors, result_shape_ok
+from .protocol import hello_request
+from .selection import Selection, select
 from .stopping import Stopped
-from .suite import Selection, Suite
+from .suite import Suite
 # The statuses and the verdict type live in the leaf verdict.py (known.py needs them too); they are
 # named here as well, where 0.1.0's users import them from.
 from .verdict import (ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL,  # noqa: F401
@@ -87,17 +87,15 @@ class Plan:
     """
 
     def __init__(self, suite: Suite, vectors: list, choices: dict):
-        defaults = {i: d["default"] for i, d in suite.interpretations().items()}
+        defaults = defaults_of(suite)
         self.vectors = vectors
         made = suite.expectations
         self.requests = {v["id"]: made.request(v) for v in vectors}
         self.expected = {v["id"]: made.expected(v, choices, defaults) for v in vectors}
-        # Per vector, its expectation and the result it gets when an answer passes, made once here:
+        # Per vector, the result it gets when an answer passes, and its expectation, made once here:
         # a passing result holds nothing of the answer, and making it again for every vector of every
-        # run was a good part of a run's time. Each answer is still judged in full (runner.run).
-        # The first item is what an in-process adapter's passing answer packs to (see runner.run).
-        self.judging = {vid: (exp.packed_answer, VectorResult(vid, exp.family, exp.instruction, PASS,
-                                                              choices=exp.choices), exp)
+        # run was a good part of a run's time. Each answer is still judged in full (_judge_answers).
+        self.judging = {vid: (VectorResult(vid, exp.family, exp.instruction, PASS, choices=exp.choices), exp)
                         for vid, exp in self.expected.items()}
         self.wire: dict[str, bytes] = {}   # encoded requests, filled by a process adapter
         # For a run of exactly `vectors` (the same list): the requests in order, the families and
@@ -106,30 +104,6 @@ class Plan:
         self.request_list = list(self.requests.values())
         self.families = sorted(set(map(_FAMILY, vectors)))
         self.instructions = frozenset(map(_INSTRUCTION, vectors))
-
-
-def resolve_choices(suite: Suite, families, declared: dict, cli: dict) -> dict:
-    """interpretation -> {"alternative", "declared", "family"} for every interpretation of `families`."""
-    known = suite.interpretations()
-    for source, choices in (("the adapter declares", declared), ("--choose gives", cli)):
-        for interp, alt in choices.items():
-            if interp not in known:
-                raise VerifyError(f"{source} interpretation {interp!r}, which no vector file defines "
-                                  f"(known: {', '.join(sorted(known))})")
-            if alt not in known[interp]["alternatives"]:
-                raise VerifyError(f"{source} {interp}={alt}, but {interp} has the alternatives "
-                                  f"{', '.join(known[interp]['alternatives'])}")
-    for interp, alt in cli.items():
-        if interp in declared and declared[interp] != alt:
-            raise VerifyError(f"--choose {interp}={alt}, but the adapter declares {interp}={declared[interp]}")
-    out = {}
-    for interp, d in sorted(known.items()):
-        if not set(d["families"]) & set(families):
-            continue
-        chosen = declared.get(interp, cli.get(interp))
-        out[interp] = {"alternative": chosen or d["default"], "declared": chosen is not None,
-                       "families": d["families"]}
-    return out
 
 
 def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: dict | None = None,
@@ -145,83 +119,75 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     """
     started = time.perf_counter()
     if vectors is None:
-        selection.check(suite)
-        vectors = suite.vectors if selection.everything else selection.apply(suite.vectors)
+        vectors = select(suite, selection)
     planned = plan is not None and vectors is plan.vectors
     families = (plan.families if planned else sorted(set(map(_FAMILY, vectors)))) or sorted(suite.headers)
     hello = adapter.hello(hello_request(suite, families))
     interpretations = resolve_choices(suite, families, hello.get("interpretations", {}), choose or {})
-    choices = {i: d["alternative"] for i, d in interpretations.items()}
-    supported = set(hello["instructions"])
     cpu_writes = frozenset(hello.get("cpu_writes", ()))
-
-    results: dict[str, VectorResult] = {}
-    if supported.issuperset(plan.instructions if planned else map(_INSTRUCTION, vectors)):
-        runnable = vectors
-    else:
-        runnable = []
-        for v in vectors:
-            if v["instruction"] in supported:
-                runnable.append(v)
-            else:
-                results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], SKIP,
-                                                message=f"the adapter does not support {v['instruction']}")
+    runnable, results = _supported(vectors, set(hello["instructions"]), plan.instructions if planned else None)
     if plan is None:
-        plan = Plan(suite, runnable, choices)
-    by_id, judging, requests = suite.by_id, plan.judging, plan.requests
+        plan = Plan(suite, runnable, followed_alternatives(interpretations))
     report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate(),
                        cpu_writes=tuple(sorted(cpu_writes)))
+    with _ended_by_the_adapter(report, adapter):
+        _judge_answers(adapter, plan, runnable, results, cpu_writes, progress)
+    _close(report, adapter, keep_open)
+    if len(results) < len(vectors):
+        _not_run(results, runnable)
+    _attach_notes(report, results, getattr(adapter, "notes", ()))
+    report.results = list(map(results.__getitem__, plan.ids if vectors is plan.vectors else map(_ID, vectors)))
+    if known is not None:
+        known.apply(report.results, suite)
+        report.known_file = known.path
+    report.seconds = time.perf_counter() - started
+    return report
+
+
+def _supported(vectors: list, supported: set, instructions: frozenset | None) -> tuple[list, dict]:
+    """(the vectors the adapter runs, {id: a skip verdict} for those of an instruction it does not
+    support). `instructions`: the vectors' instructions when a plan already knows them."""
+    if supported.issuperset(map(_INSTRUCTION, vectors) if instructions is None else instructions):
+        return vectors, {}
+    runnable, skipped = [], {}
+    for v in vectors:
+        if v["instruction"] in supported:
+            runnable.append(v)
+        else:
+            skipped[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], SKIP,
+                                            message=f"the adapter does not support {v['instruction']}")
+    return runnable, skipped
+
+
+def _judge_answers(adapter, plan: Plan, runnable: list, results: dict, cpu_writes: frozenset, progress) -> None:
+    """Send `runnable` to the adapter and put the verdict on each answer into `results` as it comes.
+
+    The usual answer passes at once (compare.passes_at_once) and gets the plan's passing verdict,
+    made once; any other is judged the long way (compare.judge).
+    """
+    judging = plan.judging
+    to_send = plan.request_list if runnable is plan.vectors else list(map(plan.requests.__getitem__,
+                                                                          map(_ID, runnable)))
     total, done, failed = len(runnable), 0, 0
-    try:
-        to_send = plan.request_list if runnable is plan.vectors else list(map(requests.__getitem__, map(_ID, runnable)))
-        for answer in adapter.answers(to_send, plan.wire):
-            vid, msg, fault, bare = answer
-            packed, passed, exp = judging[vid]
-            # The usual case, decided at one comparison. An in-process adapter's answer (`bare`: the
-            # result message without `type` and `id`, never a fault) passes when its bytes in marshal's
-            # format are the expectation's (compare.steps_pass says why that is exact, JSON types
-            # included), else when its steps equal the expectation value for value and type for type;
-            # a process's result message goes through compare.passes. Anything else, the long way.
-            if bare:
-                try:
-                    usual = dumps(msg, PACKED_FORMAT) == packed
-                except ValueError:      # marshal refuses it: not plain dicts, lists and numbers
-                    usual = False
-                usual = usual or len(msg) == 1 and steps_pass_by_value(exp, msg.get("steps"))
-            else:
-                usual = fault is None and passes(exp, msg)
-            if usual:
-                results[vid] = passed
-                done += 1
-                if progress:
-                    progress(done, total, failed)
-                continue
-            msg = result_message(answer)
-            v = by_id[vid]
-            problems = None
-            if not fault and result_shape_ok(msg):
-                problems = compare(exp, msg["steps"], cpu_writes)     # shape fine: compare at once
-            # A comparison that passes has seen every reported value equal to one of the vector's, which
-            # are valid; the values of devices it does not compare (scratch, unjudged) it has not seen.
-            errors = () if fault or (problems == [] and not exp.ignored) else result_errors(msg)
-            if fault or errors:
-                fault = fault or "the result does not match result.schema.json: " + "; ".join(errors)
-                r = VectorResult(v["id"], v["family"], v["instruction"], ERROR, message=fault, choices=exp.choices)
-            elif "steps" in msg:
-                if problems is None:
-                    problems = compare(exp, msg["steps"], cpu_writes)
-                r = VectorResult(v["id"], v["family"], v["instruction"], FAIL if problems else PASS,
-                                 tuple(problems), choices=exp.choices, answer=msg["steps"] if problems else None)
-            elif "skip" in msg:
-                r = VectorResult(v["id"], v["family"], v["instruction"], SKIP, message=msg["skip"], choices=exp.choices)
-            else:
-                r = VectorResult(v["id"], v["family"], v["instruction"], ERROR,
-                                 message=f"the implementation reported an error: {msg['error']}", choices=exp.choices)
-            results[vid] = r
-            done += 1
+    for answer in adapter.answers(to_send, plan.wire):
+        vid = answer[0]
+        passed, exp = judging[vid]
+        if passes_at_once(answer, exp):
+            results[vid] = passed
+        else:
+            r = results[vid] = judge(answer, exp, cpu_writes)
             failed += r.status in FAILING
-            if progress:
-                progress(done, total, failed)
+        done += 1
+        if progress:
+            progress(done, total, failed)
+
+
+@contextmanager
+def _ended_by_the_adapter(report: RunReport, adapter):
+    """An adapter that cannot go on, or a signal, ends the run with the verdicts it has (the report says
+    why). Anything else ends the adapter before it goes on up."""
+    try:
+        yield
     except AdapterAbort as exc:
         report.aborted = str(exc)
     except Stopped as exc:
@@ -230,6 +196,11 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
         # KeyboardInterrupt in a library caller, or a bug: the adapter must not outlive the run.
         _end(adapter)
         raise
+
+
+def _close(report: RunReport, adapter, keep_open: bool) -> None:
+    """End the adapter after the run: at once after a signal, left running when the caller keeps it
+    for another run (unless the run was aborted), else closed. Closing must never lose the results."""
     if report.stopped:
         _end(adapter)
     elif not keep_open or report.aborted:
@@ -238,24 +209,26 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
         except Stopped as exc:
             report.aborted, report.stopped = str(exc), exc.signum
             _end(adapter)
-        except Exception as exc:  # closing must never lose the results
+        except Exception as exc:
             report.notes.append(f"closing the adapter: {type(exc).__name__}: {exc}")
-    if len(results) < len(vectors):
-        for v in runnable:
-            if v["id"] not in results:
-                results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], NOT_RUN,
-                                                message="not run: the adapter stopped before it")
-    for vid, text in getattr(adapter, "notes", ()):
+
+
+def _not_run(results: dict, runnable: list) -> None:
+    """Every vector the adapter stopped before is NOT_RUN: it counts against the run."""
+    for v in runnable:
+        if v["id"] not in results:
+            results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], NOT_RUN,
+                                            message="not run: the adapter stopped before it")
+
+
+def _attach_notes(report: RunReport, results: dict, notes) -> None:
+    """The adapter's notes (e.g. what it wrote to stderr), each on its vector's verdict when it names
+    one, else on the report."""
+    for vid, text in notes:
         if vid in results:
             results[vid] = results[vid]._replace(notes=(*results[vid].notes, text))
         else:
             report.notes.append(text)
-    report.results = list(map(results.__getitem__, plan.ids if vectors is plan.vectors else map(_ID, vectors)))
-    if known is not None:
-        known.apply(report.results, suite)
-        report.known_file = known.path
-    report.seconds = time.perf_counter() - started
-    return report
 
 
 def _end(adapter):

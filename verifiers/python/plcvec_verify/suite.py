@@ -1,16 +1,14 @@
-"""Loading a vector set and choosing which of its vectors to run.
+"""Loading a vector set (VOCABULARY.md: `suite`).
 
 A vector set is a folder with `manifest.json` and the family files it names (what `plcvec
 generate` writes), or a single family file. Nothing here depends on the generator: an
-implementer needs only the published files.
+implementer needs only the published files. Which of its vectors a run takes is selection.py's.
 """
 from __future__ import annotations
 
-import fnmatch
 import hashlib
 import json
 import os
-import zlib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -18,6 +16,10 @@ from .errors import VerifyError
 from .expect import Expectations
 from .files import has_repeated_key, not_regular, read_bytes, repeated_key_message
 from .validate import schema_for, validate_file
+from .vector import shape_problem
+# Named here too, where 0.1.0's users import them from (the selection was this module's then).
+from .selection import Selection, parse_shard, shard_of  # noqa: F401
+from .vector import touched_interpretations  # noqa: F401
 
 # A vector folder's index: the JSON form's manifest.json (plcvec generate), or the packaged
 # JSON-lines form's index.json (plcvec export, a release bundle's jsonl/).
@@ -97,7 +99,7 @@ class Suite:
             spec_hashes.add(data.get("spec_sha256", ""))
             headers[data["family"]] = {k: v for k, v in data.items() if k != "vectors"}
             for index_no, v in enumerate(data["vectors"]):
-                problem = _shape_problem(v, data["family"])
+                problem = shape_problem(v, data["family"])
                 if problem:
                     name = v.get("id") if isinstance(v, dict) and isinstance(v.get("id"), str) else f"#{index_no}"
                     raise VerifyError(f"{file}: vector {name}: {problem} (is the file a plcvec vector file, unedited?)")
@@ -148,29 +150,6 @@ class Suite:
             tags.update(v.get("tags", ()))
         return {"family": sorted(self.headers), "instruction": sorted(instructions), "tag": sorted(tags),
                 "interpretation": sorted(self.interpretations())}
-
-
-# What the runner reads of a vector, checked once at load so that a damaged file is reported by
-# name rather than failing half-way through a run (the full schema is vectors/schema/).
-_VECTOR_KEYS = {"id": str, "family": str, "instruction": str, "initial": dict, "steps": list,
-                "final": dict, "outcome": dict}
-
-
-def _shape_problem(v, family) -> str:
-    if not isinstance(v, dict):
-        return "not a JSON object"
-    for key, kind in _VECTOR_KEYS.items():
-        if not isinstance(v.get(key), kind):
-            return f"no `{key}` ({kind.__name__})"
-    if v["family"] != family:
-        return f"family {v['family']!r} in a {family!r} file"
-    if not isinstance(v["initial"].get("devices"), dict) or not isinstance(v["initial"].get("operands"), dict):
-        return "`initial` needs `devices` and `operands`"
-    if not v["steps"] or not all(isinstance(st, dict) and isinstance(st.get("expect"), dict) for st in v["steps"]):
-        return "every step needs an `expect`"
-    if not isinstance(v["final"].get("devices"), dict):
-        return "`final` needs `devices`"
-    return ""
 
 
 def _parse_jsonl(path: Path, raw: bytes) -> dict:
@@ -234,91 +213,3 @@ def _parse_json(path: Path, raw: bytes):
     except json.JSONDecodeError as exc:
         raise VerifyError(f"{path}:{exc.lineno}: not valid JSON ({exc.msg})")
 
-
-def touched_interpretations(vector: dict) -> set[str]:
-    """The interpretations a vector's outcome depends on."""
-    return set(vector["outcome"].get("interpretations", ()))
-
-
-@dataclass(frozen=True)
-class Selection:
-    """Filters; each list is OR within itself, and the filters are AND together."""
-
-    families: tuple = ()
-    instructions: tuple = ()
-    tags: tuple = ()
-    ids: tuple = ()                  # glob patterns (fnmatch) on the id
-    interpretations: tuple = ()      # vectors whose outcome depends on one of these
-    shard: tuple | None = None       # (k, n), 1 <= k <= n
-
-    def matches(self, v: dict) -> bool:
-        if self.families and v["family"] not in self.families:
-            return False
-        if self.instructions and v["instruction"] not in self.instructions:
-            return False
-        if self.tags and not set(self.tags) & set(v.get("tags", ())):
-            return False
-        if self.ids and not any(fnmatch.fnmatchcase(v["id"], p) for p in self.ids):
-            return False
-        if self.interpretations and not set(self.interpretations) & touched_interpretations(v):
-            return False
-        if self.shard and shard_of(v["id"], self.shard[1]) != self.shard[0]:
-            return False
-        return True
-
-    @property
-    def everything(self) -> bool:
-        """Whether the selection has no filter at all (every vector is selected)."""
-        return not (self.families or self.instructions or self.tags or self.ids or self.interpretations
-                    or self.shard)
-
-    def apply(self, vectors: list[dict]) -> list[dict]:
-        if self.everything:     # the usual gate run: no per-vector test to pay for
-            return list(vectors)
-        return [v for v in vectors if self.matches(v)]
-
-    def check(self, suite: "Suite", option_prefix: str = "--", labels: dict | None = None) -> None:
-        """Refuse names the suite does not have, listing those it has, and id globs that match nothing.
-
-        An unknown name would select nothing, and a gate that selects nothing must not look like one
-        that passed; a usage error says which word was mistyped. `labels` names where a kind of
-        filter came from when not from an option (`{"family": "PLCVEC_FAMILY"}`).
-        """
-        labels = labels or {}
-        named = (("family", self.families), ("instruction", self.instructions), ("tag", self.tags),
-                 ("interpretation", self.interpretations))
-        # The names are gathered from every vector: only when a name was given to check.
-        known = suite.names() if any(given for _, given in named) else {}
-        for kind, given in named:
-            label = labels.get(kind, f"{option_prefix}{kind}")
-            for name in given:
-                if name not in known[kind]:
-                    what = "an empty name is not a filter" if not name.strip() else \
-                        f"{suite.source} has no such {kind}"
-                    shown = f"{label}={','.join(given)}" if not name.strip() else f"{label} {name}"
-                    raise VerifyError(f"{shown}: {what}; known: {', '.join(known[kind]) or '(none)'}")
-        label = labels.get("id", f"{option_prefix}id")
-        for pattern in self.ids:
-            if not any(fnmatch.fnmatchcase(vid, pattern) for vid in suite.by_id):
-                example = next(iter(suite.by_id), "")
-                raise VerifyError(f"{label} {pattern}: matches no vector id in {suite.source} "
-                                  f"(ids look like {example}; a glob matches the whole id)")
-
-
-def shard_of(vector_id: str, n: int) -> int:
-    """The shard (1..n) a vector belongs to.
-
-    A hash of the id rather than its position: adding a vector to the suite moves no other vector
-    to another shard, so a CI job's history stays comparable.
-    """
-    return zlib.crc32(vector_id.encode("utf-8")) % n + 1
-
-
-def parse_shard(text: str, option: str = "--shard") -> tuple[int, int]:
-    try:
-        k, n = (int(x) for x in text.split("/"))
-    except ValueError:
-        raise VerifyError(f"{option} takes K/N (e.g. 2/4), got {text!r}")
-    if not 1 <= k <= n:
-        raise VerifyError(f"{option} {text}: K must be between 1 and N")
-    return k, n
