@@ -67,6 +67,50 @@ class _Fault(Exception):
     """The stream is broken: kill, blame the vector being run, restart."""
 
 
+class _InFlight:
+    """The vectors sent to the adapter process and not yet answered, by batch, and the deadline of the
+    oldest batch: each batch has the whole timeout from when the one before it is answered."""
+
+    def __init__(self, adapter: "StdioAdapter", wire: dict):
+        self.adapter, self.wire = adapter, wire
+        self.sent: dict[str, dict] = {}   # id -> request, sent and not answered (in sending order)
+        self.batches: deque = deque()     # [batch number, unanswered count] in flight, oldest first
+        self.batch_of: dict[str, list] = {}   # id -> its entry in `batches`
+        self.batch_no = 0
+        self.deadline = None
+
+    def send(self, chunk: list) -> None:
+        entry = [self.batch_no, len(chunk)]
+        self.batches.append(entry)
+        sent, batch_of, wire = self.sent, self.batch_of, self.wire
+        lines = []
+        for r in chunk:
+            vid = r["id"]
+            sent[vid] = r
+            batch_of[vid] = entry
+            line = wire.get(vid)
+            if line is None:
+                line = wire[vid] = encode(r)[:-1]
+            lines.append(line)
+        self.adapter._queue(b'{"type":"run","batch":%d,"vectors":[' % self.batch_no + b",".join(lines) + b"]}\n")
+        self.batch_no += 1
+
+    def answered(self, vid: str) -> None:
+        del self.sent[vid]
+        self.batch_of.pop(vid)[1] -= 1
+        while self.batches and self.batches[0][1] == 0:
+            self.batches.popleft()
+            self.deadline = time.monotonic() + self.adapter.timeout
+
+    def clear(self) -> list:
+        """Forget everything in flight (the process is being killed); return what was unanswered."""
+        unanswered = list(self.sent.values())
+        self.sent.clear()
+        self.batches.clear()
+        self.batch_of.clear()
+        return unanswered
+
+
 class StdioAdapter:
     def __init__(self, command, *, timeout: float = 30.0, batch_size: int = 256, max_restarts: int = 10,
                  cwd=None, env=None):
@@ -324,7 +368,6 @@ class StdioAdapter:
 
         `wire` caches each request's encoded line by id, for runs that repeat (runner.Plan).
         """
-        wire = {} if wire is None else wire
         if self.proc is None:
             if self._hello_request is None:
                 raise VerifyError("StdioAdapter.answers() before hello()")
@@ -332,87 +375,71 @@ class StdioAdapter:
             self._restart()
         pending = deque(requests)         # not yet sent
         isolate = deque()                 # to be re-run one at a time, after a fault
-        sent: dict[str, dict] = {}        # id -> request, sent and not answered (in sending order)
-        batches: deque = deque()          # [batch number, unanswered count] in flight, oldest first
-        batch_of: dict[str, list] = {}    # id -> its entry in `batches`
-        batch_no = 0
-        deadline = None
-
-        def send(chunk):
-            nonlocal batch_no
-            entry = [batch_no, len(chunk)]
-            batches.append(entry)
-            lines = []
-            for r in chunk:
-                vid = r["id"]
-                sent[vid] = r
-                batch_of[vid] = entry
-                line = wire.get(vid)
-                if line is None:
-                    line = wire[vid] = encode(r)[:-1]
-                lines.append(line)
-            body = b",".join(lines)
-            self._queue(b'{"type":"run","batch":%d,"vectors":[' % batch_no + body + b"]}\n")
-            batch_no += 1
-
-        while pending or sent or isolate:
-            if isolate:
-                # After a fault with several vectors unanswered, the culprit is found by sending
-                # them one at a time: an adapter that buffers its output (most do) may have died
-                # on any of them.
-                if not sent:
-                    send([isolate.popleft()])
-                    deadline = time.monotonic() + self.timeout
-            else:
-                while pending and len(batches) < 2:
-                    send([pending.popleft() for _ in range(min(self.batch_size, len(pending)))])
-                    if len(batches) == 1:
-                        deadline = time.monotonic() + self.timeout
-            current = next(iter(sent))
+        flight = _InFlight(self, {} if wire is None else wire)
+        while pending or flight.sent or isolate:
+            self._send_next(flight, pending, isolate)
+            current = next(iter(flight.sent))
             try:
-                for msg in self._messages(self._pump(deadline)):
-                    vid = msg.get("id") if isinstance(msg, dict) else None
-                    if isinstance(msg, dict) and msg.get("type") == "fatal":
-                        # It says it cannot go on (PROTOCOL.md): restarting would only hear it again.
-                        blamed = next(iter(sent))
-                        self._kill(blamed)
-                        raise AdapterAbort(f"--adapter {self.command}: the adapter gave up while running "
-                                           f"{blamed}: {msg.get('message')}")
-                    if vid not in sent:
-                        if vid in self._answered:
-                            # The stream is still in step; the vector answered twice is the culprit.
-                            yield Answer(vid, None, f"the adapter answered {vid} twice")
-                            continue
-                        if not isinstance(vid, str):
-                            raise _Fault(f"the adapter wrote a message with no vector id: {_clip(json.dumps(msg))}")
-                        raise _Fault(f"the adapter answered id {vid!r}, which was not sent")
-                    del sent[vid]
-                    self._answered.add(vid)
-                    self._last_answered = vid
-                    batch_of.pop(vid)[1] -= 1
-                    if type(msg) is Repeated:
-                        yield Answer(vid, None, msg.text)
-                    else:
-                        yield Answer(vid, msg)
-                    while batches and batches[0][1] == 0:
-                        batches.popleft()
-                        deadline = time.monotonic() + self.timeout
-                self._settle_stderr(next(iter(sent)) if sent else self._last_answered)
+                yield from self._read_answers(flight)
             except _Fault as fault:
-                unanswered = list(sent.values())
-                self._kill(unanswered[0]["id"] if unanswered else current)
-                sent.clear()
-                batches.clear()
-                batch_of.clear()
-                if len(unanswered) == 1:
-                    blamed = unanswered[0]["id"]
-                    yield Answer(blamed, None, f"{fault} (while running {blamed}){self._stderr_hint(blamed)}")
-                else:
-                    self.notes.append((None, f"{fault}, with {len(unanswered)} vectors of the batch unanswered "
-                                             "(from " + unanswered[0]["id"] + "); restarted to run them one at a time"))
-                    isolate.extendleft(reversed(unanswered))
+                yield from self._after_fault(fault, flight, current, isolate)
                 if pending or isolate:
                     self._restart()
+
+    def _send_next(self, flight: "_InFlight", pending: deque, isolate: deque) -> None:
+        """Keep two batches in flight, so the process never waits for the runner between batches; after a
+        fault with several vectors unanswered, one vector at a time instead (`isolate`): an adapter that
+        buffers its output (most do) may have died on any of them, and this finds which."""
+        if isolate:
+            if not flight.sent:
+                flight.send([isolate.popleft()])
+                flight.deadline = time.monotonic() + self.timeout
+            return
+        while pending and len(flight.batches) < 2:
+            flight.send([pending.popleft() for _ in range(min(self.batch_size, len(pending)))])
+            if len(flight.batches) == 1:
+                flight.deadline = time.monotonic() + self.timeout
+
+    def _read_answers(self, flight: "_InFlight"):
+        """Yield an Answer for each result line read before the oldest batch's deadline; raise _Fault
+        when the stream is broken (a line that answers nothing sent is one)."""
+        for msg in self._messages(self._pump(flight.deadline)):
+            vid = msg.get("id") if isinstance(msg, dict) else None
+            if isinstance(msg, dict) and msg.get("type") == "fatal":
+                # It says it cannot go on (PROTOCOL.md): restarting would only hear it again.
+                blamed = next(iter(flight.sent))
+                self._kill(blamed)
+                raise AdapterAbort(f"--adapter {self.command}: the adapter gave up while running "
+                                   f"{blamed}: {msg.get('message')}")
+            if vid not in flight.sent:
+                if vid in self._answered:
+                    # The stream is still in step; the vector answered twice is the culprit.
+                    yield Answer(vid, None, f"the adapter answered {vid} twice")
+                    continue
+                if not isinstance(vid, str):
+                    raise _Fault(f"the adapter wrote a message with no vector id: {_clip(json.dumps(msg))}")
+                raise _Fault(f"the adapter answered id {vid!r}, which was not sent")
+            flight.answered(vid)
+            self._answered.add(vid)
+            self._last_answered = vid
+            if type(msg) is Repeated:
+                yield Answer(vid, None, msg.text)
+            else:
+                yield Answer(vid, msg)
+        self._settle_stderr(next(iter(flight.sent)) if flight.sent else self._last_answered)
+
+    def _after_fault(self, fault: "_Fault", flight: "_InFlight", current: str, isolate: deque):
+        """Kill the process; blame the one vector unanswered (yielding its Answer), or, when there were
+        several, queue them to be run again one at a time."""
+        unanswered = flight.clear()
+        self._kill(unanswered[0]["id"] if unanswered else current)
+        if len(unanswered) == 1:
+            blamed = unanswered[0]["id"]
+            yield Answer(blamed, None, f"{fault} (while running {blamed}){self._stderr_hint(blamed)}")
+        else:
+            self.notes.append((None, f"{fault}, with {len(unanswered)} vectors of the batch unanswered "
+                                     "(from " + unanswered[0]["id"] + "); restarted to run them one at a time"))
+            isolate.extendleft(reversed(unanswered))
 
     def _messages(self, lines):
         """Parse complete lines; one json.loads for the lot when they are all JSON (the usual case)."""
