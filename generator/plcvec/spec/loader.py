@@ -156,13 +156,22 @@ def line_of(lines, where):
     return lines.get(where)
 
 
+# The sha256 of each spec text this process has found valid against the schema: the same text parses to
+# the same document, so it is valid again. The schema walk is most of a load, and a process may load
+# the same files many times (a test session loads copies of spec/ that differ in one file).
+_VALID_TEXTS: set = set()
+
+
 def load_family(path):
     path = Path(path)
     text = read_text(path)
     doc, lines = load_with_lines(path, text)
     if not isinstance(doc, dict):
         raise SpecError(path, 1, "a spec file must be a mapping at the top level")
-    validate(path, doc, lines, _schema_validator())
+    digest = hashlib.sha256(text.encode()).hexdigest()
+    if digest not in _VALID_TEXTS:
+        validate(path, doc, lines, _schema_validator())
+        _VALID_TEXTS.add(digest)
     family = Family(path, doc, lines, text)
     check_family(family)
     return family
