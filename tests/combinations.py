@@ -12,9 +12,10 @@ import math
 PRODUCT_BOUND = 1024
 
 
-def combinations_to_run(interps):
-    """The combinations (tuples in the order of `interps`, {interpretation: [alternatives]}) to run."""
-    if math.prod(len(alts) for alts in interps.values()) <= PRODUCT_BOUND:
+def combinations_to_run(interps, bound=PRODUCT_BOUND):
+    """The combinations (tuples in the order of `interps`, {interpretation: [alternatives]}) to run: the
+    product while it has at most `bound`, else a pairwise covering set (bound=0: always that)."""
+    if math.prod(len(alts) for alts in interps.values()) <= bound:
         return list(itertools.product(*interps.values()))
     from plcvec.coverage.pairwise import Dimension, cover, required_pairs
 
