@@ -5,6 +5,7 @@ import re
 import subprocess
 import sys
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -27,11 +28,25 @@ messages = st.fixed_dictionaries({}, optional={
     "steps": st.one_of(steps, scalars), "skip": scalars, "error": scalars, "extra": scalars})
 
 
-@settings(max_examples=3000, suppress_health_check=[HealthCheck.too_slow], database=None, derandomize=True)
-@given(messages)
-def test_cheap_check_never_accepts_what_the_schema_rejects(msg):
-    if result_looks_valid(msg):
-        assert schema_errors("result", msg) == [], msg
+def drawn(given_test, examples, **options):
+    """Two tests of one property (a @given function): drawn `examples` times, marked slow (CI runs it), and
+    a tenth as often for the default run."""
+    def with_draws(n):
+        return settings(max_examples=n, suppress_health_check=[HealthCheck.too_slow], database=None,
+                        derandomize=True, **options)(given_test())
+    return pytest.mark.slow(with_draws(examples)), with_draws(examples // 10)
+
+
+def cheap_check_never_accepts_what_the_schema_rejects():
+    @given(messages)
+    def check(msg):
+        if result_looks_valid(msg):
+            assert schema_errors("result", msg) == [], msg
+    return check
+
+
+test_cheap_check_never_accepts_what_the_schema_rejects, test_cheap_check_never_accepts_what_the_schema_rejects_sample \
+    = drawn(cheap_check_never_accepts_what_the_schema_rejects, 3000)
 
 
 def test_cheap_check_accepts_the_usual_answers():
@@ -80,28 +95,34 @@ def test_the_documented_transcript_is_valid_and_is_what_the_reference_answers():
     assert proc.returncode == 0 and lines[0][1]["protocol"] == PROTOCOL_VERSION
 
 
-@settings(max_examples=1500, suppress_health_check=[HealthCheck.too_slow], database=None, derandomize=True,
-          deadline=None)   # the first example loads the vector set; time is not what is tested
-@given(data=st.data())
-def test_an_answer_the_comparison_accepts_is_valid_against_the_schema(data):
+def an_answer_the_comparison_accepts_is_valid_against_the_schema():
     """The runner validates fully only answers that differ; so an accepted answer must be valid."""
-    from plcvec_verify.compare import compare
-    from plcvec_verify.expect import expected_of
-    from plcvec_verify.protocol import result_shape_ok
+    @given(data=st.data())
+    def check(data):
+        from plcvec_verify.compare import compare
+        from plcvec_verify.expect import expected_of
+        from plcvec_verify.protocol import result_shape_ok
 
-    suite = _suite()
-    v = data.draw(_sampled_vectors(suite))
-    exp = expected_of(v, {}, {})
-    steps = []
-    for state, result in zip(exp.states, exp.results):
-        devices = {k: data.draw(_kept_or_scalar(val)) for k, val in state.items()}
-        step = {"devices": devices}
-        if result is not None:
-            step["result"] = data.draw(_kept_or_scalar(result))
-        steps.append(step)
-    msg = {"type": "result", "id": v["id"], "steps": steps}
-    if result_shape_ok(msg) and compare(exp, steps) == []:
-        assert schema_errors("result", msg) == [], msg
+        suite = _suite()
+        v = data.draw(_sampled_vectors(suite))
+        exp = expected_of(v, {}, {})
+        steps = []
+        for state, result in zip(exp.states, exp.results):
+            devices = {k: data.draw(_kept_or_scalar(val)) for k, val in state.items()}
+            step = {"devices": devices}
+            if result is not None:
+                step["result"] = data.draw(_kept_or_scalar(result))
+            steps.append(step)
+        msg = {"type": "result", "id": v["id"], "steps": steps}
+        if result_shape_ok(msg) and compare(exp, steps) == []:
+            assert schema_errors("result", msg) == [], msg
+    return check
+
+
+# deadline=None: the first example loads the vector set; time is not what is tested.
+test_an_answer_the_comparison_accepts_is_valid_against_the_schema, \
+    test_an_answer_the_comparison_accepts_is_valid_against_the_schema_sample \
+    = drawn(an_answer_the_comparison_accepts_is_valid_against_the_schema, 1500, deadline=None)
 
 
 _SUITE = []
