@@ -132,7 +132,8 @@ class _Version(argparse.Action):
 
 
 def version_text():
-    from plcvec.spec.loader import default_spec, load_spec, spec_hash
+    from plcvec.spec.files import default_spec
+    from plcvec.spec.loader import load_spec, spec_hash
 
     lines = [f"plcvec {__version__} (suite version {__version__}, vector schema version {SCHEMA_VERSION})"]
     try:
@@ -144,7 +145,7 @@ def version_text():
 
 
 def build_parser():
-    from plcvec.spec.loader import default_spec_help
+    from plcvec.spec.files import default_spec_help
     from plcvec_verify.locate import checkout
 
     p = argparse.ArgumentParser(prog="plcvec", description="Conformance test vectors for PLC clock and calendar instructions.")
@@ -197,7 +198,7 @@ def main(argv=None):
     try:
         args = build_parser().parse_args(argv)
         if getattr(args, "spec_dir", False) is None:
-            from plcvec.spec.loader import default_spec
+            from plcvec.spec.files import default_spec
 
             args.spec_dir = str(default_spec().path)
         return args.func(args)

@@ -4,7 +4,8 @@ import sys
 
 from plcvec.audit import audit_families
 from plcvec.errors import PlcvecError
-from plcvec.spec.loader import default_spec_help, load_spec
+from plcvec.spec.files import default_spec_help
+from plcvec.spec.loader import load_spec
 
 
 def main(argv=None):

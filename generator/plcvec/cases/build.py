@@ -13,6 +13,7 @@ from plcvec.cases.unjudged import Unjudged
 from plcvec.coverage.derive import CLASSIFIERS
 from plcvec.coverage.model import model_of
 from plcvec.engine import make_engine
+from plcvec.spec.instructions import instruction_list
 from plcvec.spec.knobs import Resolver
 
 STEP_INPUTS = ("set", "rlo_in", "clock", "en", "input", "elapsed_ms")
@@ -21,25 +22,6 @@ _MEMO_SIZE = 4096   # distinct device lists a builder remembers the reported ord
 
 class GeneratorBug(Exception):
     """A case the generator built wrongly (duplicate id, undeclared device): a bug, not a user error."""
-
-
-def instruction_list(fam):
-    """Every instruction of a family, with the names the manual gives it."""
-    doc = fam.doc
-    if fam.kind == "masked_compare":
-        ins, naming = doc["instructions"], doc["instructions"]["naming"]
-        out = []
-        for form in ins["forms"]:
-            for cond in ins["conditions"]:
-                names = {"form_mnemonic": form["mnemonic"], "symbol": cond["symbol"],
-                         "form_st": form["st"], "condition_st": cond["st"]}
-                item = {"name": naming["ladder"].format(**names), "st": naming["st"].format(**names),
-                        "form": form, "symbol": cond["symbol"], "naming_clause": naming["clause"]}
-                if "function_code" in cond:
-                    item["function_code"] = cond["function_code"]
-                out.append(item)
-        return out
-    return [dict(i, name=i["mnemonic"]) for i in doc["instructions"]]
 
 
 class Run(NamedTuple):

@@ -120,7 +120,7 @@ def _read_json(path: Path):
 def instruction_metadata(fam) -> dict[str, dict]:
     """{instruction name: its family, ST spelling, form, condition and execution} from a loaded
     spec family (plcvec.spec.loader.Family)."""
-    from plcvec.cases.build import instruction_list
+    from plcvec.spec.instructions import instruction_list
 
     by_symbol = {}
     if fam.kind == "masked_compare":

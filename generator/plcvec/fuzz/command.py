@@ -62,7 +62,7 @@ def main_args(args):
 
 def _selection(args):
     """The families to announce in the handshake, and the instructions asked for in each."""
-    from plcvec.cases.build import instruction_list
+    from plcvec.spec.instructions import instruction_list
     from plcvec.spec.loader import load_spec
 
     families = load_spec(args.spec_dir)
@@ -86,7 +86,8 @@ def _fuzz(args, families, asked, adapter, choose):
     from plcvec.fuzz import report
     from plcvec.output.atomic import write_atomic
     from plcvec.spec.loader import REGRESSIONS_DIR
-    from plcvec.spec.regressions import append_case, case_of
+    from plcvec.fuzz.record import append_case
+    from plcvec.spec.regressions import case_of
     from plcvec_verify.expect import expected_of
 
     try:

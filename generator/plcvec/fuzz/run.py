@@ -15,7 +15,7 @@ from plcvec_verify.runner import resolve_choices
 from plcvec_verify.suite import Suite
 
 from plcvec import SCHEMA_VERSION, __version__
-from plcvec.cases.build import instruction_list
+from plcvec.spec.instructions import instruction_list
 from plcvec.fuzz.seeded import draw_seeded
 from plcvec.output.golden import family_header
 from plcvec.spec.loader import spec_hash

@@ -8,7 +8,7 @@ import importlib
 import importlib.util
 import re
 
-from plcvec.cases.build import instruction_list
+from plcvec.spec.instructions import instruction_list
 from plcvec.review import coverage as cov
 from plcvec.review import accounting as acc
 from plcvec.review import provenance as prov

@@ -1,8 +1,8 @@
 """Consistency checks a JSON Schema cannot express: references, ranges, bit layouts, unique ids."""
 from plcvec.engine.undefined import UNDEFINED
-from plcvec.output.tags import TAGS
 from plcvec.spec.flags import flag_groups
 from plcvec.spec.model_checks import check_model
+from plcvec.spec.tags import TAGS
 
 # The value range each word encoding can hold at all, by field width; a field range outside it is a typo.
 _ENCODING_LIMITS = {

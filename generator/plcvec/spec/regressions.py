@@ -10,16 +10,13 @@ import json
 
 import jsonschema
 
-from plcvec.cases.build import instruction_list
 from plcvec.errors import SpecError
-from plcvec.output.atomic import write_atomic
-from plcvec.spec.loader import line_of, read_text, schema_path, validate
+from plcvec.spec.files import line_of, read_text, schema_path, validate
+from plcvec.spec.instructions import instruction_list
 from plcvec.spec.yaml_lines import load_with_lines
 
 INPUTS = ("instruction", "operands", "devices", "scratch", "steps")
 TAG = "regression"
-NEW_FILE = ("# Regression cases of {family}: the inputs of vectors that once exposed a bug, each with a note saying\n"
-            "# which. No expectations: `plcvec generate` computes them from the spec. Schema: spec/schema/regressions.schema.json\n")
 
 _validator = None
 
@@ -127,11 +124,3 @@ def stanza(note, case):
     lines += [f"    - {value(step)}" for step in case["steps"]]
     return "\n".join(lines) + "\n"
 
-
-def append_case(path, fam, note, case):
-    """Append a case to the regression file `path` of `fam` (created if missing), all or nothing: the new
-    text must load as the spec would load it (no duplicate, no mistake), and replaces the file atomically."""
-    old = read_text(path) if path.exists() else NEW_FILE.format(family=fam.name)
-    new = old + ("\n" if old and not old.endswith("\n") else "") + stanza(note, case)
-    parse_regressions(path, new, fam)
-    write_atomic(path, new)
