@@ -18,6 +18,32 @@ REPO = Path(__file__).resolve().parents[1]
 ROOTS = [REPO / "generator", REPO / "verifiers" / "python"]
 PACKAGES = ("plcvec", "plcvec_verify", "plcvec_reference")
 
+# The generator's stages (its folders, and its modules at the top), upstream first: each may import only
+# those above it. Data flows down: the engine is the mechanisms (it reads no file and names no family);
+# the coverage cells are the engine's word arithmetic; the spec loader checks that what a spec names (an
+# engine's `undefined`, a coverage derivation) exists; cases turn the spec into vectors; output writes
+# them; everything below reads the spec and the written vectors and writes something of its own. A
+# helper two stages need lives in the upper one (the instructions' names and the tags are the spec's,
+# write_atomic is output's) so nothing looks back up.
+STAGES = [
+    "plcvec.errors",
+    "plcvec.engine",
+    "plcvec.coverage",
+    "plcvec.spec",
+    "plcvec.cases",
+    "plcvec.output",
+    "plcvec.review",      # the review page and its model, from the spec and the written vectors
+    "plcvec.export",      # the native runners' copies (the reference tables from review's renderer)
+    "plcvec.release",
+    "plcvec.audit",
+    "plcvec.fuzz",
+    "plcvec.mutation",
+    "plcvec.bench",
+    "plcvec.native_bench",
+    "plcvec.cli",         # the commands over all of the above
+    "plcvec.__main__",
+]
+
 
 def modules() -> dict[str, Path]:
     out = {}
@@ -118,16 +144,31 @@ def stage_graph(g: dict[str, set[str]]) -> dict[str, set[str]]:
     return out
 
 
+def upstream_imports(sg: dict[str, set[str]]) -> list[str]:
+    """Each import of a stage by a stage above it in STAGES, and each stage STAGES does not place."""
+    out = [f"stage {s} is not in STAGES (.ci/circles.py): place it in the order" for s in sorted(sg) if s not in STAGES]
+    for s, targets in sorted(sg.items()):
+        for t in sorted(targets):
+            if s in STAGES and t in STAGES and STAGES.index(t) > STAGES.index(s):
+                out.append(f"stage {s} imports {t}, which comes after it in STAGES")
+    return out
+
+
 def main() -> int:
     g = graph()
     found = circles(g)
     for comp in found:
         print(f"import circle: {' <-> '.join(comp)}")
-    stages = circles(stage_graph(g))
+    sg = stage_graph(g)
+    stages = circles(sg)
     for comp in stages:
         print(f"stage circle (folders that import each other): {' <-> '.join(comp)}")
-    print(f"circles: {len(found)} between modules, {len(stages)} between folders")
-    return 1 if found or stages else 0
+    order = upstream_imports(sg)
+    for line in order:
+        print(line)
+    print(f"circles: {len(found)} between modules, {len(stages)} between folders; "
+          f"{len(order)} against the stages' order")
+    return 1 if found or stages or order else 0
 
 
 if __name__ == "__main__":
