@@ -14,6 +14,9 @@ python3 -m yamllint --strict action.yml verifiers/ci
 python3 .ci/readme_snippets.py check README.md verifiers/*/README.md
 
 python3 -m plcvec lint
+# No import circle in the generator or the Python runner, and the generator's stages import only
+# those before them (imports at any depth of a file count).
+python3 .ci/circles.py
 # The Python runner's public API against the previous release (griffe; each language's own check is
 # in its .ci/lang script): a breaking change CHANGES.md does not list fails.
 python3 .ci/api/python.py
