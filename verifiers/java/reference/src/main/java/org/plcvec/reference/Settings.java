@@ -19,6 +19,10 @@ import static org.plcvec.spec.Alternatives.Fx5Sm709Scope;
 import static org.plcvec.spec.Alternatives.HourInputOff;
 import static org.plcvec.spec.Alternatives.HourOutputOff;
 import static org.plcvec.spec.Alternatives.HourPresetZero;
+import static org.plcvec.spec.Alternatives.HourD2Special;
+import static org.plcvec.spec.Alternatives.HourM8004Repeat;
+import static org.plcvec.spec.Alternatives.HourS1ConstantRange;
+import static org.plcvec.spec.Alternatives.HourWrapReach;
 import static org.plcvec.spec.Alternatives.TaddExact24;
 import static org.plcvec.spec.Alternatives.TaddFlagsOff;
 import static org.plcvec.spec.Alternatives.TaddOnError;
@@ -44,10 +48,14 @@ public final class Settings {
     final boolean hourRecompared;
     final HourInputOff hourInputOff;
     final boolean hourZeroPresetNever;
-    final boolean hourFromNextScan;
+    final HourFirstScan hourFirstScan;
     final boolean hourPresetEveryExecution;
     final boolean hourM8004OffWhenValid;
-    final boolean hourD1OutOfRangeError;
+    final boolean hourM8004Once;
+    final HourD1OutOfRange hourD1OutOfRange;
+    final boolean hourWrapBeforeWrap;
+    final HourD2Special hourD2Special;
+    final HourS1ConstantRange hourS1ConstantRange;
     // CP1E
     final boolean cp1eNonBcdError;
     final boolean cp1eOutOfRangeError;
@@ -81,10 +89,14 @@ public final class Settings {
         cp1eErrorFlagsOff = c.follows(Cp1eErrorFlags.OFF);
         fx5OrResultOffOnError = c.follows(Fx5OrOnError.RESULT_OFF);
         taddFieldRangeFirst = c.follows(TaddErrorOrder.FIELD_RANGE_FIRST);
-        hourFromNextScan = c.follows(HourFirstScan.FROM_NEXT_SCAN);
+        hourFirstScan = follows(c, HourFirstScan.values());
         hourPresetEveryExecution = c.follows(HourPresetCheck.EVERY_EXECUTION);
         hourM8004OffWhenValid = c.follows(HourM8004Off.VALID_PRESET);
-        hourD1OutOfRangeError = c.follows(HourD1OutOfRange.ERROR);
+        hourM8004Once = c.follows(HourM8004Repeat.ONCE);
+        hourD1OutOfRange = follows(c, HourD1OutOfRange.values());
+        hourWrapBeforeWrap = c.follows(HourWrapReach.BEFORE_WRAP);
+        hourD2Special = follows(c, HourD2Special.values());
+        hourS1ConstantRange = follows(c, HourS1ConstantRange.values());
     }
 
     private static <A extends org.plcvec.spec.Alternative> A follows(Choices c, A[] alternatives) {
