@@ -95,6 +95,12 @@ public class Cp1eTimeCompare implements Emulator.Scan {
      * @return the execution condition it creates
      */
     protected boolean evaluate() {
+        // "S1 to S1+2", "S2 to S2+2": three words each. One past the end of the data area (S1 in
+        // one of the last two words of D) is CP1E-PAST-AREA-END, found before C or the data are
+        // looked at: an error, or a program error (not executed: nothing written, OFF).
+        if (!mem.inRange(s1, 3) || !mem.inRange(s2, 3)) {
+            return settings.cp1ePastAreaProgramError ? false : error();
+        }
         int mask = c.word(mem);
         // Bits 06 to 15 of C: not described by the manual (CP1E-C-HIGH-BITS).
         if ((mask & 0xFFC0) != 0 && settings.cp1eHighBitsError) {

@@ -109,23 +109,24 @@ public class Fx5Compare implements Emulator.Scan {
         // dummy data and ignored."
         boolean useClock = (s3word & 0x8000) != 0;
 
-        // "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the
-        // corresponding device range, SM709 turns on ... and the operation result will be
-        // non-continuity as well."
-        if (!mem.inRange(s1.device(), 3)) {
-            return error();
-        }
-        boolean s2Checked = !useClock || settings.clockS2RangeChecked;
-        if (s2Checked && !mem.inRange(s2.device(), 3)) {
-            return error();
-        }
-        int[] a = read(s1.device());
-        int[] b = useClock ? clock(step) : read(s2.device());
-
         // "(4) Set 0. If a value other than 0 is set, the operation result will be
         // non-continuity." (bits 3 to 14). "When 0 is set to the 0 to 2 bits, the time data ...
         // are not compared." Table: "Other than 0001H to 0007H, 8001H to 8007H  None".
         boolean selectorValid = (s3word & 0x7FF8) == 0 && (s3word & 0x0007) != 0;
+
+        // "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the
+        // corresponding device range, SM709 turns on ... and the operation result will be
+        // non-continuity as well."
+        boolean s2Checked = !useClock || settings.clockS2RangeChecked;
+        if (!mem.inRange(s1.device(), 3) || s2Checked && !mem.inRange(s2.device(), 3)) {
+            // An invalid (s3) as well: which rule decides is FX5-INVALID-S3-DEVICE-RANGE.
+            if (!selectorValid && settings.fx5InvalidS3First) {
+                return false;
+            }
+            return error();
+        }
+        int[] a = read(s1.device());
+        int[] b = useClock ? clock(step) : read(s2.device());
 
         // "If the comparison target data in the device are not recognized as time data, SM709
         // turns on ... and the operation result will be non-continuity." Which words are

@@ -22,6 +22,9 @@ public class Fx5TimeAdd implements Emulator.Scan {
     static final int ERR_VALUE_RANGE = 0x3405;
     /** "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)". */
     static final int[] MAX = {23, 59, 59};
+    /** Seconds in one hour, minute, second; and what each word counts up to before it carries. */
+    static final int[] WEIGHT = {3600, 60, 1};
+    static final int[] RADIX = {24, 60, 60};
 
     /** The memory the CPU reads and writes. */
     protected final Memory mem;
@@ -90,7 +93,7 @@ public class Fx5TimeAdd implements Emulator.Scan {
                 return;      // TADD-ON-ERROR=not-executed: (d) and the flags keep their values
             }
         }
-        int total = (a[0] + b[0]) * 3600 + (a[1] + b[1]) * 60 + (a[2] + b[2]);
+        int total = sum();
         boolean carry = carries(total);
         int result = wrap(total);
         mem.setWord(d, 0, result / 3600);
@@ -98,6 +101,49 @@ public class Fx5TimeAdd implements Emulator.Scan {
         mem.setWord(d, 2, result % 60);
         // "If the result is 0 (0:00:00), the zero flag turns on."
         setFlags(carry, result == 0);
+    }
+
+    /**
+     * (s1) + (s2) in seconds, the words read in the order TADD-OVERLAP says. The order shows only
+     * when (d) shares words with (s1) or (s2) at another offset ((d) = (s1)+1, ...): a source word
+     * read after a word of (d) was written holds what was written.
+     *
+     * @return the sum of the times in seconds, of the words as read
+     */
+    protected int sum() {
+        int total = 0;
+        switch (settings.taddOverlap) {
+            case SECOND_FIRST:
+                // Second, minute, hour, the carry's way: each word of (d) gets its digit as soon as it
+                // is known.
+                int carry = 0;
+                for (int k = 2; k >= 0; k--) {
+                    int ab = signed(s1, k) + signed(s2, k);
+                    total += ab * WEIGHT[k];
+                    mem.setWord(d, k, Math.floorMod(ab + carry, RADIX[k]) & 0xFFFF);
+                    carry = Math.floorDiv(ab + carry, RADIX[k]);
+                }
+                return total;
+            case HOUR_FIRST:
+                // Hour, minute, second, each pair's plain sum into (d); the carries are settled
+                // afterwards, from the three sums.
+                for (int k = 0; k < 3; k++) {
+                    int ab = signed(s1, k) + signed(s2, k);
+                    total += ab * WEIGHT[k];
+                    mem.setWord(d, k, ab & 0xFFFF);
+                }
+                return total;
+            default:
+                // SOURCES_FIRST: all six words read before (d) is written.
+                int[] a = read(s1);
+                int[] b = read(s2);
+                return (a[0] + b[0]) * WEIGHT[0] + (a[1] + b[1]) * WEIGHT[1] + (a[2] + b[2]) * WEIGHT[2];
+        }
+    }
+
+    /** Word {@code k} of an operand, "16-bit signed binary". */
+    private int signed(Address base, int k) {
+        return (short) mem.word(base, k);
     }
 
     /**

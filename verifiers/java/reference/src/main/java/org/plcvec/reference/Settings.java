@@ -5,6 +5,7 @@ import static org.plcvec.spec.Alternatives.Cp1eAndOrWhenOff;
 import static org.plcvec.spec.Alternatives.Cp1eCHighBits;
 import static org.plcvec.spec.Alternatives.Cp1eErFlag;
 import static org.plcvec.spec.Alternatives.Cp1eErrorFlags;
+import static org.plcvec.spec.Alternatives.Fx5InvalidS3DeviceRange;
 import static org.plcvec.spec.Alternatives.Fx5OrOnError;
 import static org.plcvec.spec.Alternatives.HourD1OutOfRange;
 import static org.plcvec.spec.Alternatives.HourFirstScan;
@@ -13,6 +14,7 @@ import static org.plcvec.spec.Alternatives.HourPresetCheck;
 import static org.plcvec.spec.Alternatives.TaddErrorOrder;
 import static org.plcvec.spec.Alternatives.Cp1eNonBcd;
 import static org.plcvec.spec.Alternatives.Cp1eOutOfRange;
+import static org.plcvec.spec.Alternatives.Cp1ePastAreaEnd;
 import static org.plcvec.spec.Alternatives.Fx5AndOrWhenOff;
 import static org.plcvec.spec.Alternatives.Fx5ClockS2DeviceRange;
 import static org.plcvec.spec.Alternatives.Fx5Sm709Scope;
@@ -26,6 +28,7 @@ import static org.plcvec.spec.Alternatives.HourWrapReach;
 import static org.plcvec.spec.Alternatives.TaddExact24;
 import static org.plcvec.spec.Alternatives.TaddFlagsOff;
 import static org.plcvec.spec.Alternatives.TaddOnError;
+import static org.plcvec.spec.Alternatives.TaddOverlap;
 
 import org.plcvec.verify.Choices;
 
@@ -39,11 +42,13 @@ public final class Settings {
     final Fx5AndOrWhenOff fx5Logic;
     final boolean clockS2RangeChecked;
     final boolean fx5OrResultOffOnError;
+    final boolean fx5InvalidS3First;
     // FX5 TADD
     final boolean taddFlagsSetOnly;
     final boolean taddCarryAbove24;
     final boolean taddComputedOnError;
     final boolean taddFieldRangeFirst;
+    final TaddOverlap taddOverlap;
     // FC6A HOUR
     final boolean hourRecompared;
     final HourInputOff hourInputOff;
@@ -64,6 +69,7 @@ public final class Settings {
     final Cp1eAndOrWhenOff cp1eLogic;
     final boolean cp1eErHeld;
     final boolean cp1eErrorFlagsOff;
+    final boolean cp1ePastAreaProgramError;
 
     /**
      * The alternatives of {@code c}, each resolved once.
@@ -88,7 +94,10 @@ public final class Settings {
         cp1eErHeld = c.follows(Cp1eErFlag.HELD);
         cp1eErrorFlagsOff = c.follows(Cp1eErrorFlags.OFF);
         fx5OrResultOffOnError = c.follows(Fx5OrOnError.RESULT_OFF);
+        fx5InvalidS3First = c.follows(Fx5InvalidS3DeviceRange.S3_FIRST);
+        cp1ePastAreaProgramError = c.follows(Cp1ePastAreaEnd.PROGRAM_ERROR);
         taddFieldRangeFirst = c.follows(TaddErrorOrder.FIELD_RANGE_FIRST);
+        taddOverlap = follows(c, TaddOverlap.values());
         hourFirstScan = follows(c, HourFirstScan.values());
         hourPresetEveryExecution = c.follows(HourPresetCheck.EVERY_EXECUTION);
         hourM8004OffWhenValid = c.follows(HourM8004Off.VALID_PRESET);
