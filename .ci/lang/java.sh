@@ -6,7 +6,8 @@
 # deployment signed with a throwaway key is staged and checked as Maven Central would, with the
 # relocation of 0.1.0's coordinates; the public API is held to 0.1.0 (japicmp); the README's
 # example is built from the README's blocks as an outside project; the reference, served over the
-# stdio protocol, passes the Python gate and a seeded differential fuzz run; the table of faults
+# stdio protocol, passes the Python gate (under the defaults and under two sets of other
+# alternatives) and a seeded differential fuzz run; the table of faults
 # runs; and the gate rejects a mutant.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
@@ -70,6 +71,14 @@ fi
 timed quiet verifiers/java/readme-example "$scratch/example"
 
 timed quiet python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
+# The same reference under the alternatives the defaults leave out, the newest readings among them.
+quiet python3 -m plcvec verify -q --adapter "verifiers/java/reference-adapter --choose HOUR-FIRST-SCAN=after-cpu-start \
+    --choose HOUR-D1-OUT-OF-RANGE=by-field --choose HOUR-WRAP-REACH=before-wrap --choose HOUR-M8004-REPEAT=once \
+    --choose HOUR-D2-SPECIAL=undefined --choose HOUR-S1-CONSTANT-RANGE=low-16-bits --choose TADD-OVERLAP=second-first \
+    --choose FX5-INVALID-S3-DEVICE-RANGE=s3-first --choose CP1E-PAST-AREA-END=program-error"
+quiet python3 -m plcvec verify -q --adapter "verifiers/java/reference-adapter \
+    --choose HOUR-D1-OUT-OF-RANGE=as-seconds-if-added --choose HOUR-D2-SPECIAL=error --choose HOUR-S1-CONSTANT-RANGE=as-is \
+    --choose TADD-OVERLAP=hour-first"
 # Fresh inputs through the Java reference and the spec engine, under the defaults and under a set
 # of other alternatives (fixed seeds: repeatable).
 fuzz() {
@@ -80,7 +89,8 @@ fuzz() {
     --choose HOUR-INPUT-OFF=hold-drop-fraction --choose CP1E-NON-BCD=raw-bytes --choose CP1E-ALL-MASKED=not-compared \
     --choose CP1E-ER-FLAG=held --choose CP1E-ERROR-FLAGS=off --choose HOUR-FIRST-SCAN=from-next-scan \
     --choose HOUR-PRESET-CHECK=every-execution --choose HOUR-M8004-OFF=valid-preset --choose FX5-OR-ON-ERROR=result-off \
-    --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-D1-OUT-OF-RANGE=error"
+    --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-D1-OUT-OF-RANGE=error --choose TADD-OVERLAP=hour-first \
+    --choose FX5-INVALID-S3-DEVICE-RANGE=s3-first --choose CP1E-PAST-AREA-END=program-error"
 }
 timed quiet fuzz
 
