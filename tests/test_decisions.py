@@ -77,3 +77,20 @@ def test_a_decision_that_cites_nothing_or_a_stale_text_is_a_problem(families, tm
     assert "cites neither a clause nor an interpretation" in problems[0][1]
     assert "found 0 times in clock_add.py" in problems[1][1]
     assert "'NO-SUCH-INTERPRETATION', which is no clause" in problems[2][1]
+
+
+def test_a_decision_may_cite_an_assumption_of_the_spec_and_not_one_it_lacks(families, tmp_path):
+    listing = tmp_path / "decisions.yaml"
+    listing.write_text(
+        "decisions:\n"
+        "  - {id: before-first, family: fx5-time-add, engine: clock_add.py, decides: x,"
+        " cites: [fx5-time-add#assumptions.timing], old: 'zero = result == 0', new: 'zero = True'}\n"
+        "  - {id: no-such, family: fx5-time-add, engine: clock_add.py, decides: x,"
+        " cites: [fx5-time-add#assumptions.no_such], old: 'zero = result == 0', new: 'zero = True'}\n",
+        encoding="utf-8")
+    rows, problems = inventory(list(families.values()), path=listing)
+    [cited] = rows[0]["cites"]
+    assert (cited["ref"], cited["kind"]) == ("fx5-time-add#assumptions.timing", "assumption")
+    assert "Before the first step the execution condition counts as off" in cited["text"]
+    assert [(line, m.split(":")[0]) for line, m in problems] == [(3, "decision no-such")]
+    assert "'fx5-time-add#assumptions.no_such', which is no clause (family#id), interpretation or assumption" in problems[0][1]

@@ -1,10 +1,13 @@
 """The decision inventory (decisions.yaml beside this file): every point in the engine where an
-observable outcome is decided, with the clauses or interpretations it follows and a way to flip it.
+observable outcome is decided, with the clauses, interpretations or assumptions it follows and a way
+to flip it.
 
-`plcvec review` lists the inventory beside each cited clause's quote and each interpretation's
-question; `--check` fails on a decision that cites nothing, cites a clause or interpretation the spec
-does not hold, or whose engine text (`old`) is not found exactly once in its engine file (the
-inventory went stale). tests/test_decisions.py flips each decision (`old` -> `new` in the engine's
+A decision cites a clause as `family#clause`, an interpretation by its id, and an assumption of a
+family's spec (`assumptions:`, a convention the pages do not state, such as what the vector format
+takes before a vector's first step) as `family#assumptions.name`. `plcvec review` lists the inventory
+beside each cited clause's quote, each interpretation's question and each assumption's why; `--check`
+fails on a decision that cites nothing, cites what the spec does not hold, or whose engine text
+(`old`) is not found exactly once in its engine file (the inventory went stale). tests/test_decisions.py flips each decision (`old` -> `new` in the engine's
 source, built as a module of its own) and requires that the family's vectors change.
 """
 from __future__ import annotations
@@ -18,6 +21,8 @@ from plcvec.errors import PlcvecError
 
 INVENTORY = Path(__file__).resolve().parent / "decisions.yaml"
 ENGINE = Path(__file__).resolve().parents[1] / "engine"
+# How a decision names an assumption of a family's spec: family#assumptions.<name>.
+ASSUMPTION = "assumptions."
 
 
 def load_inventory(path: Path = INVENTORY) -> list[dict]:
@@ -39,12 +44,14 @@ def _line_of(text: str, snippet: str) -> int | None:
 def inventory(families, path: Path = INVENTORY, engine: Path = ENGINE):
     """(rows for the review, problems) of the decision inventory against the spec and the engine; a
     problem is (line of the inventory file, message)."""
-    clauses, interpretations = {}, {}
+    clauses, interpretations, assumptions = {}, {}, {}
     for fam in families:
         for cid, c in fam.clauses.items():
             clauses[f"{fam.name}#{cid}"] = (fam, c)
         for iid, i in fam.interpretations.items():
             interpretations[iid] = (fam, i)
+        for name, a in (fam.doc.get("assumptions") or {}).items():
+            assumptions[f"{fam.name}#{ASSUMPTION}{name}"] = (fam, a)
     rows, problems = [], []
     seen = set()
     listing = path.read_text(encoding="utf-8")
@@ -85,8 +92,12 @@ def inventory(families, path: Path = INVENTORY, engine: Path = ENGINE):
             elif ref in interpretations:
                 fam, i = interpretations[ref]
                 cited.append({"ref": ref, "kind": "interpretation", "text": i["question"], "derived": False})
+            elif ref in assumptions:
+                fam, a = assumptions[ref]
+                cited.append({"ref": ref, "kind": "assumption", "text": a["why"], "derived": False})
             elif complete or ("#" in ref and ref.split("#", 1)[0] in loaded):
-                problems.append(f"{where}: cites {ref!r}, which is no clause (family#id) or interpretation of the spec")
+                problems.append(f"{where}: cites {ref!r}, which is no clause (family#id), interpretation or "
+                                f"assumption (family#{ASSUMPTION}name) of the spec")
         problems[problems_before:] = [(at, message) for message in problems[problems_before:]]
         rows.append({"id": ident, "family": d.get("family", ""), "engine": d.get("engine", ""), "line": line,
                      "decides": d.get("decides", ""), "cites": cited})
