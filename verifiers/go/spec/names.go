@@ -13,7 +13,7 @@ const SuiteVersion = "0.2.0"
 const SchemaVersion = "1.1.0"
 
 // SpecSHA256 is the hash of the spec the vectors were generated from.
-const SpecSHA256 = "7200189ffec10e0e2f55930591998869e9a6df895ef8678b95044110d5a80520"
+const SpecSHA256 = "a90d3e14e38585227a2a59ed8f5718c8234642f1d5bb2261c22abf8026375851"
 
 // Total is the number of vectors in the exported copy.
 const Total = 3615
