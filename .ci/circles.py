@@ -39,6 +39,7 @@ STAGES = [
     "plcvec.fuzz",
     "plcvec.mutation",
     "plcvec.bench",
+    "plcvec.common_vectors",
     "plcvec.native_bench",
     "plcvec.cli",         # the commands over all of the above
     "plcvec.__main__",

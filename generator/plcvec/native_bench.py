@@ -27,6 +27,10 @@ and weight, and vectors/s of two different sets is not one measure. A language w
 report different numbers of vectors is not compared (its bench does not read PLCVEC_VECTORS, or
 one side's loader left vectors out), and a side whose loader refuses the folder fails as any bench
 does, with its own words.
+
+`--common-vectors` is the like-for-like measure across releases (plcvec/common_vectors.py): both
+sides judge the vectors the two revisions judge alike, each side in its own revision's format, so
+that an older reference that fails some of today's vectors can still be compared on the rest.
 """
 from __future__ import annotations
 
@@ -72,6 +76,10 @@ def register(sub, spec_parent):
     b.add_argument("--same-vectors", action="store_true",
                    help="with --baseline: both sides judge the vectors of --vectors (PLCVEC_VECTORS to each bench) "
                         "instead of each its own revision's; a language whose sides report different counts is not compared")
+    b.add_argument("--common-vectors", action="store_true",
+                   help="with --baseline: both sides judge the vectors the two revisions judge alike (this tree's, cut "
+                        "to those whose instruction, states, steps, outcome and alternatives are REV's too): a like-for-like "
+                        "measure where REV's reference fails some of this tree's vectors")
     b.add_argument("--rounds", type=_positive_int, metavar="N",
                    help=f"with --baseline: how many times each side is measured, in turn (default: {DEFAULT_ROUNDS}), "
                         "after one run of each that builds it and is not counted")
@@ -345,7 +353,7 @@ def print_comparison(results, base_label, rounds, file=None, vectors=None):
           "rounds, this tree first in even ones), after one run of each that builds it (not counted); vectors/s is the "
           "median of the rounds, spread (max - min) / median", file=file)
     if vectors is not None:
-        print(f"both sides judged the same vectors: {vectors} (PLCVEC_VECTORS)", file=file)
+        print(f"both sides judged the same vectors: {vectors}", file=file)
     head = (f"{'language':10} {'side':16} {'vectors':>8} {'vectors/s':>12} {'spread':>7} {'s/pass':>10} "
             f"{'load s':>7} {'peak MiB':>8} {'CPU vectors/s':>13}")
     print(head, file=file)
@@ -456,6 +464,9 @@ def run_baseline(args, root: Path, progress=None, invoke_bench=invoke):
         vectors = Path(args.vectors).resolve()
         if not vectors.exists():
             raise PlcvecError(f"bench-native --same-vectors: {vectors}: no such vector folder or file")
+    common = getattr(args, "common_vectors", False)
+    if common and vectors is not None:
+        raise PlcvecError("bench-native: --same-vectors and --common-vectors each choose the vectors both sides judge; give one")
     here = _scripts(root)
     langs = _select(args.lang, list(here))
     if not langs:
@@ -469,17 +480,27 @@ def run_baseline(args, root: Path, progress=None, invoke_bench=invoke):
     try:
         with BaselineWorktree(root, commit) as tree:
             there = _scripts(tree.path)
+            theirs = shown = vectors
+            if common:
+                from plcvec.common_vectors import COMPILED_IN, compiled_in_copy, describe, export_into, write_common
 
-            def runner(script):
-                return lambda build: invoke_bench(script, timeout=BUILD_TIMEOUT_S if build else TIMEOUT_S, vectors=vectors)
+                vectors, theirs = tree.tmp / "common", tree.tmp / "common-baseline"
+                shown = describe(write_common(tree.path, Path(args.vectors or root / "vectors"), vectors, theirs))
+                progress(shown)
+                export_into(tree.path, theirs)
+                here = {lang: compiled_in_copy(root, lang, vectors, tree.tmp / "current") if lang in COMPILED_IN
+                        else script for lang, script in here.items()}
 
-            results = compare(langs, {lang: runner(there[lang]) if lang in there else None for lang in langs},
-                              {lang: runner(here[lang]) for lang in langs}, rounds, progress)
+            def runner(script, folder):
+                return lambda build: invoke_bench(script, timeout=BUILD_TIMEOUT_S if build else TIMEOUT_S, vectors=folder)
+
+            results = compare(langs, {lang: runner(there[lang], theirs) if lang in there else None for lang in langs},
+                              {lang: runner(here[lang], vectors) for lang in langs}, rounds, progress)
             differed = same_counts(results) if vectors is not None else []
     finally:
         if main_thread:
             signal.signal(signal.SIGTERM, previous)
-    summaries = print_comparison(results, label, rounds, vectors=vectors)
+    summaries = print_comparison(results, label, rounds, vectors=shown)
     sys.stdout.flush()
     if not summaries:
         print("plcvec: bench-native --baseline: no language could be compared", file=sys.stderr)
@@ -500,6 +521,8 @@ def run(args):
         return run_baseline(args, root)
     if args.rounds is not None:
         raise PlcvecError("bench-native: --rounds is for --baseline (without it each bench runs once)")
+    if args.common_vectors:
+        raise PlcvecError("bench-native: --common-vectors is for --baseline (it compares two revisions' vector sets)")
     if args.same_vectors:
         raise PlcvecError("bench-native: --same-vectors is for --baseline (without it each bench judges its own golden set)")
     if not args.vectors:

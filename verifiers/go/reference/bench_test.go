@@ -1,6 +1,7 @@
 package reference_test
 
 import (
+	"os"
 	"syscall"
 	"testing"
 	"time"
@@ -14,7 +15,7 @@ import (
 // beside Python's (python3 -m plcvec bench-native --lang go).
 func BenchmarkJudgeGolden(b *testing.B) {
 	start := time.Now()
-	suite, err := plcvec.Embedded()
+	suite, err := benchSuite()
 	if err != nil {
 		b.Fatal(err)
 	}
@@ -95,4 +96,14 @@ func BenchmarkHarnessOnly(b *testing.B) {
 	n := float64(len(plan.Cases))
 	b.ReportMetric(n*float64(b.N)/b.Elapsed().Seconds(), "vectors/s")
 	b.ReportMetric(n*float64(b.N)/(cpuSeconds()-cpu0), "cpu-vectors/s")
+}
+
+// benchSuite is the set a bench judges: the folder PLCVEC_VECTORS names, as plcvec.Run reads it
+// (plcvec bench-native --same-vectors and --common-vectors give both revisions one set that way),
+// or else the embedded golden set.
+func benchSuite() (*plcvec.Suite, error) {
+	if dir := os.Getenv("PLCVEC_VECTORS"); dir != "" {
+		return plcvec.Load(dir)
+	}
+	return plcvec.Embedded()
 }
