@@ -13,6 +13,18 @@ import pytest
 os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
 sys.dont_write_bytecode = False
 
+# A vector file found valid is remembered in a cache folder (plcvec_verify/validate.py), found from
+# HOME unless PLCVEC_CACHE_DIR names it. pytester gives each in-process session a HOME of its own,
+# so without this every such session validated the whole golden set again (several seconds each),
+# which no user's second run does. The folder named here is the one this session's HOME gives;
+# tests of the cache itself set their own.
+if not os.environ.get("PLCVEC_CACHE_DIR"):
+    from plcvec_verify.validate import _cache_dir
+
+    _valid_files = _cache_dir()
+    if _valid_files is not None:
+        os.environ["PLCVEC_CACHE_DIR"] = str(_valid_files.parent)
+
 REPO = Path(__file__).resolve().parents[1]
 MANUAL_DIR = REPO.parent / "shared" / "manual"
 

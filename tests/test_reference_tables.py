@@ -53,6 +53,7 @@ def test_every_interpretation_is_listed_with_its_default(families):
             assert f"`{interp['default']}` (default): " in text
 
 
+@pytest.mark.slow   # six whole exports; the default run checks the tables themselves (above)
 def test_check_fails_on_edited_tables_and_on_missing_markers(repo, tmp_path, capsys, monkeypatch):
     from plcvec.export import command
 

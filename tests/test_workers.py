@@ -46,10 +46,15 @@ def assert_no_worker_left(folder):
             os.kill(pid, 0)
 
 
-def test_two_jobs_give_the_same_files_and_vectors_as_one(families, generated):
+@pytest.mark.slow
+def test_two_jobs_give_the_same_files_as_one(families, generated):
     # The whole set as `plcvec generate` builds it (workers send back the files alone): every file,
-    # byte for byte, the manifest, the CSV and each family's.
+    # byte for byte, the manifest, the CSV and each family's. (The default run has the same through
+    # the command: test_generate_with_jobs_writes_the_files_one_process_gives.)
     assert build_golden(list(families.values()), jobs=2, keep_vectors=False) == (generated[0], None)
+
+
+def test_two_jobs_give_the_same_vectors_as_one(families):
     # Workers that send back the vectors too: two small families, the costlier one (HOUR, whose six
     # interpretations make more combinations than TADD's four) handed out first though it comes second.
     few = [families["fx5-time-add"], families["fc6a-hour-meter"]]

@@ -7,6 +7,7 @@ it (`LDTM_LE` for LDTM<=), so one convention serves every family.
 """
 from __future__ import annotations
 
+import functools
 import re
 
 # Longest first: "<=" must not read as "<" then "=".
@@ -43,7 +44,13 @@ def camel(words) -> str:
 
 
 def _words(value):
-    return value.words if hasattr(value, "words") else identifier_words(str(value))
+    return value.words if hasattr(value, "words") else _text_words(str(value))
+
+
+@functools.lru_cache(maxsize=None)
+def _text_words(text: str) -> tuple[str, ...]:
+    # The C tables name the same devices and clauses tens of thousands of times per export.
+    return tuple(identifier_words(text))
 
 
 def _safe(ident: str) -> str:

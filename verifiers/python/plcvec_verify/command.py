@@ -202,14 +202,16 @@ def _verify(args) -> int:
 
     try:
         came = apply_environment(args)
+        # The options' own mistakes first, before the vectors are read: a usage error costs no load.
+        gate = build_gate(args.allow_empty, args.max_skipped)
+        choose = parse_choices(args.choose)
         suite = Suite.load(args.vectors or default_vectors().path)
         selection = build_selection(args, came)
         selection.check(suite, labels={kind: came[kind] for kind in _LISTS if kind in came})
-        gate = build_gate(args.allow_empty, args.max_skipped)
         known = KnownFailures.load(args.expectations) if args.expectations else None
         adapter = make_adapter(args)
         progress = None if args.no_progress or args.quiet else Progress.for_stream(sys.stderr)
-        report = run(suite, adapter, selection, choose=parse_choices(args.choose), known=known,
+        report = run(suite, adapter, selection, choose=choose, known=known,
                      progress=progress, gate=gate)
         if progress:
             progress.done()
