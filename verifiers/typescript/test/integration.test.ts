@@ -23,8 +23,14 @@ function nodeTest(args: string[], env: Record<string, string> = {}) {
   return spawnSync(process.execPath, ["--test", "--test-reporter=spec", ...args, fixture], { ...BOUND, env: { ...clean, ...env } });
 }
 
+let plainRun: ReturnType<typeof nodeTest> | undefined;
+/** `node --test` over the fixture as it stands, run once for the three tests that read it. */
+function plainNodeTest() {
+  return (plainRun ??= nodeTest([]));
+}
+
 test("node --test: a broken emulator fails, one test per vector named by its id, with the diff", () => {
-  const run = nodeTest([]);
+  const run = plainNodeTest();
   assert.equal(run.status, 1, run.stdout);
   assert.match(run.stdout, /✖ fx5-time-add\/TADD\/[^\n]+/);
   assert.match(run.stdout, /step 0 D\d+: expected \d+, got \d+/);
@@ -45,7 +51,7 @@ test("node --test --test-reporter=plcvec/reporter: each failing vector's block o
   assert.equal(Number(totals[2]), failed.length);
   assert.match(run.stdout, /^node:test: tests \d+, /m);
   // Under the spec reporter the same run shows each failing test in two places.
-  const spec = nodeTest([]);
+  const spec = plainNodeTest();
   const once = failed[0]!;
   assert.equal(spec.stdout.split(`FAIL ${once}\n`).length - 1, 2, "the spec reporter no longer repeats: update the README");
 });
@@ -62,7 +68,7 @@ test("PLCVEC_SHARD=K/N runs one shard of the selection, as every plcvec runner s
     const run = nodeTest([], { PLCVEC_SHARD: `${k}/2` });
     return Number(/ℹ tests (\d+)/.exec(run.stdout)?.[1]);
   });
-  const all = Number(/ℹ tests (\d+)/.exec(nodeTest([]).stdout)?.[1]);
+  const all = Number(/ℹ tests (\d+)/.exec(plainNodeTest().stdout)?.[1]);
   assert.ok(counts[0]! > 0 && counts[1]! > 0, JSON.stringify(counts));
   assert.equal(counts[0]! + counts[1]!, all);
   const bad = nodeTest([], { PLCVEC_SHARD: "3/2" });
