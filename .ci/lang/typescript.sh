@@ -7,20 +7,28 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 cd "$(dirname "$0")/../.."
 root=$PWD
+started=$SECONDS
+step() { echo "-- typescript: $* ($((SECONDS - started)) s)"; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 (
     cd verifiers/typescript
     # The README's own install command: the lock file records every platform's optional packages.
+    step "npm ci (the lock file: the same packages on every run)"
     npm ci --no-audit --no-fund --loglevel=error >/dev/null
-    npm run --silent typecheck
+    step "eslint"
     npm run --silent lint
+    step "madge: no import circle"
     # No import circle (madge counts `import type` too); its report is printed only when it finds one.
     npm run --silent circles >"$work/circles.log" 2>&1 || { cat "$work/circles.log"; exit 1; }
+    # The build type-checks as `npm run typecheck` does (one tsconfig): one compile, not two.
+    step "tsc (the type check and the build)"
     npm run --silent build
+    step "node --test over test/"
     # node:test over test/: its whole output only when something failed, else its counts on one line.
     npm test >"$work/test.log" 2>&1 || { cat "$work/test.log"; exit 1; }
     printf 'typescript tests: %s passed, %s failed\n' "$(sed -n 's/^ℹ pass //p' "$work/test.log")" "$(sed -n 's/^ℹ fail //p' "$work/test.log")"
+    step "the public API against 0.1.0's (API Extractor), a deliberate rename caught"
     # The public API against 0.1.0's (API Extractor's reports): every change named in CHANGES.md's
     # Breaking or Deprecated section, and a deliberate rename in a scratch copy caught.
     python3 api/check.py --prove crc32=crc32Renamed
@@ -28,6 +36,7 @@ trap 'rm -rf "$work"' EXIT
     cmp LICENSE "$root/LICENSE"
 )
 
+step "package.json's metadata"
 # The package's metadata names the project's one home (pyproject.toml [tool.plcvec] home), its
 # licence and version as every plcvec package does.
 python3 - <<'PY'
@@ -47,8 +56,10 @@ if bad:
     sys.exit("\n".join(bad))
 PY
 
-# Publishing, from a clean copy of the tracked files (no dist/, no node_modules/): `prepack` builds,
-# and `npm publish --dry-run` must pass without a warning (a `bin` npm would rewrite, a missing field).
+step "npm publish --dry-run and npm pack from a clean copy; the tarball's files and source maps"
+# Publishing, from a clean copy of the tracked files (no dist/, no node_modules/): `npm pack` runs
+# `prepack`, which builds, and `npm publish --dry-run` of the same folder must pass without a warning
+# (a `bin` npm would rewrite, a missing field); its own `prepack` is skipped, the build being done.
 clean="$work/clean"
 mkdir -p "$clean"
 git ls-files -z verifiers/typescript | tar --null -T - -cf - | tar -xf - -C "$clean"
@@ -56,13 +67,13 @@ git ls-files -z verifiers/typescript | tar --null -T - -cf - | tar -xf - -C "$cl
     cd "$clean/verifiers/typescript"
     # The packages installed above serve the clean copy: its build and its tarball are what is checked.
     ln -s "$root/verifiers/typescript/node_modules" node_modules
-    npm publish --dry-run >"$work/publish.log" 2>&1 || { cat "$work/publish.log"; exit 1; }
+    npm pack --silent --pack-destination "$work" >/dev/null
+    npm publish --dry-run --ignore-scripts >"$work/publish.log" 2>&1 || { cat "$work/publish.log"; exit 1; }
     # The one warning a dry run cannot avoid without a registry account: not logged in.
     if grep -i "warn" "$work/publish.log" | grep -v "requires you to be logged in"; then
         echo "npm publish --dry-run warned (above)" >&2
         exit 1
     fi
-    npm pack --silent --pack-destination "$work" >/dev/null
     rm node_modules
 )
 tarball="$work/plcvec-0.2.0.tgz"
@@ -87,6 +98,7 @@ for (const f of fs.readdirSync(path.join(root, "dist/src"), { recursive: true })
 }
 if (n === 0) { console.error("no source map checked"); process.exit(1); }' "$work/package"
 
+step "the README's blocks as written, in an empty folder, with the packed tarball"
 # The README's code blocks, as an outside project in an empty folder, run as written: every block is
 # marked, the runnable ones are extracted (never retyped) and run in order. The one difference from a
 # newcomer's machine: `npm install plcvec` installs the tarball `npm pack` made (the package is not
@@ -126,9 +138,13 @@ export tarball vitest_version npm_config_audit=false npm_config_fund=false npm_c
     fi
 ) >"$work/outside.log" 2>&1 || { cat "$work/outside.log"; exit 1; }
 
+step "the reference adapter through plcvec verify; the gate rejects a mutant"
 python3 -m plcvec verify --adapter verifiers/typescript/reference-adapter -q
 # A mutant served the same way is rejected (exit 1): the gate is not passing by accident.
 gate_rejects typescript "verifiers/typescript/reference-adapter --mutant tadd-hour-not-wrapped" --family fx5-time-add
+step "the shared table of faults (verifiers/parity/faults.toml) through faults-entry"
 # The shared table of faults through faults-entry (node --test over vectorTests): the verdict
 # `plcvec verify` gives, for every row.
-python3 verifiers/parity/run.py --lang typescript
+# Built above: --no-build spares faults-entry's own compile of the same sources.
+python3 verifiers/parity/run.py --lang typescript --no-build
+step "done"
