@@ -29,33 +29,39 @@ quiet() {
         exit 1
     fi
 }
-timed() { local t=$SECONDS; "$@"; times+=("${2##*/} $((SECONDS - t))s"); }
-times=()
 started=$SECONDS
+step() { echo "-- java: $* ($((SECONDS - started)) s)"; }
 
 # The README's blocks, each marked; its install block is run as a newcomer runs it, from an empty
 # folder beside a checkout called plcvec (Maven's dependencies and pinned plugins come from Maven
 # Central the first time, from the local repository after that).
+step "README blocks"
 quiet python3 .ci/readme_snippets.py check verifiers/java/README.md verifiers/java/mutants/MUTANTS.md
 quiet python3 .ci/readme_snippets.py extract verifiers/java/README.md --out "$scratch/readme"
 ln -s "$repo" "$scratch/readme/plcvec"
+step "install block (build, tests)"
 install() { (cd "$scratch/readme" && bash install.sh); }
-timed quiet install
+quiet install
 
 # Ready to publish: the deployment signed with a key made for this run, staged to a folder and
 # checked as Central checks one; a project naming 0.1.0's coordinates resolves the new artifact.
+step "signed staged deployment"
 export GNUPGHOME="$scratch/gnupg"
 mkdir -m 700 "$GNUPGHOME"
 quiet gpg --batch --passphrase '' --quick-gen-key 'plcvec CI throwaway <ci@plcvec.invalid>' ed25519 sign 1d
 stage() { (cd verifiers/java && mvn -B -q -Dstyle.color=never deploy -Prelease -DskipTests \
     -DaltDeploymentRepository="staging::file://$scratch/stage"); }
-timed quiet stage
+quiet stage
+step "central-check"
 quiet verifiers/java/central-check --signed "$scratch/stage"
-timed quiet verifiers/java/relocation-check "$scratch/stage"
+step "relocation-check"
+quiet verifiers/java/relocation-check "$scratch/stage"
 
 # The public API against 0.1.0; and the same check failing when the Breaking section leaves out a
 # name japicmp finds (Result, the class 0.2.0 renamed Verdict).
-timed quiet verifiers/java/api-check
+step "api-check"
+quiet verifiers/java/api-check
+step "api-check without a Breaking name"
 mkdir "$scratch/unlisted" "$scratch/unlisted/changes.d"
 sed 's/`Result`/Result/g' CHANGES.md > "$scratch/unlisted/CHANGES.md"
 for f in changes.d/*.md; do [ -e "$f" ] && sed 's/`Result`/Result/g' "$f" > "$scratch/unlisted/$f"; done
@@ -68,10 +74,13 @@ if verifiers/java/api-check --reports "${reports[@]}" --changes "$scratch/unlist
 fi
 
 # The README's example, built from its blocks as an outside project.
-timed quiet verifiers/java/readme-example "$scratch/example"
+step "README example"
+quiet verifiers/java/readme-example "$scratch/example"
 
-timed quiet python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
+step "gate, defaults"
+quiet python3 -m plcvec verify --adapter verifiers/java/reference-adapter -q
 # The same reference under the alternatives the defaults leave out, the newest readings among them.
+step "gate, other alternatives"
 quiet python3 -m plcvec verify -q --adapter "verifiers/java/reference-adapter --choose HOUR-FIRST-SCAN=after-cpu-start \
     --choose HOUR-D1-OUT-OF-RANGE=by-field --choose HOUR-WRAP-REACH=before-wrap --choose HOUR-M8004-REPEAT=once \
     --choose HOUR-D2-SPECIAL=undefined --choose HOUR-S1-CONSTANT-RANGE=low-16-bits --choose TADD-OVERLAP=second-first \
@@ -81,6 +90,7 @@ quiet python3 -m plcvec verify -q --adapter "verifiers/java/reference-adapter \
     --choose TADD-OVERLAP=hour-first"
 # Fresh inputs through the Java reference and the spec engine, under the defaults and under a set
 # of other alternatives (fixed seeds: repeatable).
+step "fuzz"
 fuzz() {
     python3 -m plcvec fuzz --adapter verifiers/java/reference-adapter --examples 500 --seed 1
     python3 -m plcvec fuzz --examples 500 --seed 2 --adapter "verifiers/java/reference-adapter \
@@ -92,15 +102,15 @@ fuzz() {
     --choose TADD-ERROR-ORDER=field-range-first --choose HOUR-D1-OUT-OF-RANGE=error --choose TADD-OVERLAP=hour-first \
     --choose FX5-INVALID-S3-DEVICE-RANGE=s3-first --choose CP1E-PAST-AREA-END=program-error"
 }
-timed quiet fuzz
+quiet fuzz
 
 # The shared table of faults through the README's entry point (the JUnit 5 factory under
 # Surefire, the rows in one run but for those that end their process); the modules are built by
 # now, so its build only compiles the hostile ones.
-timed quiet python3 verifiers/parity/run.py --lang java
+step "table of faults"
+quiet python3 verifiers/parity/run.py --lang java
 
 # The same gate must reject a mutant served the same way (exit 1, not 0 and not 2).
+step "gate rejects a mutant"
 gate_rejects java "verifiers/java/reference-adapter --mutant tadd-sm8022-not-written" --family fx5-time-add
-if [ -n "${CI_TIMES:-}" ]; then
-    echo "java: ${times[*]}; done in $((SECONDS - started)) s"
-fi
+step "done"
