@@ -12,6 +12,7 @@ import java.util.EnumSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.stream.Collectors;
 import java.util.stream.Stream;
 
@@ -67,18 +68,30 @@ class MutantsTest {
             Map.entry("cp1e-flags-not-reflected",
                     new Catch("cp1e-time-compare/AND <=DT/logic/rlo-off/eq", "P_EQ", Aspect.FLAG)),
             Map.entry("cp1e-bcd-read-as-binary",
-                    new Catch("cp1e-time-compare/AND <=DT/logic/rlo-off/invalid-data", "P_ER", Aspect.FLAG)));
+                    new Catch("cp1e-time-compare/AND <=DT/logic/rlo-off/invalid-data", "P_ER", Aspect.FLAG));
+
+    /** A mutant's verifier over its families and the run of it, made once: both factories below judge the same run. */
+    record Run(Verifier verifier, Report report) {
+    }
+
+    private static final Map<String, Run> RUNS = new ConcurrentHashMap<>();
+
+    private static Run run(Mutant m) {
+        return RUNS.computeIfAbsent(m.name(), name -> {
+            Verifier verifier = Verifier.of(m.create()).selection(Selection.all().families(m.families().toArray(new Family[0])));
+            return new Run(verifier, verifier.run());
+        });
+    }
 
     @TestFactory
     Stream<DynamicTest> everyMutantIsRejected() {
         return Mutants.all().stream().map(m -> DynamicTest.dynamicTest(m.name(), () -> {
             Catch c = CAUGHT.get(m.name());
             assertNotNull(c, m.name() + " has no catching vector in this test's table");
-            Verifier verifier = Verifier.of(m.create()).selection(Selection.all().families(m.families().toArray(new Family[0])));
-            Report report = verifier.run();
-            assertFalse(report.passed(), m.name() + " passed every vector of " + m.families());
+            Run run = run(m);
+            assertFalse(run.report().passed(), m.name() + " passed every vector of " + m.families());
 
-            Verdict r = verifier.check(Suite.golden().byId(c.vector()));
+            Verdict r = run.verifier().check(Suite.golden().byId(c.vector()));
             assertEquals(Status.FAIL, r.status(), m.name() + " on " + c.vector() + ": " + r.report());
             Problem p = r.problems().stream().filter(x -> x.field().equals(c.field())).findFirst().orElse(null);
             assertNotNull(p, m.name() + " on " + c.vector() + " should differ at " + c.field() + ":\n" + r.report());
@@ -117,9 +130,7 @@ class MutantsTest {
     @TestFactory
     Stream<DynamicTest> noMutantIsExplainedAwayByAReading() {
         return Mutants.all().stream().map(m -> DynamicTest.dynamicTest(m.name(), () -> {
-            Report report = Verifier.of(m.create()).selection(Selection.all().families(m.families().toArray(new Family[0])))
-                    .run();
-            String summary = report.summary();
+            String summary = run(m).report().summary();
             for (String line : summary.split("\n")) {
                 if (line.matches(" {4}[ \\d]{6}  [A-Z0-9-]+=.*")) {
                     assertTrue(line.contains(" (partial: "), m.name() + " is explained by a reading: " + line + "\n"
