@@ -148,6 +148,19 @@ public final class Mutants {
                         mem.setWord(d, 3, 0);
                     }
                 }));
+        add("tadd-s1-copied-into-d-first", List.of(Family.FX5_TIME_ADD),
+                "(s1) is copied into (d) first and (s2) then added to (d) in place, so a (d) that shares words "
+                        + "with (s2) at another offset adds a changed (s2), under every reading of TADD-OVERLAP.",
+                c -> tadd(c, (v, m, settings) -> new Fx5TimeAdd(v, m, settings) {
+                    @Override
+                    protected int sum() {
+                        int[] first = read(s1);
+                        for (int k = 0; k < 3; k++) {
+                            mem.setWord(d, k, first[k] & 0xFFFF);
+                        }
+                        return sum(d);
+                    }
+                }));
 
         // -- FC6A HOUR ----------------------------------------------------------------------------
         add("hour-drops-fraction", List.of(Family.FC6A_HOUR_METER),
@@ -215,6 +228,15 @@ public final class Mutants {
                     @Override
                     protected int compared(int raw) {
                         return (raw >> 4) * 10 + (raw & 0x0F);
+                    }
+                }));
+        add("cp1e-past-area-compared", List.of(Family.CP1E_TIME_COMPARE),
+                "S1 or S2 at the last one or two words of the data area is compared all the same, the words past the "
+                        + "end read as 0, instead of the error or program error CP1E-PAST-AREA-END names.",
+                c -> cp1e(c, (v, m, settings) -> new Cp1eTimeCompare(v, m, settings) {
+                    @Override
+                    protected boolean inArea(Address operand) {
+                        return true;
                     }
                 }));
     }

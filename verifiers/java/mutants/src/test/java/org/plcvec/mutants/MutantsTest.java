@@ -60,6 +60,9 @@ class MutantsTest {
             Map.entry("taddp-every-scan", new Catch("fx5-time-add/TADDP/pulse/off-on-on-off-on-on", "D302", Aspect.UNCHANGED)),
             Map.entry("tadd-writes-past-d",
                     new Catch("fx5-time-add/TADD/carry/below-wrap/flags-off-before", "D303", Aspect.OUTSIDE)),
+            // (d) = D201 over (s2) = D200: copied first, (s1) 11:30:30 makes (s2) 15:11:30, and the sum is
+            // 2:42:00 with the carry, not 11:30:30 + 15:39:39 = 3:10:09.
+            Map.entry("tadd-s1-copied-into-d-first", new Catch("fx5-time-add/TADD/overlap/d=s2+1", "D201", Aspect.WORD)),
             Map.entry("hour-drops-fraction", new Catch("fc6a-hour-meter/HOUR/input/off-on-off", "D202", Aspect.WORD)),
             Map.entry("hour-wrap-clears-d2", new Catch("fc6a-hour-meter/HOUR/wrap/output-stays-on", "M10", Aspect.UNCHANGED)),
             Map.entry("hour-input-off-resets",
@@ -68,7 +71,11 @@ class MutantsTest {
             Map.entry("cp1e-flags-not-reflected",
                     new Catch("cp1e-time-compare/AND <=DT/logic/rlo-off/eq", "P_EQ", Aspect.FLAG)),
             Map.entry("cp1e-bcd-read-as-binary",
-                    new Catch("cp1e-time-compare/AND <=DT/logic/rlo-off/invalid-data", "P_ER", Aspect.FLAG));
+                    new Catch("cp1e-time-compare/AND <=DT/logic/rlo-off/invalid-data", "P_ER", Aspect.FLAG)),
+            // S1 at D8190: D8192 is past the end of D; read as 0 (year 00, month 00, compared as it is by
+            // default) it is compared with S2 and P_ER stays off.
+            Map.entry("cp1e-past-area-compared",
+                    new Catch("cp1e-time-compare/AND <>DT/device-range/S1=D8190", "P_ER", Aspect.FLAG)));
 
     /** A mutant's verifier over its families and the run of it, made once: both factories below judge the same run. */
     record Run(Verifier verifier, Report report) {

@@ -90,6 +90,16 @@ public class Cp1eTimeCompare implements Emulator.Scan {
     }
 
     /**
+     * Whether the three words of S1 or S2 from {@code operand} lie in their data area.
+     *
+     * @param operand S1 or S2
+     * @return true when all three words exist
+     */
+    protected boolean inArea(Address operand) {
+        return mem.inRange(operand, 3);
+    }
+
+    /**
      * The comparison: C read, each unmasked field checked and compared, the flags written.
      *
      * @return the execution condition it creates
@@ -98,7 +108,7 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         // "S1 to S1+2", "S2 to S2+2": three words each. One past the end of the data area (S1 in
         // one of the last two words of D) is CP1E-PAST-AREA-END, found before C or the data are
         // looked at: an error, or a program error (not executed: nothing written, OFF).
-        if (!mem.inRange(s1, 3) || !mem.inRange(s2, 3)) {
+        if (!inArea(s1) || !inArea(s2)) {
             return settings.cp1ePastAreaProgramError ? false : error();
         }
         int mask = c.word(mem);

@@ -111,6 +111,16 @@ public class Fx5TimeAdd implements Emulator.Scan {
      * @return the sum of the times in seconds, of the words as read
      */
     protected int sum() {
+        return sum(s1);
+    }
+
+    /**
+     * {@code first} + (s2) in seconds, read as {@link #sum()} reads (s1) + (s2).
+     *
+     * @param first the three words added to (s2): (s1), or where an implementation has copied it
+     * @return the sum of the times in seconds, of the words as read
+     */
+    protected int sum(Address first) {
         int total = 0;
         switch (settings.taddOverlap) {
             case SECOND_FIRST:
@@ -118,7 +128,7 @@ public class Fx5TimeAdd implements Emulator.Scan {
                 // is known.
                 int carry = 0;
                 for (int k = 2; k >= 0; k--) {
-                    int ab = signed(s1, k) + signed(s2, k);
+                    int ab = signed(first, k) + signed(s2, k);
                     total += ab * WEIGHT[k];
                     mem.setWord(d, k, Math.floorMod(ab + carry, RADIX[k]) & 0xFFFF);
                     carry = Math.floorDiv(ab + carry, RADIX[k]);
@@ -128,14 +138,14 @@ public class Fx5TimeAdd implements Emulator.Scan {
                 // Hour, minute, second, each pair's plain sum into (d); the carries are settled
                 // afterwards, from the three sums.
                 for (int k = 0; k < 3; k++) {
-                    int ab = signed(s1, k) + signed(s2, k);
+                    int ab = signed(first, k) + signed(s2, k);
                     total += ab * WEIGHT[k];
                     mem.setWord(d, k, ab & 0xFFFF);
                 }
                 return total;
             default:
                 // SOURCES_FIRST: all six words read before (d) is written.
-                int[] a = read(s1);
+                int[] a = read(first);
                 int[] b = read(s2);
                 return (a[0] + b[0]) * WEIGHT[0] + (a[1] + b[1]) * WEIGHT[1] + (a[2] + b[2]) * WEIGHT[2];
         }
