@@ -89,7 +89,7 @@ fn cut(filter: Option<&str>) -> (Option<i32>, String, String, Option<String>) {
     std::fs::create_dir_all(&scratch).unwrap();
     let expectations = scratch.join("known.toml");
     let mut child = Command::new(std::env::current_exe().unwrap());
-    child.args([TEST, "--exact", "--nocapture", "--test-threads=1"]).env(CHILD, &expectations);
+    child.args([&test_name(), "--exact", "--nocapture", "--test-threads=1"]).env(CHILD, &expectations);
     match filter {
         Some(f) => child.env(CHILD_FILTER, f),
         None => child.env_remove(CHILD_FILTER),
@@ -103,6 +103,15 @@ fn cut(filter: Option<&str>) -> (Option<i32>, String, String, Option<String>) {
     let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
     let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
     (out.status.code(), stdout, stderr, written)
+}
+
+/// TEST's name as libtest knows it, for `--exact`: its module's path in the test binary (which
+/// holds more than this file), without the binary's own name.
+fn test_name() -> String {
+    match module_path!().split_once("::") {
+        Some((_, module)) => format!("{module}::{TEST}"),
+        None => TEST.to_owned(),
+    }
 }
 
 /// A known-failures file as every plcvec runner writes it, of `ids`.
