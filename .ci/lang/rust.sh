@@ -36,8 +36,14 @@ cargo fetch --locked --manifest-path "$crate/Cargo.toml" -q
 step "cargo fmt --check"
 cargo fmt --manifest-path "$crate/Cargo.toml" --all --check
 
+# Clippy and the rustdoc JSON of the API check below share one target dir: they check the same
+# dependencies, but rustdoc writes JSON on stable only with RUSTC_BOOTSTRAP=1, and cargo builds
+# again what was built without it (proc-macro2's build script watches it). Clippy only lints;
+# that the code builds on stable without it is the release build's and the 1.82 check's job.
+checked="$crate/target/check"
 step "cargo clippy --all-targets -D warnings"
-cargo clippy --locked --quiet --manifest-path "$crate/Cargo.toml" --workspace --all-targets -- -D warnings
+RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="$checked" cargo clippy --locked --quiet --manifest-path "$crate/Cargo.toml" \
+    --workspace --all-targets -- -D warnings
 
 # Release: the reference adapter below and the benchmark reuse the same build.
 step "cargo test (one test per vector under the reference, mutants, loading, the harness, no import circle)"
@@ -50,7 +56,11 @@ step "the README's blocks as written: the emulator, from an empty folder, as an 
 python3 .ci/readme_snippets.py extract "$crate/README.md" --out "$scratch/readme" >/dev/null
 # The README depends on plcvec from crates.io: this checkout's crate stands in for it.
 printf '\n[workspace]\n\n[patch.crates-io]\nplcvec = { path = "%s" }\n' "$PWD/$crate" >> "$scratch/readme/emulator/Cargo.toml"
-(cd "$scratch/readme/emulator" && CARGO_TARGET_DIR="$OLDPWD/$crate/target/readme" bash -euo pipefail run.sh >/dev/null)
+# Its target dir is the crate's, where the dry run below builds the packaged crate in the same
+# profile: the dependency versions both resolve alike are built once. Neither build is run under a
+# debugger, so neither writes debug info (a fifth of their time).
+undebugged=(env CARGO_PROFILE_DEV_DEBUG=0 CARGO_TARGET_DIR="$PWD/$crate/target")
+(cd "$scratch/readme/emulator" && "${undebugged[@]}" bash -euo pipefail run.sh >/dev/null)
 
 step "the published crate holds neither the reference implementation nor its mutants"
 # They are the unpublished plcvec-reference crate (verifiers/rust/reference), an outside user of
@@ -64,7 +74,7 @@ fi
 
 step "cargo publish --dry-run: packaged and built as crates.io would, no warning"
 # The one warning a dry run always gives is that it does not upload.
-published=$(cargo publish --dry-run --locked --manifest-path "$crate/Cargo.toml" -p plcvec 2>&1) || {
+published=$("${undebugged[@]}" cargo publish --dry-run --locked --manifest-path "$crate/Cargo.toml" -p plcvec 2>&1) || {
     echo "$published"; exit 1; }
 if echo "$published" | grep '^warning:' | grep -v 'aborting upload due to dry run'; then
     echo "rust.sh: cargo publish --dry-run warns (above)" >&2
@@ -89,20 +99,22 @@ fi
 step "the public API against the 0.1.0 release ($api_baseline): every breaking change listed under Breaking"
 # rustdoc's JSON of both, compared by verifiers/rust/api/public_api.py (why not cargo-semver-checks:
 # its docstring). Built on stable, as rustdoc writes JSON there with RUSTC_BOOTSTRAP=1.
-rustdoc_json() {  # <crate folder> <target dir>
-    RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="$2" cargo rustdoc --quiet --locked --manifest-path "$1/Cargo.toml" \
+# Both in clippy's target dir (above), which holds most of what they depend on checked already.
+rustdoc_json() {  # <crate folder> <where the JSON goes>
+    RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="$checked" cargo rustdoc --quiet --locked --manifest-path "$1/Cargo.toml" \
         -p plcvec --lib -- -Z unstable-options --output-format json
+    mv "$checked/doc/plcvec.json" "$2"
 }
 git worktree add --quiet --detach "$scratch/baseline" "$api_baseline"
-rustdoc_json "$scratch/baseline/$crate" "$crate/target/api-baseline"
-rustdoc_json "$crate" "$crate/target/api"
+rustdoc_json "$scratch/baseline/$crate" "$scratch/api-baseline.json"
+rustdoc_json "$crate" "$scratch/api.json"
 version=$(sed -n 's/^version = "\(.*\)"$/\1/p' "$crate/Cargo.toml" | head -1)
 api=(python3 "$crate/api/public_api.py")
-"${api[@]}" diff "$crate/target/api-baseline/doc/plcvec.json" "$crate/target/api/doc/plcvec.json" \
+"${api[@]}" diff "$scratch/api-baseline.json" "$scratch/api.json" \
     --changes CHANGES.md --version "$version" --fragments changes.d
 # The check fails on a rename nobody listed: `shard_of` renamed in a copy of today's API.
-sed 's/"name":"shard_of"/"name":"shard_number"/' "$crate/target/api/doc/plcvec.json" > "$scratch/renamed.json"
-if "${api[@]}" diff "$crate/target/api/doc/plcvec.json" "$scratch/renamed.json" \
+sed 's/"name":"shard_of"/"name":"shard_number"/' "$scratch/api.json" > "$scratch/renamed.json"
+if "${api[@]}" diff "$scratch/api.json" "$scratch/renamed.json" \
     --changes "$scratch/none" --version "$version" 2> "$scratch/renamed.txt"; then
     echo "rust.sh: public_api.py passed a rename of shard_of that no Breaking section lists" >&2
     exit 1
