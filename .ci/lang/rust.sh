@@ -36,18 +36,22 @@ cargo fetch --locked --manifest-path "$crate/Cargo.toml" -q
 step "cargo fmt --check"
 cargo fmt --manifest-path "$crate/Cargo.toml" --all --check
 
-# Clippy and the rustdoc JSON of the API check below share one target dir: they check the same
+# Clippy and the rustdoc JSON of the API check below share one build dir: they check the same
 # dependencies, but rustdoc writes JSON on stable only with RUSTC_BOOTSTRAP=1, and cargo builds
 # again what was built without it (proc-macro2's build script watches it). Clippy only lints;
 # that the code builds on stable without it is the release build's and the 1.82 check's job.
-checked="$crate/target/check"
+checked=(env RUSTC_BOOTSTRAP=1 CARGO_BUILD_BUILD_DIR="$PWD/$crate/target/check")
 step "cargo clippy --all-targets -D warnings"
-RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="$checked" cargo clippy --locked --quiet --manifest-path "$crate/Cargo.toml" \
+"${checked[@]}" CARGO_TARGET_DIR="$crate/target/check" cargo clippy --locked --quiet --manifest-path "$crate/Cargo.toml" \
     --workspace --all-targets -- -D warnings
 
-# Release: the reference adapter below and the benchmark reuse the same build.
+# Release: the reference adapter below and the benchmark reuse the same build. All but the plcvec
+# crate's unit tests, which would compile the whole crate once more (with cfg(test)) in release:
+# they run after the publish dry run below, in the dev profile whose dependencies it builds.
 step "cargo test (one test per vector under the reference, mutants, loading, the harness, no import circle)"
-cargo test --locked --release --manifest-path "$crate/Cargo.toml" --workspace
+cargo test --locked --release --manifest-path "$crate/Cargo.toml" --workspace --exclude plcvec
+cargo test --locked --release --manifest-path "$crate/Cargo.toml" -p plcvec --test '*' --bins --examples
+cargo test --locked --release --manifest-path "$crate/Cargo.toml" -p plcvec --doc
 
 step "the crate's LICENSE is the repository's (MIT asks for the notice in every copy)"
 cmp LICENSE "$crate/LICENSE"
@@ -81,6 +85,9 @@ if echo "$published" | grep '^warning:' | grep -v 'aborting upload due to dry ru
     exit 1
 fi
 
+step "the plcvec crate's unit tests (the dev profile: with overflow checks, on the dry run's dependencies)"
+"${undebugged[@]}" cargo test --locked --manifest-path "$crate/Cargo.toml" -p plcvec --lib
+
 step "the declared rust-version (1.82) builds the committed Cargo.lock and packages the crate without a warning"
 # Cargo.lock is resolved with CARGO_RESOLVER_INCOMPATIBLE_RUST_VERSIONS=fallback (stable cargo),
 # which keeps every dependency at a version whose rust-version is 1.82 or older. The package is
@@ -99,22 +106,22 @@ fi
 step "the public API against the 0.1.0 release ($api_baseline): every breaking change listed under Breaking"
 # rustdoc's JSON of both, compared by verifiers/rust/api/public_api.py (why not cargo-semver-checks:
 # its docstring). Built on stable, as rustdoc writes JSON there with RUSTC_BOOTSTRAP=1.
-# Both in clippy's target dir (above), which holds most of what they depend on checked already.
-rustdoc_json() {  # <crate folder> <where the JSON goes>
-    RUSTC_BOOTSTRAP=1 CARGO_TARGET_DIR="$checked" cargo rustdoc --quiet --locked --manifest-path "$1/Cargo.toml" \
+# Both in clippy's build dir (above), which holds most of what they depend on checked already;
+# each JSON in a target dir of its own (both are doc/plcvec.json).
+rustdoc_json() {  # <crate folder> <target dir>
+    "${checked[@]}" CARGO_TARGET_DIR="$2" cargo rustdoc --quiet --locked --manifest-path "$1/Cargo.toml" \
         -p plcvec --lib -- -Z unstable-options --output-format json
-    mv "$checked/doc/plcvec.json" "$2"
 }
 git worktree add --quiet --detach "$scratch/baseline" "$api_baseline"
-rustdoc_json "$scratch/baseline/$crate" "$scratch/api-baseline.json"
-rustdoc_json "$crate" "$scratch/api.json"
+rustdoc_json "$scratch/baseline/$crate" "$crate/target/api-baseline"
+rustdoc_json "$crate" "$crate/target/api"
 version=$(sed -n 's/^version = "\(.*\)"$/\1/p' "$crate/Cargo.toml" | head -1)
 api=(python3 "$crate/api/public_api.py")
-"${api[@]}" diff "$scratch/api-baseline.json" "$scratch/api.json" \
+"${api[@]}" diff "$crate/target/api-baseline/doc/plcvec.json" "$crate/target/api/doc/plcvec.json" \
     --changes CHANGES.md --version "$version" --fragments changes.d
 # The check fails on a rename nobody listed: `shard_of` renamed in a copy of today's API.
-sed 's/"name":"shard_of"/"name":"shard_number"/' "$scratch/api.json" > "$scratch/renamed.json"
-if "${api[@]}" diff "$scratch/api.json" "$scratch/renamed.json" \
+sed 's/"name":"shard_of"/"name":"shard_number"/' "$crate/target/api/doc/plcvec.json" > "$scratch/renamed.json"
+if "${api[@]}" diff "$crate/target/api/doc/plcvec.json" "$scratch/renamed.json" \
     --changes "$scratch/none" --version "$version" 2> "$scratch/renamed.txt"; then
     echo "rust.sh: public_api.py passed a rename of shard_of that no Breaking section lists" >&2
     exit 1
