@@ -11,9 +11,17 @@ const SPECIAL_RELAY = { kind: "M", first: 8000 } as const;
 const toSeconds = (hms: readonly number[]): number => hms[0]! * 3600 + hms[1]! * 60 + hms[2]!;
 const fromSeconds = (total: number): number[] => [Math.floor(total / 3600), Math.floor((total % 3600) / 60), total % 60];
 
+/** Devices already classified: every execution asks of its D2, and a program names few devices. */
+const specialRelays = new Map<string, boolean>();
+
 function isSpecialRelay(device: string): boolean {
-  const m = /^([A-Za-z_]+)(\d+)$/.exec(device);
-  return m !== null && m[1] === SPECIAL_RELAY.kind && Number(m[2]) >= SPECIAL_RELAY.first;
+  let special = specialRelays.get(device);
+  if (special === undefined) {
+    const m = /^([A-Za-z_]+)(\d+)$/.exec(device);
+    special = m !== null && m[1] === SPECIAL_RELAY.kind && Number(m[2]) >= SPECIAL_RELAY.first;
+    specialRelays.set(device, special);
+  }
+  return special;
 }
 
 /** One second more on a D1 whose words count each on their own (HOUR-D1-OUT-OF-RANGE=by-field), and whether the hour went from 65535 to 0. */

@@ -53,6 +53,12 @@ export class TaddMachine extends BaseMachine {
     return { result: ((total % DAY) + DAY) % DAY, carry };   // a sum of negative words, too, lands in 0..23:59:59
   }
 
+  /** Whether any word of hour, minute, second lies outside its range. */
+  protected outOfRange(data: readonly number[]): boolean {
+    for (let i = 0; i < data.length; i++) if (data[i]! < this.ranges[i]![0] || data[i]! > this.ranges[i]![1]) return true;
+    return false;
+  }
+
   protected add(operands: Operands): void {
     const mem = this.mem;
     const s1Dev = deviceOf(operands["s1"], "s1");
@@ -60,16 +66,15 @@ export class TaddMachine extends BaseMachine {
     const dDev = deviceOf(operands["d"], "d");
     // "These instructions occupy three points for each of three devices": an operand past its
     // device's range is 2820H; only an operand whose three words exist can be read and checked (3405H).
-    const outOfRange = (data: readonly number[]): boolean => data.some((v, i) => v < this.ranges[i]![0] || v > this.ranges[i]![1]);
-    const fieldsBad = (dev: string): boolean => mem.inRange(dev, 3) && outOfRange(mem.words(dev, 3).map(signed16));
     if (!mem.inRange(s1Dev, 3) || !mem.inRange(s2Dev, 3) || !mem.inRange(dDev, 3)) {
+      const fieldsBad = (dev: string): boolean => mem.inRange(dev, 3) && this.outOfRange(mem.words(dev, 3).map(signed16));
       // Both conditions at once: TADD-ERROR-ORDER says which code; nothing else is written.
       const both = fieldsBad(s1Dev) || fieldsBad(s2Dev);
       return this.error(both && this.choice("TADD-ERROR-ORDER") === "field-range-first" ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
     }
     const s1 = mem.words(s1Dev, 3).map(signed16);
     const s2 = mem.words(s2Dev, 3).map(signed16);
-    if (outOfRange(s1) || outOfRange(s2)) {
+    if (this.outOfRange(s1) || this.outOfRange(s2)) {
       this.error(ERR_VALUE_RANGE);
       if (this.choice("TADD-ON-ERROR") === "not-executed") return;
     }
