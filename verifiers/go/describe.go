@@ -19,7 +19,7 @@ const indent = "    "
 // which the vector offers a combination that differs from the followed one in that
 // interpretation only and differs from it at a field that differs.
 func (v *Verdict) judgedBy() []string {
-	c := v.c
+	c := v.judgedCase()
 	if c == nil || c.plan == nil || c.expect == nil || len(v.Problems) == 0 {
 		return nil
 	}
@@ -67,8 +67,9 @@ func (v *Verdict) Text() string {
 	if judged := v.judgedBy(); len(judged) > 0 {
 		fmt.Fprintf(&b, "%sjudged by: %s\n", indent, strings.Join(judged, ", "))
 	}
-	if v.c != nil {
-		for _, line := range v.c.notJudgedLines() {
+	c := v.judgedCase()
+	if c != nil {
+		for _, line := range c.notJudgedLines() {
 			fmt.Fprintf(&b, "%s%s\n", indent, line)
 		}
 	}
@@ -78,10 +79,10 @@ func (v *Verdict) Text() string {
 			fmt.Fprintf(&b, "%s... and %d more differences\n", indent, len(v.Problems)-maxProblems)
 			break
 		}
-		if p.Step >= 0 && p.Step != shown && v.c != nil && v.c.expect != nil && p.Step < len(v.Vector.Steps) {
+		if p.Step >= 0 && p.Step != shown && c != nil && c.expect != nil && p.Step < len(v.Vector.Steps) {
 			shown = p.Step
 			fmt.Fprintf(&b, "%sstep %d inputs: %s\n", indent, p.Step, v.Vector.inputsText(p.Step))
-			fmt.Fprintf(&b, "%sstep %d operands: %s\n", indent, p.Step, operandsText(v.Vector, v.c.expect, p.Step))
+			fmt.Fprintf(&b, "%sstep %d operands: %s\n", indent, p.Step, operandsText(v.Vector, c.expect, p.Step))
 		}
 		fmt.Fprintf(&b, "%s%s\n", indent, p)
 	}

@@ -193,7 +193,7 @@ func (r *Report) infer() readings {
 		}
 	}
 	explain := func(i int, explained map[int][]string, unexplained *[]int) {
-		j, ok := byCase[r.Verdicts[i].c]
+		j, ok := byCase[r.Verdicts[i].judgedCase()]
 		if !ok || !j.passesUnder(rd.choice) {
 			*unexplained = append(*unexplained, i)
 			return
@@ -217,10 +217,13 @@ func (r *Report) judgedVectors() ([]judged, readings) {
 	var rd readings
 	for i := range r.Verdicts {
 		v := &r.Verdicts[i]
-		if v.c == nil {
-			v.c = r.caseOf(v.ID)
+		if v.about == nil {
+			if c := r.caseOf(v.ID); c != nil {
+				v.about = &c.about
+			}
 		}
-		if v.c == nil {
+		c := v.judgedCase()
+		if c == nil {
 			continue
 		}
 		switch v.Status {
@@ -230,8 +233,8 @@ func (r *Report) judgedVectors() ([]judged, readings) {
 			rd.known = append(rd.known, i)
 		}
 		// A known failure is judged when its answer failed (not when its vector errored).
-		if v.Status == StatusPass || v.Status == StatusFail || v.Status == StatusXFail && v.failed != nil {
-			js = append(js, judged{v.c, v.Status == StatusPass, v.passes()})
+		if v.Status == StatusPass || v.Status == StatusFail || v.Status == StatusXFail && v.answerFailed() {
+			js = append(js, judged{c, v.Status == StatusPass, v.passes()})
 		}
 	}
 	return js, rd

@@ -157,7 +157,7 @@ func (r *Request) DeviceSize(kind string) (int, bool) {
 		r.prepareSizes()
 	}
 	for _, s := range r.sizes {
-		if s.kind == kind {
+		if sameShort(s.kind, kind) { // a kind is a few bytes: compared in place, not by a call
 			return s.size, true
 		}
 	}

@@ -52,6 +52,7 @@ type Case struct {
 	// nothing else of the vector unless it fails.
 	id, family, instruction string
 	plan                    *Plan
+	about                   about // {c: this case}: what its verdicts but a failed answer point to
 }
 
 // Prepare builds the plan of a run of impl: handshake, selection, expectations.
@@ -93,6 +94,7 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 	for i, v := range vectors {
 		c := a.cases.one(a.chunk)
 		*c = Case{Vector: v, Request: requestOf(a, v), id: v.ID, family: a.intern(v.Family), instruction: a.intern(v.Instruction), plan: p}
+		c.about.c = c
 		if hello.supports(v.Instruction) {
 			names := make([]string, len(c.Request.Devices))
 			for i, d := range c.Request.Devices {
@@ -116,7 +118,9 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 func (c *Case) Judge(impl Implementation) Verdict {
 	var verdict Verdict
 	c.judge(impl, &verdict)
-	verdict.c = c
+	if verdict.about == nil {
+		verdict.about = &c.about
+	}
 	return verdict
 }
 
@@ -126,20 +130,20 @@ func (c *Case) Judge(impl Implementation) Verdict {
 func (c *Case) judge(impl Implementation, verdict *Verdict) {
 	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector = c.id, c.family, c.instruction, c.Vector
 	if c.expect == nil {
-		verdict.Status, verdict.Message, verdict.c = StatusSkip, "the implementation does not run "+c.instruction, c
+		verdict.Status, verdict.Message, verdict.about = StatusSkip, "the implementation does not run "+c.instruction, &c.about
 		return
 	}
 	verdict.Choices = c.expect.choices
 	defer func() {
 		// An implementation that panics on one vector fails that vector, not the run.
 		if r := recover(); r != nil {
-			verdict.Status, verdict.c = StatusError, c
+			verdict.Status, verdict.about = StatusError, &c.about
 			verdict.Message = fmt.Sprintf("the implementation panicked: %v\n%s", r, trimStack(debug.Stack()))
 		}
 	}()
 	steps, err := impl.Run(c.Request)
 	if err != nil {
-		verdict.c = c
+		verdict.about = &c.about
 		if reason, ok := IsSkip(err); ok {
 			verdict.Status, verdict.Message = StatusSkip, reason
 		} else {
@@ -148,7 +152,7 @@ func (c *Case) judge(impl Implementation, verdict *Verdict) {
 		return
 	}
 	if verdict.Problems = c.expect.compare(steps); verdict.Problems != nil {
-		verdict.Status, verdict.failed, verdict.c = StatusFail, &failure{c.passesUnder(steps)}, c
+		verdict.Status, verdict.about = StatusFail, &about{c: c, failed: true, passes: c.passesUnder(steps)}
 	} else {
 		verdict.Status = StatusPass
 	}
@@ -207,7 +211,9 @@ func (p *Plan) Verify(impl Implementation) *Report {
 	if p.Known != nil {
 		for i := range r.Verdicts {
 			p.Known.apply(&r.Verdicts[i])
-			r.Verdicts[i].c = p.Cases[i] // a pass made stale is described too
+			if r.Verdicts[i].about == nil { // a pass made stale is described too
+				r.Verdicts[i].about = &p.Cases[i].about
+			}
 		}
 		r.Verdicts = append(r.Verdicts, p.Known.unknownIDs(p.Suite)...)
 	}

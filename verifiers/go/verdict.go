@@ -37,21 +37,40 @@ type Verdict struct {
 	Message     string            // for Error, Skip, XFail, Stale: why
 	Choices     map[string]string // interpretation -> alternative the vector was judged by (those it depends on)
 	Vector      *Vector           // nil for an expectations-file id the suite does not have
-	c           *Case             // the case judged, for the text (nil for a stale id)
-	// failed: the answer differed (kept when a known failure makes it xfail), with whether it
-	// passes under each combination the vector offers. A pointer, nil for the usual pass: a
-	// run's verdicts stay small.
-	failed *failure
+	// about: what the text and the readings need of a verdict other than the usual pass, its case
+	// and, for an answer that differed, the combinations it passes under. One pointer, nil for the
+	// usual pass: each byte of a verdict is some 2.8 kB more that every pass over the golden set
+	// allocates, clears and leaves to the collector, a cost a benchmark of the runner sees.
+	about *about
 }
 
-type failure struct{ passes []bool }
+// about is a verdict's case and, for an answer that differed (kept when a known failure makes it
+// xfail), whether it passes under each combination the vector offers. Every verdict but a
+// failed answer shares its case's own (Case.about), so that only a failure allocates one.
+type about struct {
+	c      *Case // nil for a stale id
+	failed bool
+	passes []bool
+}
+
+// judgedCase is the case the verdict judged (nil for a pass from Plan.Verify and a stale id:
+// Report.caseOf finds the former).
+func (v *Verdict) judgedCase() *Case {
+	if v.about == nil {
+		return nil
+	}
+	return v.about.c
+}
+
+// answerFailed reports whether the implementation's answer differed from the expectation.
+func (v *Verdict) answerFailed() bool { return v.about != nil && v.about.failed }
 
 // passes is what a failed answer passes under (nil for any other verdict).
 func (v *Verdict) passes() []bool {
-	if v.failed == nil {
+	if v.about == nil {
 		return nil
 	}
-	return v.failed.passes
+	return v.about.passes
 }
 
 // Problem is one field that differs: where, what the vector expects, what was reported.
