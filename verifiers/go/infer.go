@@ -219,7 +219,7 @@ func (r *Report) judgedVectors() ([]judged, readings) {
 		v := &r.Verdicts[i]
 		if v.about == nil {
 			if c := r.caseOf(v.ID); c != nil {
-				v.about = &c.about
+				v.about = c.about
 			}
 		}
 		c := v.judgedCase()

@@ -52,7 +52,7 @@ type Case struct {
 	// nothing else of the vector unless it fails.
 	id, family, instruction string
 	plan                    *Plan
-	about                   about // {c: this case}: what its verdicts but a failed answer point to
+	about                   *about // {c: this case}: what its verdicts but a failed answer point to (a pointer: Case stays comparable)
 }
 
 // Prepare builds the plan of a run of impl: handshake, selection, expectations.
@@ -94,7 +94,7 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 	for i, v := range vectors {
 		c := a.cases.one(a.chunk)
 		*c = Case{Vector: v, Request: requestOf(a, v), id: v.ID, family: a.intern(v.Family), instruction: a.intern(v.Instruction), plan: p}
-		c.about.c = c
+		c.about = &about{c: c}
 		if hello.supports(v.Instruction) {
 			names := make([]string, len(c.Request.Devices))
 			for i, d := range c.Request.Devices {
@@ -119,7 +119,7 @@ func (c *Case) Judge(impl Implementation) Verdict {
 	var verdict Verdict
 	c.judge(impl, &verdict)
 	if verdict.about == nil {
-		verdict.about = &c.about
+		verdict.about = c.about
 	}
 	return verdict
 }
@@ -130,20 +130,20 @@ func (c *Case) Judge(impl Implementation) Verdict {
 func (c *Case) judge(impl Implementation, verdict *Verdict) {
 	verdict.ID, verdict.Family, verdict.Instruction, verdict.Vector = c.id, c.family, c.instruction, c.Vector
 	if c.expect == nil {
-		verdict.Status, verdict.Message, verdict.about = StatusSkip, "the implementation does not run "+c.instruction, &c.about
+		verdict.Status, verdict.Message, verdict.about = StatusSkip, "the implementation does not run "+c.instruction, c.about
 		return
 	}
 	verdict.Choices = c.expect.choices
 	defer func() {
 		// An implementation that panics on one vector fails that vector, not the run.
 		if r := recover(); r != nil {
-			verdict.Status, verdict.about = StatusError, &c.about
+			verdict.Status, verdict.about = StatusError, c.about
 			verdict.Message = fmt.Sprintf("the implementation panicked: %v\n%s", r, trimStack(debug.Stack()))
 		}
 	}()
 	steps, err := impl.Run(c.Request)
 	if err != nil {
-		verdict.about = &c.about
+		verdict.about = c.about
 		if reason, ok := IsSkip(err); ok {
 			verdict.Status, verdict.Message = StatusSkip, reason
 		} else {
@@ -212,7 +212,7 @@ func (p *Plan) Verify(impl Implementation) *Report {
 		for i := range r.Verdicts {
 			p.Known.apply(&r.Verdicts[i])
 			if r.Verdicts[i].about == nil { // a pass made stale is described too
-				r.Verdicts[i].about = &p.Cases[i].about
+				r.Verdicts[i].about = p.Cases[i].about
 			}
 		}
 		r.Verdicts = append(r.Verdicts, p.Known.unknownIDs(p.Suite)...)

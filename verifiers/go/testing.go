@@ -196,7 +196,7 @@ func prepareRun(impl Implementation, opts Options) (*Plan, environment, error) {
 // verdictOf is the verdict of case c from what the judging said.
 func verdictOf(c *Case, w wire) Verdict {
 	v := Verdict{ID: c.id, Family: c.family, Instruction: c.instruction, Vector: c.Vector,
-		Status: w.Status, Problems: w.Problems, Message: w.Message, about: &c.about}
+		Status: w.Status, Problems: w.Problems, Message: w.Message, about: c.about}
 	if w.Status == StatusFail {
 		v.about = &about{c: c, failed: true, passes: w.Passes}
 	}
