@@ -58,3 +58,13 @@ def test_common_vectors_is_for_a_baseline_and_excludes_same_vectors(capsys, tmp_
     assert "--common-vectors is for --baseline" in capsys.readouterr().err
     assert main(["bench-native", "--baseline", "HEAD", "--same-vectors", "--common-vectors"]) == 2
     assert "--same-vectors and --common-vectors each choose the vectors both sides judge" in capsys.readouterr().err
+
+
+def test_a_manifest_family_without_a_file_is_named(tmp_path):
+    _folder(tmp_path / "base" / "vectors", [_vector("a", True)], "1.0.0")
+    _folder(tmp_path / "now", [_vector("a", True)], "1.1.0")
+    manifest = json.loads((tmp_path / "now" / "manifest.json").read_text())
+    del manifest["families"]["fam"]["file"]
+    (tmp_path / "now" / "manifest.json").write_text(json.dumps(manifest))
+    with pytest.raises(PlcvecError, match=r"manifest.json: family fam names no `file`"):
+        write_common(tmp_path / "base", tmp_path / "now", tmp_path / "o1", tmp_path / "o2")

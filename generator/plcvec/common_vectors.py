@@ -78,6 +78,8 @@ def write_common(baseline_tree: Path, vectors: Path, current_out: Path, baseline
     mine, theirs = _load(vectors / "manifest.json"), _load(baseline_tree / "vectors" / "manifest.json")
     current, baseline, kept = {}, {}, {}
     for family, entry in sorted(mine.get("families", {}).items()):
+        if not isinstance(entry, dict) or not isinstance(entry.get("file"), str):
+            _fail(f"{vectors / 'manifest.json'}: family {family} names no `file`; is this a plcvec vector folder?")
         new = _load(vectors / entry["file"])
         old_entry = theirs.get("families", {}).get(family)
         old = _load(baseline_tree / "vectors" / old_entry["file"]) if old_entry else {"vectors": []}
