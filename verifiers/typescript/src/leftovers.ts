@@ -14,17 +14,22 @@
  */
 import { fstatSync, readdirSync, readFileSync, readlinkSync, writeSync } from "node:fs";
 
-/** The descriptors above stderr open when the first vector was registered. */
-let opened: readonly number[] | undefined;
+/** The descriptors above stderr the event loop lives on, open when the first vector was registered. */
+let opened: readonly { readonly fd: number; readonly dev: number; readonly ino: number }[] | undefined;
 
-/** Note which descriptors the process holds before any implementation runs (once). */
+/**
+ * Note which descriptors the process holds before any implementation runs (once): the event
+ * loop's own (epoll, eventfd, pipes, sockets). Files are left out: node and V8 open and close
+ * some on threads of their own at any time (`/proc/self/maps`, read while the run goes on), and
+ * one of them closing is no damage; counting it would print a failing vector's block twice.
+ */
 export function noteDescriptors(): void {
   if (opened !== undefined) return;
-  const list: number[] = [];
+  const list: { fd: number; dev: number; ino: number }[] = [];
   for (let fd = 3; fd < 1024; fd++) {
     try {
-      fstatSync(fd);
-      list.push(fd);
+      const s = fstatSync(fd);
+      if (!s.isFile() && !s.isDirectory() && !s.isCharacterDevice() && !s.isBlockDevice()) list.push({ fd, dev: s.dev, ino: s.ino });
     } catch {
       // not open
     }
@@ -32,11 +37,15 @@ export function noteDescriptors(): void {
   opened = list;
 }
 
-/** Whether a descriptor open before the run is closed now (an implementation closed what it did not open). */
+/**
+ * Whether a descriptor open before the run is closed now (an implementation closed what it did not
+ * open), or its number now names something else (closed, then reused by the next file opened).
+ */
 export function descriptorsClosed(): boolean {
-  for (const fd of opened ?? []) {
+  for (const { fd, dev, ino } of opened ?? []) {
     try {
-      fstatSync(fd);
+      const s = fstatSync(fd);
+      if (s.dev !== dev || s.ino !== ino) return true;
     } catch {
       return true;
     }

@@ -26,7 +26,11 @@ const { parentPort, workerData } = require("node:worker_threads");
 const { writeSync } = require("node:fs");
 const beat = new Int32Array(workerData.buffer);
 const ids = [];
-parentPort.on("message", (list) => { for (const id of list) ids.push(id); });
+parentPort.on("message", (list) => {
+  for (const id of list) ids.push(id);
+  Atomics.add(beat, 2, 1);
+  Atomics.notify(beat, 2);
+});
 let seen = -1;
 let since = Date.now();
 setInterval(() => {
@@ -42,11 +46,14 @@ setInterval(() => {
 `;
 
 /**
- * [0]: 1 + the number of the vector in progress, 0 when none; [1]: vectors started so far. Made
- * when the module loads (8 bytes; the watchdog that reads it starts at the first register()), so
- * that enter/leave store into a constant, with no check that it exists or what it holds.
+ * [0]: 1 + the number of the vector in progress, 0 when none; [1]: vectors started so far; [2]: the
+ * lists of ids the watchdog has taken. Made when the module loads (12 bytes; the watchdog that
+ * reads it starts at the first register()), so that enter/leave store into a constant, with no
+ * check that it exists or what it holds.
  */
-const beat = new Int32Array(new SharedArrayBuffer(8));
+const beat = new Int32Array(new SharedArrayBuffer(12));
+/** How long register() waits for the watchdog to take a list of ids (it starts a thread the first time). */
+const TAKEN_WITHIN_MS = 5000;
 let watchdog: Worker | undefined;
 /** Every vector registered in this process, by number. */
 const ids: string[] = [];
@@ -85,7 +92,13 @@ export function register(list: readonly string[]): number {
   noteDescriptors();
   const first = ids.length;
   ids.push(...list);
+  const taken = Atomics.load(beat, 2);
   watchdog.postMessage(list);
+  // Wait (bounded) until the watchdog has started and taken the list, so that it is idle between
+  // ticks when the first vector runs. An implementation that closes the process's descriptors
+  // (its event loops' own) then leaves the runner a tick to name the failing vector; closed while
+  // the watchdog was still starting, they ended the process at once, before anything was said.
+  Atomics.wait(beat, 2, taken, TAKEN_WITHIN_MS);
   return first;
 }
 
