@@ -48,7 +48,9 @@ static plcvec_reported *add_cell(plcvec_out *out, plcvec_type type, unsigned val
     return c;
 }
 
-void plcvec_out_device(plcvec_out *out, int device, plcvec_type type, unsigned value)
+/* Every case plcvec_out_device() does not settle in place: an interned or unknown id, a device
+ * before any step, a full array. */
+PLCVEC_OUT_OF_LINE static void out_device_checked(plcvec_out *out, int device, plcvec_type type, unsigned value)
 {
     if (!plcvec_device(device)) {
         out->overflow = 1;
@@ -57,6 +59,21 @@ void plcvec_out_device(plcvec_out *out, int device, plcvec_type type, unsigned v
     plcvec_reported *c = add_cell(out, type, value);
     if (c)
         c->device = device;
+}
+
+void plcvec_out_device(plcvec_out *out, int device, plcvec_type type, unsigned value)
+{
+    /* Every device of every step reported comes here: a device of the generated table after a
+     * step, with room for it, is recorded without a call (and so without saving registers). */
+    if ((unsigned)device < PLCVEC_DEVICE_COUNT && out->n_steps && out->n_cells < out->cap_cells) {
+        plcvec_reported *c = &out->cells[out->n_cells++];
+        c->device = device;
+        c->type = (uint8_t)type;
+        c->value = value;
+        c->name[0] = '\0';
+        return;
+    }
+    out_device_checked(out, device, type, value);
 }
 
 void plcvec_out_named(plcvec_out *out, const char *device, plcvec_type type, unsigned value)
@@ -131,12 +148,6 @@ size_t plcvec_out_step_count(const plcvec_out *out)
 int plcvec_out_result(const plcvec_out *out, size_t step)
 {
     return step < out->n_steps ? out->results[step] : PLCVEC_NONE;
-}
-
-void plcvec_out_span(const plcvec_out *out, size_t s, size_t *lo, size_t *hi)
-{
-    *lo = s < out->n_steps ? out->first[s] : out->n_cells;
-    *hi = s + 1 < out->n_steps ? out->first[s + 1] : out->n_cells;
 }
 
 const plcvec_reported *plcvec_out_cells(const plcvec_out *out, size_t step, size_t *n)
