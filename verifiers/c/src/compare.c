@@ -57,9 +57,10 @@ static int same_cells(const plcvec_vector *v, const plcvec_out *out, size_t lo, 
                       size_t n_state)
 {
     size_t i = 0;
+    int scratch = v->n_scratch != 0;   /* most vectors have none: no search per cell */
     for (size_t k = lo; k < hi; k++) {
         const plcvec_reported *r = &out->cells[k];
-        if (r->device >= 0 && plcvec_expect_scratch(v, r->device))
+        if (scratch && r->device >= 0 && plcvec_expect_scratch(v, r->device))
             continue;
         if (i >= n_state || r->device != state[i].device || r->type != state[i].type || r->value != state[i].value)
             return 0;
@@ -104,13 +105,16 @@ static int compare_listed(const plcvec_vector *v, const plcvec_out *out, int s, 
 /* Step s: what was reported with the expected state after it (devices `entry` leaves unjudged are
  * not compared, and being in the vector, writing them is no stray write). */
 static int compare_step(const plcvec_vector *v, const plcvec_alternative *entry, const plcvec_out *out, int s,
-                        const plcvec_states *st, size_t n_state, size_t n_before, const char *const *cpu_writes,
+                        const plcvec_states *st, size_t n_state, const char *const *cpu_writes,
                         plcvec_problems *problems)
 {
     size_t lo, hi;
     plcvec_out_span(out, (size_t)s, &lo, &hi);
     if (same_cells(v, out, lo, hi, st->state, n_state))
         return 0;
+    /* The state before the step, which only a differing field names: worked out here rather than
+     * copied at every step of every vector. */
+    size_t n_before = plcvec_expect_before(v, entry, (size_t)s, st->before);
     for (size_t i = 0; i < n_state; i++)
         if (!plcvec_expect_unjudged(entry, st->state[i].device) &&
             compare_listed(v, out, s, lo, hi, &st->state[i], st->before, n_before, problems) != 0)
@@ -168,14 +172,12 @@ int plcvec_compare(const plcvec_vector *v, const plcvec_alternative *entry, cons
         for (size_t i = 0; s > 0 && i < step->n_set; i++)
             if (!plcvec_expect_scratch(v, step->set[i].device))
                 plcvec_state_put(st->state, &n, &step->set[i]);
-        memcpy(st->before, st->state, n * sizeof *st->state);
-        size_t n_before = n;
         const plcvec_expect *x = plcvec_expect_step(v, entry, s);
         for (size_t i = 0; i < x->n_devices; i++)
             if (!plcvec_expect_scratch(v, x->devices[i].device))
                 plcvec_state_put(st->state, &n, &x->devices[i]);
         if (compare_result(x, out, (int)s, problems) != 0 ||
-            compare_step(v, entry, out, (int)s, st, n, n_before, cpu_writes, problems) != 0)
+            compare_step(v, entry, out, (int)s, st, n, cpu_writes, problems) != 0)
             return -1;
     }
     return 0;

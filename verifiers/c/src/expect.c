@@ -31,11 +31,6 @@ const plcvec_alternative *plcvec_expect_entry(const plcvec_vector *v, const uint
     return &plcvec_expect_missing;
 }
 
-const plcvec_expect *plcvec_expect_step(const plcvec_vector *v, const plcvec_alternative *entry, size_t s)
-{
-    return entry ? &entry->expect[s] : &v->steps[s].expect;
-}
-
 int plcvec_expect_offered(const plcvec_alternative *entry, int interp)
 {
     if (!entry)
@@ -79,12 +74,17 @@ static void put_all(const plcvec_vector *v, plcvec_cell *state, size_t *n, const
             plcvec_state_put(state, n, &list[i]);
 }
 
-/* The initial devices, scratch left out: each listed once, so appended without a search. */
+/* The initial devices, scratch left out: each listed once, so appended without a search (and
+ * copied whole when the vector has no scratch, as most have not). */
 static size_t initial_state(const plcvec_vector *v, plcvec_cell *state)
 {
+    if (!v->n_scratch) {
+        memcpy(state, v->devices, v->n_devices * sizeof *state);
+        return v->n_devices;
+    }
     size_t n = 0;
     for (size_t i = 0; i < v->n_devices; i++)
-        if (!v->n_scratch || !plcvec_expect_scratch(v, v->devices[i].device))
+        if (!plcvec_expect_scratch(v, v->devices[i].device))
             state[n++] = v->devices[i];
     return n;
 }

@@ -11,8 +11,12 @@
  * the vector offers no expectation for that combination (a damaged suite). */
 extern const plcvec_alternative plcvec_expect_missing;
 const plcvec_alternative *plcvec_expect_entry(const plcvec_vector *v, const uint8_t *alternative);
-/* The expectation of step s under `entry` (NULL: the vector's own). */
-const plcvec_expect *plcvec_expect_step(const plcvec_vector *v, const plcvec_alternative *entry, size_t s);
+/* The expectation of step s under `entry` (NULL: the vector's own). Inline, as those below. */
+static inline const plcvec_expect *plcvec_expect_step(const plcvec_vector *v, const plcvec_alternative *entry,
+                                                      size_t s)
+{
+    return entry ? &entry->expect[s] : &v->steps[s].expect;
+}
 /* The alternative `entry` follows for interpretation `interp` (the default for NULL); -1: none. */
 int plcvec_expect_offered(const plcvec_alternative *entry, int interp);
 /* 1 when `entry` leaves `device` unjudged (schema 1.1's unjudged map). */

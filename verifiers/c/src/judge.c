@@ -148,13 +148,13 @@ const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *
         return verdict_of(vd, PLCVEC_ERROR, "",
                           "the vector lists no expectation for the alternatives it was judged by (is the suite damaged?)");
     vd->applied = entry;        /* also for a skip or an error: the block names what it leaves unjudged */
-    plcvec_guard_enter(v->id);  /* supports() is the implementation's code too */
-    int supported = !j->impl.supports || j->impl.supports(j->impl.ctx, v->instruction);
-    plcvec_guard_leave();
-    if (!supported)
-        return verdict_of(vd, PLCVEC_SKIP, "the implementation does not support ", plcvec_instruction_names[v->instruction]);
-    plcvec_out_reset(out);
+    /* supports() is the implementation's code too: one guarded stretch for both calls. */
     plcvec_guard_enter(v->id);
+    if (j->impl.supports && !j->impl.supports(j->impl.ctx, v->instruction)) {
+        plcvec_guard_leave();
+        return verdict_of(vd, PLCVEC_SKIP, "the implementation does not support ", plcvec_instruction_names[v->instruction]);
+    }
+    plcvec_out_reset(out);
     int rc = j->impl.run(j->impl.ctx, v, out);
     plcvec_guard_leave();
     if (out->status == PLCVEC_SKIPPED || rc == PLCVEC_SKIPPED)
