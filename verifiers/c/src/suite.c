@@ -95,10 +95,20 @@ const char *plcvec_operand_device_name(const plcvec_operand *op)
     return op->is_constant ? NULL : plcvec_device(op->device)->name;
 }
 
+/* Whether two short names ("s1", "D") are the same, compared in place: cheaper than a call of
+ * strcmp() for two or three characters, and an implementation asks for operands and sizes by name
+ * at every execution. */
+static inline int same_name(const char *a, const char *b)
+{
+    while (*a && *a == *b)
+        a++, b++;
+    return *a == *b;
+}
+
 const plcvec_operand *plcvec_operand_named(const plcvec_vector *v, const char *name)
 {
     for (size_t i = 0; i < v->n_operands; i++)
-        if (strcmp(v->operands[i].name, name) == 0)
+        if (same_name(v->operands[i].name, name))
             return &v->operands[i];
     return NULL;
 }
@@ -172,7 +182,7 @@ int plcvec_device_named(const char *name)
 long plcvec_size_of(const plcvec_vector *v, const char *kind)
 {
     for (size_t i = 0; i < v->n_sizes; i++)
-        if (strcmp(v->sizes[i].kind, kind) == 0)
+        if (same_name(v->sizes[i].kind, kind))
             return (long)v->sizes[i].points;
     return -1;
 }
