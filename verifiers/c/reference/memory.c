@@ -27,10 +27,11 @@ address memory_offset(address base, int offset)
         return a;
     /* The table of names is sorted, so D101 usually sits right after D100: start there, wrap
      * around. A device the table does not have keeps -1 and is found by type and number. */
-    int start = base.device >= 0 && base.device < PLCVEC_DEVICE_COUNT ? base.device : 0;
-    for (int k = 0; k < PLCVEC_DEVICE_COUNT; k++) {
-        int d = (start + k) % PLCVEC_DEVICE_COUNT;
-        if (plcvec_devices[d].number == a.number && strcmp(plcvec_devices[d].kind, a.kind) == 0) {
+    int d = base.device >= 0 && base.device < PLCVEC_DEVICE_COUNT ? base.device : 0;
+    for (int k = 0; k < PLCVEC_DEVICE_COUNT; k++, d = d + 1 < PLCVEC_DEVICE_COUNT ? d + 1 : 0) {
+        const plcvec_device_info *t = &plcvec_devices[d];
+        /* The table's kinds are one string per kind, so the same pointer usually says it. */
+        if (t->number == a.number && (t->kind == a.kind || strcmp(t->kind, a.kind) == 0)) {
             a.device = d;
             break;
         }
@@ -81,10 +82,11 @@ void memory_load(memory *m, const plcvec_vector *v)
     m->overflow = v->n_devices > MEMORY_CELLS;
     for (size_t i = 0; i < v->n_devices && i < MEMORY_CELLS; i++) {
         const plcvec_cell *src = &v->devices[i];
+        const plcvec_device_info *d = plcvec_device(src->device);
         mem_cell *c = &m->cells[m->n++];
         c->device = src->device;
-        c->kind = plcvec_device(src->device)->kind;
-        c->number = plcvec_device(src->device)->number;
+        c->kind = d->kind;
+        c->number = d->number;
         c->type = src->type;
         c->value = src->value;
     }
