@@ -391,3 +391,14 @@ def test_the_guarded_figure_is_printed_under_its_language_with_the_benchs_own_ra
     assert h.endswith("x 0.97 of unguarded (3,100 vectors/s, the same judging without the bound)")
     # A bench without the guarded figure gets no such line.
     assert [line for line in lines if "per-vector bound" in line] == [lines[g + 1]]
+
+
+def test_different_counts_under_common_vectors_name_that_option():
+    # Two sides that judged 2814 and 2790 vectors: the message names the option the user gave.
+    from types import SimpleNamespace
+    from plcvec.native_bench import same_counts
+
+    result = SimpleNamespace(lang="a", error=None, baseline=[{"vectors": 2814}], current=[{"vectors": 2790}])
+    assert same_counts([result], "--common-vectors") == ["a"]
+    assert result.error.startswith("--common-vectors: the two sides judged different numbers of vectors, "
+                                   "2814 (baseline) and 2790 (current)")

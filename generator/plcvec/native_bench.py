@@ -331,8 +331,8 @@ def _num(value, fmt, width):
     return f"{'-' if value is None else format(value, fmt):>{width}}"
 
 
-def same_counts(results):
-    """Under --same-vectors: a compared language whose sides reported different numbers of vectors
+def same_counts(results, mode="--same-vectors"):
+    """Under --same-vectors or --common-vectors (`mode`, named in the message): a compared language whose sides reported different numbers of vectors
     is not compared after all (they did not judge the same vectors). The languages it was so for."""
     differed = []
     for result in results:
@@ -341,7 +341,7 @@ def same_counts(results):
         counts = {side: sorted({int(f.get("vectors", 0)) for f in getattr(result, side)}) for side in ("baseline", "current")}
         if counts["baseline"] != counts["current"] or len(counts["current"]) != 1:
             shown = " and ".join(f"{'/'.join(map(str, n))} ({side})" for side, n in counts.items())
-            result.error = (f"--same-vectors: the two sides judged different numbers of vectors, {shown}: a bench that "
+            result.error = (f"{mode}: the two sides judged different numbers of vectors, {shown}: a bench that "
                             "does not read PLCVEC_VECTORS, or a loader that left vectors out")
             differed.append(result.lang)
     return differed
@@ -496,7 +496,8 @@ def run_baseline(args, root: Path, progress=None, invoke_bench=invoke):
 
             results = compare(langs, {lang: runner(there[lang], theirs) if lang in there else None for lang in langs},
                               {lang: runner(here[lang], vectors) for lang in langs}, rounds, progress)
-            differed = same_counts(results) if vectors is not None else []
+            mode = "--common-vectors" if common else "--same-vectors"
+            differed = same_counts(results, mode) if vectors is not None else []
     finally:
         if main_thread:
             signal.signal(signal.SIGTERM, previous)
