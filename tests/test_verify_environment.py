@@ -243,3 +243,26 @@ def test_the_names_plcvecs_own_tools_use_are_no_misspellings(monkeypatch, capsys
     status, out = verify(monkeypatch, capsys, {"PLCVEC_FAMILY": "fx5-time-add", "PLCVEC_HOSTILE": "reference",
                                                "PLCVEC_TEST_ANYTHING": "1", "PLCVEC_CACHE_DIR": "/tmp"})
     assert status == 0 and "warning" not in out, out
+
+
+RUNNER_SOURCES = {"c": ("src/*.c",), "go": ("*.go",), "java": ("library/src/main/java/**/*.java",),
+                  "rust": ("src/*.rs",), "typescript": ("src/*.ts",), "python": ("plcvec_verify/*.py",)}
+
+
+def test_the_timeout_bounds_are_written_once_in_the_table_and_generated_into_every_runner():
+    """PLCVEC_TIMEOUT's default and largest bound live in plcvec_verify.settings; a runner that typed
+    them itself could drift from the others, so no hand-written runner source holds the numbers."""
+    from plcvec_verify import settings
+
+    assert (settings.TIMEOUT_DEFAULT_S, settings.TIMEOUT_MAX_S) == (10, 86400)   # CONTRACT.md, "The environment"
+    retyped = []
+    for lang, globs in RUNNER_SOURCES.items():
+        for pattern in globs:
+            for path in (REPO / "verifiers" / lang).glob(pattern):
+                text = path.read_text(encoding="utf-8")
+                if path.name.endswith("_test.go") or path.name == "settings.py" or "plcvec export" in text[:300]:
+                    continue   # the tests, the table itself, and what `plcvec export` wrote from it
+                for number, line in enumerate(text.split("#[cfg(test)]")[0].splitlines(), 1):
+                    if "86400" in line or "86_400" in line:
+                        retyped.append(f"{path.relative_to(REPO)}:{number}")
+    assert not retyped, retyped

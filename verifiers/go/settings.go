@@ -18,12 +18,11 @@ import (
 
 // DefaultTimeout bounds one vector when $PLCVEC_TIMEOUT does not: an implementation that never
 // answers is reported against that vector, and the run ends there rather than hang.
-const DefaultTimeout = 10 * time.Second
+const DefaultTimeout = timeoutDefaultSeconds * time.Second
 
 // CONTRACT.md's one rule for PLCVEC_TIMEOUT: digits with an optional fraction (no sign, no
-// exponent), above 0 and at most a day, so that a value one runner takes no runner refuses and
-// none overflows a clock.
-const maxTimeoutSeconds = 86400
+// exponent), above 0 and at most a day (timeoutMaxSeconds, generated), so that a value one runner
+// takes no runner refuses and none overflows a clock.
 
 var timeoutPattern = regexp.MustCompile(`^[0-9]+(\.[0-9]+)?$`)
 
@@ -95,9 +94,9 @@ func parseTimeout(text string, set bool) (time.Duration, error) {
 		return DefaultTimeout, nil
 	}
 	s, err := strconv.ParseFloat(text, 64)
-	if !timeoutPattern.MatchString(text) || err != nil || !(s > 0) || s > maxTimeoutSeconds {
+	if !timeoutPattern.MatchString(text) || err != nil || !(s > 0) || s > timeoutMaxSeconds {
 		return 0, fmt.Errorf("%s=%s: the bound must be a number of seconds above 0 and at most %d, "+
-			"written as digits with an optional fraction (2, 0.5)", EnvTimeout, text, maxTimeoutSeconds)
+			"written as digits with an optional fraction (2, 0.5)", EnvTimeout, text, timeoutMaxSeconds)
 	}
 	return time.Duration(s * float64(time.Second)), nil
 }

@@ -42,6 +42,13 @@ const EnvTimeout = "PLCVEC_TIMEOUT"
 // taken for a misspelling of the nearest setting (or old name) and the warning proposes it.
 const nearestDistance = 3
 
+// timeoutDefaultSeconds bounds one answer when $PLCVEC_TIMEOUT does not; timeoutMaxSeconds is the
+// largest bound $PLCVEC_TIMEOUT takes (a day).
+const (
+	timeoutDefaultSeconds = 10
+	timeoutMaxSeconds     = 86400
+)
+
 // setting is one PLCVEC_* variable of a run.
 type setting struct{ name, option string }
 

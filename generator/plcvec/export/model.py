@@ -98,6 +98,9 @@ class SuiteModel:
     reserved_setting_prefixes: list = field(default_factory=list)
     # How far (edit distance) a misspelt PLCVEC_* name may be from the setting a warning proposes.
     nearest_distance: int = 0
+    # PLCVEC_TIMEOUT's default and largest bound, in seconds.
+    timeout_default_s: int = 0
+    timeout_max_s: int = 0
 
     @property
     def total(self) -> int:
@@ -213,7 +216,8 @@ def _settings() -> dict:
     return {"settings": list(settings.SETTINGS), "deprecated_settings": list(settings.DEPRECATED),
             "reserved_settings": list(settings.RESERVED),
             "reserved_setting_prefixes": list(settings.RESERVED_PREFIXES),
-            "nearest_distance": settings.NEAREST_DISTANCE}
+            "nearest_distance": settings.NEAREST_DISTANCE,
+            "timeout_default_s": settings.TIMEOUT_DEFAULT_S, "timeout_max_s": settings.TIMEOUT_MAX_S}
 
 
 def _instruction(name: str, metadata: dict) -> Instruction:

@@ -28,7 +28,7 @@
 static _Atomic(const char *) current;           /* the id of the vector inside run(), or NULL */
 static atomic_ulong generation;                 /* counts vectors entered: the watchdog sees progress */
 static unsigned long entered;                   /* the owner's copy: a plain store, no lock prefix */
-static atomic_long timeout_ms = 10000;
+static atomic_long timeout_ms;                  /* set by plcvec_guard_install before the watchdog starts */
 
 void plcvec_guard_enter(const char *id)
 {

@@ -16,8 +16,6 @@
 
 extern char **environ;
 
-#define TIMEOUT_MAX_S 86400L    /* CONTRACT.md: at most a day */
-#define TIMEOUT_DEFAULT_MS 10000L
 
 static const char PREFIX[] = "PLCVEC_";
 
@@ -159,7 +157,7 @@ static long timeout_ms(const char *text)
     long whole = 0;
     int any = 0;
     for (; *p >= '0' && *p <= '9'; p++, any = 1)
-        if ((whole = whole * 10 + (*p - '0')) > TIMEOUT_MAX_S)
+        if ((whole = whole * 10 + (*p - '0')) > plcvec_timeout_max_s)
             return -1;
     long fraction = 0;      /* in ten-thousandths of a second: one digit more than a millisecond */
     int fraction_nonzero = 0, digits = 0;
@@ -174,7 +172,7 @@ static long timeout_ms(const char *text)
     }
     while (digits < 4)
         fraction *= 10, digits++;
-    if (!any || *p || (whole == 0 && !fraction_nonzero) || (whole == TIMEOUT_MAX_S && fraction_nonzero))
+    if (!any || *p || (whole == 0 && !fraction_nonzero) || (whole == plcvec_timeout_max_s && fraction_nonzero))
         return -1;
     long ms = whole * 1000 + (fraction + 5) / 10;
     return ms > 0 ? ms : 1;
@@ -184,11 +182,11 @@ long plcvec_settings_timeout_ms(char *err, size_t errlen)
 {
     const char *text = plcvec_setting("PLCVEC_TIMEOUT");
     if (!text)
-        return TIMEOUT_DEFAULT_MS;
+        return plcvec_timeout_default_s * 1000L;
     long ms = timeout_ms(text);
     if (ms < 0)
         snprintf(err, errlen, "PLCVEC_TIMEOUT=%s: the bound must be a number of seconds above 0 and at most %ld, "
-                              "written as digits with an optional fraction (2, 0.5)", text, TIMEOUT_MAX_S);
+                              "written as digits with an optional fraction (2, 0.5)", text, plcvec_timeout_max_s);
     return ms;
 }
 

@@ -21,6 +21,8 @@ extern const plcvec_setting_info plcvec_settings[];
 extern const size_t plcvec_n_settings;
 /* The largest edit distance at which an unknown PLCVEC_* name is taken for a misspelling. */
 extern const size_t plcvec_nearest_distance;
+extern const long plcvec_timeout_default_s;
+extern const long plcvec_timeout_max_s;
 extern const plcvec_old_setting plcvec_old_settings[];
 extern const size_t plcvec_n_old_settings;
 extern const char *const plcvec_reserved_settings[];           /* NULL-terminated */

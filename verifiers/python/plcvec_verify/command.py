@@ -7,6 +7,7 @@ import re
 import sys
 from pathlib import Path
 
+from . import settings
 from .errors import VerifyError
 from .gate import NOTHING_TESTED
 from .locate import default_vectors, default_vectors_text
@@ -115,7 +116,7 @@ def _warn(message: str) -> None:
 # The bound on an answer (CONTRACT.md, "The environment"): one rule in every runner, so that a value
 # one runner takes is never refused by another, and none overflows a platform's clock.
 TIMEOUT_PATTERN = re.compile(r"[0-9]+(\.[0-9]+)?")
-TIMEOUT_MAX = 86400
+TIMEOUT_MAX = settings.TIMEOUT_MAX_S
 
 
 def parse_timeout(text: str, option: str) -> float:
@@ -155,7 +156,7 @@ def parse_choices(items) -> dict:
     return out
 
 
-IN_PROCESS_TIMEOUT = 10.0     # seconds per vector for an adapter object (PLCVEC_TIMEOUT's default)
+IN_PROCESS_TIMEOUT = float(settings.TIMEOUT_DEFAULT_S)   # seconds per vector for an adapter object (PLCVEC_TIMEOUT's default)
 
 
 def make_adapter(args):

@@ -55,6 +55,12 @@ RESERVED = (
 )
 RESERVED_PREFIXES = ("PLCVEC_TEST_",)
 
+# PLCVEC_TIMEOUT (CONTRACT.md, "The environment"): the bound on one answer, in seconds, when neither
+# the variable nor the option sets it, and the largest bound taken (a day: no platform's clock
+# overflows on it). Every runner's copy is generated from these two.
+TIMEOUT_DEFAULT_S = 10
+TIMEOUT_MAX_S = 86400
+
 PREFIX = "PLCVEC_"
 # The largest edit distance at which an unknown variable is taken for a misspelling of a setting.
 NEAREST_DISTANCE = 3

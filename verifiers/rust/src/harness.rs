@@ -67,7 +67,7 @@ pub const EXIT_EMPTY: u8 = 5;
 /// Exit status of a failing run (cargo's test status).
 pub const EXIT_FAILED: u8 = 101;
 /// The seconds a vector may take unless `PLCVEC_TIMEOUT` says otherwise.
-pub const DEFAULT_TIMEOUT_S: f64 = 10.0;
+pub const DEFAULT_TIMEOUT_S: f64 = crate::generated::settings::TIMEOUT_DEFAULT_S;
 
 mod record;
 mod session;

@@ -9,12 +9,9 @@ use std::time::Duration;
 
 use crate::error::{Error, Result};
 
-use crate::generated::settings::{DEPRECATED, NEAREST_DISTANCE, RESERVED, RESERVED_PREFIXES, SETTINGS};
+use crate::generated::settings::{DEPRECATED, NEAREST_DISTANCE, RESERVED, RESERVED_PREFIXES, SETTINGS, TIMEOUT_MAX_S};
 
 const PREFIX: &str = "PLCVEC_";
-/// The largest bound on an answer, a day (CONTRACT.md, "The environment"): no platform's clock
-/// overflows with it.
-const TIMEOUT_MAX_S: f64 = 86400.0;
 
 static WARNED: Once = Once::new();
 

@@ -16,6 +16,8 @@ import {
   RESERVED_SETTING_PREFIXES,
   RESERVED_SETTINGS,
   SETTINGS,
+  TIMEOUT_DEFAULT_S,
+  TIMEOUT_MAX_S,
 } from "./generated/settings.js";
 
 const PREFIX = "PLCVEC_";
@@ -98,18 +100,17 @@ export function setting(name: string, env: NodeJS.ProcessEnv = process.env): str
 
 /** The bound on an answer (CONTRACT.md): one rule in every runner, so that no value one takes another refuses. */
 const TIMEOUT = /^[0-9]+(\.[0-9]+)?$/;
-const TIMEOUT_MAX = 86400;
 /** The bound per vector when PLCVEC_TIMEOUT says none. */
-export const DEFAULT_TIMEOUT_SECONDS = 10;
+export const DEFAULT_TIMEOUT_SECONDS = TIMEOUT_DEFAULT_S;
 
 /** PLCVEC_TIMEOUT: seconds per vector, digits with an optional fraction, above 0 and at most a day (default 10). */
 export function timeoutSeconds(env: NodeJS.ProcessEnv = process.env): number {
   const text = setting("PLCVEC_TIMEOUT", env);
   if (text === undefined) return DEFAULT_TIMEOUT_SECONDS;
   const seconds = TIMEOUT.test(text) ? Number(text) : NaN;
-  if (!(seconds > 0 && seconds <= TIMEOUT_MAX)) {
+  if (!(seconds > 0 && seconds <= TIMEOUT_MAX_S)) {
     throw new VerifyError(
-      `PLCVEC_TIMEOUT=${text}: the bound must be a number of seconds above 0 and at most ${TIMEOUT_MAX}, ` +
+      `PLCVEC_TIMEOUT=${text}: the bound must be a number of seconds above 0 and at most ${TIMEOUT_MAX_S}, ` +
         "written as digits with an optional fraction (2, 0.5)",
     );
   }

@@ -59,3 +59,7 @@ const char *const plcvec_reserved_setting_prefixes[] = {
 /* The largest edit distance at which a PLCVEC_* name that is no setting is taken for a misspelling
  * of the nearest setting (or old name), which the warning proposes. */
 const size_t plcvec_nearest_distance = 3;
+
+/* The bound on one answer when PLCVEC_TIMEOUT does not set it, and the largest it takes (a day), in seconds. */
+const long plcvec_timeout_default_s = 10;
+const long plcvec_timeout_max_s = 86400;

@@ -51,3 +51,8 @@ pub(crate) const RESERVED_PREFIXES: &[&str] = &["PLCVEC_TEST_"];
 /// The largest edit distance at which a `PLCVEC_*` name that is no setting is taken for a
 /// misspelling of the nearest setting (or old name), which the warning proposes.
 pub(crate) const NEAREST_DISTANCE: usize = 3;
+
+/// The bound on one answer, in seconds, when `PLCVEC_TIMEOUT` does not set it.
+pub(crate) const TIMEOUT_DEFAULT_S: f64 = 10.0;
+/// The largest bound `PLCVEC_TIMEOUT` takes, in seconds (a day).
+pub(crate) const TIMEOUT_MAX_S: f64 = 86400.0;

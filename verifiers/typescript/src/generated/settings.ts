@@ -66,3 +66,8 @@ export const RESERVED_SETTING_PREFIXES: readonly string[] = ["PLCVEC_TEST_"];
 
 /** The largest edit distance at which a PLCVEC_* name that is no setting is taken for a misspelling of the nearest setting (or old name), which the warning proposes. */
 export const NEAREST_DISTANCE = 3;
+
+/** The bound on one answer, in seconds, when PLCVEC_TIMEOUT does not set it. */
+export const TIMEOUT_DEFAULT_S = 10;
+/** The largest bound PLCVEC_TIMEOUT takes, in seconds (a day). */
+export const TIMEOUT_MAX_S = 86400;

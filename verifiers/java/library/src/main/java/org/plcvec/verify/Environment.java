@@ -51,9 +51,9 @@ public final class Environment {
     public static final String TIMEOUT = "PLCVEC_TIMEOUT";
 
     /** The bound on one vector when {@code PLCVEC_TIMEOUT} is not set. */
-    public static final Duration DEFAULT_TIMEOUT = Duration.ofSeconds(10);
+    public static final Duration DEFAULT_TIMEOUT = Duration.ofSeconds(SettingNames.TIMEOUT_DEFAULT_SECONDS);
     /** The largest {@code PLCVEC_TIMEOUT} every runner takes: a day (CONTRACT.md), so no clock overflows. */
-    public static final int TIMEOUT_MAX_SECONDS = 86400;
+    public static final int TIMEOUT_MAX_SECONDS = SettingNames.TIMEOUT_MAX_SECONDS;
     /** Digits with an optional fraction: no sign, no exponent, no spaces (CONTRACT.md's one rule). */
     private static final Pattern SECONDS = Pattern.compile("[0-9]+(\\.[0-9]+)?");
     /** The process's {@code PLCVEC_*} variables (or the fixed ones), by name. */

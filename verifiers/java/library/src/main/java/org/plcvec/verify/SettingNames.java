@@ -68,6 +68,12 @@ final class SettingNames {
      */
     static final int NEAREST_DISTANCE = 3;
 
+    /** The bound on one answer, in seconds, when PLCVEC_TIMEOUT does not set it. */
+    static final int TIMEOUT_DEFAULT_SECONDS = 10;
+
+    /** The largest bound PLCVEC_TIMEOUT takes, in seconds (a day). */
+    static final int TIMEOUT_MAX_SECONDS = 86400;
+
     private SettingNames() {
     }
 }
