@@ -129,15 +129,20 @@ func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 		}
 	}
 	// "3405H Any of values specified by (s1) and (s2) is outside the following range": judged on
-	// the words as they were before the execution, whatever TADD-OVERLAP writes on the way.
-	failed := t.fieldOutOfRange(mem, t.s1) || t.fieldOutOfRange(mem, t.s2)
+	// the words as they were before the execution, whatever TADD-OVERLAP writes on the way. The
+	// three words of each exist (above): read once, for the check and, unless an error code was
+	// written in between, for the sum.
+	var w1, w2 [3]uint16
+	mem.ReadWords(t.s1, w1[:])
+	mem.ReadWords(t.s2, w2[:])
+	failed := fieldsOutOfRange(&w1) || fieldsOutOfRange(&w2)
 	if failed {
 		t.error(mem, errValueRange)
 		if !t.computeOnErr {
 			return
 		}
 	}
-	total := t.sumSeconds(mem)
+	total := t.sumSeconds(mem, &w1, &w2, !failed)
 	result, carry := t.parts.TADDWrap(total, t.carryAt24)
 	mem.SetWords(t.d, uint16(result/3600), uint16(result%3600/60), uint16(result%60))
 	if failed && !t.parts.TADDFlagsOnError {
@@ -152,15 +157,16 @@ func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 // stored in the device numbers starting from (s1), and store the result to the device numbers
 // starting from (d)." The order shows only when (d) shares words with (s1) or (s2) at another
 // offset: a source word read after that word of (d) is written holds what was written. Every
-// word of (d) is written again from the total afterwards (add).
-func (t *fx5TimeAdd) sumSeconds(mem *plcvec.Memory) int {
+// word of (d) is written again from the total afterwards (add). w1 and w2 are (s1) and (s2) as
+// add read them; fresh says nothing has been written since, so that they are what a read now gives.
+func (t *fx5TimeAdd) sumSeconds(mem *plcvec.Memory, w1, w2 *[3]uint16, fresh bool) int {
 	word := func(a plcvec.Addr, k int) int { return signed16(mem.Word(a.Offset(k))) }
 	total, s1 := 0, t.s1
 	if t.parts.TADDS1CopiedIntoD {
 		var w [3]uint16
 		mem.ReadWords(t.s1, w[:])
 		mem.SetWords(t.d, w[:]...)
-		s1 = t.d
+		s1, fresh = t.d, false
 	}
 	switch t.overlap {
 	case spec.TaddOverlapSecondFirst:
@@ -182,9 +188,10 @@ func (t *fx5TimeAdd) sumSeconds(mem *plcvec.Memory) int {
 			mem.SetWord(t.d.Offset(k), uint16(a+b))
 		}
 	default: // sources-first: all six words read before (d) is written
-		var w1, w2 [3]uint16
-		mem.ReadWords(s1, w1[:])
-		mem.ReadWords(t.s2, w2[:])
+		if !fresh {
+			mem.ReadWords(s1, w1[:])
+			mem.ReadWords(t.s2, w2[:])
+		}
 		for k := range w1 {
 			total += (signed16(w1[k]) + signed16(w2[k])) * taddWeights[k]
 		}
@@ -210,6 +217,11 @@ func (t *fx5TimeAdd) fieldOutOfRange(mem *plcvec.Memory, a plcvec.Addr) bool {
 	}
 	var raw [3]uint16
 	mem.ReadWords(a, raw[:])
+	return fieldsOutOfRange(&raw)
+}
+
+// fieldsOutOfRange: an operand's hour, minute or second, as read, outside its range.
+func fieldsOutOfRange(raw *[3]uint16) bool {
 	for k, r := range taddRanges {
 		if v := signed16(raw[k]); v < r[0] || v > r[1] {
 			return true
