@@ -158,11 +158,12 @@ func (m *Memory) SetBit(a Addr, b bool) { m.Set(a, Bit(b)) }
 // InRange reports whether a .. a+words-1 all exist on the CPU the vector assumes
 // (assumes.device_sizes). A device type whose size the vector does not state is taken to exist.
 func (m *Memory) InRange(a Addr, words int) bool {
-	size, ok := m.req.DeviceSize(a.Kind)
-	if !ok {
-		return true
+	r := m.req
+	if r.sizes == nil && len(r.DeviceSizes) > 0 { // a Request not made by NewRequest
+		r.prepareSizes()
 	}
-	return a.N >= 0 && a.N+words <= size
+	size, ok := r.size(a.Kind)
+	return !ok || a.N >= 0 && a.N+words <= size
 }
 
 // Operand is the word value of a one-word operand: its constant (K/H) or its device's word.

@@ -195,3 +195,49 @@ func BenchmarkMemory(b *testing.B) {
 		}
 	}
 }
+
+// TestInRange: assumes.device_sizes {"D": 8000} is D0 to D7999, so three words from D7997 exist
+// and from D7998 do not; a kind the vector gives no size for is taken to exist; a request built
+// as a struct, whose sizes no constructor worked out, answers the same.
+func TestInRange(t *testing.T) {
+	sizes := map[string]int{"D": 8000, "SD": 12000}
+	made := NewRequest("t", "f", "I", sizes, map[string]Value{"D0": Word(0)}, map[string]Operand{}, nil, []Inputs{{}})
+	literal := &Request{ID: "t", DeviceSizes: sizes}
+	for _, c := range []struct {
+		a     Addr
+		words int
+		want  bool
+	}{
+		{Addr{"D", 0}, 3, true},
+		{Addr{"D", 7997}, 3, true},
+		{Addr{"D", 7998}, 3, false},
+		{Addr{"D", 7999}, 1, true},
+		{Addr{"D", 8000}, 1, false},
+		{Addr{"D", -1}, 1, false},
+		{Addr{"SD", 11997}, 3, true},
+		{Addr{"SD", 11998}, 3, false},
+		{Addr{"R", 40000}, 3, true}, // no size given for R
+		{Addr{"DX", 9000}, 3, true}, // a kind that only starts like a sized one
+	} {
+		for name, req := range map[string]*Request{"NewRequest": made, "a struct": literal} {
+			if got := NewMemory(req).InRange(c.a, c.words); got != c.want {
+				t.Errorf("%s: InRange(%v, %d) = %v; want %v", name, c.a, c.words, got, c.want)
+			}
+		}
+	}
+}
+
+// TestBitsReadAsWords: a bit device read as a word is 0 or 1, alone and inside a run of words
+// ReadWords reads in one go (Value.Word takes a value's low 16 bits, with no test).
+func TestBitsReadAsWords(t *testing.T) {
+	devices := map[string]Value{"D100": Word(7), "D101": Bit(true), "D102": Bit(false), "D103": Word(65535)}
+	mem := NewMemory(NewRequest("t", "f", "I", nil, devices, map[string]Operand{}, nil, []Inputs{{}}))
+	var got [4]uint16
+	mem.ReadWords(Addr{"D", 100}, got[:])
+	if want := [4]uint16{7, 1, 0, 65535}; got != want {
+		t.Errorf("ReadWords(D100, 4) = %v; want %v", got, want)
+	}
+	if mem.Word(Addr{"D", 101}) != 1 || mem.Word(Addr{"D", 102}) != 0 {
+		t.Error("a bit device does not read as the word 0 or 1")
+	}
+}

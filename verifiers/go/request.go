@@ -156,9 +156,15 @@ func (r *Request) DeviceSize(kind string) (int, bool) {
 	if r.sizes == nil && len(r.DeviceSizes) > 0 {
 		r.prepareSizes()
 	}
-	for _, s := range r.sizes {
-		if sameShort(s.kind, kind) { // a kind is a few bytes: compared in place, not by a call
-			return s.size, true
+	return r.size(kind)
+}
+
+// size is DeviceSize once the sizes are worked out: a loop over a few entries, small enough to
+// be inlined where it is asked at every execution (Memory.InRange).
+func (r *Request) size(kind string) (int, bool) {
+	for i := range r.sizes {
+		if sameShort(r.sizes[i].kind, kind) { // a kind is a few bytes: compared in place, not by a call
+			return r.sizes[i].size, true
 		}
 	}
 	return 0, false

@@ -12,12 +12,14 @@ import (
 // A Value made from a number outside the word range (Value(65536), Value(70000)) is that number,
 // never a bit, and never equals an expected value: a failure shows it as the integer it is
 // (verifiers/parity/TEXT.md, "How values are shown"). The two bits are kept at the top of the
-// range a 31-bit count can reach, where no plausible arithmetic lands.
+// range a 31-bit count can reach, where no plausible arithmetic lands, with low 16 bits of 0 and 1:
+// read as a word, a bit is 0 or 1 by its low 16 bits as a word is, with no test (Memory.ReadWords
+// reads every word of a vector's operands so).
 type Value uint32
 
 const (
-	bitFalse Value = 0x7FFF_FFFE
-	bitTrue  Value = 0x7FFF_FFFF // bitFalse | 1: IsBit tests both at once
+	bitFalse Value = 0x7FFF_0000
+	bitTrue  Value = 0x7FFF_0001 // bitFalse | 1: IsBit tests both at once
 )
 
 // Word is a word device's value.
@@ -35,12 +37,7 @@ func Bit(b bool) Value {
 func (v Value) IsBit() bool { return v|1 == bitTrue }
 
 // Word returns the 16 bits of a word (a bit reads as 0 or 1).
-func (v Value) Word() uint16 {
-	if v.IsBit() {
-		return uint16(v & 1)
-	}
-	return uint16(v)
-}
+func (v Value) Word() uint16 { return uint16(v) }
 
 // Bit returns a bit's state (a word reads as true when it is not 0).
 func (v Value) Bit() bool {
