@@ -129,7 +129,8 @@ func (e *expected) before(i int) []Value {
 func (e *expected) judges(name string) bool { return !e.notJudged[name] }
 
 // expectedOf is v's expectation under choices, laid out for judging: devices are the names of the
-// request's devices (sorted), the order in which a fast answer gives their values.
+// request's devices (sorted), the order in which a fast answer gives their values, kept as they
+// are (requested), not copied: no one writes to them afterwards.
 func expectedOf(a *arena, v *Vector, choices map[string]Choice, devices []string, cpuWrites map[string]bool) (*expected, error) {
 	en, err := entryOf(v, choices)
 	if err != nil {
@@ -138,9 +139,8 @@ func expectedOf(a *arena, v *Vector, choices map[string]Choice, devices []string
 	names := deviceNames(v, en, devices)
 	e := a.expects.one(a.chunk)
 	*e = expected{names: names, compared: a.flags.take(len(names), a.chunk), choices: en.choices, category: en.category,
-		requested: a.names.take(len(devices), a.chunk), cpuWrites: cpuWrites, sets: make([]map[string]Value, len(v.Steps)),
+		requested: devices, cpuWrites: cpuWrites, sets: make([]map[string]Value, len(v.Steps)),
 		unjudged: en.unjudged}
-	copy(e.requested, devices)
 	for i := range v.Steps {
 		e.sets[i] = v.Steps[i].Set
 	}

@@ -96,7 +96,7 @@ func Prepare(impl Implementation, opts Options) (*Plan, error) {
 		*c = Case{Vector: v, Request: requestOf(a, v), id: v.ID, family: a.intern(v.Family), instruction: a.intern(v.Instruction), plan: p}
 		c.about = &about{c: c}
 		if hello.supports(v.Instruction) {
-			names := make([]string, len(c.Request.Devices))
+			names := a.names.take(len(c.Request.Devices), a.chunk) // kept as the expectation's requested
 			for i, d := range c.Request.Devices {
 				names[i] = d.Name
 			}
