@@ -96,8 +96,8 @@ func TestMemoryOfExactNames(t *testing.T) {
 
 // An exact key (a PLC name) never equals the key of an address that needs comparing.
 func TestAddrKeys(t *testing.T) {
-	exact := []Addr{{"D", 0}, {"D", 100}, {"SM", 709}, {"P_EQ", -1}, {"ABCD", 1<<31 - 1}}
-	inexact := []Addr{{"D", 1 << 32}, {"D", -2}, {"LONGKIND", 7}, {"Dé", 5}, {"D\x00", 5}, {"", 3}}
+	exact := []Addr{{"D", 0}, {"D", 100}, {"SM", 709}, {"P_EQ", -1}, {"ABCD", 1<<31 - 1}, {"D\x7F", 1}, {"D\x01", 1}}
+	inexact := []Addr{{"D", 1 << 32}, {"D", -2}, {"LONGKIND", 7}, {"Dé", 5}, {"D\x00", 5}, {"", 3}, {"ABC\x80", 1}, {"\x00", 0}, {"SMALL", 1}}
 	seen := map[uint64]Addr{}
 	for _, a := range exact {
 		key, ok := addrKey(a)
