@@ -107,3 +107,21 @@ func benchSuite() (*plcvec.Suite, error) {
 	}
 	return plcvec.Embedded()
 }
+
+// TestVerifyAllocatesOnlyItsReport: a pass over the golden set with every vector passing makes
+// two allocations, the report and its verdicts, however many vectors it judges: a passing vector
+// allocates nothing (its memory, results and CPU are reused from the vector before), so that the
+// cost BenchmarkJudgeGolden measures is judging, not the collector's.
+func TestVerifyAllocatesOnlyItsReport(t *testing.T) {
+	impl := mustNew(t, nil)
+	plan, err := plcvec.Prepare(impl, plcvec.Options{})
+	if err != nil {
+		t.Fatal(err)
+	}
+	if report := plan.Verify(impl); !report.OK() || len(report.Failed()) > 0 {
+		t.Fatalf("the reference does not pass the golden set: %v", report.Counts())
+	}
+	if allocs := testing.AllocsPerRun(3, func() { plan.Verify(impl) }); allocs > 2 {
+		t.Errorf("a pass over %d passing vectors made %.0f allocations; want 2 (the report and its verdicts)", len(plan.Cases), allocs)
+	}
+}
