@@ -45,7 +45,10 @@ impl SlotKeys {
     }
 
     /// The slot whose name packs to `key` (not 0).
-    #[inline]
+    // Always inlined: for a constant name (`Memory::set_bit("SM709", ..)` in an emulator's
+    // crate) the first place to probe folds at compile time, and the look-up is a few loads
+    // rather than a call per device access.
+    #[inline(always)]
     pub(crate) fn find(&self, key: u64) -> Option<usize> {
         if self.keys.len() > INLINE_SLOTS {
             return self.keys.find(key);

@@ -129,7 +129,9 @@ impl<'v> Memory<'v> {
 
     /// The word `offset` words into the device operand `operand` (`s1` and 1 for (s1)+1), as
     /// [`Memory::word`] reads it; `None` when the vector has no device operand of that name.
-    #[inline]
+    // Always inlined, into the emulator's crate too, for the reason of `Memory::set`: the
+    // operand's name is a constant there (`s1`), whose key then folds at compile time.
+    #[inline(always)]
     pub fn operand_word(&self, operand: &str, offset: u32) -> Option<u16> {
         let (base, slots) = self.vector.operand_device(operand)?;
         Some(self.word_with(base, slots, offset as usize))
@@ -139,7 +141,8 @@ impl<'v> Memory<'v> {
     /// [`Memory::word`] reads them; `None` when the vector has no device operand of that name.
     /// The slots of an operand's first words are found when the vector is loaded, so this is
     /// the quick way to read an instruction's operands.
-    #[inline]
+    // Always inlined, as `Memory::operand_word`.
+    #[inline(always)]
     pub fn operand_words<const N: usize>(&self, operand: &str) -> Option<[u16; N]> {
         let (base, slots) = self.vector.operand_device(operand)?;
         // A plain loop, not `array::from_fn`: its closure, instantiated in the emulator's crate,

@@ -225,7 +225,9 @@ impl Vector {
     }
 
     /// The number of points of `address`'s device type, if the vector states it (no text
-    /// compared: the hot path of every range check).
+    /// compared: the hot path of every range check). Inlined into `Memory::in_range`, which an
+    /// emulator's crate inlines: a call per range check otherwise.
+    #[inline]
     pub(crate) fn size_of_kind(&self, address: &Address) -> Option<u32> {
         match address.kind_key() {
             0 => self.device_size(address.kind()),
