@@ -126,7 +126,13 @@ impl Execute for Reference {
     }
 }
 
+// The three helpers below are always inlined: the operand's name at each call is a constant
+// (`"s1"`), and inlined, the look-up of the operand by that name (plcvec's `Vector::operand`,
+// `Memory::operand_words`) packs it at compile time. Called, each packed the name byte by byte
+// at every execution.
+
 /// An operand that must be a device.
+#[inline(always)]
 fn device<'v>(vector: &'v Vector, operand: &str) -> Result<&'v Address, Refusal> {
     vector.operand(operand).and_then(|o| o.device()).ok_or_else(|| not_a_device(vector, operand))
 }
@@ -136,6 +142,7 @@ fn not_a_device(vector: &Vector, operand: &str) -> Refusal {
 }
 
 /// A one-word operand: a K/H constant or the word in a device.
+#[inline(always)]
 fn word_operand(vector: &Vector, memory: &Memory<'_>, operand: &str) -> Result<u16, Refusal> {
     match vector.operand(operand) {
         Some(Operand::Constant(c)) => Ok(*c as u16), // the low 16 bits, as the CPU stores K/H
@@ -145,6 +152,7 @@ fn word_operand(vector: &Vector, memory: &Memory<'_>, operand: &str) -> Result<u
 }
 
 /// Three consecutive words of the device operand `operand` ((s1), (s1)+1, (s1)+2).
+#[inline(always)]
 fn read3(vector: &Vector, memory: &Memory<'_>, operand: &str) -> Result<[u16; 3], Refusal> {
     memory.operand_words(operand).ok_or_else(|| not_a_device(vector, operand))
 }
@@ -154,16 +162,27 @@ fn signed(word: u16) -> i64 {
     i64::from(word as i16)
 }
 
-/// Whether `condition` holds for (s1) compared with (s2).
+/// Whether `condition` holds for (s1) compared with (s2): each condition as the set of orders
+/// it holds for, one bit per order. A table read, not a branch per condition: the condition
+/// changes from one vector to the next, and a jump on it was mispredicted at every execution.
 fn holds(condition: Condition, order: Ordering) -> bool {
-    match condition {
-        Condition::Eq => order == Ordering::Equal,
-        Condition::Ne => order != Ordering::Equal,
-        Condition::Lt => order == Ordering::Less,
-        Condition::Le => order != Ordering::Greater,
-        Condition::Gt => order == Ordering::Greater,
-        Condition::Ge => order != Ordering::Less,
-    }
+    const LESS: u8 = 0b001;
+    const EQUAL: u8 = 0b010;
+    const GREATER: u8 = 0b100;
+    let holding = match condition {
+        Condition::Eq => EQUAL,
+        Condition::Ne => LESS | GREATER,
+        Condition::Lt => LESS,
+        Condition::Le => LESS | EQUAL,
+        Condition::Gt => GREATER,
+        Condition::Ge => EQUAL | GREATER,
+    };
+    let bit = match order {
+        Ordering::Less => LESS,
+        Ordering::Equal => EQUAL,
+        Ordering::Greater => GREATER,
+    };
+    holding & bit != 0
 }
 
 /// A contact instruction's form and condition, as the generated names give them.
@@ -177,4 +196,29 @@ fn contact_of(instruction: Instruction) -> Result<(Form, Condition), Refusal> {
 /// The logic state before an AND/OR form.
 fn rlo_in(step: &Step) -> Result<bool, Refusal> {
     step.rlo_in.ok_or_else(|| Refusal::Error("an AND/OR form needs the step's rlo_in".to_owned()))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each condition's entry in the table against the comparison it names, worked out with the
+    /// integers' own operators for (s1) below, equal to and above (s2).
+    #[test]
+    fn each_condition_holds_for_the_comparison_it_names() {
+        for (s1, s2) in [(1, 2), (2, 2), (3, 2)] {
+            let named = [
+                (Condition::Eq, s1 == s2),
+                (Condition::Ne, s1 != s2),
+                (Condition::Lt, s1 < s2),
+                (Condition::Le, s1 <= s2),
+                (Condition::Gt, s1 > s2),
+                (Condition::Ge, s1 >= s2),
+            ];
+            assert_eq!(named.map(|(c, _)| c), Condition::ALL, "every condition, once");
+            for (condition, want) in named {
+                assert_eq!(holds(condition, s1.cmp(&s2)), want, "{condition:?} for {s1} against {s2}");
+            }
+        }
+    }
 }
