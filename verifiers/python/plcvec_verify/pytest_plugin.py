@@ -106,6 +106,10 @@ class VectorItem(pytest.Item):
     def repr_failure(self, excinfo):
         if isinstance(excinfo.value, VectorFailure):
             return str(excinfo.value)
+        if isinstance(excinfo.value, pytest.xfail.Exception):
+            # A known failure is reported by its reason; pytest would build a whole traceback for it
+            # (the source of every frame parsed again) and then drop it: 0.1 s per known failure.
+            return str(excinfo.value)
         return super().repr_failure(excinfo)
 
     def reportinfo(self):
