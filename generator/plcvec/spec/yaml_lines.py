@@ -7,6 +7,8 @@ Only plain YAML values are built: a tag outside the YAML core schema (`!!python/
 a local `!tag`) is refused before anything is constructed, and so are aliases (`*name`), which could
 share one value between two places or make a value contain itself.
 """
+import functools
+
 import yaml
 
 from plcvec.errors import SpecError
@@ -49,6 +51,9 @@ class _SpecLoader(yaml.SafeLoader):
 _FastLoader = getattr(yaml, "CSafeLoader", None)
 
 
+# Keyed by the whole text: a process that loads the spec again (the review, the mutation run, a
+# test session) composes each unchanged file once. The nodes are only read after this (by _built).
+@functools.lru_cache(maxsize=32)
 def _fast_node(text):
     """(True, node) from libyaml for a file that needs no error message; (False, None) otherwise."""
     if _FastLoader is None or yaml.reader.Reader.NON_PRINTABLE.search(text):
