@@ -40,6 +40,19 @@ public class Cp1eTimeCompare implements Emulator.Scan {
         Instruction.Condition.EQ, Address.of("P_EQ"), Instruction.Condition.NE, Address.of("P_NE"),
         Instruction.Condition.LT, Address.of("P_LT"), Instruction.Condition.LE, Address.of("P_LE"),
         Instruction.Condition.GT, Address.of("P_GT"), Instruction.Condition.GE, Address.of("P_GE"));
+    /** Every condition, once: {@code values()} makes a new array at each call. */
+    private static final Instruction.Condition[] CONDITIONS = Instruction.Condition.values();
+    /**
+     * {@link #FLAGS} by the condition's ordinal: the flags are written at every execution, where a
+     * lookup in the map (hashing, probing) cost more than the comparison itself.
+     */
+    private static final Address[] FLAG_OF = new Address[CONDITIONS.length];
+
+    static {
+        for (Instruction.Condition k : CONDITIONS) {
+            FLAG_OF[k.ordinal()] = FLAGS.get(k);
+        }
+    }
 
     /** The memory the CPU reads and writes. */
     protected final Memory mem;
@@ -139,23 +152,50 @@ public class Cp1eTimeCompare implements Emulator.Scan {
             }
         }
         if (!any) {
-            switch (settings.cp1eAllMasked) {
-                case ERROR:
-                    return error();
-                case NOT_COMPARED:
-                    // Nothing compared, no result: OFF, flags untouched, no error.
-                    if (!settings.cp1eErHeld) {
-                        mem.setBit(P_ER, false);
-                    }
-                    return false;
-                default:   // EQUAL: nothing differs
+            Boolean ended = allMasked();
+            if (ended != null) {
+                return ended;
             }
         }
+        return executed(order);
+    }
+
+    /**
+     * The end of an execution without error: the flags reflect the comparison, P_ER as
+     * CP1E-ER-FLAG says. Apart from {@link #evaluate} for the same reason as {@link #allMasked}.
+     *
+     * @param order S1 against S2: negative, 0 or positive
+     * @return the execution condition it creates
+     */
+    private boolean executed(int order) {
         reflectFlags(order);
         if (!settings.cp1eErHeld) {
             mem.setBit(P_ER, false);      // executed without error
         }
         return Contact.holds(condition, order);
+    }
+
+    /**
+     * Every field masked (CP1E-ALL-MASKED). Kept apart from {@link #evaluate} so that evaluate stays
+     * under the size up to which the JIT inlines a hot method (HotSpot's FreqInlineSize, 325 bytes
+     * of bytecode): above it, every execution pays a call (InlinableTest).
+     *
+     * @return the execution condition when the execution ends here, or null when it goes on as a
+     *     comparison of equal values
+     */
+    private Boolean allMasked() {
+        switch (settings.cp1eAllMasked) {
+            case ERROR:
+                return error();
+            case NOT_COMPARED:
+                // Nothing compared, no result: OFF, flags untouched, no error.
+                if (!settings.cp1eErHeld) {
+                    mem.setBit(P_ER, false);
+                }
+                return false;
+            default:   // EQUAL: nothing differs
+                return null;
+        }
     }
 
     /**
@@ -209,8 +249,8 @@ public class Cp1eTimeCompare implements Emulator.Scan {
      * @param order S1 against S2: negative, 0 or positive
      */
     protected void reflectFlags(int order) {
-        for (Instruction.Condition k : Instruction.Condition.values()) {
-            mem.setBit(FLAGS.get(k), Contact.holds(k, order));
+        for (Instruction.Condition k : CONDITIONS) {
+            mem.setBit(FLAG_OF[k.ordinal()], Contact.holds(k, order));
         }
     }
 
@@ -222,7 +262,7 @@ public class Cp1eTimeCompare implements Emulator.Scan {
     protected boolean error() {
         mem.setBit(P_ER, true);
         if (settings.cp1eErrorFlagsOff) {
-            for (Address flag : FLAGS.values()) {
+            for (Address flag : FLAG_OF) {
                 mem.setBit(flag, false);
             }
         }

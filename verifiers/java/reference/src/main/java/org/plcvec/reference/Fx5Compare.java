@@ -127,7 +127,30 @@ public class Fx5Compare implements Emulator.Scan {
         }
         int[] a = read(s1.device());
         int[] b = useClock ? clock(step) : read(s2.device());
+        Boolean ended = endedBeforeComparing(a, b, useClock, s3word, selectorValid);
+        if (ended != null) {
+            return ended;
+        }
+        // Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
+        // the data are within the setting range": 02/30 is compared as it is.
+        return Contact.holds(condition, compare(a, b, s3word));
+    }
 
+    /**
+     * The result of an execution that ends before the comparison: data not recognized as time (or
+     * date) data ({@link #error()}), or a selector that compares nothing. Kept apart from
+     * {@link #evaluate} so that evaluate stays under the size up to which the JIT inlines a hot
+     * method (HotSpot's FreqInlineSize, 325 bytes of bytecode): above it, every execution pays a
+     * call (InlinableTest).
+     *
+     * @param a the words of (s1)
+     * @param b the words of (s2), or the current time
+     * @param useClock whether {@code b} is the current time (whose fields are not checked)
+     * @param s3word (s3)
+     * @param selectorValid whether (s3) selects what to compare
+     * @return the result, or null when the data are compared
+     */
+    private Boolean endedBeforeComparing(int[] a, int[] b, boolean useClock, int s3word, boolean selectorValid) {
         // "If the comparison target data in the device are not recognized as time data, SM709
         // turns on ... and the operation result will be non-continuity." Which words are
         // "comparison target data" is FX5-SM709-SCOPE.
@@ -158,9 +181,7 @@ public class Fx5Compare implements Emulator.Scan {
                     return error();
                 }
         }
-        // Date page: "Even if the data are not recognized as date data, SM709 does not turn on if
-        // the data are within the setting range": 02/30 is compared as it is.
-        return Contact.holds(condition, compare(a, b, s3word));
+        return null;
     }
 
     /**

@@ -144,10 +144,12 @@ public class Fx5TimeAdd implements Emulator.Scan {
                 }
                 return total;
             default:
-                // SOURCES_FIRST: all six words read before (d) is written.
-                int[] a = read(first);
-                int[] b = read(s2);
-                return (a[0] + b[0]) * WEIGHT[0] + (a[1] + b[1]) * WEIGHT[1] + (a[2] + b[2]) * WEIGHT[2];
+                // SOURCES_FIRST: all six words read before (d) is written (into no array: this is
+                // every execution's path under the defaults).
+                for (int k = 0; k < 3; k++) {
+                    total += (signed(first, k) + signed(s2, k)) * WEIGHT[k];
+                }
+                return total;
         }
     }
 
