@@ -36,6 +36,8 @@ export class Memory {
   private shared: boolean;
   /** Devices written or set that have no slot, in the order first written. */
   private others: Map<string, Value> | undefined;
+  /** What inRange found for each base address under these sizes, shared by every image of them (see roomsOf). */
+  private readonly rooms: Map<string, number> | undefined;
 
   /** From a vector's devices, or from a prepared initial image (Memory.forRequest). */
   constructor(devices: Devices | InitialImage, sizes: Readonly<Record<string, number>> = {}) {
@@ -46,6 +48,7 @@ export class Memory {
     this.shared = true;
     this.others = undefined;
     this.sizes = sizes;
+    this.rooms = roomsOf(sizes);
   }
 
   /** The image a request starts from: its `initial.devices` with its `assumes.device_sizes`. */
@@ -121,10 +124,12 @@ export class Memory {
 
   /** True when base .. base+count-1 all exist (a device type of unstated size is assumed to). */
   inRange(base: string, count: number): boolean {
-    const p = parseAddress(base);
-    if (p === null) return false;
-    const size = this.sizes[p[0]];
-    return size === undefined || p[1] + count <= size;
+    let room = this.rooms?.get(base);
+    if (room === undefined) {
+      room = roomOf(this.sizes, base);
+      this.rooms?.set(base, room);
+    }
+    return count <= room;
   }
 
   /** A one-word operand: a constant (K/H) or the word in its device. */
@@ -147,6 +152,41 @@ export class Memory {
     this.shared = true;
     return new MemoryStep(result, this.layout, this.image, this.others === undefined ? undefined : new Map(this.others));
   }
+}
+
+/**
+ * How many points of its device type there are from `base` on: Infinity for a type of unstated
+ * size, -Infinity for an address without a number (no count of points lies there).
+ */
+function roomOf(sizes: Readonly<Record<string, number>>, base: string): number {
+  const p = parseAddress(base);
+  if (p === null) return -Infinity;
+  const size = sizes[p[0]];
+  return size === undefined ? Infinity : size - p[1];
+}
+
+/** The rooms found under each frozen table of sizes (a prepared request's, shared by the vectors assuming the same). */
+const roomsBySizes = new WeakMap<object, Map<string, number>>();
+let lastSizes: object | undefined;
+let lastRooms: Map<string, number> | undefined;
+
+/**
+ * Where inRange keeps what it finds under `sizes`: one map per frozen table, so that a range check
+ * is one lookup by address instead of parsing it and reading the table by its device type (a
+ * read keyed by every type there is, which V8 leaves megamorphic). None for a table that is not
+ * frozen: its owner may still change it, and each check then reads it afresh.
+ */
+function roomsOf(sizes: Readonly<Record<string, number>>): Map<string, number> | undefined {
+  if (sizes === lastSizes) return lastRooms;
+  if (!Object.isFrozen(sizes)) return undefined;
+  let rooms = roomsBySizes.get(sizes);
+  if (rooms === undefined) {
+    rooms = new Map();
+    roomsBySizes.set(sizes, rooms);
+  }
+  lastSizes = sizes;
+  lastRooms = rooms;
+  return rooms;
 }
 
 function devicesOf(names: readonly string[], image: readonly (Value | undefined)[], others: ReadonlyMap<string, Value> | undefined): Devices {
