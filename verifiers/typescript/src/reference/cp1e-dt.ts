@@ -70,7 +70,7 @@ export class Cp1eTimeCompare extends BaseMachine {
     this.mem.write(ERROR_FLAG, true);
     // The flag table has no row for an execution without a comparison result: the six flags keep
     // their values, or (CP1E-ERROR-FLAGS=off) are all written off.
-    if (this.choice("CP1E-ERROR-FLAGS") === "off") for (const [, flag] of FLAGS) this.mem.write(flag, false);
+    if (this.follows["CP1E-ERROR-FLAGS"] === "off") for (const [, flag] of FLAGS) this.mem.write(flag, false);
     return false;
   }
 
@@ -87,20 +87,20 @@ export class Cp1eTimeCompare extends BaseMachine {
     // one of its last two words) is CP1E-PAST-AREA-END, found before C or the data are looked at.
     if (!mem.inRange(s1Dev, 3) || !mem.inRange(s2Dev, 3)) {
       // A program error: not executed, nothing written, an OFF execution condition.
-      if (this.choice("CP1E-PAST-AREA-END") === "program-error") return false;
+      if (this.follows["CP1E-PAST-AREA-END"] === "program-error") return false;
       return this.error();
     }
     const s1 = mem.words(s1Dev, 3);
     const s2 = mem.words(s2Dev, 3);
     const c = mem.operand(operands["C"]!);
-    if (c & 0xffc0 && this.choice("CP1E-C-HIGH-BITS") === "error") return this.error();
+    if (c & 0xffc0 && this.follows["CP1E-C-HIGH-BITS"] === "error") return this.error();
     // "To mask a time value, set the corresponding bit in the control word (C) to 1."
     let allMasked = true;
     for (const f of this.fields) if (((c >> f.mask) & 1) === 0) allMasked = false;
-    if (allMasked && this.choice("CP1E-ALL-MASKED") === "error") return this.error();
-    if (allMasked && this.choice("CP1E-ALL-MASKED") === "not-compared") {
+    if (allMasked && this.follows["CP1E-ALL-MASKED"] === "error") return this.error();
+    if (allMasked && this.follows["CP1E-ALL-MASKED"] === "not-compared") {
       // Nothing compared, no result: OFF, the flags untouched, no error.
-      if (this.choice("CP1E-ER-FLAG") === "reflects-each-execution") mem.write(ERROR_FLAG, false);
+      if (this.follows["CP1E-ER-FLAG"] === "reflects-each-execution") mem.write(ERROR_FLAG, false);
       return false;
     }
     let order = 0;
@@ -113,22 +113,22 @@ export class Cp1eTimeCompare extends BaseMachine {
       if (order === 0 && a !== b) order = a < b ? -1 : 1;
     }
     this.reflectFlags(order);
-    if (this.choice("CP1E-ER-FLAG") === "reflects-each-execution") mem.write(ERROR_FLAG, false);
+    if (this.follows["CP1E-ER-FLAG"] === "reflects-each-execution") mem.write(ERROR_FLAG, false);
     return conditionHolds(condition, order);
   }
 
   /** Whether a compared byte is an error under the declared alternatives: not BCD, or BCD outside the field's range. */
   protected invalidByte(raw: number, f: BcdField): boolean {
-    if (!this.isBcd(raw)) return this.choice("CP1E-NON-BCD") === "error";
+    if (!this.isBcd(raw)) return this.follows["CP1E-NON-BCD"] === "error";
     const v = bcdValue(raw);
-    return (v < f.min || v > f.max) && this.choice("CP1E-OUT-OF-RANGE") === "error";
+    return (v < f.min || v > f.max) && this.follows["CP1E-OUT-OF-RANGE"] === "error";
   }
 
   execute(instruction: string, operands: Operands, step: StepInputs): boolean {
     const [form, condition] = parseMnemonic(instruction);
     if (form === "LD") return this.evaluate(condition, operands);
     const rlo = step.rlo_in === true;
-    const logic = this.choice("CP1E-AND-OR-WHEN-OFF");
+    const logic = this.follows["CP1E-AND-OR-WHEN-OFF"];
     if (form === "AND") {
       if (!rlo && (logic === "and-skipped" || logic === "short-circuit")) return false;
       const contact = this.evaluate(condition, operands);

@@ -60,19 +60,19 @@ export class HourMeter extends BaseMachine {
     if (!("constant" in op)) return this.mem.words(op.device, 3);
     const hours = op.constant;
     const outside = hours < 0 || hours > 65535;
-    return [outside && this.choice("HOUR-S1-CONSTANT-RANGE") === "low-16-bits" ? hours & 0xffff : hours, 0, 0];
+    return [outside && this.follows["HOUR-S1-CONSTANT-RANGE"] === "low-16-bits" ? hours & 0xffff : hours, 0, 0];
   }
 
   protected presetValid(p: readonly number[]): boolean {
-    const hourOk = (p[0]! >= 0 && p[0]! <= 65535) || this.choice("HOUR-S1-CONSTANT-RANGE") === "as-is";
+    const hourOk = (p[0]! >= 0 && p[0]! <= 65535) || this.follows["HOUR-S1-CONSTANT-RANGE"] === "as-is";
     return hourOk && p[1]! >= 0 && p[1]! <= 59 && p[2]! >= 0 && p[2]! <= 59;
   }
 
   /** A program the page forbids whose reading is `undefined`: the instruction does nothing a vector judges. */
   private forbidden(operands: Operands, d2: string): boolean {
-    if (isSpecialRelay(d2) && this.choice("HOUR-D2-SPECIAL") === "undefined") return true;
+    if (isSpecialRelay(d2) && this.follows["HOUR-D2-SPECIAL"] === "undefined") return true;
     const s1 = operands["S1"]!;
-    return "constant" in s1 && (s1.constant < 0 || s1.constant > 65535) && this.choice("HOUR-S1-CONSTANT-RANGE") === "undefined";
+    return "constant" in s1 && (s1.constant < 0 || s1.constant > 65535) && this.follows["HOUR-S1-CONSTANT-RANGE"] === "undefined";
   }
 
   protected reached(total: number, preset: number): boolean {
@@ -86,14 +86,14 @@ export class HourMeter extends BaseMachine {
       // "a user program execution error ... turning on ... M8004 ... but the input ON duration is measured";
       // "... changed to an invalid value after the comparison output has turned on, the comparison output is turned off."
       // Again at every such check, or only when S1 has just become invalid (HOUR-M8004-REPEAT).
-      if (this.choice("HOUR-M8004-REPEAT") === "every-check" || this.lastCheckValid) this.mem.write(ERROR_FLAG, true);
+      if (this.follows["HOUR-M8004-REPEAT"] === "every-check" || this.lastCheckValid) this.mem.write(ERROR_FLAG, true);
       this.lastCheckValid = false;
       if (d2 !== undefined) this.mem.write(d2, false);
       return undefined;
     }
     this.lastCheckValid = true;
     // The page never says M8004 turns off; HOUR-M8004-OFF=valid-preset does.
-    if (this.choice("HOUR-M8004-OFF") === "valid-preset") this.mem.write(ERROR_FLAG, false);
+    if (this.follows["HOUR-M8004-OFF"] === "valid-preset") this.mem.write(ERROR_FLAG, false);
     return p;
   }
 
@@ -108,10 +108,10 @@ export class HourMeter extends BaseMachine {
     this.firstScan = false;
     if (this.forbidden(operands, d2)) return undefined;
     // A special relay as D2 under HOUR-D2-SPECIAL=error: never written, M8004 on at each execution with the input on.
-    const d2Error = isSpecialRelay(d2) && this.choice("HOUR-D2-SPECIAL") === "error";
+    const d2Error = isSpecialRelay(d2) && this.follows["HOUR-D2-SPECIAL"] === "error";
     if (d2Error) d2 = undefined;
     if (!on) {
-      const off = this.choice("HOUR-INPUT-OFF");
+      const off = this.follows["HOUR-INPUT-OFF"];
       if (off === "reset") {
         this.mem.writeWords(d1, [0, 0, 0]);
         this.fractionMs = 0;
@@ -119,7 +119,7 @@ export class HourMeter extends BaseMachine {
         this.fractionMs = 0; // D1 kept; the part of a second already measured is lost
       }
       // HOUR-PRESET-CHECK=every-execution: the preset is checked with the input off too.
-      if (this.choice("HOUR-PRESET-CHECK") === "every-execution") this.checkPreset(operands, d2);
+      if (this.follows["HOUR-PRESET-CHECK"] === "every-execution") this.checkPreset(operands, d2);
       return undefined;
     }
     this.measureAndCompare(operands, d1, d2, step, turnedOn, first);
@@ -131,7 +131,7 @@ export class HourMeter extends BaseMachine {
   private measureAndCompare(operands: Operands, d1: string, d2: string | undefined, step: StepInputs, turnedOn: boolean, first: boolean): void {
     const held = this.mem.words(d1, 3);
     // "Minute and second data can be 0 through 59": a D1 the program set outside is HOUR-D1-OUT-OF-RANGE's question.
-    const reading = held[1]! > 59 || held[2]! > 59 ? this.choice("HOUR-D1-OUT-OF-RANGE") : "as-seconds";
+    const reading = held[1]! > 59 || held[2]! > 59 ? this.follows["HOUR-D1-OUT-OF-RANGE"] : "as-seconds";
     if (reading === "undefined") return;
     if (reading === "error") {
       this.mem.write(ERROR_FLAG, true);
@@ -139,7 +139,7 @@ export class HourMeter extends BaseMachine {
     }
     // The elapsed time since the previous execution is ON time, but not at the execution the input
     // turns on (HOUR-FIRST-SCAN=from-next-scan) or the first since the CPU started (after-cpu-start).
-    const firstScan = this.choice("HOUR-FIRST-SCAN");
+    const firstScan = this.follows["HOUR-FIRST-SCAN"];
     if (!((turnedOn && firstScan === "from-next-scan") || (first && firstScan === "after-cpu-start"))) this.fractionMs += step.elapsed_ms ?? 0;
     const whole = Math.floor(this.fractionMs / 1000);
     this.fractionMs %= 1000;
@@ -161,17 +161,17 @@ export class HourMeter extends BaseMachine {
     const p = this.checkPreset(operands, d2);
     if (p === undefined) return;
     // HOUR-WRAP-REACH=before-wrap: an execution that wraps compares the count before the wrap.
-    const beforeWrap = wraps > 0 && this.choice("HOUR-WRAP-REACH") === "before-wrap";
+    const beforeWrap = wraps > 0 && this.follows["HOUR-WRAP-REACH"] === "before-wrap";
     const counted = [hms[0]! + (beforeWrap ? 65536 * wraps : 0), hms[1]!, hms[2]!];
     let reached = reading === "by-field" ? reachesByField(counted, p) : this.reached(toSeconds(counted), toSeconds(p));
-    if (toSeconds(p) === 0 && this.choice("HOUR-PRESET-ZERO") === "never") reached = false;
+    if (toSeconds(p) === 0 && this.follows["HOUR-PRESET-ZERO"] === "never") reached = false;
     if (d2 !== undefined) this.setOutput(d2, reached, wraps > 0, beforeWrap);
   }
 
   /** D2 after a comparison: latched on, or recompared and kept on across a wrap (HOUR-OUTPUT-OFF). */
   private setOutput(d2: string, reached: boolean, wrappedNow: boolean, comparedFirst: boolean): void {
     const mem = this.mem;
-    if (this.choice("HOUR-OUTPUT-OFF") === "latched") {
+    if (this.follows["HOUR-OUTPUT-OFF"] === "latched") {
       if (reached) mem.write(d2, true);
       return;
     }

@@ -93,10 +93,10 @@ export class Fx5CompareMachine extends BaseMachine {
     // to 14); "Other than 0001H to 0007H, 8001H to 8007H  None ... (The operation result will be non-continuity.)"
     const valid = this.s3Valid(s3);
     // "If the device areas specified by (s1) to (s1)+2 or (s2) to (s2)+2 exceed the corresponding device range, SM709 turns on"
-    const s2Checked = !useClock || this.choice("FX5-CLOCK-S2-DEVICE-RANGE") === "checked";
+    const s2Checked = !useClock || this.follows["FX5-CLOCK-S2-DEVICE-RANGE"] === "checked";
     if (!mem.inRange(s1Dev, 3) || (s2Checked && !mem.inRange(s2Dev, 3))) {
       // An invalid (s3) as well: which rule decides is FX5-INVALID-S3-DEVICE-RANGE.
-      if (!valid && this.choice("FX5-INVALID-S3-DEVICE-RANGE") === "s3-first") return false;
+      if (!valid && this.follows["FX5-INVALID-S3-DEVICE-RANGE"] === "s3-first") return false;
       return this.error();
     }
 
@@ -104,7 +104,7 @@ export class Fx5CompareMachine extends BaseMachine {
     const s2 = useClock ? this.fields.map((f) => clock?.[f.name] ?? 0) : mem.words(s2Dev, 3);
     // "If the comparison target data in the device are not recognized as time data, SM709 turns on":
     // which words are comparison target data is FX5-SM709-SCOPE.
-    const scope = this.choice("FX5-SM709-SCOPE");
+    const scope = this.follows["FX5-SM709-SCOPE"];
     if (scope === "all-words") {
       if (this.outOfRange(s1, undefined) || (!useClock && this.outOfRange(s2, undefined))) return this.error();
       if (!valid) return false;
@@ -124,7 +124,7 @@ export class Fx5CompareMachine extends BaseMachine {
     const { form, condition } = this.parse(instruction);
     if (form === "LD") return this.evaluate(condition, operands, step.clock);
     const rlo = step.rlo_in === true;
-    const logic = this.choice("FX5-AND-OR-WHEN-OFF");
+    const logic = this.follows["FX5-AND-OR-WHEN-OFF"];
     // The MELSEC iQ-R Programming Manual's processing-time tables: "an AND/OR comparison is not
     // executed while the preceding logic is off" (the default).
     if (form === "AND") {
@@ -137,13 +137,13 @@ export class Fx5CompareMachine extends BaseMachine {
     const contact = this.evaluate(condition, operands, step.clock);
     // "SM709 turns on ... and the operation result will be non-continuity": a non-conductive
     // contact in parallel (contact-off), or the rung's result itself off (result-off).
-    if (this.failed && this.choice("FX5-OR-ON-ERROR") === "result-off") return false;
+    if (this.failed && this.follows["FX5-OR-ON-ERROR"] === "result-off") return false;
     return rlo || contact;
   }
 
   /** "ANDTM<=" -> {form: "AND", condition: "<="}: the values the generated names give (parsed once per mnemonic). */
   protected parse(instruction: string): { form: string; condition: string } {
-    const parsedOfKind = mnemonics[this.kind];
+    const parsedOfKind = this.kind === "TM" ? mnemonics.TM : mnemonics.DT; // not mnemonics[this.kind]: a keyed read of two keys goes megamorphic
     let parsed = parsedOfKind.get(instruction);
     if (parsed === undefined) {
       const info = (INSTRUCTION_INFO as Readonly<Record<string, InstructionInfo | undefined>>)[instruction];

@@ -20,6 +20,11 @@ export const RANGES: readonly (readonly [number, number])[] = [
 const WEIGHTS: readonly number[] = [3600, 60, 1];
 const RADIX: readonly number[] = [24, 60, 60];
 
+/** Word `k` of the three from `dev` on, as "16-bit signed binary". */
+function signedWord(mem: Memory, dev: string, k: number): number {
+  return signed16(mem.word(Memory.offset(dev, k)));
+}
+
 /** The mathematical quotient and remainder (the remainder never negative), as "div" and "mod" say. */
 function divmod(n: number, d: number): [number, number] {
   const q = Math.floor(n / d);
@@ -38,7 +43,7 @@ export class TaddMachine extends BaseMachine {
   }
 
   protected setFlags(carry: boolean, zero: boolean): void {
-    if (this.choice("TADD-FLAGS-OFF") === "written-each-execution") {
+    if (this.follows["TADD-FLAGS-OFF"] === "written-each-execution") {
       for (const f of this.carryFlags) this.mem.write(f, carry);
       this.mem.write(ZERO_FLAG, zero);
     } else {
@@ -49,7 +54,7 @@ export class TaddMachine extends BaseMachine {
 
   /** The sum in seconds -> the result in seconds and the carry (TADD-EXACT-24 for exactly 24:00:00). */
   protected wrap(total: number): { result: number; carry: boolean } {
-    const carry = this.choice("TADD-EXACT-24") === "carry-at-24" ? total >= DAY : total > DAY;
+    const carry = this.follows["TADD-EXACT-24"] === "carry-at-24" ? total >= DAY : total > DAY;
     return { result: ((total % DAY) + DAY) % DAY, carry };   // a sum of negative words, too, lands in 0..23:59:59
   }
 
@@ -70,15 +75,17 @@ export class TaddMachine extends BaseMachine {
       const fieldsBad = (dev: string): boolean => mem.inRange(dev, 3) && this.outOfRange(mem.words(dev, 3).map(signed16));
       // Both conditions at once: TADD-ERROR-ORDER says which code; nothing else is written.
       const both = fieldsBad(s1Dev) || fieldsBad(s2Dev);
-      return this.error(both && this.choice("TADD-ERROR-ORDER") === "field-range-first" ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
+      return this.error(both && this.follows["TADD-ERROR-ORDER"] === "field-range-first" ? ERR_VALUE_RANGE : ERR_DEVICE_RANGE);
     }
     const s1 = mem.words(s1Dev, 3).map(signed16);
     const s2 = mem.words(s2Dev, 3).map(signed16);
-    if (this.outOfRange(s1) || this.outOfRange(s2)) {
+    const valid = !this.outOfRange(s1) && !this.outOfRange(s2);
+    if (!valid) {
       this.error(ERR_VALUE_RANGE);
-      if (this.choice("TADD-ON-ERROR") === "not-executed") return;
+      if (this.follows["TADD-ON-ERROR"] === "not-executed") return;
     }
-    const total = this.sumSeconds(s1Dev, s2Dev, dDev);
+    // The words just read, unless an error code has been written since (it may lie among them).
+    const total = valid ? this.sumSeconds(s1Dev, s2Dev, dDev, s1, s2) : this.sumSeconds(s1Dev, s2Dev, dDev);
     const { result, carry } = this.wrap(total);
     mem.writeWords(dDev, [Math.floor(result / 3600), Math.floor((result % 3600) / 60), result % 60]);
     // "If the result is 0 (0:00:00), the zero flag turns on."
@@ -88,23 +95,23 @@ export class TaddMachine extends BaseMachine {
   /**
    * (s1) + (s2) in seconds, the words read in the order TADD-OVERLAP says. The order shows only
    * when (d) shares words with (s1) or (s2) at another offset ((d) = (s1)+1, ...): a source word
-   * read after a word of (d) was written then holds what was written.
+   * read after a word of (d) was written then holds what was written. `s1` and `s2`: the words of
+   * (s1) and (s2) as read before anything was written, when the caller has them.
    */
-  protected sumSeconds(s1Dev: string, s2Dev: string, dDev: string): number {
+  protected sumSeconds(s1Dev: string, s2Dev: string, dDev: string, s1?: readonly number[], s2?: readonly number[]): number {
     const mem = this.mem;
-    const word = (dev: string, k: number): number => signed16(mem.word(Memory.offset(dev, k)));
-    const order = this.choice("TADD-OVERLAP");
+    const order = this.follows["TADD-OVERLAP"];
     let total = 0;
     if (order === "sources-first") {
       // "add the time data stored in ... (s2) to the clock data stored in ... (s1)": all six words first.
-      const s1 = mem.words(s1Dev, 3).map(signed16);
-      const s2 = mem.words(s2Dev, 3).map(signed16);
-      for (let k = 0; k < 3; k++) total += (s1[k]! + s2[k]!) * WEIGHTS[k]!;
+      const a = s1 ?? mem.words(s1Dev, 3).map(signed16);
+      const b = s2 ?? mem.words(s2Dev, 3).map(signed16);
+      for (let k = 0; k < 3; k++) total += (a[k]! + b[k]!) * WEIGHTS[k]!;
     } else if (order === "second-first") {
       // Second, minute, hour: each word of (d) gets its digit as soon as it is known, the carry going up.
       let carry = 0;
       for (const k of [2, 1, 0]) {
-        const sum = word(s1Dev, k) + word(s2Dev, k);
+        const sum = signedWord(mem, s1Dev, k) + signedWord(mem, s2Dev, k);
         total += sum * WEIGHTS[k]!;
         const [next, digit] = divmod(sum + carry, RADIX[k]!);
         mem.write(Memory.offset(dDev, k), digit);
@@ -113,7 +120,7 @@ export class TaddMachine extends BaseMachine {
     } else {
       // hour-first: each pair's plain sum into (d), hour to second; the caller settles the carries.
       for (const k of [0, 1, 2]) {
-        const sum = word(s1Dev, k) + word(s2Dev, k);
+        const sum = signedWord(mem, s1Dev, k) + signedWord(mem, s2Dev, k);
         total += sum * WEIGHTS[k]!;
         mem.write(Memory.offset(dDev, k), sum);
       }

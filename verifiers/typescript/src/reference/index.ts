@@ -3,12 +3,12 @@
  * manual pages the way an emulator author would, that must pass every vector under every
  * combination of alternatives. It is also what the mutants break, one bug each.
  */
-import { FAMILIES, type Implementation, type InterpretationId, INTERPRETATIONS, Memory, type RunOutcome, type StepResult, type VectorRequest } from "../index.js";
+import { FAMILIES, type Implementation, Memory, type RunOutcome, type StepResult, type VectorRequest } from "../index.js";
 import { Cp1eTimeCompare } from "./cp1e-dt.js";
 import { HourMeter } from "./fc6a-hour.js";
 import { Fx5CompareMachine } from "./fx5-compare.js";
 import { TaddMachine } from "./fx5-tadd.js";
-import type { Machine } from "./machine.js";
+import { followsOf, type Machine } from "./machine.js";
 
 export type MachineFactory = (mem: Memory, choices: Readonly<Record<string, string>>) => Machine;
 
@@ -27,12 +27,8 @@ export function machineImplementation(
   machines: Readonly<Record<string, MachineFactory>>,
   choices: Readonly<Record<string, string>> = {},
 ): Implementation {
-  // Every interpretation's alternative looked up once here, so that a machine's `choice` finds each on one object.
-  // Built whole by Object.fromEntries, not key by key: V8 turns an object given more than a dozen or
-  // so properties one computed key at a time into a hash table, and every `choice` into a hash lookup.
-  const followed: Readonly<Record<string, string>> = Object.fromEntries(
-    (Object.keys(INTERPRETATIONS) as InterpretationId[]).map((id) => [id, choices[id] ?? INTERPRETATIONS[id].default]),
-  );
+  // Every interpretation's alternative worked out once here, one record for every vector's machine.
+  const follows = followsOf(choices);
   return {
     name,
     choices,
@@ -40,7 +36,7 @@ export function machineImplementation(
       const factory = machines[request.family];
       if (factory === undefined) return { skip: `no machine for family ${request.family}` };
       const mem = Memory.forRequest(request);
-      const machine = factory(mem, followed);
+      const machine = factory(mem, follows);
       const steps = new Array<StepResult>(request.steps.length);
       for (let i = 0; i < steps.length; i++) {
         const step = request.steps[i]!;

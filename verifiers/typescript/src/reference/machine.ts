@@ -13,17 +13,49 @@ export interface Machine {
   execute(instruction: string, operands: Operands, step: StepInputs): boolean | undefined;
 }
 
+/** Every interpretation's followed alternative, under its id. */
+export type Follows = { readonly [I in InterpretationId]: Alternative<I> };
+
+const INTERPRETATION_IDS = Object.keys(INTERPRETATIONS) as InterpretationId[];
+/** The records followsOf made: complete and frozen, each its own answer. */
+const made = new WeakSet<object>();
+let lastMade: Follows | undefined;
+
+/**
+ * Every interpretation's alternative: the declared one, or the suite's default. One frozen record
+ * with the same keys in the same order every time, built whole by Object.fromEntries: V8 gives
+ * every such record one shape, so that `follows["FX5-SM709-SCOPE"]` at a call site is a field read
+ * at a fixed offset. A record it made is returned as it is (machineImplementation passes the same
+ * one to every vector's machine, so making a machine builds nothing).
+ */
+export function followsOf(declared: Readonly<Record<string, string>>): Follows {
+  if (declared === lastMade || made.has(declared)) return declared as Follows;
+  const follows = Object.freeze(Object.fromEntries(INTERPRETATION_IDS.map((id) => [id, declared[id] ?? INTERPRETATIONS[id].default]))) as Follows;
+  made.add(follows);
+  lastMade = follows;
+  return follows;
+}
+
 export abstract class BaseMachine implements Machine {
   abstract readonly contact: boolean;
+  /**
+   * The alternative followed for each interpretation, as declared when the machine is made. Read
+   * by a literal id (`this.follows["FX5-SM709-SCOPE"]`), not through choice(): a read that names
+   * its key is, once optimized, a load at a fixed offset; choice's one `follows[id]`, which sees
+   * every id of every caller, stays a megamorphic lookup (V8's stub cache) at every execution.
+   */
+  protected readonly follows: Follows;
 
   constructor(
     protected readonly mem: Memory,
-    private readonly declared: Readonly<Record<string, string>>,
-  ) {}
+    declared: Readonly<Record<string, string>>,
+  ) {
+    this.follows = followsOf(declared);
+  }
 
   /** The alternative followed for `id`: the declared one, or the suite's default. */
   protected choice<I extends InterpretationId>(id: I): Alternative<I> {
-    return (this.declared[id] ?? INTERPRETATIONS[id].default) as Alternative<I>;
+    return this.follows[id];
   }
 
   abstract execute(instruction: string, operands: Operands, step: StepInputs): boolean | undefined;
