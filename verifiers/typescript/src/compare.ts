@@ -126,7 +126,11 @@ export function cpuWritesOf(impl: Implementation): ReadonlySet<string> {
 
 const cpuWriteSets = new WeakMap<Implementation, ReadonlySet<string>>();
 
-/** Run one prepared vector through `impl` and judge it (known failures not yet applied). */
+/**
+ * Run one prepared vector through `impl` and judge it (known failures not yet applied). The answer
+ * nearly every vector gets, steps, is judged here, any other by answered(): kept this short, judge
+ * is small enough for V8 to inline into the loop that calls it.
+ */
 export function judge(p: Prepared, impl: Implementation): Verdict {
   // The vector itself is not read here: what judging needs of it is on the request and the
   // expectation, and a large object read for one field costs a cache miss per vector.
@@ -138,19 +142,29 @@ export function judge(p: Prepared, impl: Implementation): Verdict {
   try {
     outcome = impl.run(request);
   } catch (err) {
-    if (!(err instanceof Error)) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${String(err)}`);
-    const frame = ownFrame(err);
-    return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${err.name}: ${err.message}${frame === undefined ? "" : ` (${frame})`}`);
+    return threw(p, impl, err);
   }
+  if (typeof outcome !== "object" || outcome === null || !("steps" in outcome) || !Array.isArray(outcome.steps)) {
+    return answered(p, impl, outcome);
+  }
+  const problems = problemsOf(expected, outcome.steps, undefined, impl);
+  if (problems.length === 0) return verdict(p, PASS, problems);
+  return { ...verdict(p, FAIL, problems), answer: outcome.steps };
+}
+
+/** The verdict on an implementation that threw. */
+function threw(p: Prepared, impl: Implementation, err: unknown): Verdict {
+  if (!(err instanceof Error)) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${String(err)}`);
+  const frame = ownFrame(err);
+  return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} threw ${err.name}: ${err.message}${frame === undefined ? "" : ` (${frame})`}`);
+}
+
+/** The verdict on an answer other than a list of steps. */
+function answered(p: Prepared, impl: Implementation, outcome: RunOutcome): Verdict {
   if (typeof outcome !== "object" || outcome === null) {
     return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered ${String(outcome)}, not {steps}, {skip} or {error}`);
   }
-  if ("steps" in outcome) {
-    if (!Array.isArray(outcome.steps)) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered steps that are not a list`);
-    const problems = problemsOf(expected, outcome.steps, undefined, impl);
-    if (problems.length === 0) return verdict(p, PASS, problems);
-    return { ...verdict(p, FAIL, problems), answer: outcome.steps };
-  }
+  if ("steps" in outcome) return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered steps that are not a list`);
   if ("skip" in outcome) return verdict(p, SKIP, NO_PROBLEMS, String(outcome.skip));
   if ("error" in outcome) return verdict(p, ERROR, NO_PROBLEMS, `the implementation reported an error: ${String(outcome.error)}`);
   return verdict(p, ERROR, NO_PROBLEMS, `${impl.name} answered neither steps, skip nor error`);
