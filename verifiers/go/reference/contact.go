@@ -53,22 +53,22 @@ func conditionOf(symbol string) (condition, bool) {
 
 // "The following table lists the comparison operation results of each instruction."
 // TM=/DT= (s1)=(s2), <> (s1)≠(s2), > (s1)>(s2), <= (s1)≤(s2), < (s1)<(s2), >= (s1)≥(s2).
+// holdsFor[c] has bit order+1 set (order -1, 0, +1: s1 below, equal to, above s2) for each order
+// under which c holds.
+var holdsFor = [...]uint8{
+	condEQ: 0b010,
+	condNE: 0b101,
+	condGT: 0b100,
+	condLE: 0b011,
+	condLT: 0b001,
+	condGE: 0b110,
+}
+
+// holds reports whether condition c holds for order (-1, 0 or +1): a load and a shift, with no
+// branch on the condition, which changes from one vector to the next and so was mispredicted
+// about as often as it was taken.
 func holds(c condition, order int) bool {
-	switch c {
-	case condEQ:
-		return order == 0
-	case condNE:
-		return order != 0
-	case condGT:
-		return order > 0
-	case condLE:
-		return order <= 0
-	case condLT:
-		return order < 0
-	case condGE:
-		return order >= 0
-	}
-	return false
+	return holdsFor[c]>>uint(order+1)&1 != 0
 }
 
 // contact is a decoded comparison instruction.
