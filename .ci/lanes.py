@@ -36,6 +36,9 @@ class Lane:
         self.proc: subprocess.Popen | None = None
         self.started = 0.0
         self.seconds = 0.0
+        # CPU seconds (user + system) of the lane and every process it waited for: on two cores,
+        # the sum over lanes is what bounds CI's time, more than any lane's wall time.
+        self.cpu = 0.0
         self.status = "waiting"
 
     def start(self) -> None:
@@ -49,17 +52,21 @@ class Lane:
     def poll(self, timeout: float) -> bool:
         """True once the lane has ended (on its own, or killed for outliving `timeout`)."""
         assert self.proc is not None
-        code = self.proc.poll()
+        # wait4, not Popen.poll: it also gives the lane's resource usage.
+        pid, status, usage = os.wait4(self.proc.pid, os.WNOHANG)
         elapsed = time.monotonic() - self.started
-        if code is None and elapsed > timeout:
+        if pid == 0 and elapsed > timeout:
             os.killpg(self.proc.pid, signal.SIGKILL)
-            self.proc.wait()
+            _, status, usage = os.wait4(self.proc.pid, 0)
             self.status = f"killed after {timeout:.0f} s"
-        elif code is None:
+        elif pid == 0:
             return False
         else:
+            code = os.waitstatus_to_exitcode(status)
             self.status = "ok" if code == 0 else f"failed (exit {code})"
+        self.proc.returncode = os.waitstatus_to_exitcode(status)
         self.seconds = elapsed
+        self.cpu = usage.ru_utime + usage.ru_stime
         return True
 
 
@@ -88,16 +95,18 @@ def main(argv: list[str]) -> int:
             time.sleep(0.5)
             for lane in [lane for lane in running if lane.poll(args.timeout)]:
                 running.remove(lane)
-                print(f"== lane {lane.name}: {lane.status} in {lane.seconds:.0f} s", flush=True)
+                print(f"== lane {lane.name}: {lane.status} in {lane.seconds:.0f} s "
+                      f"({lane.cpu:.0f} s of CPU)", flush=True)
                 sys.stdout.buffer.write(lane.log.read_bytes())
                 print(f"== end of lane {lane.name}", flush=True)
     finally:
         # Ctrl-C or an error here: the lanes run in sessions of their own, so end them by hand.
         for lane in running:
             os.killpg(lane.proc.pid, signal.SIGKILL)
-    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s with {args.jobs} at a time")
+    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s with {args.jobs} at a time, "
+          f"{sum(lane.cpu for lane in lanes):.0f} s of CPU")
     for lane in lanes:
-        print(f"  {lane.name:<12} {lane.status:<24} {lane.seconds:7.0f} s")
+        print(f"  {lane.name:<12} {lane.status:<24} {lane.seconds:7.0f} s {lane.cpu:7.0f} s of CPU")
     return 0 if all(lane.status == "ok" for lane in lanes) else 1
 
 
