@@ -77,6 +77,9 @@ class Committed:
     families: dict          # family -> plcvec.output.diff's {"header": ..., "vectors": {id: vector}}
     merged: dict            # family -> {merged id: kept id}
     targets: dict           # engine file name -> the families whose vectors it can change
+    # The unmutated engine's Outcome against these vectors, once judged: the same for every run over
+    # them in one process (a caller running several selections pays for it once).
+    unmutated: Outcome | None = field(default=None, compare=False, repr=False)
 
 
 class _OutOfTime(BaseException):

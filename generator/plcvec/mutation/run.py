@@ -112,7 +112,9 @@ def run_mutants(selected, committed, decisions, jobs, timeout=None, progress=Non
         raise PlcvecError("the mutation run forks a process per mutant, which needs Linux")
     decision_places = places(decisions, committed.sources)
     started = time.monotonic()
-    baseline = judge_in_workers([_Unmutated()], committed, 1, None)[0]
+    if committed.unmutated is None:
+        committed.unmutated = judge_in_workers([_Unmutated()], committed, 1, None)[0]
+    baseline = committed.unmutated
     run = Run(total=0, unmutated_cpu_seconds=baseline.cpu_seconds)
     if baseline.status != UNCHANGED:
         raise PlcvecError("the unmutated engine does not give the committed vectors ("
