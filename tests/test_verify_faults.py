@@ -294,7 +294,13 @@ def test_stopping_pytest_with_the_plugin_ends_the_adapter_and_its_child(tmp_path
         pids = _spawned(pidfile)
         assert _wait_for(lambda: "answered" in pidfile.read_text(), 60)
         proc.send_signal(signum)
-        out, _ = proc.communicate(timeout=30)
+        try:
+            out, _ = proc.communicate(timeout=30)
+        except subprocess.TimeoutExpired:
+            # pytest's faulthandler prints every thread's stack on SIGABRT: where the stop was lost.
+            proc.send_signal(signal.SIGABRT)
+            out, _ = proc.communicate(timeout=30)
+            pytest.fail(f"pytest did not end within 30 s of {signum.name}; its stacks on SIGABRT:\n{out}")
         assert _wait_for(lambda: not any(_alive(p) for p in pids), 10), "an adapter process was left running"
     finally:
         if proc.poll() is None:
