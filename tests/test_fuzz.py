@@ -192,7 +192,7 @@ def test_same_seed_same_output(capsys, tmp_path):
     runs = []
     for batch in (64, 7):  # the batch size changes how many cases go to a request, not what is found
         out_file = tmp_path / f"found-{len(runs)}.json"
-        code, out, _ = fuzz(capsys, "--python", planted("hour-as-minute"), "--examples", 1000, "--seed", 11,
+        code, out, _ = fuzz(capsys, "--python", planted("hour-as-minute"), "--examples", 1000, "--seed", 8,
                             "--batch-size", batch, "--out", out_file)
         assert code == 1
         runs.append((out.replace(str(out_file), "FILE"), out_file.read_bytes()))

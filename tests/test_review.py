@@ -73,8 +73,10 @@ def test_check_passes_on_the_real_spec(report):
     assert str(out / "review.html") in done.stdout
 
 
+@pytest.mark.slow
 def test_output_is_deterministic(report, tmp_path):
-    """Another run, under another hash seed, gives byte-identical files."""
+    """Another run, under another hash seed, gives byte-identical files (slow: a second whole review;
+    the default run checks the first one's content)."""
     done = review("--manual-dir", MANUAL_DIR, "--out", tmp_path, seed="12345")
     assert done.returncode == 0, done.stderr
     assert (tmp_path / "review.html").read_bytes() == (report[3] / "review.html").read_bytes()
