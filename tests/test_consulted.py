@@ -184,7 +184,7 @@ def test_every_family_is_checked(families):
 
 # The default run checks every SAMPLE-th case of each family the plain way (CP1E's 144 combinations over
 # its whole set are most of this module's time); CI checks every case (-m slow).
-SAMPLE = 12
+SAMPLE = 24
 
 
 @pytest.mark.parametrize("every", [pytest.param(1, id="whole-set", marks=pytest.mark.slow),
