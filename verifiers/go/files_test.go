@@ -5,6 +5,7 @@ import (
 	"os"
 	"path/filepath"
 	"regexp"
+	"runtime"
 	"strconv"
 	"strings"
 	"syscall"
@@ -163,33 +164,41 @@ func TestLoadRefusesRepeatedKeys(t *testing.T) {
 	}
 }
 
-// TestLoadRefusesRepeatedKeysInAFamilyJSON: in a repository folder (manifest.json and
-// <family>.json), the repeat is named by its line and the vector that holds it.
-func TestLoadRefusesRepeatedKeysInAFamilyJSON(t *testing.T) {
+// familyJSONFolder is a repository folder (manifest.json and <family>.json) of one family of the
+// repository's vectors/, its file's hash left out of the manifest (an edit is the damage under
+// test); "" and a skip where there is no repository beside this module.
+func familyJSONFolder(t *testing.T, family string) string {
+	t.Helper()
 	src := filepath.Join("..", "..", "vectors")
 	if _, err := os.Stat(filepath.Join(src, "manifest.json")); err != nil {
 		t.Skip("no repository vectors/ beside this module")
 	}
 	dir := t.TempDir()
-	for _, name := range []string{"manifest.json", "fx5-time-add.json"} {
+	for _, name := range []string{"manifest.json", family + ".json"} {
 		data, err := os.ReadFile(filepath.Join(src, name))
 		if err != nil {
 			t.Fatal(err)
 		}
 		os.WriteFile(filepath.Join(dir, name), data, 0o644)
 	}
-	// The manifest of that one family, its hash left out: the edit is the damage under test.
 	var manifest map[string]any
 	raw, _ := os.ReadFile(filepath.Join(dir, "manifest.json"))
 	if err := json.Unmarshal(raw, &manifest); err != nil {
 		t.Fatal(err)
 	}
-	entry := manifest["families"].(map[string]any)["fx5-time-add"].(map[string]any)
+	entry := manifest["families"].(map[string]any)[family].(map[string]any)
 	entry["sha256"] = ""
-	manifest["families"] = map[string]any{"fx5-time-add": entry}
+	manifest["families"] = map[string]any{family: entry}
 	delete(manifest, "total")
 	raw, _ = json.Marshal(manifest)
 	os.WriteFile(filepath.Join(dir, "manifest.json"), raw, 0o644)
+	return dir
+}
+
+// TestLoadRefusesRepeatedKeysInAFamilyJSON: in a repository folder (manifest.json and
+// <family>.json), the repeat is named by its line and the vector that holds it.
+func TestLoadRefusesRepeatedKeysInAFamilyJSON(t *testing.T) {
+	dir := familyJSONFolder(t, "fx5-time-add")
 	data, _ := os.ReadFile(filepath.Join(dir, "fx5-time-add.json"))
 	lines := strings.Split(string(data), "\n")
 	at, id := -1, ""
@@ -207,5 +216,85 @@ func TestLoadRefusesRepeatedKeysInAFamilyJSON(t *testing.T) {
 	want := filepath.Join(dir, "fx5-time-add.json") + ":" + strconv.Itoa(at) + ": vector " + id + `: repeated key "tags"`
 	if err := loadWithin(t, dir); at < 0 || err == nil || err.Error() != want {
 		t.Errorf("got %v; want %s", err, want)
+	}
+}
+
+// TestLoadNamesTheVectorAtFaultInAFamilyJSON: a family file (<family>.json) is read in one pass
+// when it is sound; one that is not is refused as reading it vector by vector refuses it, by the
+// vector at fault (its id, or its place in the list when it has none), and one that spells
+// `vectors` otherwise loads as encoding/json reads it, whatever the case of the key.
+func TestLoadNamesTheVectorAtFaultInAFamilyJSON(t *testing.T) {
+	const family = "fx5-time-add"
+	cases := []struct {
+		name string
+		edit func(file map[string]any, vectors []any)
+		want string // "": loads, with every vector of the file
+	}{
+		{"a key no vector has", func(_ map[string]any, vs []any) { vs[2].(map[string]any)["bogus"] = 1 },
+			`: vector {id2}: not a valid vector (json: unknown field "bogus")`},
+		{"a word out of range", func(_ map[string]any, vs []any) {
+			vs[3].(map[string]any)["initial"].(map[string]any)["devices"].(map[string]any)["D0"] = 70000
+		}, ": vector {id3}: not a valid vector (a device value is true, false or an integer 0..65535, not 70000)"},
+		{"null for a vector", func(_ map[string]any, vs []any) { vs[1] = nil },
+			": vector #1: no `id` (is the file a plcvec vector file, unedited?)"},
+		{"a key the header does not have", func(f map[string]any, _ []any) { f["bogus"] = true },
+			`:1: not valid JSON (json: unknown field "bogus")`},
+		{"vectors spelt in capitals", func(f map[string]any, vs []any) { delete(f, "vectors"); f["VECTORS"] = vs }, ""},
+	}
+	for _, c := range cases {
+		t.Run(c.name, func(t *testing.T) {
+			dir := familyJSONFolder(t, family)
+			path := filepath.Join(dir, family+".json")
+			raw, _ := os.ReadFile(path)
+			var file map[string]any
+			if err := json.Unmarshal(raw, &file); err != nil {
+				t.Fatal(err)
+			}
+			vectors := file["vectors"].([]any)
+			ids := make([]string, len(vectors))
+			for i, v := range vectors {
+				ids[i] = v.(map[string]any)["id"].(string)
+			}
+			c.edit(file, vectors)
+			raw, _ = json.Marshal(file)
+			os.WriteFile(path, raw, 0o644)
+			suite, err := plcvec.Load(dir)
+			if c.want == "" {
+				if err != nil || len(suite.Vectors) != len(ids) {
+					t.Fatalf("got %v; want the %d vectors loaded", err, len(ids))
+				}
+				return
+			}
+			want := path + strings.NewReplacer("{id2}", ids[2], "{id3}", ids[3]).Replace(c.want)
+			if err == nil || err.Error() != want {
+				t.Errorf("got %v; want %s", err, want)
+			}
+		})
+	}
+}
+
+// TestLoadingAFamilyJSONAllocatesAboutItsVectors: a family file is decoded in one pass, without a
+// copy of the file or of each vector's text, so that a run does not start judging with a heap
+// full of loading's garbage for the collector to work through (reading the text of each vector
+// apart allocated some seventeen times the size of the pretty-printed file; one pass under
+// seven times, most of it the vectors themselves).
+func TestLoadingAFamilyJSONAllocatesAboutItsVectors(t *testing.T) {
+	const family = "cp1e-time-compare"
+	dir := familyJSONFolder(t, family)
+	info, err := os.Stat(filepath.Join(dir, family+".json"))
+	if err != nil {
+		t.Fatal(err)
+	}
+	if _, err := plcvec.Load(dir); err != nil { // warm: the first load's one-off allocations apart
+		t.Fatal(err)
+	}
+	var before, after runtime.MemStats
+	runtime.ReadMemStats(&before)
+	if _, err := plcvec.Load(dir); err != nil {
+		t.Fatal(err)
+	}
+	runtime.ReadMemStats(&after)
+	if allocated, limit := after.TotalAlloc-before.TotalAlloc, 8*uint64(info.Size()); allocated > limit {
+		t.Errorf("loading %s (%d bytes) allocated %d bytes; want at most %d (8 times the file)", family, info.Size(), allocated, limit)
 	}
 }
