@@ -273,28 +273,40 @@ func TestLoadNamesTheVectorAtFaultInAFamilyJSON(t *testing.T) {
 	}
 }
 
-// TestLoadingAFamilyJSONAllocatesAboutItsVectors: a family file is decoded in one pass, without a
-// copy of the file or of each vector's text, so that a run does not start judging with a heap
-// full of loading's garbage for the collector to work through (reading the text of each vector
-// apart allocated some seventeen times the size of the pretty-printed file; one pass under
-// seven times, most of it the vectors themselves).
-func TestLoadingAFamilyJSONAllocatesAboutItsVectors(t *testing.T) {
+// TestLoadingAFamilyAllocatesAboutItsVectors: a family file, a repository's <family>.json or an
+// exported <family>.jsonl, is decoded in one pass, without a copy of the file or of each
+// vector's text, so that a run does not start judging with a heap full of loading's garbage for
+// the collector to work through. Read vector by vector (line by line), the JSON file allocated
+// some seventeen times its (pretty-printed) size and the JSON-lines file some fourteen times its
+// own; in one pass, each under seven times, most of it the vectors themselves.
+func TestLoadingAFamilyAllocatesAboutItsVectors(t *testing.T) {
 	const family = "cp1e-time-compare"
-	dir := familyJSONFolder(t, family)
-	info, err := os.Stat(filepath.Join(dir, family+".json"))
-	if err != nil {
-		t.Fatal(err)
-	}
-	if _, err := plcvec.Load(dir); err != nil { // warm: the first load's one-off allocations apart
-		t.Fatal(err)
-	}
-	var before, after runtime.MemStats
-	runtime.ReadMemStats(&before)
-	if _, err := plcvec.Load(dir); err != nil {
-		t.Fatal(err)
-	}
-	runtime.ReadMemStats(&after)
-	if allocated, limit := after.TotalAlloc-before.TotalAlloc, 8*uint64(info.Size()); allocated > limit {
-		t.Errorf("loading %s (%d bytes) allocated %d bytes; want at most %d (8 times the file)", family, info.Size(), allocated, limit)
+	for _, c := range []struct {
+		file  string
+		dir   func() string
+		times uint64
+	}{
+		{family + ".json", func() string { return familyJSONFolder(t, family) }, 8},
+		{family + ".jsonl", func() string { return copyVectors(t, nil, family) }, 8},
+	} {
+		dir := c.dir()
+		info, err := os.Stat(filepath.Join(dir, c.file))
+		if err != nil {
+			t.Fatal(err)
+		}
+		if _, err := plcvec.Load(dir); err != nil { // warm: the first load's one-off allocations apart
+			t.Fatal(err)
+		}
+		var before, after runtime.MemStats
+		runtime.ReadMemStats(&before)
+		if _, err := plcvec.Load(dir); err != nil {
+			t.Fatal(err)
+		}
+		runtime.ReadMemStats(&after)
+		if allocated, limit := after.TotalAlloc-before.TotalAlloc, c.times*uint64(info.Size()); allocated > limit {
+			t.Errorf("loading %s (%d bytes) allocated %d bytes; want at most %d (%d times the file)", c.file, info.Size(), allocated, limit, c.times)
+		} else {
+			t.Logf("loading %s (%d bytes) allocated %d bytes (%.1f times)", c.file, info.Size(), allocated, float64(allocated)/float64(info.Size()))
+		}
 	}
 }

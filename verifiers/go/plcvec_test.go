@@ -302,6 +302,19 @@ func TestLoadRefusesDamage(t *testing.T) {
 			ls[3] = strings.Replace(ls[3], `"description":"`, "\"description\":\"\xff", 1)
 			return ls
 		}, "fx5-time-add.jsonl:4: byte 0xff at column"},
+		// Each line one value, all of it: what the lines hold is read line by line, whatever a
+		// decoder reading the file as one stream of values would make of it.
+		{"a vector over two lines", func(ls []string) []string {
+			ls[2] = "{\n" + ls[2][1:]
+			return ls
+		}, "fx5-time-add.jsonl:3: the line is not a valid vector (unexpected EOF)"},
+		{"a blank line", func(ls []string) []string {
+			return append(ls[:2], append([]string{" "}, ls[2:]...)...)
+		}, "fx5-time-add.jsonl:3: the line is not a valid vector (EOF)"},
+		{"two vectors on a line", func(ls []string) []string {
+			ls[1] += " " + ls[2]
+			return ls
+		}, "not a valid vector (more than one JSON value)"},
 		{"schema 2", func(ls []string) []string {
 			ls[0] = strings.Replace(ls[0], `"schema_version":"1.`, `"schema_version":"2.`, 1)
 			return ls

@@ -16,6 +16,7 @@ import (
 	"strings"
 	"sync"
 	"syscall"
+	"unicode/utf8"
 )
 
 // SchemaMajor is the major schema version this verifier reads (CONTRACT.md, "Versioning"): a 2.x
@@ -277,7 +278,9 @@ func checkHeader(h *FamilyHeader, where string) error {
 	return nil
 }
 
-// parseJSONL reads an exported family file: line 1 the header, then one vector per line.
+// parseJSONL reads an exported family file: line 1 the header, then one vector per line. A
+// sound file is decoded in one pass (streamJSONL); one that does not decode so is read again
+// line by line (jsonlByLine), which names the line at fault.
 func parseJSONL(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 	lines := bytes.Split(data, []byte("\n"))
 	if len(lines) > 0 && len(lines[len(lines)-1]) == 0 {
@@ -286,6 +289,63 @@ func parseJSONL(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 	if len(lines) == 0 {
 		return nil, nil, fmt.Errorf("%s: empty; not a plcvec vector file", where)
 	}
+	header, vectors, ok := streamJSONL(data, lines)
+	if !ok {
+		return jsonlByLine(lines, where)
+	}
+	var keys keyScanner
+	if err := keys.repeatedKeyError(lines[0], where, 1, nil); err != nil {
+		return nil, nil, err
+	}
+	if err := checkHeader(header, where); err != nil {
+		return nil, nil, err
+	}
+	for i, v := range vectors {
+		lineNo := i + 2
+		if err := keys.repeatedKeyError(lines[i+1], where, lineNo, func(int) string { return v.ID }); err != nil {
+			return nil, nil, err
+		}
+		if p := v.shapeProblem(header); p != "" {
+			return nil, nil, fmt.Errorf("%s:%d: vector %s: %s (is the file a plcvec vector file, unedited?)", where, lineNo, nameOr(v.ID, lineNo), p)
+		}
+	}
+	return header, vectors, nil
+}
+
+// streamJSONL decodes the header and the vectors of an exported family file with one decoder,
+// value after value, each of which must be the whole of its line (the lines of data, in
+// order). A decoder per line, as jsonlByLine reads them, copies each line into a buffer it
+// grows by doubling: some three times the file's size of garbage, made by every run that loads
+// the set. ok is false for anything jsonlByLine would refuse before it looks at a vector's shape.
+func streamJSONL(data []byte, lines [][]byte) (header *FamilyHeader, vectors []*Vector, ok bool) {
+	if !utf8.Valid(data) {
+		return nil, nil, false
+	}
+	dec := json.NewDecoder(bytes.NewReader(data))
+	dec.DisallowUnknownFields()
+	header, vectors = &FamilyHeader{}, make([]*Vector, 0, len(lines)-1)
+	end := 0 // the offset of the end of the line being read
+	for i, line := range lines {
+		end += len(line)
+		var into any = header
+		if i > 0 {
+			v := &Vector{}
+			vectors, into = append(vectors, v), v
+		}
+		// A value that ends past its line's end, or leaves more than blanks after it on the
+		// line, is not that line's alone (a line with no value, two values on a line).
+		if dec.Decode(into) != nil || dec.InputOffset() > int64(end) ||
+			len(bytes.Trim(data[dec.InputOffset():end], " \t\r")) > 0 {
+			return nil, nil, false
+		}
+		end++ // the newline
+	}
+	return header, vectors, true
+}
+
+// jsonlByLine is parseJSONL for a file that does not decode in one pass: each line apart, so
+// that a refusal names the first line at fault.
+func jsonlByLine(lines [][]byte, where string) (*FamilyHeader, []*Vector, error) {
 	if err := checkUTF8(lines[0], where, 1); err != nil {
 		return nil, nil, err
 	}
