@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# The TypeScript verifier: install, type-check, lint, build, test under node:test; the package as
-# npm would publish it, from a clean copy; the README's code blocks built and run by an outside
-# project that installs the packed tarball; the reference adapter through `plcvec verify`; and the
-# shared table of faults.
+# The TypeScript verifier: install, lint, the package packed from a clean copy (whose prepack is the
+# one type check and build), test under node:test, the public API, the package as npm would publish
+# it; the README's code blocks built and run by an outside project that installs the packed tarball;
+# the reference adapter through `plcvec verify`; and the shared table of faults.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 cd "$(dirname "$0")/../.."
@@ -11,6 +11,8 @@ started=$SECONDS
 step() { echo "-- typescript: $* ($((SECONDS - started)) s)"; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+# The clean copy of the package's tracked files, which `npm pack` builds and packs.
+clean="$work/clean"
 (
     cd verifiers/typescript
     # The README's own install command: the lock file records every platform's optional packages.
@@ -21,9 +23,18 @@ trap 'rm -rf "$work"' EXIT
     step "madge: no import circle"
     # No import circle (madge counts `import type` too); its report is printed only when it finds one.
     npm run --silent circles >"$work/circles.log" 2>&1 || { cat "$work/circles.log"; exit 1; }
-    # The build type-checks as `npm run typecheck` does (one tsconfig): one compile, not two.
-    step "tsc (the type check and the build)"
-    npm run --silent build
+    step "npm pack from a clean copy: its prepack is the one tsc (the type check and the build)"
+    # The tracked files alone (no dist/, no node_modules/, nothing untracked), packed: `npm pack` runs
+    # `prepack`, `npm run build`, which type-checks as `npm run typecheck` does (one tsconfig: src,
+    # test and fixtures). That build is the lane's only compile: its dist/ serves the tests below,
+    # the API check, the reference adapter and faults-entry, as a build here would (the same sources).
+    mkdir -p "$clean"
+    git ls-files -z . | tar --null -T - -cf - | tar -xf - -C "$clean"
+    # The packages installed above serve the clean copy.
+    ln -s "$PWD/node_modules" "$clean/node_modules"
+    (cd "$clean" && npm pack --silent --pack-destination "$work" >"$work/pack.log" 2>&1) || { cat "$work/pack.log"; exit 1; }
+    rm -rf dist
+    cp -a "$clean/dist" dist
     step "node --test over test/"
     # node:test over test/: its whole output only when something failed, else its counts on one line.
     npm test >"$work/test.log" 2>&1 || { cat "$work/test.log"; exit 1; }
@@ -56,18 +67,11 @@ if bad:
     sys.exit("\n".join(bad))
 PY
 
-step "npm publish --dry-run and npm pack from a clean copy; the tarball's files and source maps"
-# Publishing, from a clean copy of the tracked files (no dist/, no node_modules/): `npm pack` runs
-# `prepack`, which builds, and `npm publish --dry-run` of the same folder must pass without a warning
-# (a `bin` npm would rewrite, a missing field); its own `prepack` is skipped, the build being done.
-clean="$work/clean"
-mkdir -p "$clean"
-git ls-files -z verifiers/typescript | tar --null -T - -cf - | tar -xf - -C "$clean"
+step "npm publish --dry-run of the clean copy; the tarball's files and source maps"
+# Publishing the clean copy packed above: `npm publish --dry-run` of that folder must pass without a
+# warning (a `bin` npm would rewrite, a missing field); its own `prepack` is skipped, the build being done.
 (
-    cd "$clean/verifiers/typescript"
-    # The packages installed above serve the clean copy: its build and its tarball are what is checked.
-    ln -s "$root/verifiers/typescript/node_modules" node_modules
-    npm pack --silent --pack-destination "$work" >/dev/null
+    cd "$clean"
     npm publish --dry-run --ignore-scripts >"$work/publish.log" 2>&1 || { cat "$work/publish.log"; exit 1; }
     # The one warning a dry run cannot avoid without a registry account: not logged in.
     if grep -i "warn" "$work/publish.log" | grep -v "requires you to be logged in"; then
