@@ -2,17 +2,25 @@
 import assert from "node:assert/strict";
 import { describe, test } from "node:test";
 
-import { FAMILIES, loadSuite, runVectors, type Implementation } from "../src/index.js";
+import { FAMILIES, loadSuite, runVectors, type Implementation, type Report } from "../src/index.js";
 import { MUTANTS, mutant, type Aspect } from "../src/mutants/index.js";
 import { reference } from "../src/reference/index.js";
 import { rollupLines } from "../src/reports.js";
 
 const suite = loadSuite();
 
+/** Each mutant judged over the whole suite once, its report read by the two tests that need it. */
+const reports = new Map<string, Report>();
+function wholeSuiteReport(name: string): Report {
+  let report = reports.get(name);
+  if (report === undefined) reports.set(name, (report = runVectors(mutant(name), { suite })));
+  return report;
+}
+
 describe("each mutant is rejected", () => {
   for (const [name, m] of Object.entries(MUTANTS)) {
     test(name, () => {
-      const report = runVectors(mutant(name), { suite });
+      const report = wholeSuiteReport(name);
       assert.equal(report.passed, false, `${name} (${m.bug}) passed the whole suite`);
       const failing = report.verdicts.filter((r) => r.status === "fail");
       assert.ok(failing.length > 0, `${name} failed without a failing vector`);
@@ -71,7 +79,7 @@ function asPlainObjects(impl: Implementation): Implementation {
 
 test("every mutant is judged alike whether its steps are compared by slot or as plain objects", () => {
   for (const name of Object.keys(MUTANTS)) {
-    const bySlot = runVectors(mutant(name), { suite }).verdicts;
+    const bySlot = wholeSuiteReport(name).verdicts;
     const byObject = runVectors(asPlainObjects(mutant(name)), { suite }).verdicts;
     assert.deepEqual(
       byObject.map((r) => [r.id, r.status, r.problems]),
