@@ -44,8 +44,9 @@ STATUS = {"pass": 0, "fail": 1, "usage": 2, "empty": 5}
 # Languages whose entry point returns the verdict's own status, not only its test runner's.
 EXACT = {"python", "c"}
 # Languages whose faults-entry runs every row in one call (`faults-entry --batch PLAN OUT`, README.md):
-# one test run for the rows, not a build tool and a test process started per row.
-BATCH = {"java"}
+# one test run for the rows, not a build tool and a test process started per row (Python: one
+# interpreter that imports `plcvec verify` once and forks each row's process from it).
+BATCH = {"java", "python"}
 ROW_KEYS = {"id", "what", "verdict", "names", "file_line", "hostile", "on", "damage", "source", "env",
             "known", "filter", "except", "not_names", "once", "seconds", "known_as", "known_kind"}
 EXCEPT_KEYS = {"verdict", "names", "skip", "why"}
