@@ -6,6 +6,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 started=$SECONDS
+# Bytecode written and reused (the checkout's __pycache__ is ignored by git and by the sdist): with
+# PYTHONDONTWRITEBYTECODE in the environment, every process of the lane (a row of the table of
+# faults, a mutant) would compile the package's modules again.
+unset PYTHONDONTWRITEBYTECODE
 step() { echo "-- python: $* ($((SECONDS - started)) s)"; }
 
 # The CI recipes as yamllint's users lint them (its default rules, warnings as errors).
@@ -32,7 +36,8 @@ step "export --all --check"
 python3 -m plcvec export --all --check
 
 # The package as a user installs it: the wheel and the sdist, each in a fresh virtual environment,
-# run from a temporary folder with no checkout in reach (builds with `build`, checks with `twine`).
+# run from a temporary folder with no checkout in reach (builds with `build`, checks with `twine`);
+# every command on the wheel's installation, and the sdist's shown to be the same files.
 step "the package as a user installs it"
 bash .ci/package-check.sh
 
@@ -50,7 +55,9 @@ python3 -m plcvec mutation --sample 60 --seed 1
 step "verify the reference"
 python3 -m plcvec verify --adapter "python3 -m plcvec_reference.adapter" --junit build/verify-reference.xml -q --max-skipped 0
 # The shared table of faults (verifiers/parity/faults.toml), Python's rows: plcvec verify's verdicts
-# are the rule every native runner's rows (in .ci/lang/<lang>.sh) are held to.
+# are the rule every native runner's rows (in .ci/lang/<lang>.sh) are held to. The rows run as one
+# batch (faults-entry --batch): each its own `plcvec verify` process, forked from one interpreter
+# that imported it once.
 step "table of faults"
 python3 verifiers/parity/run.py --lang python
 # Live differential run: fresh inputs through the reference and the spec engine (fixed seed: repeatable).
