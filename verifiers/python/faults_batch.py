@@ -19,6 +19,7 @@ import os
 import pkgutil
 import runpy
 import select
+import shlex
 import signal
 import sys
 import time
@@ -119,7 +120,8 @@ def kill_group(pid: int) -> None:
 def main(plan_path: str, out: str) -> int:
     sys.path[0] = str(ROOT)   # as `python3 -m` has it: the working folder first, not this file's
     preload()
-    adapter = f"{os.environ.get('PYTHON', 'python3')} {ROOT / 'verifiers' / 'python' / 'hostile.py'}"
+    # Quoted as plcvec verify splits it (shlex): the checkout's path may hold a space.
+    adapter = shlex.join([os.environ.get("PYTHON", "python3"), str(ROOT / "verifiers" / "python" / "hostile.py")])
     out_dir = Path(out)
     for row in json.loads(Path(plan_path).read_text(encoding="utf-8")):
         env = dict(row["env"], PYTHONPATH=os.environ["PYTHONPATH"])   # what the one-row entry exports
