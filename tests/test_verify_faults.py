@@ -280,6 +280,14 @@ def test_an_adapter_left_running_is_ended_when_the_interpreter_exits(tmp_path):
 
 # SIGINT takes the same path through the plugin as SIGTERM (stopping.py turns both into Stopped);
 # the default run stops it with SIGTERM, CI with both.
+def _signals_at_their_defaults():
+    """In the child, SIGINT and SIGTERM as a terminal's user has them. A test run started in the
+    background by a shell (`cmd &`) inherits SIGINT ignored, and Python then leaves it ignored: Ctrl-C
+    could not reach the pytest under test at all."""
+    for s in (signal.SIGINT, signal.SIGTERM):
+        signal.signal(s, signal.SIG_DFL)
+
+
 @pytest.mark.parametrize("signum", [signal.SIGTERM, pytest.param(signal.SIGINT, marks=pytest.mark.slow)],
                          ids=lambda s: s.name)
 def test_stopping_pytest_with_the_plugin_ends_the_adapter_and_its_child(tmp_path, signum):
@@ -288,7 +296,8 @@ def test_stopping_pytest_with_the_plugin_ends_the_adapter_and_its_child(tmp_path
     proc = subprocess.Popen([sys.executable, "-m", "pytest", "-p", "no:cacheprovider", "-q",
                              "--plcvec-adapter", shlex.join([sys.executable, str(SPAWNER), str(pidfile)]),
                              "--plcvec-family", "fx5-time-add", "--plcvec-timeout", "300"],
-                            cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+                            cwd=tmp_path, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                            preexec_fn=_signals_at_their_defaults)
     pids = []
     try:
         pids = _spawned(pidfile)
