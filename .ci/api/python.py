@@ -14,8 +14,12 @@ not follow it.
 from __future__ import annotations
 
 import argparse
+import fcntl
 import re
+import subprocess
 import sys
+import time
+from contextlib import contextmanager
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[2]
@@ -91,6 +95,29 @@ def unlisted_names(paths, section: str) -> list[str]:
             for p in paths if f"`{p}`" not in section]
 
 
+LOCK_WAIT_S = 300
+
+
+@contextmanager
+def _one_at_a_time():
+    """griffe.load_git checks the commit out on a branch named after it (griffe-<ref>): two checks at
+    once in one clone (the tests, in parallel) collide on that branch. A lock in the clone's git folder
+    makes the second wait for the first, for LOCK_WAIT_S at most."""
+    git_dir = subprocess.run(["git", "rev-parse", "--absolute-git-dir"], cwd=REPO, capture_output=True,
+                             text=True, check=True).stdout.strip()
+    with open(Path(git_dir) / "plcvec-api-check.lock", "w") as lock:
+        deadline = time.monotonic() + LOCK_WAIT_S
+        while True:
+            try:
+                fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                break
+            except BlockingIOError:
+                if time.monotonic() > deadline:
+                    raise RuntimeError(f"another API check held {lock.name} for {LOCK_WAIT_S} s") from None
+                time.sleep(0.1)
+        yield
+
+
 def main(argv=None) -> int:
     import griffe
 
@@ -102,7 +129,8 @@ def main(argv=None) -> int:
 
     version, commit = PREVIOUS
     try:
-        old = griffe.load_git(PACKAGE, ref=commit, repo=REPO, search_paths=["verifiers/python"])
+        with _one_at_a_time():
+            old = griffe.load_git(PACKAGE, ref=commit, repo=REPO, search_paths=["verifiers/python"])
     except Exception as exc:   # a clone without the commit: nothing to compare against is no pass
         print(f"api check (python): cannot read {PACKAGE} at {version} ({commit}): {exc}", file=sys.stderr)
         return 2
