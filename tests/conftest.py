@@ -55,6 +55,23 @@ def all_vectors(golden):
 
 
 @pytest.fixture(scope="session")
+def real_review(tmp_path_factory):
+    """`plcvec review --check` of the real spec against the manual, run once per worker as a user runs
+    it: (the finished process, its out folder). The review, provenance, wording-note, accounting and
+    browser tests only read it (about 1.5 s a run); a test that needs the review of an edited spec or
+    other options runs that itself."""
+    import subprocess
+
+    if not MANUAL_DIR.is_dir():
+        pytest.fail(f"{MANUAL_DIR} is missing: the review tests read the manual beside the repository")
+    out = tmp_path_factory.mktemp("review")
+    done = subprocess.run([sys.executable, "-m", "plcvec", "review", "--check", "--manual-dir", str(MANUAL_DIR),
+                           "--out", str(out)], capture_output=True, text=True, timeout=120,
+                          env=dict(os.environ, PYTHONHASHSEED="0"))
+    return done, out
+
+
+@pytest.fixture(scope="session")
 def generated(families):
     """The golden set generated once per test session from spec/: ({file name: text}, {family: vectors}).
 

@@ -46,8 +46,8 @@ def test_check_names_a_sentence_nobody_accounts_for_as_file_and_line(tmp_path):
     assert "1 of 103 sentences and table rows unaccounted for" in done.stdout
 
 
-def test_every_page_is_accounted_for_and_each_text_is_on_its_page(tmp_path):
-    done = review("--check", "--no-write", "--manual-dir", MANUAL_DIR)
+def test_every_page_is_accounted_for_and_each_text_is_on_its_page(real_review):
+    done, _ = real_review
     assert done.returncode == 0, done.stderr
     assert " 0 of 4" in done.stdout and "sentences and table rows unaccounted for" in done.stdout
 

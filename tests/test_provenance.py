@@ -7,7 +7,7 @@ import re
 
 import pytest
 
-from conftest import MANUAL_DIR, REPO
+from conftest import REPO
 from test_review import line_of, review, spec_copy
 
 SPEC = REPO / "spec"
@@ -46,9 +46,8 @@ def test_the_cp1e_error_flag_cites_omron_s_definition(families):
     assert "error-flag" in fam.doc["coverage"]["every_vector"]     # every CP1E vector lists P_ER
 
 
-def test_review_lists_derived_claims_and_other_documents_apart(tmp_path):
-    out = tmp_path / "out"
-    done = review("--check", "--manual-dir", MANUAL_DIR, "--out", out)
+def test_review_lists_derived_claims_and_other_documents_apart(real_review):
+    done, out = real_review
     assert done.returncode == 0, done.stderr
     md = (out / "review.md").read_text(encoding="utf-8")
     derived = md.split("## Claims the pages do not state", 1)[1].split("\n## ", 1)[0]

@@ -51,12 +51,9 @@ def line_of(path, text):
 
 
 @pytest.fixture(scope="module")
-def report(tmp_path_factory):
+def report(real_review):
     """The review of the real spec, checked against the manual: (process, html, markdown, out folder)."""
-    if not MANUAL_DIR.is_dir():
-        pytest.fail(f"{MANUAL_DIR} is missing: the review tests read the manual beside the repository")
-    out = tmp_path_factory.mktemp("review")
-    done = review("--check", "--manual-dir", MANUAL_DIR, "--out", out)
+    done, out = real_review
     return done, (out / "review.html").read_text(encoding="utf-8"), (out / "review.md").read_text(encoding="utf-8"), out
 
 

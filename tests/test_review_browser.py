@@ -7,12 +7,10 @@ import os
 import shutil
 import struct
 import subprocess
-import sys
 import zlib
 
 import pytest
 
-from conftest import MANUAL_DIR
 from review_dom import disagreeing_cells, parse
 
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
@@ -36,11 +34,9 @@ def chromium(tmp_path, profile, *args):
 
 
 @pytest.fixture(scope="module")
-def page(tmp_path_factory):
+def page(real_review):
     chromium_binary()
-    out = tmp_path_factory.mktemp("review")
-    done = subprocess.run([sys.executable, "-m", "plcvec", "review", "--manual-dir", str(MANUAL_DIR), "--out", str(out)],
-                          capture_output=True, text=True, timeout=120)
+    done, out = real_review
     assert done.returncode == 0, done.stderr
     return out / "review.html"
 

@@ -20,10 +20,9 @@ def _notes(fam):
 
 
 @pytest.fixture(scope="module")
-def written(tmp_path_factory):
+def written(real_review):
     """The review of the real spec against the manual: (process, DOM ids, Markdown)."""
-    out = tmp_path_factory.mktemp("review")
-    done = review("--check", "--manual-dir", MANUAL_DIR, "--out", out)
+    done, out = real_review
     return done, parse((out / "review.html").read_text(encoding="utf-8"))[1], (out / "review.md").read_text(encoding="utf-8")
 
 
