@@ -18,15 +18,17 @@ if ! command -v mvn >/dev/null || ! command -v javac >/dev/null || ! command -v 
 fi
 
 repo="$(pwd)"
-# Every Maven run and every test JVM Surefire forks here is short-lived: the client compiler alone
-# (and, for Maven, the serial collector) starts fastest and uses about half the CPU of the default
-# tiered one (reference-adapter and faults-entry run theirs so too). Surefire reads argLine from
-# Maven's system properties; MAVEN_OPTS is split on spaces, so it holds one option.
-# The javadoc tool, a JVM of its own, likewise.
-export MAVEN_OPTS="${MAVEN_OPTS:-} -XX:TieredStopAtLevel=1 -XX:+UseSerialGC -DargLine=-XX:TieredStopAtLevel=1 \
-    -DadditionalJOption=-J-XX:TieredStopAtLevel=1"
 scratch="$(mktemp -d)"
 trap 'rm -rf "$scratch"' EXIT
+# Every Maven run and every test JVM Surefire forks here is short-lived: the client compiler alone
+# and the serial collector start fastest and use about half the CPU of the default tiered compiler
+# and G1 (reference-adapter and faults-entry run theirs so too). Surefire reads argLine from Maven's
+# system properties; MAVEN_OPTS is split on spaces, so each forked JVM (the tests, the javadoc tool)
+# is given one option, the file that holds them.
+fork_options="$scratch/fork-jvm.options"
+printf '%s\n' -XX:TieredStopAtLevel=1 -XX:+UseSerialGC > "$fork_options"
+export MAVEN_OPTS="${MAVEN_OPTS:-} -XX:TieredStopAtLevel=1 -XX:+UseSerialGC -DargLine=-XX:VMOptionsFile=$fork_options \
+    -DadditionalJOption=-J-XX:VMOptionsFile=$fork_options"
 # A step's output is kept, and shown only when it fails (Debian's Maven prints bare colour resets).
 quiet() {
     local log="$scratch/step.log"
