@@ -139,6 +139,36 @@ test("the files this package ships hold no repeated key (so loading them again m
   assert.equal(lines, SUITE.total + Object.keys(index.families).length);
 });
 
+test("every vector of the files this package ships passes the schema check (so loading them again may skip it)", async () => {
+  const { vectorProblem } = await import("../src/validate.js");
+  const index = JSON.parse(readFileSync(join(PACKAGED_VECTORS, "index.json"), "utf8")) as { families: Record<string, { file: string }> };
+  let vectors = 0;
+  for (const [family, { file }] of Object.entries(index.families)) {
+    for (const line of readFileSync(join(PACKAGED_VECTORS, file), "utf8").trimEnd().split("\n").slice(1)) {
+      vectors++;
+      assert.equal(vectorProblem(JSON.parse(line), family), undefined, `${file}: ${line.slice(0, 80)}`);
+    }
+  }
+  assert.equal(vectors, SUITE.total);
+});
+
+test("an edited file in a copy of the packaged folder is checked in full: refused by line, vector id and JSON path, as any file", () => {
+  const set = copiedSet();
+  const file = join(set, "fx5-time-add.jsonl");
+  const lines = readFileSync(file, "utf8").split("\n");
+  const vector = JSON.parse(lines[2]!) as { id: string; initial: { devices: Record<string, number> } };
+  vector.initial.devices["D100"] = 70000;
+  lines[2] = JSON.stringify(vector);
+  writeFileSync(file, lines.join("\n"));
+  // The content is named before the sha256 the index gives (CONTRACT.md, Loading): its line, not the hash.
+  assert.throws(
+    () => loadSuite(set),
+    (err: unknown) =>
+      err instanceof VerifyError &&
+      err.message === `${file}:3: vector ${vector.id}: initial/devices/D100: 70000 is not a word (an integer 0..65535) nor a bit`,
+  );
+});
+
 test("a repeated key is refused by file, line and vector id, in a vector and in the index", () => {
   const lines = familyLines("fx5-time-add").slice(0, 4);
   const id = (JSON.parse(lines[2]!) as { id: string }).id;
