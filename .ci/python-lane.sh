@@ -48,7 +48,10 @@ python3 -m plcvec review --check --manual-dir ../shared/manual --out build/revie
 # committed vectors touching a decision of decisions.yaml (the whole run, `plcvec mutation`, takes
 # about 25 minutes here; the sample about 90 s).
 step "mutation sample"
-python3 -m plcvec mutation --sample 60 --seed 1
+# Its timeout is 5 CPU seconds, about five times the unmutated engine's CPU time (under a second):
+# the default's floor of 10 s is for a whole run on any machine, and the sample's mutant that never
+# ends would sit it out.
+python3 -m plcvec mutation --sample 60 --seed 1 --timeout 5
 
 # The CI gate as an implementer runs it, on the reference implementation over the stdio protocol.
 # The reference implements every instruction, so it may skip nothing.

@@ -31,7 +31,7 @@ TC_FILE = "fx5-time-compare.yaml"
 def plain_run(builder, instr, operands, devices, steps, scratch, choices):
     """One run of a case with an engine resolved without recording: (expects, final, outcome, unjudged,
     trace), the devices the engine found undefined left out of expects and final."""
-    engine = builder.engine(choices)
+    engine = _plain_engine(builder, choices)
     state, ctx = dict(devices), {"device_sizes": builder.sizes}
     trace, expects, errors = set(), [], []
     for index, step in enumerate(steps):
@@ -39,18 +39,32 @@ def plain_run(builder, instr, operands, devices, steps, scratch, choices):
         before = dict(state)
         result = engine.execute(instr, operands, state, step, ctx, trace)
         expect = {} if result is None else {"result": result}
-        expect["devices"] = {k: state[k] for k in sorted(state) if state[k] != before[k] and k not in scratch}
+        expect["devices"] = {k: state[k] for k in sorted(k for k in state if state[k] != before[k] and k not in scratch)}
         expects.append(expect)
         if "error" in ctx:
             errors.append(dict(step=index, **ctx.pop("error")))
     final = {k: state[k] for k in sorted(state) if k not in scratch}
     trace.discard(None)
-    unjudged = builder.unjudged(ctx["undefined"], choices, operands, devices) if "undefined" in ctx else {}
-    left_out = {d for ds in unjudged.values() for d in ds}
-    expects = [dict(e, devices={k: v for k, v in e["devices"].items() if k not in left_out}) for e in expects]
-    final = {k: v for k, v in final.items() if k not in left_out}
+    if "undefined" in ctx:   # most runs find nothing undefined: nothing to leave out
+        unjudged = builder.unjudged(ctx["undefined"], choices, operands, devices)
+        left_out = {d for ds in unjudged.values() for d in ds}
+        expects = [dict(e, devices={k: v for k, v in e["devices"].items() if k not in left_out}) for e in expects]
+        final = {k: v for k, v in final.items() if k not in left_out}
+    else:
+        unjudged = {}
     outcome = {"category": "error", "errors": errors} if errors else {"category": "value"}
     return expects, final, outcome, unjudged, trace
+
+
+def _plain_engine(builder, choices):
+    """builder.engine(choices), kept per builder under the combination's values in `choices`' order (every
+    case of a family asks for the same few hundred engines, once a case each)."""
+    engines = builder.__dict__.setdefault("_plain_engines", {})
+    key = tuple(choices.values())
+    engine = engines.get(key)
+    if engine is None:
+        engine = engines[key] = builder.engine(choices)
+    return engine
 
 
 def outcome_classes(results):
