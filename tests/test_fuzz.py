@@ -199,6 +199,8 @@ def test_same_seed_same_output(capsys, tmp_path):
     assert runs[0] == runs[1]
 
 
+@pytest.mark.slow   # a second whole fuzz run in a fresh process; beside it by default: the stdio path
+                    # (test_reference_over_stdio_survives) and the same output for the same seed
 def test_stdio_prints_what_in_process_prints(capsys):
     """The same seed through a process gives the same bytes as in process: the fuzzer in a fresh
     process of its own (so nothing depends on what this one has imported), its adapter over stdio."""

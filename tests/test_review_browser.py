@@ -13,6 +13,10 @@ import pytest
 
 from review_dom import disagreeing_cells, parse
 
+# End to end through a browser, so in CI's slow lane (`-m slow`): the default run reads the same page's
+# DOM in test_review.py (the rules, the findings, the disagreeing cells) without starting Chromium.
+pytestmark = pytest.mark.slow
+
 FLAGS = ["--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
          "--disable-background-networking", "--disable-component-update", "--disable-sync"]
 TIMEOUT = 60
