@@ -57,10 +57,10 @@ def plain_run(builder, instr, operands, devices, steps, scratch, choices):
 
 
 def _plain_engine(builder, choices):
-    """builder.engine(choices), kept per builder under the combination's values in `choices`' order (every
-    case of a family asks for the same few hundred engines, once a case each)."""
+    """builder.engine(choices), kept per builder under the combination's (interpretation, alternative)
+    pairs (every case of a family asks for the same few hundred engines, once a case each)."""
     engines = builder.__dict__.setdefault("_plain_engines", {})
-    key = tuple(choices.values())
+    key = tuple(choices.items())
     engine = engines.get(key)
     if engine is None:
         engine = engines[key] = builder.engine(choices)
