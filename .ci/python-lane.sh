@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
-# CI's Python lane (run by .ci/run beside the language lanes, after the README's first commands
-# installed plcvec): lint the CI recipes and the spec, check the API and the exports, the package as
-# a user installs it, the review against the manual, the reference through the gate, the table of
-# faults, the live differential run.
+# CI's Python lane (run by .ci/run beside the other lanes, once it installed this checkout): lint the
+# CI recipes and the spec, check the API and the exports, the package as a user installs it, the
+# review against the manual, the reference through the gate, the table of faults, the live
+# differential run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 started=$SECONDS
