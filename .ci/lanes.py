@@ -1,6 +1,6 @@
 """Run CI's independent lanes side by side, as many at a time as `--jobs` says.
 
-Usage: python3 .ci/lanes.py [--jobs N] [--timeout SECONDS] SCRIPT [SCRIPT ...]
+Usage: python3 .ci/lanes.py [--jobs N] [--fill M] [--timeout SECONDS] SCRIPT [SCRIPT ...]
 
 Each lane is a bash script (`.ci/lang/<lang>.sh`, `.ci/python-lane.sh`) that builds and checks one
 part of the project on its own files. A lane's output goes to `build/lanes/<name>.log` while it
@@ -12,7 +12,10 @@ is measured. Exit status: 0 when every lane passed, 1 otherwise.
 
 Why lanes: this machine has two cores, and a lane spends part of its time waiting (downloads,
 Maven's and npm's start-up, linking), so two lanes at once finish sooner than one after the other.
-The longest lanes are started first (the order given), so the tail is short.
+The longest lanes are started first (the order given), so the tail is short. Lanes still leave
+cores idle now and then (a download, a link, a test sitting out a timeout): with `--fill M`, up to M
+lanes more than `--jobs` are started while the machine has been idle by at least FILL_IDLE_CORES
+over the last FILL_WINDOW_S seconds (read from /proc/stat; elsewhere nothing is filled).
 """
 from __future__ import annotations
 
@@ -26,6 +29,37 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 LOGS = ROOT / "build" / "lanes"
+# An extra lane is started once the cores have been this idle, on average, over this many seconds
+# since the last lane started (one start per window: a lane's own start-up is idle time too).
+FILL_IDLE_CORES = 0.6
+FILL_WINDOW_S = 15.0
+
+
+class IdleMeter:
+    """The machine's idle cores on average since the last reset, from /proc/stat (Linux)."""
+
+    def __init__(self):
+        self.cores = os.cpu_count() or 1
+        self.reset()
+
+    @staticmethod
+    def _read():
+        try:
+            with open("/proc/stat", encoding="ascii") as stat:
+                fields = [int(x) for x in stat.readline().split()[1:]]
+        except (OSError, ValueError):
+            return None
+        return fields[3] + fields[4], sum(fields[:8])   # idle + iowait, all but guest time
+
+    def reset(self):
+        self.since, self.first = time.monotonic(), self._read()
+
+    def idle_cores(self):
+        """(idle cores on average, seconds) since the last reset; (0, 0) where it cannot be read."""
+        now = self._read()
+        if now is None or self.first is None or now[1] == self.first[1]:
+            return 0.0, 0.0
+        return (now[0] - self.first[0]) / (now[1] - self.first[1]) * self.cores, time.monotonic() - self.since
 
 
 class Lane:
@@ -70,9 +104,25 @@ class Lane:
         return True
 
 
+def _may_fill(idle: IdleMeter, running: int, args) -> bool:
+    """Whether one lane more than --jobs may start now: room under --fill, and the cores idle enough
+    over a whole window since the last start."""
+    if running >= args.jobs + args.fill:
+        return False
+    cores, seconds = idle.idle_cores()
+    if seconds < FILL_WINDOW_S:
+        return False
+    if cores < FILL_IDLE_CORES:
+        idle.reset()   # a new window: the idle time of an hour ago says nothing of now
+        return False
+    return True
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--jobs", type=int, default=2, help="lanes at once (default 2)")
+    parser.add_argument("--fill", type=int, default=0,
+                        help="lanes more than --jobs started while cores are idle (default 0)")
     parser.add_argument("--timeout", type=float, default=2400, help="seconds a lane may take (default 2400)")
     parser.add_argument("scripts", nargs="+")
     args = parser.parse_args(argv)
@@ -85,13 +135,16 @@ def main(argv: list[str]) -> int:
     lanes = list(waiting)
     running: list[Lane] = []
     began = time.monotonic()
+    idle = IdleMeter()
     try:
         while waiting or running:
-            while waiting and len(running) < args.jobs:
+            while waiting and (len(running) < args.jobs or _may_fill(idle, len(running), args)):
                 lane = waiting.pop(0)
-                print(f"-- lane {lane.name}: started", flush=True)
+                print(f"-- lane {lane.name}: started{'' if len(running) < args.jobs else ' (cores idle)'}",
+                      flush=True)
                 lane.start()
                 running.append(lane)
+                idle.reset()
             time.sleep(0.5)
             for lane in [lane for lane in running if lane.poll(args.timeout)]:
                 running.remove(lane)
@@ -103,7 +156,8 @@ def main(argv: list[str]) -> int:
         # Ctrl-C or an error here: the lanes run in sessions of their own, so end them by hand.
         for lane in running:
             os.killpg(lane.proc.pid, signal.SIGKILL)
-    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s with {args.jobs} at a time, "
+    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s with {args.jobs} at a time"
+          f"{f' (up to {args.jobs + args.fill} while cores were idle)' if args.fill else ''}, "
           f"{sum(lane.cpu for lane in lanes):.0f} s of CPU")
     for lane in lanes:
         print(f"  {lane.name:<12} {lane.status:<24} {lane.seconds:7.0f} s {lane.cpu:7.0f} s of CPU")
