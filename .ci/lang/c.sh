@@ -28,10 +28,13 @@ if [ ${#need[@]} -gt 0 ]; then
     DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" >/dev/null
 fi
 # Every CMake configure below (the README's blocks as written too) takes the launcher from the
-# environment; paths under the repository are hashed relative to it, and the temporary folders
-# (the ABI check's trees, the table of faults' copies) are made under it.
+# environment. The README's install and the project's build compile the library with the same
+# flags from the same absolute paths (both configured from $out/work): hashed as absolute paths,
+# the project's build finds the install's objects. From the sanitized build on, paths under the
+# repository are hashed relative to it (CCACHE_BASEDIR), and the temporary folders (the ABI
+# check's trees, the table of faults' copies) are made under it.
 export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
-export CCACHE_BASEDIR="$PWD" CCACHE_NOHASHDIR=1
+export CCACHE_NOHASHDIR=1
 export TMPDIR="$PWD/$C/build-tmp"
 mkdir -p "$TMPDIR"
 
@@ -134,6 +137,7 @@ python3 "$C/tests/text_blocks.py" "$C/build" >/dev/null
 echo "c: the project's build, CTest, the house rules and the shared text in $((SECONDS - start)) s"
 
 start=$SECONDS
+export CCACHE_BASEDIR="$PWD"
 cmake -S "$C" -B "$C/build-sanitize" -G Ninja -DCMAKE_BUILD_TYPE=Debug -DPLCVEC_BUILD_TESTS=ON \
     -DPLCVEC_SANITIZE=address,undefined >/dev/null
 cmake --build "$C/build-sanitize" -j 2 >/dev/null
