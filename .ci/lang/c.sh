@@ -33,8 +33,11 @@ fi
 # the project's build finds the install's objects. From the sanitized build on, paths under the
 # repository are hashed relative to it (CCACHE_BASEDIR), and the temporary folders (the ABI
 # check's trees, the table of faults' copies) are made under it.
+# On a fresh machine most compiles are misses: ccache's depend mode takes a miss's includes from
+# the compiler's own -MD file instead of running the preprocessor once more for a hash that the
+# direct mode (where every hit here is found) does not need.
 export CMAKE_C_COMPILER_LAUNCHER=ccache CMAKE_CXX_COMPILER_LAUNCHER=ccache
-export CCACHE_NOHASHDIR=1
+export CCACHE_NOHASHDIR=1 CCACHE_DEPEND=1
 export TMPDIR="$PWD/$C/build-tmp"
 mkdir -p "$TMPDIR"
 
