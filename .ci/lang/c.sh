@@ -7,12 +7,14 @@
 # between modules, no long function), the shared text byte for byte, the same tests under
 # AddressSanitizer and UndefinedBehaviorSanitizer, the ABI against 0.1.0 (abidiff), the reference
 # adapter through `plcvec verify`, and the shared table of faults. Run from the repository root by
-# .ci/run; quiet on success but for one line per part.
+# .ci/run; quiet on success but for one line per part and a line as each step begins, with the
+# second it began at (`-- c: <step> (<s> s)`).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 cd "$(dirname "$0")/../.."
 C=verifiers/c
 started=$SECONDS
+step() { echo "-- c: $* ($((SECONDS - started)) s)"; }
 
 # Debian's packages: CMake and Ninja to build, cJSON for the stdio adapter only, GoogleTest for the
 # C++ example, pkg-config for the README's pkg-config line, abigail-tools for the ABI check, ccache
@@ -65,6 +67,7 @@ cmake() {
     fi
 }
 export -f cmake
+step "README: install"
 (cd "$out/work" && HOME="$out/home" bash -e "$snippets/install/install.sh" >"$out/install.txt" 2>&1) ||
     { cat "$out/install.txt"; echo "c: the README's install fails where cJSON cannot be found"; exit 1; }
 unset -f cmake
@@ -73,6 +76,7 @@ test -f "$prefix/lib/cmake/plcvec/plcvecConfigVersion.cmake" && test -f "$prefix
 cmp "$prefix/share/licenses/plcvec/LICENSE" LICENSE
 
 # The GoogleTest project, found by find_package after the install.
+step "README: the GoogleTest project, pkg-config"
 (cd "$snippets/consumer" && CMAKE_PREFIX_PATH="$prefix" bash -e run.sh >"$out/consumer.txt" 2>&1) ||
     { cat "$out/consumer.txt"; exit 1; }
 tests="$snippets/consumer/build/my_emulator_tests"
@@ -100,10 +104,12 @@ printf 'cmake_minimum_required(VERSION 3.16)\nproject(v NONE)\nfind_package(plcv
 cmake -S "$out/version" -B "$out/version/build" -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 
 # The C program at the level of the contract, run by CTest and by hand.
+step "README: the C program"
 (cd "$snippets/c-program" && CMAKE_PREFIX_PATH="$prefix" bash -e run.sh >"$out/c-program.txt" 2>&1) ||
     { cat "$out/c-program.txt"; exit 1; }
 grep -q "vectors: [1-9][0-9]* pass, 0 fail" "$out/c-program.txt" || { cat "$out/c-program.txt"; exit 1; }
 
+step "README: FetchContent"
 # FetchContent, from a source archive of this folder (what `plcvec release` publishes as
 # plcvec-c-<version>.tar.gz), given to FetchContent as a local source.
 version=$(python3 -c 'import plcvec; print(plcvec.__version__)')
@@ -117,6 +123,7 @@ cmake -S "$snippets/fetchcontent" -B "$snippets/fetchcontent/build" -G Ninja \
 cmake --build "$snippets/fetchcontent/build" -j 2 >/dev/null
 "$snippets/fetchcontent/build/my_emulator_tests" >/dev/null
 
+step "README: export"
 # The export of a vector folder into a copy laid out as the repository: the golden set's gives the
 # library's own tables back.
 mkdir -p "$out/export/verifiers"
@@ -131,15 +138,18 @@ echo "c: the README's blocks (install without cJSON, CMake package, pkg-config, 
 # The project's own build and checks, as the README gives them (its build folder is the one the
 # steps below use).
 start=$SECONDS
+step "README: the project's build, CTest, plcvec verify"
 (cd "$out/work" && bash -e "$snippets/project/build.sh" >"$out/project.txt" 2>&1) || { cat "$out/project.txt"; exit 1; }
 grep -q "100% tests passed" "$out/project.txt" && grep -q "vectors: [1-9][0-9]* pass, 0 fail, 0 skip" "$out/project.txt" ||
     { cat "$out/project.txt"; exit 1; }
+step "the house rules, the shared text"
 python3 "$C/tests/house.py" "$C/build"
 # The run's text of the shared cases, byte for byte the expected text of every runner (verifiers/parity/TEXT.md).
 python3 "$C/tests/text_blocks.py" "$C/build" >/dev/null
 echo "c: the project's build, CTest, the house rules and the shared text in $((SECONDS - start)) s"
 
 start=$SECONDS
+step "sanitized build and CTest"
 export CCACHE_BASEDIR="$PWD"
 # The shared library (the project's build tests the static one): the tables are linked once, into
 # it, not into each of the sanitized programs.
@@ -153,9 +163,11 @@ echo "c: sanitized build and tests in $((SECONDS - start)) s"
 
 # The ABI against 0.1.0, and the check failing on a deliberate rename.
 start=$SECONDS
+step "abicheck --self-test"
 "$C/abicheck" --self-test
 echo "c: abidiff against 0.1.0 (and a rename caught) in $((SECONDS - start)) s"
 
+step "shards, the reference over stdio, the mutants' text"
 # Shards agree with the Python runner's: the same ids in shard 2 of 3.
 diff <("$C/build/examples/tadd_emulator" --list --shard 2/3) \
      <(python3 -c 'import sys; from plcvec_verify.suite import Suite, Selection
@@ -186,9 +198,11 @@ echo "c: shards, the reference under other alternatives, a mutant rejected and t
 # The shared table of faults through plcvec_main and the GoogleTest pattern: every row gives
 # plcvec verify's verdict (verifiers/parity/README.md).
 start=$SECONDS
+step "table of faults"
 python3 verifiers/parity/run.py --lang c >"$out/faults.txt" 2>&1 || { cat "$out/faults.txt"; exit 1; }
 echo "c: $(tail -1 "$out/faults.txt") in $((SECONDS - start)) s"
 
 # Live differential run: fresh cases drawn from the spec through the C reference and the spec engine.
+step "fuzz"
 python3 -m plcvec fuzz --adapter verifiers/c/reference-adapter --examples 500 --seed 3 >/dev/null
 echo "c: done in $((SECONDS - started)) s"
