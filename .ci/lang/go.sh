@@ -10,6 +10,11 @@ source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
 cd "$(dirname "$0")/../.."
 GO_DIR=verifiers/go
 export GOFLAGS="${GOFLAGS:-} -mod=readonly"
+# The collector paced at GOGC=400 (Go's default is 100) for every Go program the lane starts: the
+# compiler, the linters, the tests and the runners' processes each build or load their all and
+# exit, and at 100 a quarter of their CPU went to collecting the garbage. No check reads it: the
+# allocation tests count allocations and bytes allocated, not the heap's size.
+export GOGC="${GOGC:-400}"
 # The linters' versions, pinned; installed into a cache of their own on first use.
 STATICCHECK=honnef.co/go/tools/cmd/staticcheck@v0.8.2
 tools="${XDG_CACHE_HOME:-$HOME/.cache}/plcvec/go-tools"
