@@ -16,8 +16,10 @@ clean="$work/clean"
 (
     cd verifiers/typescript
     # The README's own install command: the lock file records every platform's optional packages.
+    # --prefer-offline: a package already in npm's cache is taken from it without asking the registry
+    # whether it changed (a locked version never does); one not there is still downloaded.
     step "npm ci (the lock file: the same packages on every run)"
-    npm ci --no-audit --no-fund --loglevel=error >/dev/null
+    npm ci --prefer-offline --no-audit --no-fund --loglevel=error >/dev/null
     step "eslint"
     npm run --silent lint
     step "madge: no import circle"
@@ -120,7 +122,8 @@ npm() {
     command npm "${args[@]}"
 }
 export -f npm
-export tarball vitest_version npm_config_audit=false npm_config_fund=false npm_config_loglevel=error
+# The README's `npm install`s as the lane's `npm ci`: from npm's cache where it holds the version.
+export tarball vitest_version npm_config_audit=false npm_config_fund=false npm_config_loglevel=error npm_config_prefer_offline=true
 (
     cd "$outside"
     bash -euo pipefail setup.sh
