@@ -1,0 +1,64 @@
+"""CI's lane runner (.ci/lanes.py): lanes side by side, a lane more while the cores sit idle, every
+lane's status in the exit code, and no lane outliving its bound."""
+import runpy
+import time
+from types import SimpleNamespace
+
+from conftest import REPO
+
+lanes = SimpleNamespace(**runpy.run_path(str(REPO / ".ci" / "lanes.py"), run_name="ci_lanes"))
+
+
+class Meter:
+    """An IdleMeter that reports what the test sets."""
+
+    def __init__(self, cores, seconds):
+        self.cores, self.seconds, self.resets = cores, seconds, 0
+
+    def idle_cores(self):
+        return self.cores, self.seconds
+
+    def reset(self):
+        self.resets += 1
+
+
+def args(jobs, fill):
+    return SimpleNamespace(jobs=jobs, fill=fill)
+
+
+def test_a_lane_more_only_after_a_whole_idle_window():
+    window, idle = lanes.FILL_WINDOW_S, lanes.FILL_IDLE_CORES
+    assert lanes._may_fill(Meter(idle, window), 2, args(2, 1))
+    assert not lanes._may_fill(Meter(idle, window - 1), 2, args(2, 1)), "a window not yet whole"
+    assert not lanes._may_fill(Meter(idle, window), 3, args(2, 1)), "--fill lanes already running"
+    assert not lanes._may_fill(Meter(idle, window), 2, args(2, 0)), "no filling without --fill"
+    busy = Meter(idle - 0.1, window)
+    assert not lanes._may_fill(busy, 2, args(2, 1)) and busy.resets == 1, "a busy window starts a new one"
+
+
+def _script(tmp_path, name, body):
+    path = tmp_path / f"{name}.sh"
+    path.write_text(f"#!/bin/bash\n{body}\n")
+    return str(path)
+
+
+def test_idle_cores_start_a_lane_more_and_every_status_is_reported(tmp_path, monkeypatch, capsys):
+    monkeypatch.setitem(lanes.main.__globals__, "LOGS", tmp_path / "logs")
+    monkeypatch.setitem(lanes.main.__globals__, "FILL_WINDOW_S", 0.5)
+    monkeypatch.setitem(lanes.main.__globals__, "FILL_IDLE_CORES", 0.0)
+    scripts = [_script(tmp_path, "one", "sleep 2"), _script(tmp_path, "two", "sleep 2"),
+               _script(tmp_path, "three", "exit 3")]
+    started = time.monotonic()
+    assert lanes.main(["--jobs", "1", "--fill", "1", *scripts]) == 1   # a failed lane fails the run
+    out = capsys.readouterr().out
+    assert "-- lane two: started (cores idle)" in out
+    assert time.monotonic() - started < 3.8, "the second lane waited for the first instead of filling"
+    assert "three        failed (exit 3)" in out and "one          ok" in out
+
+
+def test_a_lane_past_its_bound_is_killed(tmp_path, monkeypatch, capsys):
+    monkeypatch.setitem(lanes.main.__globals__, "LOGS", tmp_path / "logs")
+    started = time.monotonic()
+    assert lanes.main(["--timeout", "1", _script(tmp_path, "hangs", "sleep 60")]) == 1
+    assert time.monotonic() - started < 10
+    assert "killed after 1 s" in capsys.readouterr().out
