@@ -16,7 +16,10 @@ export CARGO_INCREMENTAL=0 CARGO_PROFILE_DEV_CODEGEN_UNITS=1
 # The release the public API is checked against (the crate's 0.1.0).
 api_baseline=9ebc6da
 started=$SECONDS
-step() { echo "-- rust: $* ($((SECONDS - started)) s)"; }
+# Each step also says the CPU seconds (user+sys) of the lane's finished processes so far:
+# cutime and cstime of /proc/PID/stat, fields 16 and 17 (after the parenthesised name), in ticks.
+cpu() { sed 's/.*) //' "/proc/$$/stat" | awk -v hz="$(getconf CLK_TCK)" '{ printf "%.0f", ($14 + $15) / hz }'; }
+step() { echo "-- rust: $* ($((SECONDS - started)) s, $(cpu) CPU s)"; }
 
 if ! command -v cargo >/dev/null; then
     echo "rust.sh: cargo is not installed (https://rustup.rs: the stable toolchain)" >&2
