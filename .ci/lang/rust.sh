@@ -69,8 +69,10 @@ python3 .ci/readme_snippets.py extract "$crate/README.md" --out "$scratch/readme
 # The README depends on plcvec from crates.io: this checkout's crate stands in for it.
 printf '\n[workspace]\n\n[patch.crates-io]\nplcvec = { path = "%s" }\n' "$PWD/$crate" >> "$scratch/readme/emulator/Cargo.toml"
 # Its target dir is the crate's, where the dry run below builds the packaged crate in the same
-# profile: the dependency versions both resolve alike are built once. Neither build is run under a
-# debugger, so neither writes debug info (a fifth of their time).
+# profile. Few dependencies are shared: the README's build resolves the newest versions (no lock
+# file, as a user's first build), the dry run the committed lock's, and a crate is built again when
+# anything below it differs; each build is a check of its own. Neither is run under a debugger, so
+# neither writes debug info (a fifth of their time).
 undebugged=(env CARGO_PROFILE_DEV_DEBUG=0 CARGO_TARGET_DIR="$PWD/$crate/target")
 (cd "$scratch/readme/emulator" && "${undebugged[@]}" bash -euo pipefail run.sh >/dev/null)
 
