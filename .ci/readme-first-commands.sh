@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# CI's lane for the README's two first commands (set up, generate and check the vectors; the test
+# CI's run of the README's two first commands (set up, generate and check the vectors; the test
 # command), as written there, in a copy of this checkout whose path holds a hyphen, a space and a
 # non-ASCII letter (a path like a user's), with ../shared beside it as here.
 #
 # They run in a virtual environment of their own, as many users run them: made with
 # --system-site-packages, so the README's `pip install -e` finds the machine's packages installed and
-# points that environment's plcvec at the copy, while the other lanes, running beside this one, keep
-# this checkout's. Run from the repository root by .ci/run (through .ci/lanes.py).
+# points that environment's plcvec at the copy, while the machine's stays at this checkout for the
+# lanes after it. Run from the repository root by .ci/run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 started=$SECONDS
@@ -25,4 +25,4 @@ source "$scratch/venv/bin/activate"
 # The environment's plcvec was the copy's (a test that imported this checkout's would pass here for
 # the wrong tree).
 python3 -c 'import plcvec, sys; sys.exit(0 if "plcvec ci-é" in plcvec.__file__ else "plcvec came from " + plcvec.__file__)'
-echo "readme: the README's first commands in $((SECONDS - started)) s"
+echo "readme-first-commands: the README's first commands in $((SECONDS - started)) s"
