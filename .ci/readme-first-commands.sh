@@ -3,10 +3,10 @@
 # command), as written there, in a copy of this checkout whose path holds a hyphen, a space and a
 # non-ASCII letter (a path like a user's), with ../shared beside it as here.
 #
-# They run in a virtual environment of their own, as many users run them: made with
-# --system-site-packages, so the README's `pip install -e` finds the machine's packages installed and
-# points that environment's plcvec at the copy, while the machine's stays at this checkout for the
-# lanes after it. Run from the repository root by .ci/run.
+# They run in a fresh virtual environment of their own, with nothing installed in it, as a new user
+# starts: the README's `pip install -e` must bring everything the test command needs (pytest and its
+# plugins too), and points that environment's plcvec at the copy, while CI's stays at this checkout
+# for the lanes after it. Run from the repository root by .ci/run.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 started=$SECONDS
@@ -18,7 +18,7 @@ awkward="$scratch/plcvec ci-é"
 mkdir -p "$awkward"
 git clone --quiet "$PWD" "$awkward/plcvec"
 ln -s "$(cd .. && pwd)/shared" "$awkward/shared"
-python3 -m venv --system-site-packages "$scratch/venv"
+python3 -m venv "$scratch/venv"
 # shellcheck disable=SC1091
 source "$scratch/venv/bin/activate"
 (cd "$awkward/plcvec" && bash -euxo pipefail "$first_commands")
