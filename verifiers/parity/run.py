@@ -25,6 +25,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import tarfile
 import tempfile
 import time
 import tomllib
@@ -336,7 +337,10 @@ class Folders:
             if proc.returncode != 0:
                 raise TableError(f"plcvec release failed: {proc.stderr.strip()}")
             archive = next(out.glob("plcvec-vectors-*.tar.gz"))
-            shutil.unpack_archive(archive, out / "unpacked", filter="data")
+            # The "data" filter where the interpreter has it (3.10.12, 3.11.4 and later): on an older
+            # patch release the argument is unknown, and the archive is the one this run just wrote.
+            safe = {"filter": "data"} if hasattr(tarfile, "data_filter") else {}
+            shutil.unpack_archive(archive, out / "unpacked", **safe)
             self.bundle = next((out / "unpacked").iterdir())
         return self.bundle / ("vectors" if form == "json" else "jsonl")
 
