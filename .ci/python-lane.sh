@@ -4,13 +4,13 @@
 # review against the manual, the reference through the gate, the table of faults, the live
 # differential run.
 set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/steps.sh"
 cd "$(dirname "$0")/.."
-started=$SECONDS
 # Bytecode written and reused (the checkout's __pycache__ is ignored by git and by the sdist): with
 # PYTHONDONTWRITEBYTECODE in the environment, every process of the lane (a row of the table of
 # faults, a mutant) would compile the package's modules again.
 unset PYTHONDONTWRITEBYTECODE
-step() { echo "-- python: $* ($((SECONDS - started)) s)"; }
+steps_begin python
 
 # The CI recipes as yamllint's users lint them (its default rules, warnings as errors).
 step "yamllint"

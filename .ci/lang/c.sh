@@ -8,13 +8,13 @@
 # AddressSanitizer and UndefinedBehaviorSanitizer, the ABI against 0.1.0 (abidiff), the reference
 # adapter through `plcvec verify`, and the shared table of faults. Run from the repository root by
 # .ci/run; quiet on success but for one line per part and a line as each step begins, with the
-# second it began at (`-- c: <step> (<s> s)`).
+# second it began at and the CPU seconds so far (`-- c: <step> (<s> s, <cpu> CPU s)`, .ci/steps.sh).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../steps.sh"
 cd "$(dirname "$0")/../.."
 C=verifiers/c
-started=$SECONDS
-step() { echo "-- c: $* ($((SECONDS - started)) s)"; }
+steps_begin c
 
 # Debian's packages: CMake and Ninja to build, cJSON for the stdio adapter only, GoogleTest for the
 # C++ example, pkg-config for the README's pkg-config line, abigail-tools for the ABI check, ccache
@@ -205,4 +205,4 @@ echo "c: $(tail -1 "$out/faults.txt") in $((SECONDS - start)) s"
 # Live differential run: fresh cases drawn from the spec through the C reference and the spec engine.
 step "fuzz"
 python3 -m plcvec fuzz --adapter verifiers/c/reference-adapter --examples 500 --seed 3 >/dev/null
-echo "c: done in $((SECONDS - started)) s"
+step "done"

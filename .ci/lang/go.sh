@@ -7,6 +7,7 @@
 # that fails prints its output.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../steps.sh"
 cd "$(dirname "$0")/../.."
 GO_DIR=verifiers/go
 export GOFLAGS="${GOFLAGS:-} -mod=readonly"
@@ -18,14 +19,7 @@ export GOGC="${GOGC:-400}"
 # The linters' versions, pinned; installed into a cache of their own on first use.
 STATICCHECK=honnef.co/go/tools/cmd/staticcheck@v0.8.2
 tools="${XDG_CACHE_HOME:-$HOME/.cache}/plcvec/go-tools"
-start=$SECONDS
-# step names a step, with the seconds since the start and the CPU seconds (user+sys) of every
-# process the lane has waited for by then (bash's `times`, in this shell: a subshell counts its own).
-cpu_file=$(mktemp)
-step() {
-    times >"$cpu_file"
-    echo "-- go: $* ($((SECONDS - start)) s, $(awk -F'[ms]' 'NR == 2 { printf "%.1f", 60 * ($1 + $3) + $2 + $4 }' "$cpu_file") CPU s)"
-}
+steps_begin go
 
 # quiet runs a step and shows its output only when it fails.
 quiet() {
@@ -146,5 +140,4 @@ step "plcvec verify"
 quiet python3 -m plcvec verify --adapter verifiers/go/reference-adapter -q
 quiet gate_rejects go "verifiers/go/reference-adapter --mutant cp1e-and-as-or" --family cp1e-time-compare
 step "done"
-rm -f "$cpu_file"
-echo "go: formatted, vetted, staticchecked, API-checked, tested and verified in $((SECONDS - start)) s"
+echo "go: formatted, vetted, staticchecked, API-checked, tested and verified in $((SECONDS - steps_started)) s"

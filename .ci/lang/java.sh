@@ -11,6 +11,7 @@
 # runs; and the gate rejects a mutant.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../steps.sh"
 
 if ! command -v mvn >/dev/null || ! command -v javac >/dev/null || ! command -v gpg >/dev/null; then
     apt-get update -qq
@@ -41,8 +42,7 @@ quiet() {
         exit 1
     fi
 }
-started=$SECONDS
-step() { echo "-- java: $* ($((SECONDS - started)) s)"; }
+steps_begin java
 
 # The README's blocks, each marked; its install block is run as a newcomer runs it, from an empty
 # folder beside a checkout called plcvec (Maven's dependencies and pinned plugins come from Maven

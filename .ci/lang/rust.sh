@@ -5,6 +5,7 @@
 # Run from the repository root by .ci/run, after the Python package is installed.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../steps.sh"
 cd "$(dirname "$0")/../.."
 crate=verifiers/rust
 export CARGO_BUILD_JOBS=2 CARGO_TERM_COLOR=never
@@ -15,11 +16,7 @@ export CARGO_BUILD_JOBS=2 CARGO_TERM_COLOR=never
 export CARGO_INCREMENTAL=0 CARGO_PROFILE_DEV_CODEGEN_UNITS=1
 # The release the public API is checked against (the crate's 0.1.0).
 api_baseline=9ebc6da
-started=$SECONDS
-# Each step also says the CPU seconds (user+sys) of the lane's finished processes so far:
-# cutime and cstime of /proc/PID/stat, fields 16 and 17 (after the parenthesised name), in ticks.
-cpu() { sed 's/.*) //' "/proc/$$/stat" | awk -v hz="$(getconf CLK_TCK)" '{ printf "%.0f", ($14 + $15) / hz }'; }
-step() { echo "-- rust: $* ($((SECONDS - started)) s, $(cpu) CPU s)"; }
+steps_begin rust
 
 if ! command -v cargo >/dev/null; then
     echo "rust.sh: cargo is not installed (https://rustup.rs: the stable toolchain)" >&2

@@ -5,10 +5,10 @@
 # the reference adapter through `plcvec verify`; and the shared table of faults.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/../gate-rejects.sh"
+source "$(dirname "${BASH_SOURCE[0]}")/../steps.sh"
 cd "$(dirname "$0")/../.."
 root=$PWD
-started=$SECONDS
-step() { echo "-- typescript: $* ($((SECONDS - started)) s)"; }
+steps_begin typescript
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # The clean copy of the package's tracked files, which `npm pack` builds and packs.
