@@ -38,11 +38,12 @@ def register(sub, spec_parent):
 
 def run(args):
     from plcvec.output.atomic import write_atomic
-    from plcvec.output.golden import collector_paused, family_cost, vectors_and_cells
+    from plcvec.output.golden import family_cost, vectors_and_cells
     from plcvec.output.workers import map_families
     from plcvec.review.model import build_model, run_audit
     from plcvec.review.quotes import check_quotes, read_manual
     from plcvec.review.render import render
+    from plcvec_verify.collector import collector_paused
     from plcvec.spec.loader import load_spec
 
     if args.no_write and not args.check:

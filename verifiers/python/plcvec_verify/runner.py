@@ -14,6 +14,7 @@ from operator import itemgetter
 
 from .adapters import AdapterAbort
 from .choices import defaults_of, followed_alternatives, resolve_choices
+from .collector import collector_paused
 from .compare import Problem, judge, passes_at_once
 from .gate import NOTHING_TESTED, Gate
 from .known import KnownFailures
@@ -90,13 +91,14 @@ class Plan:
         defaults = defaults_of(suite)
         self.vectors = vectors
         made = suite.expectations
-        self.requests = {v["id"]: made.request(v) for v in vectors}
-        self.expected = {v["id"]: made.expected(v, choices, defaults) for v in vectors}
-        # Per vector, the result it gets when an answer passes, and its expectation, made once here:
-        # a passing result holds nothing of the answer, and making it again for every vector of every
-        # run was a good part of a run's time. Each answer is still judged in full (_judge_answers).
-        self.judging = {vid: (VectorResult(vid, exp.family, exp.instruction, PASS, choices=exp.choices), exp)
-                        for vid, exp in self.expected.items()}
+        with collector_paused():   # kept for the whole run: the collector would only walk them again
+            self.requests = {v["id"]: made.request(v) for v in vectors}
+            self.expected = {v["id"]: made.expected(v, choices, defaults) for v in vectors}
+            # Per vector, the result it gets when an answer passes, and its expectation, made once here:
+            # a passing result holds nothing of the answer, and making it again for every vector of every
+            # run was a good part of a run's time. Each answer is still judged in full (_judge_answers).
+            self.judging = {vid: (VectorResult(vid, exp.family, exp.instruction, PASS, choices=exp.choices), exp)
+                            for vid, exp in self.expected.items()}
         self.wire: dict[str, bytes] = {}   # encoded requests, filled by a process adapter
         # For a run of exactly `vectors` (the same list): the requests in order, the families and
         # instructions, worked out once rather than by a pass over the vectors in every run.

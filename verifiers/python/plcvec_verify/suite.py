@@ -12,6 +12,7 @@ import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from .collector import collector_paused
 from .errors import VerifyError
 from .expect import Expectations
 from .files import has_repeated_key, not_regular, read_bytes, repeated_key_message
@@ -79,34 +80,36 @@ class Suite:
             raise VerifyError(f"{path}: no such vector folder or file")
         schema = schema_for(path)
         headers, vectors, spec_hashes, schema_versions = {}, [], set(), set()
-        for file, sha256, count in entries:
-            raw = _read_bytes(file)
-            data = _parse_jsonl(file, raw) if file.suffix == ".jsonl" else _parse_json(file, raw)
-            if sha256 is not None and hashlib.sha256(raw).hexdigest() != sha256:
-                raise VerifyError(f"{file}: its sha256 is not the one {index_path.name} records "
-                                  f"({sha256[:12]}…): the file was changed or cut after it was written")
-            if not isinstance(data, dict) or not isinstance(data.get("vectors"), list) or "family" not in data:
-                raise VerifyError(f"{file}: not a plcvec vector file (no `family` and `vectors`)")
-            if isinstance(count, int) and count != len(data["vectors"]):
-                raise VerifyError(f"{file}: {len(data['vectors'])} vectors, but {index_path.name} records {count}: "
-                                  "the file was cut or changed after it was written")
-            version = str(data.get("schema_version", ""))
-            major = version.split(".")[0]
-            if major != str(SCHEMA_MAJOR):
-                raise VerifyError(f"{file}: schema_version {version or '(none)'} is not {SCHEMA_MAJOR}.x; "
-                                  f"this verifier reads {SCHEMA_MAJOR}.x files only (see CONTRACT.md, Versioning)")
-            schema_versions.add(version)
-            spec_hashes.add(data.get("spec_sha256", ""))
-            headers[data["family"]] = {k: v for k, v in data.items() if k != "vectors"}
-            for index_no, v in enumerate(data["vectors"]):
-                problem = shape_problem(v, data["family"])
-                if problem:
-                    name = v.get("id") if isinstance(v, dict) and isinstance(v.get("id"), str) else f"#{index_no}"
-                    raise VerifyError(f"{file}: vector {name}: {problem} (is the file a plcvec vector file, unedited?)")
-            # Then every value against the schema: a word of 70000 is named where it is, not
-            # discovered later as an expectation that "does not add up".
-            validate_file(file, raw, data, schema)
-            vectors.extend(data["vectors"])
+        with collector_paused():   # every vector is kept: the collector would only walk them again
+            for file, sha256, count in entries:
+                raw = _read_bytes(file)
+                data = _parse_jsonl(file, raw) if file.suffix == ".jsonl" else _parse_json(file, raw)
+                if sha256 is not None and hashlib.sha256(raw).hexdigest() != sha256:
+                    raise VerifyError(f"{file}: its sha256 is not the one {index_path.name} records "
+                                      f"({sha256[:12]}…): the file was changed or cut after it was written")
+                if not isinstance(data, dict) or not isinstance(data.get("vectors"), list) or "family" not in data:
+                    raise VerifyError(f"{file}: not a plcvec vector file (no `family` and `vectors`)")
+                if isinstance(count, int) and count != len(data["vectors"]):
+                    raise VerifyError(f"{file}: {len(data['vectors'])} vectors, but {index_path.name} records {count}: "
+                                      "the file was cut or changed after it was written")
+                version = str(data.get("schema_version", ""))
+                major = version.split(".")[0]
+                if major != str(SCHEMA_MAJOR):
+                    raise VerifyError(f"{file}: schema_version {version or '(none)'} is not {SCHEMA_MAJOR}.x; "
+                                      f"this verifier reads {SCHEMA_MAJOR}.x files only (see CONTRACT.md, Versioning)")
+                schema_versions.add(version)
+                spec_hashes.add(data.get("spec_sha256", ""))
+                headers[data["family"]] = {k: v for k, v in data.items() if k != "vectors"}
+                for index_no, v in enumerate(data["vectors"]):
+                    problem = shape_problem(v, data["family"])
+                    if problem:
+                        named = isinstance(v, dict) and isinstance(v.get("id"), str)
+                        name = v["id"] if named else f"#{index_no}"
+                        raise VerifyError(f"{file}: vector {name}: {problem} (is the file a plcvec vector file, unedited?)")
+                # Then every value against the schema: a word of 70000 is named where it is, not
+                # discovered later as an expectation that "does not add up".
+                validate_file(file, raw, data, schema)
+                vectors.extend(data["vectors"])
         seen = set()
         for v in vectors:
             if v["id"] in seen:
