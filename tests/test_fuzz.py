@@ -150,8 +150,11 @@ def test_a_crash_is_a_disagreement(capsys):
     assert '"S1": {"constant": 0}' in out   # the smallest constant
 
 
+@pytest.mark.slow   # a process restart per case that kills it; by default: the crash in process, above
 def test_a_dying_process_is_a_disagreement(capsys):
-    """Each case that kills the adapter process costs a restart, during the search and the shrinking."""
+    """Each case that kills the adapter process costs a restart, during the search and the shrinking.
+    The default run takes the same disagreement and shrinking in process (test_a_crash_is_a_disagreement)
+    and an adapter's death before it answers under `plcvec verify` (test_verify_faults.py)."""
     code, out, err = fuzz(capsys, "--adapter", planted_cmd("exit-on-constant-preset"), "--family", "fc6a-hour-meter",
                           "--examples", 500)
     assert code == 1, out + err
