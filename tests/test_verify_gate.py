@@ -275,8 +275,8 @@ def test_a_file_is_validated_once_per_content(tmp_path, monkeypatch):
     monkeypatch.setenv("PLCVEC_CACHE_DIR", str(tmp_path / "cache"))
     monkeypatch.setattr(validate, "_VALID", set())
     validations = []
-    real = validate._validator
-    monkeypatch.setattr(validate, "_validator", lambda text: validations.append(1) or real(text))
+    real = validate._against_schema
+    monkeypatch.setattr(validate, "_against_schema", lambda *args: validations.append(1) or real(*args))
     # A family file cut to its first vectors: what is remembered is the same, validating it is quicker.
     data = json.loads((REPO / "vectors" / "fx5-time-add.json").read_text(encoding="utf-8"))
     data["vectors"] = data["vectors"][:25]

@@ -6,8 +6,10 @@ with a misleading message. The schema is `schema/vector-file.schema.json` beside
 files (a vector folder's own, or the folder a lone family file sits in); a file with none beside
 it is checked against the default vector set's schema.
 
-Validating the golden set with jsonschema takes some seconds, many times what loading it takes,
-so a file found valid is remembered by the sha256 of its bytes and of the schema: in this process,
+Validating the golden set with jsonschema takes some seconds, many times what loading it takes. A
+quick check made from the schema itself (quick_schema.py) says "valid" for a sound file in a
+fraction of that, and jsonschema judges, and words, every file it does not show valid. And a file
+found valid is remembered by the sha256 of its bytes and of the schema: in this process,
 and across processes as an empty marker file in a cache folder ($PLCVEC_CACHE_DIR, else
 $XDG_CACHE_HOME/plcvec or ~/.cache/plcvec). A changed byte is a new hash and is validated again;
 a file that fails is never remembered. Without a writable cache folder every run validates.
@@ -21,6 +23,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from .errors import VerifyError
+from .quick_schema import compile_schema
 
 SCHEMA_FILE = "vector-file.schema.json"
 SHOW_ERRORS = 5          # schema errors named per file; the rest are counted
@@ -68,6 +71,36 @@ def validate_file(file: Path, raw: bytes, data: dict, schema_path: Path) -> None
         _VALID.add(key)
         return
     _refuse_repeated_keys(file, raw, data)
+    _against_schema(file, data, schema_path, schema_text)
+    for v in data.get("vectors", ()):
+        problem = vector_problem(v)
+        if problem:
+            raise VerifyError(f"{file}: vector {v.get('id')}: {problem}")
+    _VALID.add(key)
+    _remember(key)
+
+
+def _against_schema(file: Path, data: dict, schema_path: Path, schema_text: str) -> None:
+    """`data` checked against the schema: the quick check's yes, else jsonschema's judgement."""
+    quick = _quick_check(schema_text)
+    if quick is None or not quick(data):
+        # Not shown valid by the quick check: jsonschema judges, and words what is wrong.
+        _schema_errors(file, data, schema_path, schema_text)
+
+
+@lru_cache(maxsize=None)
+def _quick_check(schema_text: str):
+    """The schema's quick check (quick_schema.py), or None where it has none: also for a schema that
+    jsonschema finds unusable, which _schema_errors then refuses with jsonschema's reason."""
+    try:
+        _validator(schema_text)
+    except Exception:
+        return None
+    return compile_schema(json.loads(schema_text))
+
+
+def _schema_errors(file: Path, data: dict, schema_path: Path, schema_text: str) -> None:
+    """jsonschema's judgement of `data`: a VerifyError naming each way it breaks the schema."""
     try:
         validator = _validator(schema_text)
     except Exception as exc:   # a broken schema file is the set's fault, not the vector's
@@ -77,12 +110,6 @@ def validate_file(file: Path, raw: bytes, data: dict, schema_path: Path) -> None
         lines = [_describe(e, data) for e in errors[:SHOW_ERRORS]]
         more = f"\n  ... and {len(errors) - SHOW_ERRORS} more" if len(errors) > SHOW_ERRORS else ""
         raise VerifyError(f"{file}: does not match {schema_path.name}:\n  " + "\n  ".join(lines) + more)
-    for v in data.get("vectors", ()):
-        problem = vector_problem(v)
-        if problem:
-            raise VerifyError(f"{file}: vector {v.get('id')}: {problem}")
-    _VALID.add(key)
-    _remember(key)
 
 
 def _kind(value) -> str:

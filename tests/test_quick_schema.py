@@ -1,0 +1,137 @@
+"""The quick check of a vector file against its schema (plcvec_verify/quick_schema.py) says "valid"
+only where jsonschema does: never looser, on the committed files and on many damaged copies of their
+vectors; a schema it cannot read in full is left to jsonschema."""
+import copy
+import json
+import random
+
+import jsonschema
+import pytest
+
+from plcvec_verify.quick_schema import compile_schema, json_equal
+
+from conftest import REPO
+
+SCHEMA = json.loads((REPO / "vectors" / "schema" / "vector-file.schema.json").read_text(encoding="utf-8"))
+FILES = sorted((REPO / "vectors").glob("*.json"))
+FAMILY_FILES = [p for p in FILES if p.name != "manifest.json"]
+
+
+@pytest.fixture(scope="module")
+def quick():
+    check = compile_schema(SCHEMA)
+    assert check is not None, "the vector-file schema uses a keyword the quick check does not know"
+    return check
+
+
+@pytest.fixture(scope="module")
+def judge():
+    return jsonschema.validators.validator_for(SCHEMA)(SCHEMA)
+
+
+@pytest.mark.parametrize("path", FAMILY_FILES, ids=lambda p: p.stem)
+def test_every_committed_file_is_shown_valid(path, quick):
+    assert quick(json.loads(path.read_text(encoding="utf-8")))
+
+
+# Values a damaged file may hold where another was: each JSON type, the edges of a word, a float
+# JSON Schema calls an integer (1.0), a bool where an integer goes.
+ODD_VALUES = [None, True, False, 0, 1, -1, 65535, 65536, 1.0, 0.5, "", "D100", "x", [], [1], {}, {"a": 1},
+              {"device": "D100"}, {"constant": 5}, {"device": "D-1"}, "value", "error", 2 ** 70]
+
+
+def _places(node, path=()):
+    """Every (container, key) in a JSON tree."""
+    if isinstance(node, dict):
+        for k, v in node.items():
+            yield node, k
+            yield from _places(v, path + (k,))
+    elif isinstance(node, list):
+        for i, v in enumerate(node):
+            yield node, i
+            yield from _places(v, path + (i,))
+
+
+def _damaged(doc, rng):
+    """A copy of `doc` with one thing changed: a value replaced, a key removed or added, an item doubled."""
+    doc = copy.deepcopy(doc)
+    container, key = rng.choice(list(_places(doc)))
+    how = rng.randrange(4)
+    if how == 0 or (how == 1 and isinstance(container, list)):
+        container[key] = copy.deepcopy(rng.choice(ODD_VALUES))
+    elif how == 1:
+        del container[key]
+    elif how == 2 and isinstance(container, dict):
+        container[rng.choice(["surprise", "D7", "constant", "device", "skip", "$ref"])] = rng.choice(ODD_VALUES)
+    else:
+        target = container[key]
+        if isinstance(target, list) and target:
+            target.append(copy.deepcopy(target[0]))
+        else:
+            container[key] = [target]
+    return doc
+
+
+def _one_vector_files(count, rng):
+    """`count` files of one vector each, drawn from every family's committed file."""
+    families = [json.loads(p.read_text(encoding="utf-8")) for p in FAMILY_FILES]
+    for _ in range(count):
+        data = rng.choice(families)
+        yield {**{k: v for k, v in data.items() if k != "vectors"}, "vectors": [rng.choice(data["vectors"])]}
+
+
+@pytest.mark.parametrize("count", [400, pytest.param(6000, marks=pytest.mark.slow)])
+def test_never_looser_than_jsonschema_on_damaged_vectors(count, quick, judge):
+    rng = random.Random(count)
+    shown_valid = refused = 0
+    for doc in _one_vector_files(count, rng):
+        damaged = _damaged(doc, rng)
+        if quick(damaged):
+            shown_valid += 1
+            errors = [e.message for e in judge.iter_errors(damaged)]
+            assert not errors, (errors, json.dumps(damaged)[:2000])
+        else:
+            refused += 1
+    # Neither side empty: damage the schema allows (a word changed within range) and damage it refuses.
+    assert shown_valid > count // 10 and refused > count // 10, (shown_valid, refused)
+
+
+@pytest.mark.parametrize("a, b, equal", [
+    (True, 1, False), (False, 0, False), (1, 1.0, True), ([1, True], [1, True], True), ([1], [True], False),
+    ({"a": 1}, {"a": 1.0}, True), ({"a": 1}, {"b": 1}, False), ("1", 1, False), (None, False, False),
+])
+def test_equality_is_json_schemas(a, b, equal):
+    assert json_equal(a, b) is equal
+
+
+@pytest.mark.parametrize("schema, instance, valid", [
+    ({"type": "integer"}, True, False),                 # a bool is no integer in JSON
+    ({"type": "integer"}, 1.0, False),                  # stricter than JSON Schema: jsonschema decides
+    ({"const": 1}, True, False),
+    ({"enum": [0, "x"]}, False, False),
+    ({"uniqueItems": True}, [1, True], True),
+    ({"uniqueItems": True}, [1, 1.0], False),
+    ({"oneOf": [{"type": "integer"}, {"minimum": 0}]}, 5, False),   # two branches hold: not one of
+    ({"oneOf": [{"type": "integer"}, {"type": "boolean"}]}, True, True),
+    ({"if": {"properties": {"k": {"const": "error"}}}, "then": {"required": ["errors"]}}, {"k": "error"}, False),
+    ({"if": {"properties": {"k": {"const": "error"}}}, "then": {"required": ["errors"]}}, {"k": "value"}, True),
+    ({"properties": {"a": {"type": "string"}}, "additionalProperties": False}, {"a": "x", "b": 1}, False),
+    ({"propertyNames": {"pattern": "^[A-Z]+[0-9]+$"}}, {"D1": 0, "d-1": 0}, False),
+    ({"pattern": "^D[0-9]+$"}, "D12", True),
+    ({"minimum": 0}, "not a number", True),             # a keyword applies to its own type only
+    ({"$ref": "#/$defs/w", "$defs": {"w": {"maximum": 65535}}}, 65536, False),
+])
+def test_each_keyword_as_json_schema_means_it(schema, instance, valid):
+    check = compile_schema(schema)
+    assert check is not None and check(instance) is valid
+    if valid:
+        assert jsonschema.Draft202012Validator(schema).is_valid(instance)
+
+
+@pytest.mark.parametrize("schema", [
+    {"format": "date"}, {"anyOf": [{"type": "string"}]}, {"$ref": "other.json#/x"}, {"$ref": "#/$defs/missing"},
+    {"if": {"type": "string"}, "else": {"minimum": 0}}, {"items": [{"type": "string"}]}, {"type": "strnig"},
+    {"patternProperties": {"^x": {}}, "additionalProperties": False},
+])
+def test_a_schema_it_cannot_read_in_full_is_left_to_jsonschema(schema):
+    assert compile_schema(schema) is None
