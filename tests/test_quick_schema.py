@@ -8,6 +8,7 @@ import random
 import jsonschema
 import pytest
 
+from plcvec_verify.protocol import PROTOCOL_VERSION, message_errors, quick_check, schema_errors
 from plcvec_verify.quick_schema import compile_schema, json_equal
 
 from conftest import REPO
@@ -135,3 +136,46 @@ def test_each_keyword_as_json_schema_means_it(schema, instance, valid):
 ])
 def test_a_schema_it_cannot_read_in_full_is_left_to_jsonschema(schema):
     assert compile_schema(schema) is None
+
+
+# -- the protocol's messages (plcvec_verify/protocol.py: message_errors) ------------------------------
+
+def _real_messages():
+    """The reference's handshake answer, as serve.py sends it, and results of vectors of each family."""
+    from plcvec_reference.adapter import ReferenceAdapter
+    from plcvec_verify import Suite
+    from plcvec_verify.protocol import hello_request
+    from plcvec_verify.vector import request_of
+
+    suite = Suite.load(REPO / "vectors")
+    adapter = ReferenceAdapter()
+    hello = {"type": "hello", "protocol": PROTOCOL_VERSION,
+             **adapter.hello(hello_request(suite, sorted(suite.headers))),
+             "cpu_writes": ["SM8020"]}
+    firsts = {v["family"]: v for v in reversed(suite.vectors)}
+    results = []
+    for v in firsts.values():
+        answer = adapter.run(request_of(v))
+        results.append({"type": "result", "id": v["id"], **answer})
+    return hello, results
+
+
+@pytest.mark.parametrize("name", ["hello-response", "result", "bye", "fatal"])
+def test_the_messages_of_every_run_have_a_quick_check(name):
+    assert quick_check(name) is not None
+
+
+def test_the_quick_check_of_a_message_is_never_looser_than_jsonschema():
+    hello, results = _real_messages()
+    assert message_errors("hello-response", hello) == [] == schema_errors("hello-response", hello)
+    assert len(results) == 5 and all(quick_check("result")(r) and not schema_errors("result", r) for r in results)
+    rng = random.Random(5)
+    shown_valid = 0
+    for name, message in [("hello-response", hello)] * 150 + [("result", r) for r in results] * 50:
+        damaged = _damaged(message, rng)
+        if quick_check(name)(damaged):
+            shown_valid += 1
+            assert schema_errors(name, damaged) == [], (name, damaged)
+        else:
+            assert message_errors(name, damaged) == schema_errors(name, damaged)
+    assert shown_valid > 40, shown_valid

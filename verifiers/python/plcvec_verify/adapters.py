@@ -18,7 +18,7 @@ from typing import NamedTuple
 
 from .errors import VerifyError
 from .implementation import Implementation
-from .protocol import PROTOCOL_VERSION, schema_errors
+from .protocol import PROTOCOL_VERSION, message_errors
 
 
 class Answer(NamedTuple):
@@ -62,7 +62,7 @@ def check_hello(answer, source: str) -> dict:
         text = None
     if text is not None and text in _VALID_HELLOS:
         return answer
-    errors = schema_errors("hello-response", answer)
+    errors = message_errors("hello-response", answer)
     if errors:
         if isinstance(answer, dict) and answer.get("type") == "fatal":
             raise AdapterAbort(f"{source} refused the handshake: {answer.get('message')}")
