@@ -4,13 +4,14 @@ jsonschema walks a vector file at about 2 ms a vector, 6 to 7 seconds for the go
 whole of a first `plcvec verify` on a machine whose cache of valid files is empty (a CI container),
 against under a second with it. The vector-file schema uses a small set of keywords, and
 `compile_schema` turns a schema made only of those into one Python function per schema node, which
-says True only when the document is valid under JSON Schema's rules for those keywords.
+gives jsonschema's answer to "valid?" for those keywords, and nothing else: not the errors.
 
-jsonschema stays the judge (validate.py): a True here skips it; False says only "not shown valid",
-and jsonschema then finds the errors and words them. So this check may be stricter than the schema
-(a float that JSON Schema counts as an integer, 1.0, is refused here) but never looser. A schema
-with any keyword this module does not know, or a `$ref` it cannot follow, compiles to None: every
-file is then judged by jsonschema alone.
+jsonschema stays the judge (validate.py): a True here skips it, and on a False jsonschema finds the
+errors and words them. Each keyword is checked exactly as jsonschema checks it (1.0 is an integer,
+true is not 1, a NaN passes a minimum), never merely "at least as strictly": under `not`, `oneOf`
+or `if`, a stricter answer would turn into a looser one. A schema with any keyword this module does
+not know, or a `$ref` it cannot follow, compiles to None: every document is then judged by
+jsonschema alone.
 """
 from __future__ import annotations
 
@@ -38,7 +39,8 @@ def compile_schema(schema: dict) -> Check | None:
 
 
 def _is_int(v) -> bool:
-    return type(v) is int   # bool is a subclass of int in Python, not an integer in JSON
+    # bool is a subclass of int in Python, not an integer in JSON; 1.0 is an integer in JSON Schema.
+    return type(v) is int or type(v) is float and v.is_integer()
 
 
 def _is_number(v) -> bool:
@@ -51,7 +53,7 @@ _TYPES: dict[str, Check] = {
     "string": lambda v: type(v) is str,
     "boolean": lambda v: type(v) is bool,
     "null": lambda v: v is None,
-    "integer": _is_int,     # stricter than JSON Schema, which also counts 1.0: jsonschema decides that
+    "integer": _is_int,
     "number": _is_number,
 }
 
@@ -112,24 +114,34 @@ class _Compiler:
             raise _Unknown
         return lambda v: any(json_equal(v, a) for a in arg)
 
+    # The bounds as jsonschema words them (`instance < minimum` is the error), so a NaN passes both.
     def _minimum(self, arg, _schema) -> Check:
         if not _is_number(arg):
             raise _Unknown
-        return lambda v: not _is_number(v) or v >= arg
+        return lambda v: not _is_number(v) or not v < arg
 
     def _maximum(self, arg, _schema) -> Check:
         if not _is_number(arg):
             raise _Unknown
-        return lambda v: not _is_number(v) or v <= arg
+        return lambda v: not _is_number(v) or not v > arg
 
     def _minLength(self, arg, _schema) -> Check:
         return lambda v: type(v) is not str or len(v) >= arg   # code points, as JSON Schema counts
 
+    def _maxLength(self, arg, _schema) -> Check:
+        return lambda v: type(v) is not str or len(v) <= arg
+
     def _minItems(self, arg, _schema) -> Check:
         return lambda v: type(v) is not list or len(v) >= arg
 
+    def _maxItems(self, arg, _schema) -> Check:
+        return lambda v: type(v) is not list or len(v) <= arg
+
     def _minProperties(self, arg, _schema) -> Check:
         return lambda v: type(v) is not dict or len(v) >= arg
+
+    def _maxProperties(self, arg, _schema) -> Check:
+        return lambda v: type(v) is not dict or len(v) <= arg
 
     def _pattern(self, arg, _schema) -> Check:
         try:
@@ -178,6 +190,18 @@ class _Compiler:
     def _oneOf(self, arg, _schema) -> Check:
         branches = [self.node(sub) for sub in arg]
         return lambda v: sum(1 for b in branches if b(v)) == 1
+
+    def _anyOf(self, arg, _schema) -> Check:
+        branches = [self.node(sub) for sub in arg]
+        return lambda v: any(b(v) for b in branches)
+
+    def _allOf(self, arg, _schema) -> Check:
+        branches = [self.node(sub) for sub in arg]
+        return lambda v: all(b(v) for b in branches)
+
+    def _not(self, arg, _schema) -> Check:
+        branch = self.node(arg)
+        return lambda v: not branch(v)
 
     def _if(self, arg, schema) -> Check:
         test = self.node(arg)
