@@ -82,7 +82,7 @@ def _one_vector_files(count, rng):
         yield {**{k: v for k, v in data.items() if k != "vectors"}, "vectors": [rng.choice(data["vectors"])]}
 
 
-@pytest.mark.parametrize("count", [400, pytest.param(6000, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("count", [400, pytest.param(1500, marks=pytest.mark.slow)])
 def test_the_same_answer_as_jsonschema_on_damaged_vectors(count, quick, judge):
     rng = random.Random(count)
     shown_valid = refused = 0
@@ -191,7 +191,7 @@ def test_the_quick_check_of_a_message_gives_jsonschemas_answer():
 
 # -- the spec's schema (generator/plcvec/spec/loader.py) ----------------------------------------------
 
-@pytest.mark.parametrize("count", [50, pytest.param(600, marks=pytest.mark.slow)])
+@pytest.mark.parametrize("count", [50, pytest.param(200, marks=pytest.mark.slow)])
 def test_the_quick_check_of_a_spec_file_gives_jsonschemas_answer(count):
     import yaml
 
