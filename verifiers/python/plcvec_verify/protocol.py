@@ -43,8 +43,8 @@ def validator(name: str):
 
 @lru_cache(maxsize=None)
 def quick_check(name: str):
-    """Schema `name`'s quick check (quick_schema.py): True only for a message the schema accepts, or
-    None for a schema it cannot read in full."""
+    """Schema `name`'s quick check (quick_schema.py): jsonschema's answer to "valid?", or None for a
+    schema it cannot read in full."""
     return compile_schema(json.loads((SCHEMA_DIR / SCHEMAS[name]).read_text(encoding="utf-8")))
 
 

@@ -30,7 +30,7 @@ class _Unknown(Exception):
 
 
 def compile_schema(schema: dict) -> Check | None:
-    """A function of one document: True only when it is valid against `schema`; or None when the
+    """A function of one document: True exactly when it is valid against `schema`; or None when the
     schema uses a keyword or a reference this module does not handle."""
     try:
         return _Compiler(schema).node(schema)
