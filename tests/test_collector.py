@@ -52,7 +52,9 @@ def test_objects_the_caller_froze_stay_frozen(collector_on):
         frozen = gc.get_freeze_count()
         with collector_paused():
             kept = [{"n": n} for n in range(1000)]
-        assert gc.get_freeze_count() == frozen and len(kept) == 1000
+        # Unfrozen, the count would be 0. It may fall by a few: a frozen object another thread frees
+        # (pytest-xdist's) leaves the frozen generation (seen: 227,359 of 227,361).
+        assert gc.get_freeze_count() >= frozen - 100 and len(kept) == 1000
     finally:
         gc.unfreeze()
     assert gc.get_freeze_count() <= before
