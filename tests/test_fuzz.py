@@ -88,9 +88,27 @@ def test_combined_alternatives_are_followed(capsys, families):
 
 # -- planted bugs are caught and shrunk ---------------------------------------------------------
 
-def test_hour_read_as_minute_is_shrunk_to_small_values(capsys, tmp_path):
-    out_file = tmp_path / "found.json"
-    code, out, err = fuzz(capsys, "--python", planted("hour-as-minute"), "--examples", 1000, "--out", out_file)
+@pytest.fixture(scope="module")
+def hour_as_minute(tmp_path_factory):
+    """What `plcvec fuzz --seed 8` finds in the hour-as-minute planted bug, and the file --out writes:
+    (code, out, err, file), for the test of the shrunk case and the test of the same seed, which read it
+    and change nothing (a fuzz run with its shrinking is a second or more of CPU)."""
+    return _fuzz_to_file(tmp_path_factory.mktemp("hour-as-minute") / "found.json", "--python",
+                         planted("hour-as-minute"), "--examples", 1000, "--seed", 8, "--batch-size", 64)
+
+
+def _fuzz_to_file(out_file, *args):
+    """`plcvec fuzz ARGS --out OUT_FILE` in process, its output captured: (code, out, err, out_file)."""
+    from plcvec.cli import main
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+        code = main(["fuzz", *map(str, args), "--out", str(out_file)])
+    return code, out.getvalue(), err.getvalue(), out_file
+
+
+def test_hour_read_as_minute_is_shrunk_to_small_values(hour_as_minute):
+    code, out, err, out_file = hour_as_minute
     assert code == 1, out + err
     v = single_vector(out_file)
     assert v["family"] == "fx5-time-compare" and "fuzz" in v["tags"]
@@ -110,13 +128,8 @@ def test_hour_read_as_minute_is_shrunk_to_small_values(capsys, tmp_path):
 def every_scan(tmp_path_factory):
     """What `plcvec fuzz` finds in the every-scan planted bug, and the file --out writes: (code, out, err,
     file), for the tests of the shrunk case and of the file, which read it and change nothing."""
-    from plcvec.cli import main
-
-    out_file = tmp_path_factory.mktemp("every-scan") / "found.json"
-    out, err = io.StringIO(), io.StringIO()
-    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
-        code = main(["fuzz", "--python", planted("every-scan"), "--examples", "1000", "--out", str(out_file)])
-    return code, out.getvalue(), err.getvalue(), out_file
+    return _fuzz_to_file(tmp_path_factory.mktemp("every-scan") / "found.json", "--python",
+                         planted("every-scan"), "--examples", 1000)
 
 
 def test_pulse_form_on_every_scan_is_shrunk_to_two_scans(every_scan):
@@ -191,15 +204,15 @@ def test_widened_draws_catch_the_mutants_they_are_for(capsys, tmp_path, mutant, 
 
 # -- deterministic ------------------------------------------------------------------------------
 
-def test_same_seed_same_output(capsys, tmp_path):
-    runs = []
-    for batch in (64, 7):  # the batch size changes how many cases go to a request, not what is found
-        out_file = tmp_path / f"found-{len(runs)}.json"
-        code, out, _ = fuzz(capsys, "--python", planted("hour-as-minute"), "--examples", 1000, "--seed", 8,
-                            "--batch-size", batch, "--out", out_file)
-        assert code == 1
-        runs.append((out.replace(str(out_file), "FILE"), out_file.read_bytes()))
-    assert runs[0] == runs[1]
+def test_same_seed_same_output(hour_as_minute, tmp_path):
+    """The same seed finds and prints the same case, whatever the batch size (how many cases go to a
+    request, not what is found): the run of hour_as_minute (64 a batch) again with 7 a batch."""
+    code, out, _, out_file = hour_as_minute
+    again = _fuzz_to_file(tmp_path / "found.json", "--python", planted("hour-as-minute"), "--examples", 1000,
+                          "--seed", 8, "--batch-size", 7)
+    assert code == again[0] == 1
+    assert again[1].replace(str(again[3]), "FILE") == out.replace(str(out_file), "FILE")
+    assert again[3].read_bytes() == out_file.read_bytes()
 
 
 @pytest.mark.slow   # a second whole fuzz run in a fresh process; beside it by default: the stdio path
