@@ -1,6 +1,10 @@
 """CI's lane runner (.ci/lanes.py): lanes side by side, a lane more while the cores sit idle, every
-lane's status in the exit code, and no lane outliving its bound."""
+lane's status in the exit code, and no lane outliving its bound; the lanes' step lines (.ci/steps.sh)."""
+import re
 import runpy
+import shlex
+import subprocess
+import sys
 import time
 from types import SimpleNamespace
 
@@ -62,3 +66,20 @@ def test_a_lane_past_its_bound_is_killed(tmp_path, monkeypatch, capsys):
     assert lanes.main(["--timeout", "1", _script(tmp_path, "hangs", "sleep 60")]) == 1
     assert time.monotonic() - started < 10
     assert "killed after 1 s" in capsys.readouterr().out
+
+
+def test_a_step_in_a_subshell_counts_the_cpu_of_what_ran_before_it(tmp_path):
+    """.ci/steps.sh's step lines: the CPU seconds of what the lane ran so far, also inside a subshell
+    ( ... ), whose children reach the lane's shell only when it ends (the TypeScript lane's first
+    steps read 0.0 so). A child burns 0.4 s of CPU, by its own clock, before steps c and d (read to
+    a tenth)."""
+    burn = shlex.join([sys.executable, "-c",
+                       "import time\nt = time.process_time()\nwhile time.process_time() - t < 0.4: pass"])
+    script = tmp_path / "lane.sh"
+    script.write_text(f"source {shlex.quote(str(REPO / '.ci' / 'steps.sh'))}\nsteps_begin t\nstep a\n"
+                      f"( step b\n{burn}\nstep c )\nstep d\n")
+    out = subprocess.run(["bash", str(script)], capture_output=True, text=True, check=True).stdout
+    cpu = dict(re.findall(r"^-- t: (\w) \(\d+ s, ([\d.]+) CPU s\)$", out, re.M))
+    assert set(cpu) == {"a", "b", "c", "d"}, out
+    assert float(cpu["a"]) < 0.2 and float(cpu["b"]) < 0.2, out
+    assert float(cpu["c"]) >= 0.3 and float(cpu["d"]) >= 0.3, out
