@@ -7,84 +7,17 @@ the followed alternatives leave unjudged (expect.py); writing either is no stray
 """
 from __future__ import annotations
 
-import json
-from dataclasses import dataclass
 from functools import partial
 from marshal import dumps
 
 from .adapters import result_message
 from .expect import PACKED_FORMAT, Expected
 from .protocol import WORD_MAX, result_errors, result_shape_ok
-from .verdict import ERROR, FAIL, PASS, SKIP, VectorResult
+# Problem, MISSING, UNLISTED and show are the verdict's (verdict.py), imported here also for those who
+# import them from this module, as 0.1.0 had them.
+from .verdict import ERROR, FAIL, MISSING, PASS, SKIP, UNLISTED, Problem, VectorResult, same, show  # noqa: F401
 
-MISSING = "<not reported>"
-UNLISTED = "<not in the vector>"
 _MISSING, _UNLISTED = MISSING, UNLISTED
-
-
-@dataclass(frozen=True)
-class Problem:
-    """One field that differs: where, what was expected, what the implementation reported.
-
-    `line()` is part of the one failure text every runner prints (verifiers/parity/TEXT.md).
-    """
-
-    step: int | None       # None: about the vector as a whole (e.g. the number of steps)
-    field: str             # "result", a device address, or "steps"
-    expected: object
-    actual: object
-    # For a device the vector lists: the value the implementation held before the step (what it was
-    # given for step 0, its own report of the previous step after this step's `set` otherwise).
-    held: object = None
-    # The vector requires the step to leave the device as the vector had it before the step.
-    keep: bool = False
-
-    @property
-    def before(self):
-        """The value the implementation held before the step (None: not a listed device)."""
-        return self.held
-
-    def line(self) -> str:
-        if self.step is None:       # about the vector as a whole: counts, shown as they are
-            return f"{self.field}: expected {self.expected}, got {self.actual}"
-        text = f"step {self.step} {self.field}: expected {show(self.expected)}, got {show(self.actual)}"
-        if self.held is None:
-            return text
-        # "must leave it unchanged" only where the implementation wrote the device in this step: a
-        # difference carried over from an earlier step shows the value it already held instead.
-        wrote = self.actual is not MISSING and not _same(self.held, self.actual)
-        if self.keep and wrote:
-            if _same(self.held, self.expected):
-                return text + " (the step must leave it unchanged)"
-            return text + f" (before the step: {show(self.held)}; the step must leave it unchanged)"
-        return text + f" (before the step: {show(self.held)})"
-
-
-def show(value) -> str:
-    """A value as the failure text shows it: JSON's spelling (true, 13, "x"), or a <...> marker."""
-    if value is True:
-        return "true"
-    if value is False:
-        return "false"
-    if value is MISSING or value is UNLISTED:
-        return value
-    if type(value) is int:
-        return str(value)
-    try:
-        return json.dumps(value, ensure_ascii=False, separators=(",", ":"), sort_keys=True)
-    except (TypeError, ValueError):     # not a JSON value at all (an in-process answer)
-        return repr(value)
-
-
-def _json_type(value):
-    """The JSON type a Python value stands for: a bool is a boolean, any other int an integer."""
-    if isinstance(value, bool):
-        return bool
-    return int if isinstance(value, int) else type(value)
-
-
-def _same(expected, actual) -> bool:
-    return expected == actual and _json_type(expected) is _json_type(actual)
 
 
 def passes_at_once(answer, expected: Expected) -> bool:
@@ -238,7 +171,7 @@ def compare(expected: Expected, steps: list, cpu_writes=frozenset()) -> list[Pro
     ignored = expected.ignored
     for i, (step, want_state, want_result, typed) in enumerate(
             zip(steps, expected.compared, expected.results, expected.typed)):
-        if want_result is not None and not _same(want_result, step.get("result", _MISSING)):
+        if want_result is not None and not same(want_result, step.get("result", _MISSING)):
             problems.append(Problem(i, "result", want_result, step.get("result", _MISSING)))
         got = step["devices"]
         if ignored:
@@ -253,12 +186,12 @@ def compare(expected: Expected, steps: list, cpu_writes=frozenset()) -> list[Pro
             want, have = want_state.get(dev, _UNLISTED), got.get(dev, _MISSING)
             if want is _UNLISTED and dev in cpu_writes:
                 continue
-            if not _same(want, have):
+            if not same(want, have):
                 if want is _UNLISTED:
                     problems.append(Problem(i, dev, want, have))
                 else:
                     problems.append(Problem(i, dev, want, have, held.get(dev, _MISSING),
-                                            dev in before and _same(before[dev], want)))
+                                            dev in before and same(before[dev], want)))
     return problems
 
 

@@ -9,9 +9,9 @@ from __future__ import annotations
 import re
 from collections import Counter
 
-from .compare import UNLISTED, Problem, show
 from .runner import RunReport
-from .verdict import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, XFAIL, VectorResult
+from .verdict import (ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, UNLISTED, XFAIL, Problem, VectorResult,
+                      show)
 
 SHOW_PROBLEMS = 12      # field lines shown per failing vector
 SHOW_REASONS = 12       # skip reasons shown

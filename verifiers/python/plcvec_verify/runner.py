@@ -15,17 +15,17 @@ from operator import itemgetter
 from .adapters import AdapterAbort
 from .choices import defaults_of, followed_alternatives, resolve_choices
 from .collector import collector_paused
-from .compare import Problem, judge, passes_at_once
+from .compare import judge, passes_at_once
 from .gate import NOTHING_TESTED, Gate
 from .known import KnownFailures
 from .protocol import hello_request
 from .selection import Selection, select
 from .stopping import Stopped
 from .suite import Suite
-# The statuses and the verdict type live in the leaf verdict.py (known.py needs them too); they are
-# named here as well, where 0.1.0's users import them from.
+# The statuses, the verdict type and its problems live in the leaf verdict.py (known.py needs them
+# too); they are named here as well, where 0.1.0's users import them from.
 from .verdict import (ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL,  # noqa: F401
-                      VectorResult)
+                      Problem, VectorResult)
 
 # The per-vector bookkeeping of a run is done with map() over these where it can: a run over the
 # golden set is a few microseconds a vector, and a Python-level loop is a good part of that.
