@@ -81,3 +81,14 @@ impl<'a> FromIterator<(&'a str, &'a str)> for Choices {
         choices
     }
 }
+
+/// The alternative followed for one interpretation.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Followed {
+    /// The interpretation id.
+    pub interpretation: String,
+    /// The alternative.
+    pub alternative: String,
+    /// Whether the implementation declared it (else it is the default).
+    pub declared: bool,
+}

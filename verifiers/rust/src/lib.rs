@@ -24,6 +24,7 @@
 
 mod choices;
 mod compare;
+mod emulator;
 mod error;
 mod expect;
 mod files;
@@ -40,6 +41,7 @@ mod infer;
 mod keys;
 mod known;
 mod memory;
+mod reports;
 mod runner;
 mod selection;
 pub mod serve;
@@ -51,17 +53,20 @@ mod value;
 mod vector;
 mod verdict;
 
-pub use choices::{Alternative, Choices};
+pub use choices::{Alternative, Choices, Followed};
 pub use compare::{ReportedStep, Steps};
+pub use emulator::{Execute, OnMemory};
 pub use error::{Error, Result};
 pub use expect::Expected;
 pub use generated::names;
-pub use implementation::{Execute, Implementation, OnMemory, Refusal};
+pub use implementation::{Implementation, Refusal};
 pub use known::{KnownFailure, KnownFailures};
 pub use memory::Memory;
-pub use runner::{judge, judge_plan, run, Followed, Plan, Report};
+pub use runner::{judge, judge_plan, run, Plan, Report};
 pub use selection::{shard_of, Selection};
-pub use suite::{FamilyInfo, InterpretationInfo, Suite, SCHEMA_MAJOR, VECTORS_ENV};
+#[allow(deprecated)]
+pub use suite::FamilyInfo;
+pub use suite::{FamilyHeader, InterpretationInfo, Suite, SCHEMA_MAJOR, VECTORS_ENV};
 pub use value::{Address, Value};
 pub use vector::{Clock, Operand, Step, Vector};
 pub use verdict::{describe, Field, Problem, Status, Verdict};

@@ -64,7 +64,7 @@ fn alternative_ids<'de, D: serde::Deserializer<'de>>(d: D) -> std::result::Resul
 /// key is a damaged or hand-edited file, refused rather than half read.
 #[derive(Clone, Debug, PartialEq, Eq, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct FamilyInfo {
+pub struct FamilyHeader {
     /// The family (`fx5-time-add`).
     pub family: String,
     /// The family's title.
@@ -98,6 +98,10 @@ pub struct FamilyInfo {
     pub generated: String,
 }
 
+/// The old name of [`FamilyHeader`].
+#[deprecated(since = "0.3.0", note = "use FamilyHeader, the shared name of a family file's header")]
+pub type FamilyInfo = FamilyHeader;
+
 /// A loaded vector set.
 #[derive(Clone, Debug)]
 pub struct Suite {
@@ -105,7 +109,7 @@ pub struct Suite {
     suite_version: String,
     schema_version: String,
     spec_sha256: String,
-    families: Vec<FamilyInfo>,
+    families: Vec<FamilyHeader>,
     vectors: Vec<Vector>,
     by_id: HashMap<String, usize>,
     /// Old id -> the id of the vector it was merged into (every family's `merged`).
@@ -242,7 +246,7 @@ impl Suite {
         source: String,
         suite_version: String,
         spec_sha256: String,
-        parts: Vec<(FamilyInfo, Vec<Vector>)>,
+        parts: Vec<(FamilyHeader, Vec<Vector>)>,
         merged: Merged,
     ) -> Result<Suite> {
         let merged = merged.into_iter().flat_map(|(_, ids)| ids).collect();
@@ -291,11 +295,11 @@ impl Suite {
         &self.spec_sha256
     }
     /// Every family file's header.
-    pub fn families(&self) -> &[FamilyInfo] {
+    pub fn families(&self) -> &[FamilyHeader] {
         &self.families
     }
     /// One family's header.
-    pub fn family(&self, name: &str) -> Option<&FamilyInfo> {
+    pub fn family(&self, name: &str) -> Option<&FamilyHeader> {
         self.families.iter().find(|f| f.family == name)
     }
     /// Every vector, family by family, each family sorted by id.
@@ -398,7 +402,7 @@ fn read_json<T: serde::de::DeserializeOwned>(path: &Path) -> Result<T> {
     serde_json::from_str(&text).map_err(refused)
 }
 
-fn check_header(name: &str, header: &FamilyInfo) -> Result<()> {
+fn check_header(name: &str, header: &FamilyHeader) -> Result<()> {
     let major = header.schema_version.split('.').next().unwrap_or("");
     if major != SCHEMA_MAJOR {
         return Err(Error::new(format!(
@@ -409,7 +413,7 @@ fn check_header(name: &str, header: &FamilyInfo) -> Result<()> {
     Ok(())
 }
 
-fn check_vector(name: &str, where_: &str, header: &FamilyInfo, raw: RawVector) -> Result<Vector> {
+fn check_vector(name: &str, where_: &str, header: &FamilyHeader, raw: RawVector) -> Result<Vector> {
     if raw.family != header.family {
         return Err(Error::new(format!(
             "{where_}: vector {}: family {:?} in a {:?} file",
@@ -438,10 +442,10 @@ fn check_count(name: &str, count: Option<usize>, found: usize) -> Result<()> {
 }
 
 /// One family in JSON Lines: line 1 the header, then one vector a line.
-fn parse_jsonl(name: &str, text: &str, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
+fn parse_jsonl(name: &str, text: &str, count: Option<usize>) -> Result<(FamilyHeader, Vec<Vector>)> {
     let mut lines = text.lines().enumerate().filter(|(_, l)| !l.trim().is_empty());
     let (_, first) = lines.next().ok_or_else(|| Error::new(format!("{name}: empty file")))?;
-    let header: FamilyInfo = serde_json::from_str(first).map_err(|e| {
+    let header: FamilyHeader = serde_json::from_str(first).map_err(|e| {
         let what =
             if unique::is_repeated(&e) { unique::message(&e) } else { format!("not a plcvec family header ({e})") };
         Error::new(format!("{name}:1: {what}"))
@@ -496,7 +500,7 @@ fn check_repeats(name: &str, text: &str) -> Result<()> {
 }
 
 /// One family file as `plcvec generate` writes it: a JSON object with `vectors`.
-fn parse_family_json(path: &Path, text: &str, count: Option<usize>) -> Result<(FamilyInfo, Vec<Vector>)> {
+fn parse_family_json(path: &Path, text: &str, count: Option<usize>) -> Result<(FamilyHeader, Vec<Vector>)> {
     let name = path.display().to_string();
     check_repeats(&name, text)?;
     let mut data: serde_json::Value = serde_json::from_str(text)
@@ -506,7 +510,7 @@ fn parse_family_json(path: &Path, text: &str, count: Option<usize>) -> Result<(F
         _ => return Err(Error::new(format!("{name}: not a plcvec vector file (no `vectors` list)"))),
     };
     let header =
-        FamilyInfo::deserialize(&data).map_err(|e| Error::new(format!("{name}: not a plcvec vector file ({e})")))?;
+        FamilyHeader::deserialize(&data).map_err(|e| Error::new(format!("{name}: not a plcvec vector file ({e})")))?;
     check_header(&name, &header)?;
     let mut out = Vec::with_capacity(vectors.len());
     for (k, v) in vectors.into_iter().enumerate() {

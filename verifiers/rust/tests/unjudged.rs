@@ -111,3 +111,16 @@ fn the_inference_explains_an_answer_that_follows_the_reading_undeclared() {
         "{text}"
     );
 }
+
+/// `FamilyInfo`, the header's name before 0.3.0, still names the same header (until 0.4.0).
+#[test]
+#[allow(deprecated)]
+fn the_header_reads_the_same_by_its_old_name() {
+    let suite = suite();
+    let old: Option<&plcvec::FamilyInfo> = suite.family("fc6a-hour-meter");
+    let new: Option<&plcvec::FamilyHeader> = suite.family("fc6a-hour-meter");
+    let old = old.expect("the hand-made file's family");
+    assert_eq!(old, new.unwrap());
+    assert_eq!((old.kind.as_str(), old.schema_version.as_str()), ("hour_meter", "1.1.0"));
+    assert_eq!(old.interpretations[0].default, "as-seconds");
+}
