@@ -149,8 +149,23 @@ class Api:
             self.trait_required[name] = required
         elif kind in ("constant", "static"):
             self.items[name] = f"{kind} {render(inner.get('type'))}"
+        elif kind == "type_alias" and self.aliased(inner) is not None:
+            # `pub type Old = New;` (a rename's deprecated old name) is the struct or enum itself
+            # to a user: its fields, literals, patterns and methods work through the old name.
+            self.item(self.aliased(inner), name, inner["type"]["resolved_path"]["id"])
         else:
             self.items[name] = kind
+
+    def aliased(self, inner):
+        """The struct or enum a type alias names without generic arguments, else None."""
+        path = (inner.get("type") or {}).get("resolved_path")
+        args = (path or {}).get("args") or {}
+        if not isinstance(path, dict) or "parenthesized" in args or (args.get("angle_bracketed") or {}).get("args"):
+            return None
+        target = self.get(path.get("id"))
+        if target is None or not any(k in target["inner"] for k in ("struct", "enum")):
+            return None
+        return target
 
     def structure(self, name: str, inner) -> None:
         self.items[name] = "struct"
