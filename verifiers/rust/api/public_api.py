@@ -95,6 +95,7 @@ class Api:
         self.constructible: set[str] = set()   # structs a user can build with a literal
         self.exhaustive: set[str] = set()      # enums a user can match without a wildcard
         self.trait_required: dict[str, set[str]] = {}
+        self.aliases: dict[str, str] = {}      # a type alias's name -> the struct or enum it names
         self.module(str(doc["root"]), "")
 
     def get(self, id_):
@@ -152,7 +153,9 @@ class Api:
         elif kind == "type_alias" and self.aliased(inner) is not None:
             # `pub type Old = New;` (a rename's deprecated old name) is the struct or enum itself
             # to a user: its fields, literals, patterns and methods work through the old name.
-            self.item(self.aliased(inner), name, inner["type"]["resolved_path"]["id"])
+            target = self.aliased(inner)
+            self.aliases[c["name"]] = target["name"]
+            self.item(target, name, inner["type"]["resolved_path"]["id"])
         else:
             self.items[name] = kind
 
@@ -209,6 +212,9 @@ def breaking(old: Api, new: Api) -> list[tuple[str, str]]:
     """(item path, what changed) for every change a user of `old` can trip over."""
     out = []
     for path, what in sorted(old.items.items()):
+        # A type renamed with its old name kept as an alias is the same type in a signature.
+        for alias, target in new.aliases.items():
+            what = re.sub(rf"\b{re.escape(alias)}\b", target, what)
         if path not in new.items:
             out.append((path, f"removed ({what})"))
         elif new.items[path] != what:
