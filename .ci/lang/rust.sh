@@ -127,7 +127,9 @@ api=(python3 "$crate/api/public_api.py")
 "${api[@]}" diff "$crate/target/api-baseline/doc/plcvec.json" "$crate/target/api/doc/plcvec.json" \
     --changes CHANGES.md --version "$version" --fragments changes.d
 # The check fails on a rename nobody listed: `shard_of` renamed in a copy of today's API.
-sed 's/"name":"shard_of"/"name":"shard_number"/' "$crate/target/api/doc/plcvec.json" > "$scratch/renamed.json"
+# Every occurrence (`g`): the re-export and the function both carry the name, in an order rustdoc
+# does not promise, and only the re-export's is the path users write.
+sed 's/"name":"shard_of"/"name":"shard_number"/g' "$crate/target/api/doc/plcvec.json" > "$scratch/renamed.json"
 if "${api[@]}" diff "$crate/target/api/doc/plcvec.json" "$scratch/renamed.json" \
     --changes "$scratch/none" --version "$version" 2> "$scratch/renamed.txt"; then
     echo "rust.sh: public_api.py passed a rename of shard_of that no Breaking section lists" >&2
