@@ -18,7 +18,7 @@ static void where(const plcvec_known_failure *k, char *buf, size_t size)
         snprintf(buf, size, "%s", k->file);
 }
 
-void plcvec_apply_known(plcvec_verdict *vd, const plcvec_known_failure *known, size_t n_known)
+void plcvec_known_apply(plcvec_verdict *vd, const plcvec_known_failure *known, size_t n_known)
 {
     for (size_t i = 0; i < n_known; i++) {
         const plcvec_known_failure *k = &known[i];
@@ -43,6 +43,12 @@ void plcvec_apply_known(plcvec_verdict *vd, const plcvec_known_failure *known, s
         }
         return;
     }
+}
+
+/* The name before 0.3.0, kept for programs built against it (the shared library exports it too). */
+void plcvec_apply_known(plcvec_verdict *vd, const plcvec_known_failure *known, size_t n_known)
+{
+    plcvec_known_apply(vd, known, n_known);
 }
 
 void plcvec_known_unknown_message(const plcvec_known_failure *k, char *buf, size_t size)

@@ -141,7 +141,7 @@ static int judge_all(plcvec_judge *j, plcvec_report *report, const plcvec_vector
 {
     for (long i = 0; i < n; i++) {
         plcvec_verdict vd = *plcvec_judge_vector(j, list[i]);
-        plcvec_apply_known(&vd, opt->known, opt->n_known);
+        plcvec_known_apply(&vd, opt->known, opt->n_known);
         if (plcvec_report_add(report, &vd) != 0)
             return -1;
         if (failing && (vd.status == PLCVEC_FAIL || vd.status == PLCVEC_ERROR || vd.status == PLCVEC_XFAIL))

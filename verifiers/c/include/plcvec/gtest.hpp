@@ -110,7 +110,7 @@ inline void check(plcvec_judge *judge, const plcvec_vector *v) {
     ::testing::Test::RecordProperty("plcvec_id", v->id);
     plcvec_verdict vd = *plcvec_judge_vector(judge, v);
     const auto &known = detail::known_failures();
-    plcvec_apply_known(&vd, known.data(), known.size());
+    plcvec_known_apply(&vd, known.data(), known.size());
     detail::Run &r = detail::run();
     r.judged++;
     if (!r.report)

@@ -15,6 +15,18 @@
 
 #include "plcvec/generated/names.h"
 
+/* A public name kept after a rename until the release CHANGES.md names (its Deprecated entry) says
+ * so in a comment above it, and is not marked for the compiler unless asked: the deprecated
+ * attribute's warning is on by default in GCC and Clang, so it would fail every program built with
+ * -Werror that still uses the old name, and a minor upgrade must not turn a pinned CI red
+ * (CONTRACT.md, Compatibility policy). Define PLCVEC_WARN_DEPRECATED before this header (or
+ * -DPLCVEC_WARN_DEPRECATED) to have the compiler name each use of an old name, and its new one. */
+#if defined(PLCVEC_WARN_DEPRECATED) && defined(__GNUC__)
+#define PLCVEC_DEPRECATED(why) __attribute__((deprecated(why)))
+#else
+#define PLCVEC_DEPRECATED(why)
+#endif
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -377,6 +389,9 @@ int plcvec_judge_alternative(const plcvec_judge *j, int interpretation);
 /* Run one vector and judge it. The verdict's problems live until the next call. */
 const plcvec_verdict *plcvec_judge_vector(plcvec_judge *j, const plcvec_vector *v);
 /* Apply a known-failure list to a verdict (PASS -> STALE, FAIL/ERROR -> XFAIL). */
+void plcvec_known_apply(plcvec_verdict *verdict, const plcvec_known_failure *known, size_t n_known);
+/* Deprecated since 0.3.0, removed in 0.4.0: the old name of plcvec_known_apply, the same function. */
+PLCVEC_DEPRECATED("use plcvec_known_apply, the same function; plcvec_apply_known is removed in plcvec 0.4.0")
 void plcvec_apply_known(plcvec_verdict *verdict, const plcvec_known_failure *known, size_t n_known);
 /* The expectation of v for step i under the judge's alternatives. */
 const plcvec_expect *plcvec_expected(const plcvec_judge *j, const plcvec_vector *v, size_t step);
@@ -427,7 +442,7 @@ typedef struct plcvec_report plcvec_report;
  * when out of memory. */
 plcvec_report *plcvec_report_new(const plcvec_judge *j);
 void plcvec_report_free(plcvec_report *r);
-/* One vector's verdict, with the known failures applied (plcvec_apply_known); 0, or -1 when out
+/* One vector's verdict, with the known failures applied (plcvec_known_apply); 0, or -1 when out
  * of memory. */
 int plcvec_report_add(plcvec_report *r, const plcvec_verdict *verdict);
 /* The end of the run, in the words of verifiers/parity/TEXT.md: a STALE block for each of `known`
