@@ -13,11 +13,11 @@ type arena struct {
 	// befores are read only for a failure's message: apart from the values a pass reads
 	befores slab[Value]
 	keys    slab[uint64]
-	addrs   slab[Addr]
+	addrs   slab[Address]
 	slots   slab[uint16]
 	runs    slab[uint16]
 	// operandAddrs apart from addrs: a CPU reads its operands' addresses, rarely the devices'
-	operandAddrs slab[Addr]
+	operandAddrs slab[Address]
 	devices      slab[Device]
 	flags        slab[bool]
 	results      slab[Result]
@@ -30,7 +30,7 @@ type arena struct {
 	cases        slab[Case]
 	names        slab[string]
 	strings      map[string]string // nil: no interning
-	parsed       []Addr            // a request's addresses while its keys are worked out
+	parsed       []Address         // a request's addresses while its keys are worked out
 }
 
 // runArena is the arena of a whole run's preparation.

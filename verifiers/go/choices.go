@@ -14,8 +14,14 @@ type Choice struct {
 	Default     string
 }
 
+// Followed is, by interpretation id, the alternative followed for it: a run's Plan.Choices holds
+// one for every interpretation of the suite, the implementation's declared alternatives and the
+// defaults of the rest. An alias rather than a type of its own, so that code which spells out
+// map[string]Choice, as it had to before the name existed, still compiles and assigns.
+type Followed = map[string]Choice
+
 // resolveChoices checks the declared alternatives against the suite and fills in the defaults.
-func (s *Suite) resolveChoices(declared map[string]string) (map[string]Choice, error) {
+func (s *Suite) resolveChoices(declared map[string]string) (Followed, error) {
 	known := map[string]InterpretationInfo{}
 	for _, i := range s.Interpretations() {
 		known[i.ID] = i
@@ -41,7 +47,7 @@ func (s *Suite) resolveChoices(declared map[string]string) (map[string]Choice, e
 				id, declared[id], id, strings.Join(i.Alternatives, ", "))
 		}
 	}
-	out := make(map[string]Choice, len(known))
+	out := make(Followed, len(known))
 	for id, i := range known {
 		if alt, ok := declared[id]; ok {
 			out[id] = Choice{Alternative: alt, Declared: true, Default: i.Default}

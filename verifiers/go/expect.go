@@ -29,7 +29,7 @@ type entry struct {
 // entryOf is the entry of v under the alternatives of choices: v's own steps and final when
 // every interpretation v touches is at its default, else the entry of v's alternatives whose
 // choices match.
-func entryOf(v *Vector, choices map[string]Choice) (entry, error) {
+func entryOf(v *Vector, choices Followed) (entry, error) {
 	touched := v.Outcome.Interpretations
 	en := entry{choices: make(map[string]string, len(touched)), steps: make([]*Expect, len(v.Steps)),
 		final: v.Final.Devices, category: v.Outcome.Category}
@@ -131,7 +131,7 @@ func (e *expected) judges(name string) bool { return !e.notJudged[name] }
 // expectedOf is v's expectation under choices, laid out for judging: devices are the names of the
 // request's devices (sorted), the order in which a fast answer gives their values, kept as they
 // are (requested), not copied: no one writes to them afterwards.
-func expectedOf(a *arena, v *Vector, choices map[string]Choice, devices []string, cpuWrites map[string]bool) (*expected, error) {
+func expectedOf(a *arena, v *Vector, choices Followed, devices []string, cpuWrites map[string]bool) (*expected, error) {
 	en, err := entryOf(v, choices)
 	if err != nil {
 		return nil, err

@@ -28,7 +28,7 @@ func (c *Case) offers() []offer {
 	v := c.Vector
 	touched := v.Outcome.Interpretations
 	build := func(alts map[string]string) *expected {
-		choices := make(map[string]Choice, len(touched))
+		choices := make(Followed, len(touched))
 		for _, id := range touched {
 			def := c.plan.Choices[id].Default
 			choices[id] = Choice{Alternative: alts[id], Default: def}

@@ -11,7 +11,7 @@ type Memory struct {
 	vals         []Value   // parallel to req.Devices
 	small        [16]Value // vals' storage for a vector of up to 16 devices: one allocation, not two
 	outside      []Device  // devices written that the vector does not list, in the order first written
-	outsideAddrs []Addr    // parallel to outside: looked up without building names
+	outsideAddrs []Address // parallel to outside: looked up without building names
 }
 
 // NewMemory is the initial device image of req.
@@ -38,7 +38,7 @@ func (m *Memory) reset(req *Request) {
 
 // slot is a's index in the vector's devices, or -1: its key looked up in the request's table,
 // or a scan for a request too large for one.
-func (m *Memory) slot(a Addr) int {
+func (m *Memory) slot(a Address) int {
 	key, exact := addrKey(a)
 	r := m.req
 	if r.table == nil {
@@ -62,7 +62,7 @@ func (m *Memory) slot(a Addr) int {
 }
 
 // outsideIndex is a's index among the writes outside the vector, or -1.
-func (m *Memory) outsideIndex(a Addr) int {
+func (m *Memory) outsideIndex(a Address) int {
 	for k := range m.outsideAddrs {
 		if m.outsideAddrs[k] == a {
 			return k
@@ -72,14 +72,14 @@ func (m *Memory) outsideIndex(a Addr) int {
 }
 
 // Get returns a device's value and whether the image holds the device.
-func (m *Memory) Get(a Addr) (Value, bool) {
+func (m *Memory) Get(a Address) (Value, bool) {
 	if i := m.slot(a); i >= 0 {
 		return m.vals[i], true
 	}
 	return m.getOutside(a)
 }
 
-func (m *Memory) getOutside(a Addr) (Value, bool) {
+func (m *Memory) getOutside(a Address) (Value, bool) {
 	if k := m.outsideIndex(a); k >= 0 {
 		return m.outside[k].Value, true
 	}
@@ -87,20 +87,20 @@ func (m *Memory) getOutside(a Addr) (Value, bool) {
 }
 
 // Word is the 16 bits of a word device (0 when the image does not hold it).
-func (m *Memory) Word(a Addr) uint16 {
+func (m *Memory) Word(a Address) uint16 {
 	v, _ := m.Get(a)
 	return v.Word()
 }
 
 // Words reads n consecutive words from a: D100, D101, ... (a multi-word operand).
-func (m *Memory) Words(a Addr, n int) []uint16 {
+func (m *Memory) Words(a Address, n int) []uint16 {
 	out := make([]uint16, n)
 	m.ReadWords(a, out)
 	return out
 }
 
 // ReadWords fills dst with len(dst) consecutive words from a, without allocating.
-func (m *Memory) ReadWords(a Addr, dst []uint16) {
+func (m *Memory) ReadWords(a Address, dst []uint16) {
 	if i := m.slot(a); i >= 0 && int(m.req.runs[i]) >= len(dst) {
 		for k, v := range m.vals[i : i+len(dst)] {
 			dst[k] = v.Word()
@@ -113,13 +113,13 @@ func (m *Memory) ReadWords(a Addr, dst []uint16) {
 }
 
 // Bit is a bit device's state (false when the image does not hold it).
-func (m *Memory) Bit(a Addr) bool {
+func (m *Memory) Bit(a Address) bool {
 	v, _ := m.Get(a)
 	return v.Bit()
 }
 
 // Set writes a device.
-func (m *Memory) Set(a Addr, v Value) {
+func (m *Memory) Set(a Address, v Value) {
 	if i := m.slot(a); i >= 0 {
 		m.vals[i] = v
 		return
@@ -127,7 +127,7 @@ func (m *Memory) Set(a Addr, v Value) {
 	m.setOutside(a, v)
 }
 
-func (m *Memory) setOutside(a Addr, v Value) {
+func (m *Memory) setOutside(a Address, v Value) {
 	if k := m.outsideIndex(a); k >= 0 {
 		m.outside[k].Value = v
 		return
@@ -137,10 +137,10 @@ func (m *Memory) setOutside(a Addr, v Value) {
 }
 
 // SetWord writes a word device.
-func (m *Memory) SetWord(a Addr, w uint16) { m.Set(a, Word(w)) }
+func (m *Memory) SetWord(a Address, w uint16) { m.Set(a, Word(w)) }
 
 // SetWords writes consecutive words from a.
-func (m *Memory) SetWords(a Addr, words ...uint16) {
+func (m *Memory) SetWords(a Address, words ...uint16) {
 	if i := m.slot(a); i >= 0 && int(m.req.runs[i]) >= len(words) {
 		for k, w := range words {
 			m.vals[i+k] = Word(w)
@@ -153,11 +153,11 @@ func (m *Memory) SetWords(a Addr, words ...uint16) {
 }
 
 // SetBit writes a bit device.
-func (m *Memory) SetBit(a Addr, b bool) { m.Set(a, Bit(b)) }
+func (m *Memory) SetBit(a Address, b bool) { m.Set(a, Bit(b)) }
 
 // InRange reports whether a .. a+words-1 all exist on the CPU the vector assumes
 // (assumes.device_sizes). A device type whose size the vector does not state is taken to exist.
-func (m *Memory) InRange(a Addr, words int) bool {
+func (m *Memory) InRange(a Address, words int) bool {
 	r := m.req
 	if r.sizes == nil && len(r.DeviceSizes) > 0 { // a Request not made by NewRequest
 		r.prepareSizes()

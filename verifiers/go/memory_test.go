@@ -96,9 +96,9 @@ func TestMemoryOfExactNames(t *testing.T) {
 
 // An exact key (a PLC name) never equals the key of an address that needs comparing.
 func TestAddrKeys(t *testing.T) {
-	exact := []Addr{{"D", 0}, {"D", 100}, {"SM", 709}, {"P_EQ", -1}, {"ABCD", 1<<31 - 1}, {"D\x7F", 1}, {"D\x01", 1}}
-	inexact := []Addr{{"D", 1 << 32}, {"D", -2}, {"LONGKIND", 7}, {"Dé", 5}, {"D\x00", 5}, {"", 3}, {"ABC\x80", 1}, {"\x00", 0}, {"SMALL", 1}}
-	seen := map[uint64]Addr{}
+	exact := []Address{{"D", 0}, {"D", 100}, {"SM", 709}, {"P_EQ", -1}, {"ABCD", 1<<31 - 1}, {"D\x7F", 1}, {"D\x01", 1}}
+	inexact := []Address{{"D", 1 << 32}, {"D", -2}, {"LONGKIND", 7}, {"Dé", 5}, {"D\x00", 5}, {"", 3}, {"ABC\x80", 1}, {"\x00", 0}, {"SMALL", 1}}
+	seen := map[uint64]Address{}
 	for _, a := range exact {
 		key, ok := addrKey(a)
 		if !ok {
@@ -177,13 +177,13 @@ func TestEmulateReleasesCPUs(t *testing.T) {
 func BenchmarkMemory(b *testing.B) {
 	devices := map[string]Value{"D100": Word(1), "D101": Word(2), "D102": Word(3),
 		"D200": Word(1), "D201": Word(2), "D202": Word(3), "D300": Word(0)}
-	flags := []Addr{{"P_EQ", -1}, {"P_NE", -1}, {"P_LT", -1}, {"P_LE", -1}, {"P_GT", -1}, {"P_GE", -1}, {"P_ER", -1}}
+	flags := []Address{{"P_EQ", -1}, {"P_NE", -1}, {"P_LT", -1}, {"P_LE", -1}, {"P_GT", -1}, {"P_GE", -1}, {"P_ER", -1}}
 	for _, f := range flags {
 		devices[f.Kind] = Bit(false)
 	}
 	req := NewRequest("t", "f", "I", map[string]int{"D": 8000}, devices, map[string]Operand{}, nil, []Inputs{{}})
 	mem := NewMemory(req)
-	s1, s2, c := Addr{"D", 100}, Addr{"D", 200}, Addr{"D", 300}
+	s1, s2, c := Address{"D", 100}, Address{"D", 200}, Address{"D", 300}
 	var w [3]uint16
 	for range b.N {
 		mem.ReadWords(s1, w[:])
@@ -204,20 +204,20 @@ func TestInRange(t *testing.T) {
 	made := NewRequest("t", "f", "I", sizes, map[string]Value{"D0": Word(0)}, map[string]Operand{}, nil, []Inputs{{}})
 	literal := &Request{ID: "t", DeviceSizes: sizes}
 	for _, c := range []struct {
-		a     Addr
+		a     Address
 		words int
 		want  bool
 	}{
-		{Addr{"D", 0}, 3, true},
-		{Addr{"D", 7997}, 3, true},
-		{Addr{"D", 7998}, 3, false},
-		{Addr{"D", 7999}, 1, true},
-		{Addr{"D", 8000}, 1, false},
-		{Addr{"D", -1}, 1, false},
-		{Addr{"SD", 11997}, 3, true},
-		{Addr{"SD", 11998}, 3, false},
-		{Addr{"R", 40000}, 3, true}, // no size given for R
-		{Addr{"DX", 9000}, 3, true}, // a kind that only starts like a sized one
+		{Address{"D", 0}, 3, true},
+		{Address{"D", 7997}, 3, true},
+		{Address{"D", 7998}, 3, false},
+		{Address{"D", 7999}, 1, true},
+		{Address{"D", 8000}, 1, false},
+		{Address{"D", -1}, 1, false},
+		{Address{"SD", 11997}, 3, true},
+		{Address{"SD", 11998}, 3, false},
+		{Address{"R", 40000}, 3, true}, // no size given for R
+		{Address{"DX", 9000}, 3, true}, // a kind that only starts like a sized one
 	} {
 		for name, req := range map[string]*Request{"NewRequest": made, "a struct": literal} {
 			if got := NewMemory(req).InRange(c.a, c.words); got != c.want {
@@ -233,11 +233,11 @@ func TestBitsReadAsWords(t *testing.T) {
 	devices := map[string]Value{"D100": Word(7), "D101": Bit(true), "D102": Bit(false), "D103": Word(65535)}
 	mem := NewMemory(NewRequest("t", "f", "I", nil, devices, map[string]Operand{}, nil, []Inputs{{}}))
 	var got [4]uint16
-	mem.ReadWords(Addr{"D", 100}, got[:])
+	mem.ReadWords(Address{"D", 100}, got[:])
 	if want := [4]uint16{7, 1, 0, 65535}; got != want {
 		t.Errorf("ReadWords(D100, 4) = %v; want %v", got, want)
 	}
-	if mem.Word(Addr{"D", 101}) != 1 || mem.Word(Addr{"D", 102}) != 0 {
+	if mem.Word(Address{"D", 101}) != 1 || mem.Word(Address{"D", 102}) != 0 {
 		t.Error("a bit device does not read as the word 0 or 1")
 	}
 }

@@ -14,7 +14,7 @@ import (
 func (r *Request) prepareAddrs(a *arena) {
 	n := len(r.Devices)
 	if cap(a.parsed) < n {
-		a.parsed = make([]Addr, n)
+		a.parsed = make([]Address, n)
 	}
 	addrs := a.parsed[:n]
 	r.keys = a.keys.take(n, a.chunk)
@@ -62,7 +62,7 @@ func (r *Request) prepareRuns(a *arena) {
 // key's low half and the key is exact: equal keys are equal addresses. Any other address gets a
 // hash of its kind with the top bit of the low half set, which no exact key has, and a lookup
 // compares the addresses themselves on a match.
-func addrKey(a Addr) (key uint64, exact bool) {
+func addrKey(a Address) (key uint64, exact bool) {
 	k := a.Kind
 	if uint(a.N+1) > math.MaxInt32+1 {
 		return inexactKey(a), false
@@ -87,7 +87,7 @@ func addrKey(a Addr) (key uint64, exact bool) {
 	return uint64(uint32(a.N))<<32 | packed, true
 }
 
-func inexactKey(a Addr) uint64 { return uint64(uint32(a.N))<<32 | kindHash(a.Kind) }
+func inexactKey(a Address) uint64 { return uint64(uint32(a.N))<<32 | kindHash(a.Kind) }
 
 // kindHash is an FNV-1a hash of a device kind, with bit 31 set: never an exact key's low half.
 func kindHash(kind string) uint64 {
@@ -143,7 +143,7 @@ type Request struct {
 	initial  []Value        // parallel to Devices: the initial image every memory copies
 	operands []namedOperand // Operands by name, their addresses parsed once
 	sizes    []kindSize     // DeviceSizes as a list: a few entries, read on every range check
-	addrs    []Addr         // parallel to Devices
+	addrs    []Address      // parallel to Devices
 }
 
 type kindSize struct {

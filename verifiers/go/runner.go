@@ -34,7 +34,7 @@ type Options struct {
 type Plan struct {
 	Suite   *Suite
 	Hello   Hello
-	Choices map[string]Choice // every interpretation of the suite
+	Choices Followed // every interpretation of the suite
 	Cases   []*Case
 	Known   *KnownFailures // nil without an expectations file
 	// offered: the combinations each case's vector offers, worked out for the text on demand

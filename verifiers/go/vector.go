@@ -39,16 +39,16 @@ type Initial struct {
 
 // Operand is {"device": "D100"} or {"constant": 7}.
 type Operand struct {
-	Device   string `json:"device,omitempty"`
-	Constant *int   `json:"constant,omitempty"`
-	addr     *Addr  // Device parsed, when the operand comes from Request.Operand
+	Device   string   `json:"device,omitempty"`
+	Constant *int     `json:"constant,omitempty"`
+	addr     *Address // Device parsed, when the operand comes from Request.Operand
 }
 
 // IsConstant reports whether the operand is a K/H constant rather than a device.
 func (o Operand) IsConstant() bool { return o.Constant != nil }
 
 // Addr is the operand's device address (its first word for a multi-word operand).
-func (o Operand) Addr() Addr {
+func (o Operand) Addr() Address {
 	if o.addr != nil {
 		return *o.addr
 	}
@@ -74,7 +74,7 @@ type clockField struct {
 }
 
 type setDevice struct {
-	addr  Addr
+	addr  Address
 	value Value
 }
 

@@ -38,8 +38,8 @@ func (m Mutant) New(choices map[string]string) (plcvec.Implementation, error) {
 }
 
 var (
-	sm709 = plcvec.Addr{Kind: "SM", N: 709}
-	sm700 = plcvec.Addr{Kind: "SM", N: 700}
+	sm709 = plcvec.Address{Kind: "SM", N: 709}
+	sm700 = plcvec.Address{Kind: "SM", N: 700}
 )
 
 const day = 24 * 3600
@@ -85,7 +85,7 @@ var All = []Mutant{
 		}},
 	{"tadd-sm8022-not-written", []string{spec.FamilyFx5TimeAdd}, "a flag",
 		"Only SM700 is written as the carry flag; SM8022, the table's second 'Carry' relay, is left alone.",
-		func(p *reference.Parts) { p.TADDCarryFlags = []plcvec.Addr{sm700} }},
+		func(p *reference.Parts) { p.TADDCarryFlags = []plcvec.Address{sm700} }},
 	{"taddp-every-scan", []string{spec.FamilyFx5TimeAdd}, "a changed word",
 		"TADDP adds on every scan while EN is on, like TADD, instead of once on its rising edge.",
 		func(p *reference.Parts) { p.TADDRuns = func(_, en, _ bool) bool { return en } }},
@@ -103,12 +103,12 @@ var All = []Mutant{
 	{"hour-wrap-clears-d2", []string{spec.FamilyFc6aHourMeter}, "a flag",
 		"When D1 returns to 0 hours 0 minutes 0 seconds D2 is turned off with it, instead of 'with the comparison output remaining on'.",
 		func(p *reference.Parts) {
-			p.HourOnWrap = func(mem *plcvec.Memory, d2 plcvec.Addr) { mem.SetBit(d2, false) }
+			p.HourOnWrap = func(mem *plcvec.Memory, d2 plcvec.Address) { mem.SetBit(d2, false) }
 		}},
 	{"hour-work-area-overrun", []string{spec.FamilyFc6aHourMeter}, "a write outside the vector",
 		"The kept fraction of a second is stored in a third work-area word, D3+2, which the manual does not give HOUR: a write outside the vector.",
 		func(p *reference.Parts) {
-			p.HourWorkArea = func(mem *plcvec.Memory, d3 plcvec.Addr, fractionMS int64) {
+			p.HourWorkArea = func(mem *plcvec.Memory, d3 plcvec.Address, fractionMS int64) {
 				mem.SetWords(d3, 0, 0, uint16(fractionMS))
 			}
 		}},
@@ -123,7 +123,7 @@ var All = []Mutant{
 		func(p *reference.Parts) { p.CP1EAnd = func(rlo, contact bool) bool { return rlo || contact } }},
 	{"cp1e-past-area-compared", []string{spec.FamilyCp1eTimeCompare}, "a flag",
 		"S1 or S2 at the last one or two words of the data area is compared all the same, the words past the end read as 0, instead of the error or program error CP1E-PAST-AREA-END names.",
-		func(p *reference.Parts) { p.CP1EInArea = func(*plcvec.Memory, plcvec.Addr) bool { return true } }},
+		func(p *reference.Parts) { p.CP1EInArea = func(*plcvec.Memory, plcvec.Address) bool { return true } }},
 }
 
 // Find returns the mutant of that name.

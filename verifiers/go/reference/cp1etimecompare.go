@@ -10,16 +10,16 @@ import (
 	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
-var pER = plcvec.Addr{Kind: "P_ER", N: -1}
+var pER = plcvec.Address{Kind: "P_ER", N: -1}
 
 // The arithmetic flags: "the result of a time comparison instruction is reflected in the
 // arithmetic flags (=, <>, <, <=, >, >=)."
 var cp1eFlags = []struct {
 	condition condition
-	addr      plcvec.Addr
-}{{condEQ, plcvec.Addr{Kind: "P_EQ", N: -1}}, {condNE, plcvec.Addr{Kind: "P_NE", N: -1}},
-	{condLT, plcvec.Addr{Kind: "P_LT", N: -1}}, {condLE, plcvec.Addr{Kind: "P_LE", N: -1}},
-	{condGT, plcvec.Addr{Kind: "P_GT", N: -1}}, {condGE, plcvec.Addr{Kind: "P_GE", N: -1}}}
+	addr      plcvec.Address
+}{{condEQ, plcvec.Address{Kind: "P_EQ", N: -1}}, {condNE, plcvec.Address{Kind: "P_NE", N: -1}},
+	{condLT, plcvec.Address{Kind: "P_LT", N: -1}}, {condLE, plcvec.Address{Kind: "P_LE", N: -1}},
+	{condGT, plcvec.Address{Kind: "P_GT", N: -1}}, {condGE, plcvec.Address{Kind: "P_GE", N: -1}}}
 
 // cp1eField is one byte of the Calendar/Clock Area layout, most significant first:
 // "A351.00 to A351.07 Second (00 to 59, BCD)  A351.08 to A351.15 Minute (00 to 59, BCD)
@@ -56,7 +56,7 @@ type cp1eTimeCompare struct {
 	*cp1eConfig
 	form      form
 	condition condition
-	s1, s2    plcvec.Addr
+	s1, s2    plcvec.Address
 	c         plcvec.Operand
 }
 

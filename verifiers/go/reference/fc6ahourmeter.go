@@ -7,11 +7,11 @@ import (
 	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
-var m8004 = plcvec.Addr{Kind: "M", N: 8004} // "special internal relay M8004"
+var m8004 = plcvec.Address{Kind: "M", N: 8004} // "special internal relay M8004"
 
 // "Special internal relays cannot be designated as destination device D2": the FC6A's special
 // internal relays are M8000 onwards (M8004, the error relay, is one).
-var firstSpecialRelay = plcvec.Addr{Kind: "M", N: 8000}
+var firstSpecialRelay = plcvec.Address{Kind: "M", N: 8000}
 
 // "the value returns to 0 hours 0 minutes 0 seconds" after "65,535 hours 59 minutes 59 seconds"
 const hourCycle = 65536 * 3600
@@ -22,7 +22,7 @@ const hourCycle = 65536 * 3600
 type fc6aHourMeter struct {
 	parts      *Parts
 	s1         plcvec.Operand
-	d1, d2, d3 plcvec.Addr
+	d1, d2, d3 plcvec.Address
 	writeD2    bool // false: D2 is a special relay that HOUR-D2-SPECIAL=error never writes
 	forbidden  bool // a program the page forbids, whose reading is `undefined`: nothing judged is done
 	d2Error    bool // HOUR-D2-SPECIAL=error: D2 is a special relay, an execution error

@@ -11,7 +11,7 @@ import (
 	"github.com/plcvec/plcvec/verifiers/go/spec"
 )
 
-var sm709 = plcvec.Addr{Kind: "SM", N: 709}
+var sm709 = plcvec.Address{Kind: "SM", N: 709}
 
 // field is one word of (s1)/(s2): its name (as in a step's `clock`), range, and (s3) bit.
 type field struct {
@@ -46,7 +46,7 @@ type fx5Compare struct {
 	date      bool
 	form      form
 	condition condition
-	s1, s2    plcvec.Addr
+	s1, s2    plcvec.Address
 	s3        plcvec.Operand
 	failed    bool // the last evaluation found invalid data (SM709 on)
 }

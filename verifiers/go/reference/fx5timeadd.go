@@ -13,9 +13,9 @@ const day = 24 * 3600
 
 var (
 	// "SM700 Carry ... SM8020 Zero ... SM8022 Carry"
-	sm700, sm8020, sm8022 = plcvec.Addr{Kind: "SM", N: 700}, plcvec.Addr{Kind: "SM", N: 8020}, plcvec.Addr{Kind: "SM", N: 8022}
+	sm700, sm8020, sm8022 = plcvec.Address{Kind: "SM", N: 700}, plcvec.Address{Kind: "SM", N: 8020}, plcvec.Address{Kind: "SM", N: 8022}
 	// "Error code (SD0/SD8067)"
-	errorRegisters = []plcvec.Addr{{Kind: "SD", N: 0}, {Kind: "SD", N: 8067}}
+	errorRegisters = []plcvec.Address{{Kind: "SD", N: 0}, {Kind: "SD", N: 8067}}
 	// "(s1) hour (0 to 23) ... minute (0 to 59) ... second (0 to 59)"
 	taddRanges = [3][2]int{{0, 23}, {0, 59}, {0, 59}}
 	// Seconds in one hour, minute and second, and what each word counts up to before it carries.
@@ -31,7 +31,7 @@ const (
 type fx5TimeAdd struct {
 	parts        *Parts
 	pulse        bool
-	s1, s2, d    plcvec.Addr
+	s1, s2, d    plcvec.Address
 	flagsEach    bool   // TADD-FLAGS-OFF: written-each-execution
 	carryAt24    bool   // TADD-EXACT-24
 	computeOnErr bool   // TADD-ON-ERROR: computed
@@ -116,7 +116,7 @@ func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 	// "2820H The device range specified by (s1), (s2), and (d) exceeds the corresponding device
 	// range." Nothing is read or written. ("These instructions occupy three points for each of
 	// three devices")
-	for _, a := range []plcvec.Addr{t.s1, t.s2, t.d} {
+	for _, a := range []plcvec.Address{t.s1, t.s2, t.d} {
 		if !mem.InRange(a, 3) {
 			// Both conditions: TADD-ERROR-ORDER says which code; nothing else is written, since
 			// an operand past its device cannot be read or written.
@@ -160,7 +160,7 @@ func (t *fx5TimeAdd) add(mem *plcvec.Memory) {
 // word of (d) is written again from the total afterwards (add). w1 and w2 are (s1) and (s2) as
 // add read them; fresh says nothing has been written since, so that they are what a read now gives.
 func (t *fx5TimeAdd) sumSeconds(mem *plcvec.Memory, w1, w2 *[3]uint16, fresh bool) int {
-	word := func(a plcvec.Addr, k int) int { return signed16(mem.Word(a.Offset(k))) }
+	word := func(a plcvec.Address, k int) int { return signed16(mem.Word(a.Offset(k))) }
 	total, s1 := 0, t.s1
 	if t.parts.TADDS1CopiedIntoD {
 		var w [3]uint16
@@ -211,7 +211,7 @@ func floorDivMod(n, m int) (int, int) {
 
 // fieldOutOfRange: "3405H Any of values specified by (s1) and (s2) is outside the following
 // range." Only an operand whose three words exist can be read and checked.
-func (t *fx5TimeAdd) fieldOutOfRange(mem *plcvec.Memory, a plcvec.Addr) bool {
+func (t *fx5TimeAdd) fieldOutOfRange(mem *plcvec.Memory, a plcvec.Address) bool {
 	if !mem.InRange(a, 3) {
 		return false
 	}

@@ -18,7 +18,7 @@ type Parts struct {
 	// TADDWrap: the sum in seconds -> the result in seconds and the carry.
 	TADDWrap func(total int, carryAt24 bool) (int, bool)
 	// TADDCarryFlags: the carry relays written by an execution.
-	TADDCarryFlags []plcvec.Addr
+	TADDCarryFlags []plcvec.Address
 	// TADDRuns: whether this scan executes the addition (TADD: while EN; TADDP: its rising edge).
 	TADDRuns func(pulse, en, previous bool) bool
 	// TADDOnError overrides TADD-ON-ERROR's declared alternative when not "" (a variant that
@@ -34,10 +34,10 @@ type Parts struct {
 	// this scan's elapsed milliseconds.
 	HourMeasure func(fractionMS, elapsedMS int64) (whole, keptMS int64)
 	// HourOnWrap: what a wrap of D1 does to D2.
-	HourOnWrap func(mem *plcvec.Memory, d2 plcvec.Addr)
+	HourOnWrap func(mem *plcvec.Memory, d2 plcvec.Address)
 	// HourWorkArea: what the CPU keeps in the system work area D3 (the reference: nothing
 	// that the vectors compare; scratch words are never compared).
-	HourWorkArea func(mem *plcvec.Memory, d3 plcvec.Addr, fractionMS int64)
+	HourWorkArea func(mem *plcvec.Memory, d3 plcvec.Address, fractionMS int64)
 	// CP1EMasked: whether bit `bit` of C masks its field.
 	CP1EMasked func(c uint16, bit uint) bool
 	// CP1EReflectFlags writes the arithmetic flags after a comparison of the given order.
@@ -45,7 +45,7 @@ type Parts struct {
 	// CP1EAnd combines an AND form's comparison with the preceding logic.
 	CP1EAnd func(rlo, contact bool) bool
 	// CP1EInArea: whether the three words of S1 or S2 from a lie in their data area.
-	CP1EInArea func(mem *plcvec.Memory, a plcvec.Addr) bool
+	CP1EInArea func(mem *plcvec.Memory, a plcvec.Address) bool
 }
 
 // Correct is the reference's own parts.
@@ -56,15 +56,15 @@ func Correct() Parts {
 		FX5SetSM709:      latchSM709,
 		FX5DateAccepted:  func(int, int, int) bool { return true },
 		TADDWrap:         wrapDay,
-		TADDCarryFlags:   []plcvec.Addr{sm700, sm8022},
+		TADDCarryFlags:   []plcvec.Address{sm700, sm8022},
 		TADDRuns:         taddRuns,
 		TADDFlagsOnError: true,
 		HourMeasure:      measureKeepingFraction,
-		HourOnWrap:       func(*plcvec.Memory, plcvec.Addr) {},
-		HourWorkArea:     func(*plcvec.Memory, plcvec.Addr, int64) {},
+		HourOnWrap:       func(*plcvec.Memory, plcvec.Address) {},
+		HourWorkArea:     func(*plcvec.Memory, plcvec.Address, int64) {},
 		CP1EMasked:       func(c uint16, bit uint) bool { return c>>bit&1 == 1 },
 		CP1EReflectFlags: reflectFlags,
 		CP1EAnd:          func(rlo, contact bool) bool { return rlo && contact },
-		CP1EInArea:       func(mem *plcvec.Memory, a plcvec.Addr) bool { return mem.InRange(a, 3) },
+		CP1EInArea:       func(mem *plcvec.Memory, a plcvec.Address) bool { return mem.InRange(a, 3) },
 	}
 }

@@ -162,7 +162,7 @@ func operand(req *plcvec.Request, name string) (plcvec.Operand, error) {
 }
 
 // deviceOperands sets addrs[i] to the device address of the operand names[i].
-func deviceOperands(req *plcvec.Request, names []string, addrs ...*plcvec.Addr) error {
+func deviceOperands(req *plcvec.Request, names []string, addrs ...*plcvec.Address) error {
 	for i, name := range names {
 		op, err := operand(req, name)
 		if err != nil {
