@@ -36,11 +36,14 @@ export class Layout {
 
 const ADDRESS = /^([A-Za-z_]+?)(\d+)$/;
 
+/** A numbered device address, parsed: `D100` is ["D", 100], `SM8020` is ["SM", 8020]. */
+export type Address = readonly [kind: string, number: number];
+
 /** Parsed device addresses, `D100` -> ["D", 100]: a program names few devices, so each is parsed once. */
-const parsed = new Map<string, readonly [string, number] | null>();
+const parsed = new Map<string, Address | null>();
 
 /** `D100` -> ["D", 100]; null for an address without a number. */
-export function parseAddress(address: string): readonly [string, number] | null {
+export function parseAddress(address: string): Address | null {
   let p = parsed.get(address);
   if (p === undefined) {
     const m = ADDRESS.exec(address);

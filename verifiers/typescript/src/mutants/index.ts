@@ -6,9 +6,9 @@
 import { type Implementation, Memory, type StepInputs } from "../index.js";
 import { machineImplementation, MACHINES, type MachineFactory } from "../reference/index.js";
 import { Cp1eTimeCompare, FIELDS } from "../reference/cp1e-dt.js";
-import { HourMeter } from "../reference/fc6a-hour.js";
-import { Fx5CompareMachine, type Field, DATE_FIELDS } from "../reference/fx5-compare.js";
-import { TaddMachine } from "../reference/fx5-tadd.js";
+import { Fc6aHourMeter } from "../reference/fc6a-hour.js";
+import { Fx5Compare, type Field, DATE_FIELDS } from "../reference/fx5-compare.js";
+import { Fx5TimeAdd } from "../reference/fx5-tadd.js";
 import type { Operands } from "../reference/machine.js";
 
 export type Aspect =
@@ -29,14 +29,14 @@ export interface Mutant {
 // -- FX5 time and date comparison ------------------------------------------------------------
 
 /** `<=` evaluated as `<`: equal times give non-continuity. */
-class LeAsLt extends Fx5CompareMachine {
+class LeAsLt extends Fx5Compare {
   protected override evaluate(condition: string, operands: Operands, clock: StepInputs["clock"]): boolean {
     return super.evaluate(condition === "<=" ? "<" : condition, operands, clock);
   }
 }
 
 /** SM709 cleared by an execution without error, though the manual holds it until power-off. */
-class Sm709Cleared extends Fx5CompareMachine {
+class Sm709Cleared extends Fx5Compare {
   protected override evaluate(condition: string, operands: Operands, clock: StepInputs["clock"]): boolean {
     const before = this.mem.value("SM709");
     const result = super.evaluate(condition, operands, clock);
@@ -46,7 +46,7 @@ class Sm709Cleared extends Fx5CompareMachine {
 }
 
 /** The year accepted from 1970: a year before 1980 is compared instead of turning SM709 on. */
-class YearFrom1970 extends Fx5CompareMachine {
+class YearFrom1970 extends Fx5Compare {
   override forDates(): this {
     super.forDates();
     this.fields = DATE_FIELDS.map((f): Field => (f.name === "year" ? { ...f, min: 1970 } : f));
@@ -59,7 +59,7 @@ class YearFrom1970 extends Fx5CompareMachine {
  * comparison passed on without the preceding logic: SM709 as under always-executed (a reading), but
  * a contact that conducts with its logic off (a bug no reading explains).
  */
-class AndAlwaysExecuted extends Fx5CompareMachine {
+class AndAlwaysExecuted extends Fx5Compare {
   override execute(instruction: string, operands: Operands, step: StepInputs): boolean {
     if (instruction.startsWith("AND") && step.rlo_in === false) return this.evaluate(this.parse(instruction).condition, operands, step.clock);
     return super.execute(instruction, operands, step);
@@ -67,7 +67,7 @@ class AndAlwaysExecuted extends Fx5CompareMachine {
 }
 
 /** The current clock written into the dummy (s2) words it replaces: a device that must stay unchanged. */
-class ClockIntoS2 extends Fx5CompareMachine {
+class ClockIntoS2 extends Fx5Compare {
   protected override evaluate(condition: string, operands: Operands, clock: StepInputs["clock"]): boolean {
     const s3 = this.mem.operand(operands["s3"]!);
     const s2 = operands["s2"];
@@ -81,12 +81,12 @@ class ClockIntoS2 extends Fx5CompareMachine {
 // -- FX5 TADD / TADDP ------------------------------------------------------------------------------
 
 /** Only SM700 carries; SM8022 is forgotten. */
-class OneCarryFlag extends TaddMachine {
+class OneCarryFlag extends Fx5TimeAdd {
   protected override carryFlags: readonly string[] = ["SM700"];
 }
 
 /** The destination is written even when its three words pass the end of the device: a write outside the vector. */
-class WritesPastRange extends TaddMachine {
+class WritesPastRange extends Fx5TimeAdd {
   protected override add(operands: Operands): void {
     const d = operands["d"];
     if (d !== undefined && "device" in d && !this.mem.inRange(d.device, 3)) {
@@ -97,7 +97,7 @@ class WritesPastRange extends TaddMachine {
 }
 
 /** The hour not wrapped: 23:00:00 + 02:00:00 gives 25:00:00. */
-class HourNotWrapped extends TaddMachine {
+class HourNotWrapped extends Fx5TimeAdd {
   protected override wrap(total: number): { result: number; carry: boolean } {
     const { carry } = super.wrap(total);
     return { result: total, carry };
@@ -105,7 +105,7 @@ class HourNotWrapped extends TaddMachine {
 }
 
 /** TADDP executed on every scan while EN is on, not only on its rising edge. */
-class PulseEveryScan extends TaddMachine {
+class PulseEveryScan extends Fx5TimeAdd {
   override execute(instruction: string, operands: Operands, step: StepInputs): undefined {
     return super.execute(instruction === "TADDP" ? "TADD" : instruction, operands, step);
   }
@@ -115,7 +115,7 @@ class PulseEveryScan extends TaddMachine {
  * (s1) copied into (d) word by word from the hour, then (s2) added to (d) in place: a word of (s2),
  * or a later word of (s1), that is also a word of (d) is overwritten before it is read.
  */
-class S1CopiedIntoDFirst extends TaddMachine {
+class S1CopiedIntoDFirst extends Fx5TimeAdd {
   protected override sumSeconds(s1Dev: string, s2Dev: string, dDev: string): number {
     for (let k = 0; k < 3; k++) this.mem.write(Memory.offset(dDev, k), this.mem.word(Memory.offset(s1Dev, k)));
     return super.sumSeconds(dDev, s2Dev, dDev);
@@ -125,12 +125,12 @@ class S1CopiedIntoDFirst extends TaddMachine {
 // -- FC6A HOUR ----------------------------------------------------------------------------------
 
 /** The measuring cycle one hour short: 65535:00:00 wraps to 0. */
-class CycleShort extends HourMeter {
+class CycleShort extends Fc6aHourMeter {
   protected override cycle = 65535 * 3600;
 }
 
 /** The output turns on one second late: reached only past the preset, not at it. */
-class ReachedLate extends HourMeter {
+class ReachedLate extends Fc6aHourMeter {
   protected override reached(total: number, preset: number): boolean {
     return total > preset;
   }
@@ -193,7 +193,7 @@ function replacing(family: string, factory: MachineFactory): Readonly<Record<str
   return { ...MACHINES, [family]: factory };
 }
 
-const fx5Both = (make: (mem: Memory, choices: Readonly<Record<string, string>>) => Fx5CompareMachine) => ({
+const fx5Both = (make: (mem: Memory, choices: Readonly<Record<string, string>>) => Fx5Compare) => ({
   ...MACHINES,
   "fx5-time-compare": make,
   "fx5-date-compare": (mem: Memory, choices: Readonly<Record<string, string>>) => make(mem, choices).forDates(),

@@ -40,7 +40,7 @@ function reachesByField(a: readonly number[], b: readonly number[]): boolean {
   return true;
 }
 
-export class HourMeter extends BaseMachine {
+export class Fc6aHourMeter extends BaseMachine {
   readonly contact = false;
   protected cycle = CYCLE;
   /** The fraction of a second already measured (the CPU keeps it in the work area D3, never compared). */

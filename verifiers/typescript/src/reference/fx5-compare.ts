@@ -35,7 +35,7 @@ const SM709 = "SM709";
 const mnemonics = { TM: new Map<string, { form: string; condition: string }>(), DT: new Map<string, { form: string; condition: string }>() };
 
 
-export class Fx5CompareMachine extends BaseMachine {
+export class Fx5Compare extends BaseMachine {
   readonly contact = true;
   protected fields: readonly Field[] = TIME_FIELDS;
   protected kind: "TM" | "DT" = "TM";

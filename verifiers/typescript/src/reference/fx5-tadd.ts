@@ -31,7 +31,7 @@ function divmod(n: number, d: number): [number, number] {
   return [q, n - q * d];
 }
 
-export class TaddMachine extends BaseMachine {
+export class Fx5TimeAdd extends BaseMachine {
   readonly contact = false;
   protected carryFlags = CARRY_FLAGS;
   protected ranges = RANGES;

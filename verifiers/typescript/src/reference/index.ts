@@ -5,19 +5,19 @@
  */
 import { FAMILIES, type Implementation, Memory, type RunOutcome, type StepResult, type VectorRequest } from "../index.js";
 import { Cp1eTimeCompare } from "./cp1e-dt.js";
-import { HourMeter } from "./fc6a-hour.js";
-import { Fx5CompareMachine } from "./fx5-compare.js";
-import { TaddMachine } from "./fx5-tadd.js";
+import { Fc6aHourMeter } from "./fc6a-hour.js";
+import { Fx5Compare } from "./fx5-compare.js";
+import { Fx5TimeAdd } from "./fx5-tadd.js";
 import { followsOf, type Machine } from "./machine.js";
 
 export type MachineFactory = (mem: Memory, choices: Readonly<Record<string, string>>) => Machine;
 
 /** Each family's machine. */
 export const MACHINES: Readonly<Record<string, MachineFactory>> = {
-  "fx5-time-compare": (mem, choices) => new Fx5CompareMachine(mem, choices),
-  "fx5-date-compare": (mem, choices) => new Fx5CompareMachine(mem, choices).forDates(),
-  "fx5-time-add": (mem, choices) => new TaddMachine(mem, choices),
-  "fc6a-hour-meter": (mem, choices) => new HourMeter(mem, choices),
+  "fx5-time-compare": (mem, choices) => new Fx5Compare(mem, choices),
+  "fx5-date-compare": (mem, choices) => new Fx5Compare(mem, choices).forDates(),
+  "fx5-time-add": (mem, choices) => new Fx5TimeAdd(mem, choices),
+  "fc6a-hour-meter": (mem, choices) => new Fc6aHourMeter(mem, choices),
   "cp1e-time-compare": (mem, choices) => new Cp1eTimeCompare(mem, choices),
 };
 
@@ -59,5 +59,23 @@ for (const family of FAMILIES) {
   if (MACHINES[family] === undefined) throw new Error(`the reference has no machine for ${family}`);
 }
 
-export { Cp1eTimeCompare, Fx5CompareMachine, HourMeter, TaddMachine };
+export { Cp1eTimeCompare, Fc6aHourMeter, Fx5Compare, Fx5TimeAdd };
 export type { Machine };
+
+// The machines' names before 0.3.0, each kept as a value (`new`, `extends`, `instanceof`) and as a
+// type, so that code written against them still compiles until 0.4.0.
+
+/** @deprecated since 0.3.0: use Fx5Compare; removed in 0.4.0. */
+export const Fx5CompareMachine = Fx5Compare;
+/** @deprecated since 0.3.0: use Fx5Compare; removed in 0.4.0. */
+export type Fx5CompareMachine = Fx5Compare;
+
+/** @deprecated since 0.3.0: use Fx5TimeAdd; removed in 0.4.0. */
+export const TaddMachine = Fx5TimeAdd;
+/** @deprecated since 0.3.0: use Fx5TimeAdd; removed in 0.4.0. */
+export type TaddMachine = Fx5TimeAdd;
+
+/** @deprecated since 0.3.0: use Fc6aHourMeter; removed in 0.4.0. */
+export const HourMeter = Fc6aHourMeter;
+/** @deprecated since 0.3.0: use Fc6aHourMeter; removed in 0.4.0. */
+export type HourMeter = Fc6aHourMeter;
