@@ -227,45 +227,46 @@ class Folder:
         raise TableError(f"vector {self.on} is not in {self.file.name}")
 
 
+# The damages, by what they break: the file's kind, the document's content, or its bytes.
+NOT_A_REGULAR_FILE = ("fifo", "device", "symlink-loop", "index-fifo")
+IN_THE_BYTES = ("repeated-key", "non-utf8", "not-json", "cut-mid-line", "cut-at-line")
+
+
 def damage(folder: Folder, kind: str) -> None:
-    if kind in ("fifo", "device", "symlink-loop", "index-fifo"):
-        # Not a regular file where one is expected: a loader that opens it without looking blocks
-        # (a pipe nobody writes), reads for ever (/dev/zero) or fails with ELOOP.
-        path = folder.index if kind == "index-fifo" else folder.file
-        path.unlink()
-        if kind in ("fifo", "index-fifo"):
-            os.mkfifo(path)
-        elif kind == "device":
-            path.symlink_to("/dev/zero")
-        else:
-            path.symlink_to(path.name)
-        return
-    if kind == "repeated-key-in-index":
+    if kind in NOT_A_REGULAR_FILE:
+        _not_a_regular_file(folder, kind)
+    elif kind == "repeated-key-in-index":
         text = folder.index.read_text(encoding="utf-8")
         folder.index.write_text(text.replace('{', '{"families": {}, ', 1), encoding="utf-8")
-        return
+    elif kind in IN_THE_BYTES:
+        _damage_bytes(folder, kind)
+    else:
+        _damage_document(folder, kind)
+
+
+def _not_a_regular_file(folder: Folder, kind: str) -> None:
+    # Not a regular file where one is expected: a loader that opens it without looking blocks
+    # (a pipe nobody writes), reads for ever (/dev/zero) or fails with ELOOP.
+    path = folder.index if kind == "index-fifo" else folder.file
+    path.unlink()
+    if kind in ("fifo", "index-fifo"):
+        os.mkfifo(path)
+    elif kind == "device":
+        path.symlink_to("/dev/zero")
+    else:
+        path.symlink_to(path.name)
+
+
+def _damage_document(folder: Folder, kind: str) -> None:
+    """A damage a JSON document can carry: written whole, and sealed (the index's digest matches)."""
     header, vectors = folder.read()
-    if kind == "repeated-key":
-        # A JSON object cannot hold a key twice, so the bytes are written: the target's `description`
-        # again, first, with another text (parsers differ on which one wins).
-        folder.write(header, vectors)
-        data = folder.file.read_bytes()
-        at = folder.target_line(data)
-        lines = data.split(b"\n")
-        j = next(i for i in range(at, len(lines)) if b'"description":' in lines[i])
-        lines[j] = re.sub(rb'"description": ?"', lambda m: b'"description":"a second description",' + m.group(0),
-                          lines[j], count=1)
-        folder.file.write_bytes(b"\n".join(lines))
-        folder.reseal()
-        return
     if kind == "bit-holds-2-in-final":
         v = folder.target(vectors)
         devices = v["final"]["devices"]
         name = next(d for d, value in sorted(devices.items()) if value is True or value is False)
         devices[name] = 2
         folder.write(header, vectors)
-        return
-    if kind in ("unknown-key", "bit-holds-2", "word-out-of-range", "missing-steps", "duplicate-id"):
+    elif kind in ("unknown-key", "bit-holds-2", "word-out-of-range", "missing-steps", "duplicate-id"):
         v = folder.target(vectors)
         if kind == "unknown-key":
             v["surprise"] = 1
@@ -297,26 +298,41 @@ def damage(folder: Folder, kind: str) -> None:
         folder.file.unlink()
     elif kind == "missing-index":
         folder.index.unlink()
-    else:  # damages of the bytes themselves, left unsealed as an interrupted copy would be
-        data = folder.file.read_bytes()
-        lines = data.split(b"\n")
-        at = folder.target_line(data)
-        if kind == "non-utf8":
-            # The JSON form spreads a vector over lines (its description on a later one); the
-            # JSON-lines form holds it on one.
-            j = next(i for i in range(at, len(lines)) if b'"description":' in lines[i])
+    else:
+        raise TableError(f"no damage is named {kind!r}")
+
+
+def _damage_bytes(folder: Folder, kind: str) -> None:
+    """A damage of the bytes themselves. A repeated key and a byte that is not UTF-8 are sealed (the
+    loader must find them in a file whose digest matches); the cuts and the broken line are left
+    unsealed, as an interrupted copy would be."""
+    if kind == "repeated-key":
+        # A JSON object cannot hold a key twice, so the bytes are written: the target's `description`
+        # again, first, with another text (parsers differ on which one wins).
+        folder.write(*folder.read())
+    data = folder.file.read_bytes()
+    lines = data.split(b"\n")
+    at = folder.target_line(data)
+    if kind in ("repeated-key", "non-utf8"):
+        # The JSON form spreads a vector over lines (its description on a later one); the
+        # JSON-lines form holds it on one.
+        j = next(i for i in range(at, len(lines)) if b'"description":' in lines[i])
+        if kind == "repeated-key":
+            lines[j] = re.sub(rb'"description": ?"', lambda m: b'"description":"a second description",' + m.group(0),
+                              lines[j], count=1)
+        else:
             lines[j] = re.sub(rb'"description": ?"', lambda m: m.group(0) + b"\xff", lines[j], count=1)
-            folder.file.write_bytes(b"\n".join(lines))
-            folder.reseal()
-            return
-        if kind == "not-json":
-            lines[at] = b'{"id": this is not JSON'
-        elif kind == "cut-mid-line":
-            lines = lines[:at] + [lines[at][: len(lines[at]) // 2]]
-        elif kind == "cut-at-line":
-            lines = lines[:at]
-            lines.append(b"")
         folder.file.write_bytes(b"\n".join(lines))
+        folder.reseal()
+        return
+    if kind == "not-json":
+        lines[at] = b'{"id": this is not JSON'
+    elif kind == "cut-mid-line":
+        lines = lines[:at] + [lines[at][: len(lines[at]) // 2]]
+    elif kind == "cut-at-line":
+        lines = lines[:at]
+        lines.append(b"")
+    folder.file.write_bytes(b"\n".join(lines))
 
 
 class Folders:
