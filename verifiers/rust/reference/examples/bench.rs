@@ -67,8 +67,11 @@ const EACH_VECTOR_SECONDS: f64 = 0.5;
 /// Starts of the guard timed for its fixed cost.
 const FIXED_SAMPLES: usize = 21;
 
-// Over 80 lines, kept whole: the bench's passes one after the other, each figure beside the pass
-// that measures it, as the header of its JSON line lists them.
+#[allow(
+    clippy::too_many_lines,
+    reason = "over 80 lines: the bench's passes one after the other, each figure beside the pass that \
+              measures it, as the header of its JSON line lists them"
+)]
 fn main() -> std::process::ExitCode {
     let started = Instant::now();
     let suite = match Suite::from_env() {
