@@ -8,18 +8,18 @@ import sys
 
 from plcvec_reference import make_machine
 from plcvec_reference.adapter import ReferenceAdapter
-from plcvec_reference.fx5_compare import FX5CompareMachine
-from plcvec_reference.fx5_tadd import TADDMachine
+from plcvec_reference.fx5_compare import Fx5Compare
+from plcvec_reference.fx5_tadd import Fx5TimeAdd
 
 
-class HourAsMinuteMachine(FX5CompareMachine):
+class HourAsMinuteMachine(Fx5Compare):
     """Reads the minute word where the hour belongs when comparing (the range check is still right)."""
 
     def _compare(self, s1, s2, s3):
         return super()._compare([s1[1], *s1[1:]], [s2[1], *s2[1:]], s3)
 
 
-class EveryScanMachine(TADDMachine):
+class EveryScanMachine(Fx5TimeAdd):
     """TADDP adds on every scan EN is on, as TADD does, instead of on the rising edge only."""
 
     def execute(self, instruction, operands, step):

@@ -119,11 +119,11 @@ def test_the_failure_block_names_the_unjudged_devices(suite):
 def test_the_line_is_in_every_block_of_such_a_vector_and_only_there(suite):
     defaults = {i: d["default"] for i, d in suite.interpretations().items()}
     followed = dict(defaults, **{D1_OUT: "undefined"})
-    from plcvec_verify.runner import VectorResult
+    from plcvec_verify.runner import Verdict
 
     v = suite.by_id[HALF]
     for status in ("error", "skip", "not-run", "stale", "xfail"):
-        r = VectorResult(v["id"], v["family"], v["instruction"], status, message="why")
+        r = Verdict(v["id"], v["family"], v["instruction"], status, message="why")
         assert block(r, v, followed, defaults, suite.expectations)[2] == UNJUDGED_LINE, status
         assert UNJUDGED_LINE not in block(r, v, defaults, defaults, suite.expectations)
     # After the judged-by line, which a field that under-judging decides brings in (below).

@@ -15,11 +15,15 @@ instruction family:
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from plcvec_verify._renamed import old_names
+
 from . import cp1e_dt, fc6a_hour, fx5_compare, fx5_tadd
-from .cp1e_dt import CP1ETimeCompare
-from .fc6a_hour import HourMeter
-from .fx5_compare import FX5CompareMachine
-from .fx5_tadd import TADDMachine
+from .cp1e_dt import Cp1eTimeCompare
+from .fc6a_hour import Fc6aHourMeter
+from .fx5_compare import Fx5Compare
+from .fx5_tadd import Fx5TimeAdd
 from .machine import DeviceMemory, run_steps
 
 DEFAULTS = {
@@ -42,11 +46,11 @@ ALTERNATIVES = {
 
 # family -> (machine class, the constructor's arguments between device_sizes and choices)
 MACHINES = {
-    "fx5-time-compare": (FX5CompareMachine, ("TM",)),
-    "fx5-date-compare": (FX5CompareMachine, ("DT",)),
-    "fx5-time-add": (TADDMachine, ()),
-    "fc6a-hour-meter": (HourMeter, ()),
-    "cp1e-time-compare": (CP1ETimeCompare, ()),
+    "fx5-time-compare": (Fx5Compare, ("TM",)),
+    "fx5-date-compare": (Fx5Compare, ("DT",)),
+    "fx5-time-add": (Fx5TimeAdd, ()),
+    "fc6a-hour-meter": (Fc6aHourMeter, ()),
+    "cp1e-time-compare": (Cp1eTimeCompare, ()),
 }
 
 
@@ -79,7 +83,18 @@ def run_vector(vector: dict, choices: dict | None = None):
     return run_steps(machine, vector, scratch)
 
 
+# The machines' names until 0.3.0 (old -> new), deprecated until 0.4.0, with a DeprecationWarning; in
+# __all__ still, so that `from plcvec_reference import *` gives them too.
+RENAMED = {"FX5CompareMachine": "Fx5Compare", "TADDMachine": "Fx5TimeAdd", "HourMeter": "Fc6aHourMeter",
+           "CP1ETimeCompare": "Cp1eTimeCompare"}
+if TYPE_CHECKING:
+    from .cp1e_dt import CP1ETimeCompare  # noqa: F401
+    from .fc6a_hour import HourMeter  # noqa: F401
+    from .fx5_compare import FX5CompareMachine  # noqa: F401
+    from .fx5_tadd import TADDMachine  # noqa: F401
+__getattr__ = old_names(__name__, RENAMED)
+
 __all__ = [
     "run_vector", "make_machine", "MACHINES", "DEFAULTS", "ALTERNATIVES", "DeviceMemory",
-    "FX5CompareMachine", "TADDMachine", "HourMeter", "CP1ETimeCompare",
+    "Fx5Compare", "Fx5TimeAdd", "Fc6aHourMeter", "Cp1eTimeCompare", *RENAMED,
 ]

@@ -4,6 +4,10 @@ Written from the manual page cp1e-time-compare-DT.txt (W483 p. 2-93).
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from plcvec_verify._renamed import old_names
+
 from .machine import DeviceMemory, operand_value
 
 ALTERNATIVES = {
@@ -74,7 +78,7 @@ def bcd_value(b: int) -> int:
     return (b >> 4) * 10 + (b & 0xF)
 
 
-class CP1ETimeCompare:
+class Cp1eTimeCompare:
     """A CP1E CPU executing one time-comparison instruction per scan.
 
     P_ER is an Omron *condition flag*: it reflects the result of the instruction just
@@ -181,3 +185,9 @@ class CP1ETimeCompare:
             return True
         contact = self.evaluate(condition, operands)
         return rlo or contact
+
+
+# Cp1eTimeCompare's name until 0.3.0, deprecated until 0.4.0, with a DeprecationWarning.
+if TYPE_CHECKING:
+    CP1ETimeCompare = Cp1eTimeCompare
+__getattr__ = old_names(__name__, {"CP1ETimeCompare": "Cp1eTimeCompare"})

@@ -4,6 +4,10 @@ Written from the manual page fc6a-hour-meter-HOUR.txt.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from plcvec_verify._renamed import old_names
+
 from .machine import DeviceMemory, split_address
 
 ALTERNATIVES = {
@@ -73,7 +77,7 @@ def tick(hms):
     return [h, m, s], False
 
 
-class HourMeter:
+class Fc6aHourMeter:
     """An FC6A CPU executing one HOUR instruction per scan.
 
     The fraction of a second already measured lives in this object (on the CPU it
@@ -247,3 +251,9 @@ class HourMeter:
         mem.write(d2, bool(reached or (self.wrapped and mem.read(d2))))
         if wrapped_now and compared_first and mem.read(d2):
             self.wrapped = True     # on when D1 wrapped, after the comparison
+
+
+# Fc6aHourMeter's name until 0.3.0, deprecated until 0.4.0, with a DeprecationWarning.
+if TYPE_CHECKING:
+    HourMeter = Fc6aHourMeter
+__getattr__ = old_names(__name__, {"HourMeter": "Fc6aHourMeter"})

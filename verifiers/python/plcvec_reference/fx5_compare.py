@@ -6,6 +6,10 @@ hour/minute/second replaced by year/month/day, so one class serves both.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from plcvec_verify._renamed import old_names
+
 from .machine import DeviceMemory, to_signed16
 
 # Interpretation defaults (spec/fx5-time-compare.yaml, spec/fx5-date-compare.yaml).
@@ -66,7 +70,7 @@ def parse_mnemonic(instruction: str, kind: str):
     raise ValueError(f"not an FX5 {kind} comparison: {instruction}")
 
 
-class FX5CompareMachine:
+class Fx5Compare:
     """An FX5 CPU executing one time- or date-comparison contact per scan."""
 
     CONTACT = True
@@ -200,3 +204,9 @@ class FX5CompareMachine:
         if self.failed and self.choices["FX5-OR-ON-ERROR"] == "result-off":
             return False
         return rlo or contact
+
+
+# Fx5Compare's name until 0.3.0, deprecated until 0.4.0, with a DeprecationWarning.
+if TYPE_CHECKING:
+    FX5CompareMachine = Fx5Compare
+__getattr__ = old_names(__name__, {"FX5CompareMachine": "Fx5Compare"})

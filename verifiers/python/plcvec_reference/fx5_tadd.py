@@ -4,6 +4,10 @@ Written from the manual page fx5-time-add-TADD.txt.
 """
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
+from plcvec_verify._renamed import old_names
+
 from .machine import DeviceMemory, to_signed16, to_word
 
 ALTERNATIVES = {
@@ -39,7 +43,7 @@ WEIGHTS = (3600, 60, 1)
 RADIX = (24, 60, 60)
 
 
-class TADDMachine:
+class Fx5TimeAdd:
     """An FX5 CPU executing TADD or TADDP once per scan."""
 
     CONTACT = False
@@ -169,3 +173,9 @@ class TADDMachine:
         if run:
             self.add(operands)
         return None
+
+
+# Fx5TimeAdd's name until 0.3.0, deprecated until 0.4.0, with a DeprecationWarning.
+if TYPE_CHECKING:
+    TADDMachine = Fx5TimeAdd
+__getattr__ = old_names(__name__, {"TADDMachine": "Fx5TimeAdd"})

@@ -12,7 +12,7 @@ from .errors import VerifyError
 
 # interpretation id -> alternative id, as declared (hello) or given (--choose).
 Choices = dict[str, str]
-# interpretation id -> {"alternative", "declared": bool, "families"}: what a run follows (RunReport).
+# interpretation id -> {"alternative", "declared": bool, "families"}: what a run follows (Report).
 Followed = dict[str, dict]
 
 

@@ -15,7 +15,7 @@ from .expect import PACKED_FORMAT, Expected
 from .protocol import WORD_MAX, result_errors, result_shape_ok
 # Problem, MISSING, UNLISTED and show are the verdict's (verdict.py), imported here also for those who
 # import them from this module, as 0.1.0 had them.
-from .verdict import ERROR, FAIL, MISSING, PASS, SKIP, UNLISTED, Problem, VectorResult, same, show  # noqa: F401
+from .verdict import ERROR, FAIL, MISSING, PASS, SKIP, UNLISTED, Problem, Verdict, same, show  # noqa: F401
 
 _MISSING, _UNLISTED = MISSING, UNLISTED
 
@@ -43,7 +43,7 @@ def passes_at_once(answer, expected: Expected) -> bool:
     return len(msg) == 1 and steps_pass_by_value(expected, msg.get("steps"))
 
 
-def judge(answer, expected: Expected, cpu_writes=frozenset()) -> VectorResult:
+def judge(answer, expected: Expected, cpu_writes=frozenset()) -> Verdict:
     """The verdict on one adapter's answer (an adapters.Answer, or its fields as a plain tuple), the long
     way: a fault or a message the schema refuses is an error, steps are compared field by field, a
     `skip` skips and an `error` is one. Right for every answer; `passes_at_once` spares the usual one.
@@ -56,7 +56,7 @@ def judge(answer, expected: Expected, cpu_writes=frozenset()) -> VectorResult:
     # A comparison that passes has seen every reported value equal to one of the vector's, which
     # are valid; the values of devices it does not compare (scratch, unjudged) it has not seen.
     errors = () if fault or (problems == [] and not expected.ignored) else result_errors(msg)
-    verdict = partial(VectorResult, expected.id, expected.family, expected.instruction, choices=expected.choices)
+    verdict = partial(Verdict, expected.id, expected.family, expected.instruction, choices=expected.choices)
     if fault or errors:
         return verdict(ERROR, message=fault or "the result does not match result.schema.json: " + "; ".join(errors))
     if "steps" in msg:

@@ -9,8 +9,8 @@ from __future__ import annotations
 import re
 from collections import Counter
 
-from .runner import RunReport
-from .verdict import (ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, UNLISTED, XFAIL, Problem, VectorResult,
+from ._report import Report
+from .verdict import (ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STATUSES, UNLISTED, XFAIL, Problem, Verdict,
                       show)
 
 SHOW_PROBLEMS = 12      # field lines shown per failing vector
@@ -126,7 +126,7 @@ def _differs(mine, other, p: Problem) -> bool:
     return a != b or type(a) is not type(b)
 
 
-def block(r: VectorResult, vector: dict | None, followed: dict, defaults: dict, expectations) -> list[str]:
+def block(r: Verdict, vector: dict | None, followed: dict, defaults: dict, expectations) -> list[str]:
     """The lines of one vector's verdict (TEXT.md, "The failure block")."""
     lines = [f"{r.status.upper()} {r.id}"]
     vector = vector or {}
@@ -160,7 +160,19 @@ def block(r: VectorResult, vector: dict | None, followed: dict, defaults: dict, 
     return lines
 
 
-def rollup_lines(report: RunReport, inferred, syntax: str = "verify") -> list[str]:
+def describe(verdict: Verdict, vector: dict | None, followed: dict, defaults: dict, expectations) -> str:
+    """One vector's verdict as the failure text prints it (VOCABULARY.md: `describe(verdict)`): the
+    lines of `block`, one string. `followed` and `defaults` map each interpretation to its alternative
+    (what the run followed, the suite's defaults); `expectations` is the suite's (`Suite.expectations`).
+
+    Here, not in `verdict` as the other runners have it: the text imports the verdict (and the
+    inference, which imports it too), so `verdict`, a leaf, cannot import the text without a circle;
+    nor in the package itself, where `plcvec_verify.describe` is this module.
+    """
+    return "\n".join(block(verdict, vector, followed, defaults, expectations))
+
+
+def rollup_lines(report: Report, inferred, syntax: str = "verify") -> list[str]:
     """The failing vectors and known failures grouped by what would explain them (TEXT.md, "The
     roll-up by reading"); `syntax` the runner whose declaration is shown ("verify" or "pytest")."""
     by_id = report.suite.by_id
@@ -253,7 +265,7 @@ def _reading(key) -> str:
     return ", ".join(f"{i}={a}" for i, a in key)
 
 
-def skipped_lines(report: RunReport) -> list[str]:
+def skipped_lines(report: Report) -> list[str]:
     """How many vectors were skipped and why, most common reason first (ties by reason): a run that
     skips much proves little, so the number is said before the totals, not hidden among them."""
     skipped = [r.message for r in report.results if r.status == SKIP]
@@ -268,19 +280,19 @@ def skipped_lines(report: RunReport) -> list[str]:
     return lines
 
 
-def interpretations_line(report: RunReport) -> str:
+def interpretations_line(report: Report) -> str:
     """Every interpretation of the families run with the alternative followed, declared or default."""
     items = [f"{i}={d['alternative']} ({'declared' if d['declared'] else 'default'})"
              for i, d in sorted(report.interpretations.items())]
     return "interpretations: " + (", ".join(items) or "(none)")
 
 
-def totals_line(report: RunReport) -> str:
+def totals_line(report: Report) -> str:
     """`N vectors: a pass, b fail, c skip` (other statuses when not 0), without the time."""
     counts = report.counts
     parts = [f"{counts[s]} {s}" for s in STATUSES if counts[s] or s in (PASS, FAIL, SKIP)]
     return f"{len(report.results)} vectors: " + ", ".join(parts)
 
 
-__all__ = ["block", "rollup_lines", "declaration", "skipped_lines", "interpretations_line", "totals_line", "inputs_text",
-           "operands_text", "clock_text", "percent", "deciding", "FAILING"]
+__all__ = ["describe", "block", "rollup_lines", "declaration", "skipped_lines", "interpretations_line", "totals_line",
+           "inputs_text", "operands_text", "clock_text", "percent", "deciding", "FAILING"]

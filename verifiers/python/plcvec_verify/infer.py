@@ -13,8 +13,8 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from itertools import combinations
 
+from ._report import Report
 from .compare import compare
-from .runner import RunReport
 from .verdict import ERROR, FAIL, NOT_RUN, PASS, XFAIL
 
 
@@ -79,7 +79,7 @@ def _same_expectation(under, followed) -> bool:
     return True
 
 
-def judge_all(report: RunReport, cpu_writes=frozenset()) -> list[Judged]:
+def judge_all(report: Report, cpu_writes=frozenset()) -> list[Judged]:
     """Every vector of `report` with an answer (passed, failed, or a failure the expectations file
     lists), with the offered combinations under which that answer passes."""
     suite = report.suite
@@ -187,7 +187,7 @@ def unjudging_alternatives(suite) -> frozenset:
                      for i in alt.get("unjudged", ()))
 
 
-def inference(report: RunReport, cpu_writes=frozenset()) -> Inference:
+def inference(report: Report, cpu_writes=frozenset()) -> Inference:
     """The inference over one run: the choice, and what it explains of the run's failures."""
     known = report.suite.interpretations()
     followed = {i: d["alternative"] for i, d in report.interpretations.items()}
@@ -215,7 +215,7 @@ def inference(report: RunReport, cpu_writes=frozenset()) -> Inference:
     return result
 
 
-def declaration_lines(report: RunReport, inferred: Inference) -> list[str]:
+def declaration_lines(report: Report, inferred: Inference) -> list[str]:
     """What `--infer` prints after the roll-up: the alternatives found, the `--choose` line and the
     hello declaration that give them, and whether one choice explains every vector (TEXT.md)."""
     lines = [f"INFERRED from {inferred.judged} judged vectors:"]

@@ -25,7 +25,7 @@ else:  # the same parser, published as a backport (a dependency below 3.11 only)
 from .atomic import write_atomic
 from .errors import VerifyError
 from .files import check_regular
-from .verdict import ERROR, FAIL, FAILING, NOT_RUN, PASS, STALE, XFAIL, VectorResult
+from .verdict import ERROR, FAIL, FAILING, NOT_RUN, PASS, STALE, XFAIL, Verdict
 
 SECTION = "known-failure"
 
@@ -100,7 +100,7 @@ class KnownFailures:
             went = suite.merged.get(vid)
             why = (f": it was merged into {went}; list that id instead" if went
                    else "; remove it from the expectations file")
-            results.append(VectorResult(vid, "", "", STALE, message=(
+            results.append(Verdict(vid, "", "", STALE, message=(
                 f"listed as a known failure ({self.path}:{entry.line}) but the suite has no such vector{why}")))
 
 

@@ -93,7 +93,7 @@ class VectorItem(pytest.Item):
 
     def _detail(self, result):
         """The one failure block (verifiers/parity/TEXT.md), as `plcvec verify` prints it."""
-        from .describe import block
+        from .describe import describe
 
         report = getattr(self.config, "_plcvec_report", None)
         if report is None:      # no run was made: a message alone
@@ -101,7 +101,7 @@ class VectorItem(pytest.Item):
         suite = report.suite
         defaults = {i: d["default"] for i, d in suite.interpretations().items()}
         followed = {**defaults, **{i: d["alternative"] for i, d in report.interpretations.items()}}
-        return "\n".join(block(result, self.vector, followed, defaults, suite.expectations))
+        return describe(result, self.vector, followed, defaults, suite.expectations)
 
     def repr_failure(self, excinfo):
         if isinstance(excinfo.value, VectorFailure):

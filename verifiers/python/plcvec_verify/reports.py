@@ -7,14 +7,14 @@ from __future__ import annotations
 
 import json
 import xml.etree.ElementTree as ET
+from ._report import Report
 from .atomic import write_atomic
-from .runner import RunReport
 from .verdict import ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL
 
 SHOW_PROBLEMS = 12     # field lines shown per failing vector in the summary
 
 
-def header(report: RunReport) -> dict:
+def header(report: Report) -> dict:
     s = report.suite
     return {
         "suite": s.source,
@@ -30,7 +30,7 @@ def header(report: RunReport) -> dict:
     }
 
 
-def summary_text(report: RunReport, verbose: bool = False, inferred=None, infer: bool = False) -> str:
+def summary_text(report: Report, verbose: bool = False, inferred=None, infer: bool = False) -> str:
     """What a person reads at the end of a run (verifiers/parity/TEXT.md): each failing vector once,
     with its field diff, then the roll-up by reading, the skips by reason, and the summary lines.
 
@@ -82,13 +82,13 @@ def summary_text(report: RunReport, verbose: bool = False, inferred=None, infer:
     return "\n".join(lines) + "\n"
 
 
-def skipped_lines(report: RunReport) -> list[str]:
+def skipped_lines(report: Report) -> list[str]:
     from .describe import skipped_lines as lines
 
     return lines(report)
 
 
-def jsonl_lines(report: RunReport):
+def jsonl_lines(report: Report):
     yield {"type": "run", **header(report)}
     for r in report.results:
         item = {"type": "vector", "id": r.id, "family": r.family, "instruction": r.instruction, "status": r.status}
@@ -111,11 +111,11 @@ def _jsonable(value):
     return value if isinstance(value, (bool, int, float, str)) or value is None else repr(value)
 
 
-def write_jsonl(report: RunReport, path) -> None:
+def write_jsonl(report: Report, path) -> None:
     write_atomic(path, "".join(json.dumps(item, sort_keys=True, ensure_ascii=False) + "\n" for item in jsonl_lines(report)))
 
 
-def junit_xml(report: RunReport) -> str:
+def junit_xml(report: Report) -> str:
     h = header(report)
     root = ET.Element("testsuites", name="plcvec", tests=str(len(report.results)),
                       failures=str(report.count(FAIL) + report.count(STALE)),
@@ -159,5 +159,5 @@ def junit_xml(report: RunReport) -> str:
     return '<?xml version="1.0" encoding="UTF-8"?>\n' + ET.tostring(root, encoding="unicode") + "\n"
 
 
-def write_junit(report: RunReport, path) -> None:
+def write_junit(report: Report, path) -> None:
     write_atomic(path, junit_xml(report))

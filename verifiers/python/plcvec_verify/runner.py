@@ -9,14 +9,16 @@ from __future__ import annotations
 
 import time
 from contextlib import contextmanager
-from dataclasses import dataclass, field
 from operator import itemgetter
+from typing import TYPE_CHECKING
 
+from ._renamed import old_names
+from ._report import Report
 from .adapters import AdapterAbort
 from .choices import defaults_of, followed_alternatives, resolve_choices
 from .collector import collector_paused
 from .compare import judge, passes_at_once
-from .gate import NOTHING_TESTED, Gate
+from .gate import Gate
 from .known import KnownFailures
 from .protocol import hello_request
 from .selection import Selection, select
@@ -25,59 +27,18 @@ from .suite import Suite
 # The statuses, the verdict type and its problems live in the leaf verdict.py (known.py needs them
 # too); they are named here as well, where 0.1.0's users import them from.
 from .verdict import (ERROR, FAIL, FAILING, NOT_RUN, PASS, SKIP, STALE, STATUSES, XFAIL,  # noqa: F401
-                      Problem, VectorResult)
+                      Problem, Verdict)
+
+# 0.1.0's names of Report and Verdict, deprecated until 0.4.0: static tools see them here as imports of
+# the one class each; at run time __getattr__ gives them with a DeprecationWarning.
+if TYPE_CHECKING:
+    from ._report import Report as RunReport  # noqa: F401
+    from .verdict import Verdict as VectorResult  # noqa: F401
+__getattr__ = old_names(__name__, {"RunReport": "Report", "VectorResult": "Verdict"})
 
 # The per-vector bookkeeping of a run is done with map() over these where it can: a run over the
 # golden set is a few microseconds a vector, and a Python-level loop is a good part of that.
 _ID, _FAMILY, _INSTRUCTION = itemgetter("id"), itemgetter("family"), itemgetter("instruction")
-
-
-@dataclass
-class RunReport:
-    suite: Suite
-    adapter: dict
-    interpretations: dict          # id -> {"alternative", "declared": bool, "family"}
-    results: list
-    seconds: float = 0.0
-    aborted: str = ""
-    notes: list = field(default_factory=list)   # adapter notes not tied to a vector
-    selection: Selection = field(default_factory=Selection)
-    stopped: int = 0                            # the signal that stopped the run, if one did
-    gate: Gate = field(default_factory=Gate)    # what the run must show beyond "no failures"
-    cpu_writes: tuple = ()                      # devices the implementation's CPU writes on its own
-    known_file: str = ""                        # the known-failures file as given, when there was one
-
-    def count(self, status):
-        return sum(1 for r in self.results if r.status == status)
-
-    @property
-    def counts(self):
-        return {s: self.count(s) for s in STATUSES}
-
-    @property
-    def failed(self):
-        return [r for r in self.results if r.status in FAILING]
-
-    @property
-    def selected(self):
-        """The vectors the run was given (not the stale ids an expectations file adds)."""
-        return sum(1 for r in self.results if r.family)
-
-    @property
-    def shortfall(self) -> str:
-        """Why the run proves too little to pass, though nothing failed ("" when it is enough)."""
-        return self.gate.shortfall(self.counts, self.selected)
-
-    @property
-    def exit_code(self):
-        """128+N stopped by signal N; 2 harness error; 1 failures; 5 nothing (or too little) tested; 0 passed."""
-        if self.stopped:
-            return 128 + self.stopped
-        if self.aborted:
-            return 2
-        if self.failed:
-            return 1
-        return NOTHING_TESTED if self.shortfall else 0
 
 
 class Plan:
@@ -97,7 +58,7 @@ class Plan:
             # Per vector, the result it gets when an answer passes, and its expectation, made once here:
             # a passing result holds nothing of the answer, and making it again for every vector of every
             # run was a good part of a run's time. Each answer is still judged in full (_judge_answers).
-            self.judging = {vid: (VectorResult(vid, exp.family, exp.instruction, PASS, choices=exp.choices), exp)
+            self.judging = {vid: (Verdict(vid, exp.family, exp.instruction, PASS, choices=exp.choices), exp)
                             for vid, exp in self.expected.items()}
         self.wire: dict[str, bytes] = {}   # encoded requests, filled by a process adapter
         # For a run of exactly `vectors` (the same list): the requests in order, the families and
@@ -110,7 +71,7 @@ class Plan:
 
 def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: dict | None = None,
         known: KnownFailures | None = None, progress=None, plan: Plan | None = None,
-        vectors: list | None = None, keep_open: bool = False, gate: Gate | None = None) -> RunReport:
+        vectors: list | None = None, keep_open: bool = False, gate: Gate | None = None) -> Report:
     """Run the selected vectors through `adapter` (adapters.InProcess or stdio.StdioAdapter).
 
     `vectors`, when given, is the list to run instead of `selection` (the pytest plugin passes the
@@ -130,8 +91,8 @@ def run(suite: Suite, adapter, selection: Selection = Selection(), *, choose: di
     runnable, results = _supported(vectors, set(hello["instructions"]), plan.instructions if planned else None)
     if plan is None:
         plan = Plan(suite, runnable, followed_alternatives(interpretations))
-    report = RunReport(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate(),
-                       cpu_writes=tuple(sorted(cpu_writes)))
+    report = Report(suite, hello["adapter"], interpretations, [], selection=selection, gate=gate or Gate(),
+                    cpu_writes=tuple(sorted(cpu_writes)))
     with _ended_by_the_adapter(report, adapter):
         _judge_answers(adapter, plan, runnable, results, cpu_writes, progress)
     _close(report, adapter, keep_open)
@@ -156,8 +117,8 @@ def _supported(vectors: list, supported: set, instructions: frozenset | None) ->
         if v["instruction"] in supported:
             runnable.append(v)
         else:
-            skipped[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], SKIP,
-                                            message=f"the adapter does not support {v['instruction']}")
+            skipped[v["id"]] = Verdict(v["id"], v["family"], v["instruction"], SKIP,
+                                       message=f"the adapter does not support {v['instruction']}")
     return runnable, skipped
 
 
@@ -185,7 +146,7 @@ def _judge_answers(adapter, plan: Plan, runnable: list, results: dict, cpu_write
 
 
 @contextmanager
-def _ended_by_the_adapter(report: RunReport, adapter):
+def _ended_by_the_adapter(report: Report, adapter):
     """An adapter that cannot go on, or a signal, ends the run with the verdicts it has (the report says
     why). Anything else ends the adapter before it goes on up."""
     try:
@@ -200,7 +161,7 @@ def _ended_by_the_adapter(report: RunReport, adapter):
         raise
 
 
-def _close(report: RunReport, adapter, keep_open: bool) -> None:
+def _close(report: Report, adapter, keep_open: bool) -> None:
     """End the adapter after the run: at once after a signal, left running when the caller keeps it
     for another run (unless the run was aborted), else closed. Closing must never lose the results."""
     if report.stopped:
@@ -219,11 +180,11 @@ def _not_run(results: dict, runnable: list) -> None:
     """Every vector the adapter stopped before is NOT_RUN: it counts against the run."""
     for v in runnable:
         if v["id"] not in results:
-            results[v["id"]] = VectorResult(v["id"], v["family"], v["instruction"], NOT_RUN,
-                                            message="not run: the adapter stopped before it")
+            results[v["id"]] = Verdict(v["id"], v["family"], v["instruction"], NOT_RUN,
+                                       message="not run: the adapter stopped before it")
 
 
-def _attach_notes(report: RunReport, results: dict, notes) -> None:
+def _attach_notes(report: Report, results: dict, notes) -> None:
     """The adapter's notes (e.g. what it wrote to stderr), each on its vector's verdict when it names
     one, else on the report."""
     for vid, text in notes:
@@ -242,5 +203,5 @@ def _end(adapter):
         pass
 
 
-__all__ = ["run", "Plan", "RunReport", "VectorResult", "Problem", "STATUSES", "FAILING",
+__all__ = ["run", "Plan", "Report", "Verdict", "RunReport", "VectorResult", "Problem", "STATUSES", "FAILING",
            "PASS", "FAIL", "ERROR", "SKIP", "XFAIL", "STALE", "NOT_RUN"]

@@ -17,8 +17,12 @@ STATUSES = (PASS, FAIL, ERROR, SKIP, XFAIL, STALE, NOT_RUN)
 FAILING = frozenset((FAIL, ERROR, STALE, NOT_RUN))
 
 
-class VectorResult(NamedTuple):
-    """The verdict on one vector. Immutable: a change (a known failure applied) makes a new one."""
+class Verdict(NamedTuple):
+    """The verdict on one vector. Immutable: a change (a known failure applied) makes a new one.
+
+    `VectorResult` (`plcvec_verify.runner`, `plcvec_verify`), its name until 0.3.0, still works until
+    0.4.0, with a DeprecationWarning.
+    """
 
     id: str
     family: str
@@ -29,10 +33,6 @@ class VectorResult(NamedTuple):
     notes: tuple = ()          # e.g. what the adapter wrote to stderr
     choices: dict = {}         # interpretation -> alternative the vector was judged by; never mutated
     answer: list | None = None  # a failing vector's reported steps, for the inference (infer.py)
-
-
-# VOCABULARY.md's name for the verdict type; VectorResult is the name 0.1.0's users import.
-Verdict = VectorResult
 
 
 MISSING = "<not reported>"
@@ -110,5 +110,5 @@ def failing(status: str) -> bool:
     return status in FAILING
 
 
-__all__ = ["PASS", "SKIP", "XFAIL", "FAIL", "ERROR", "STALE", "NOT_RUN", "STATUSES", "FAILING", "VectorResult",
+__all__ = ["PASS", "SKIP", "XFAIL", "FAIL", "ERROR", "STALE", "NOT_RUN", "STATUSES", "FAILING",
            "Verdict", "Problem", "MISSING", "UNLISTED", "show", "same", "failing"]

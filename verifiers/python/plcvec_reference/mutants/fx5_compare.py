@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import calendar
 
-from ..fx5_compare import CONDITIONS, SM709, FX5CompareMachine, parse_mnemonic
+from ..fx5_compare import CONDITIONS, SM709, Fx5Compare, parse_mnemonic
 from ..machine import operand_value, to_signed16
 from .registry import DeviceRangeUnchecked, mutant, with_operand
 
@@ -16,7 +16,7 @@ CLOCK_BIT = 0x8000
 FIELD_BITS = 0x0007
 
 
-class _FieldsMisread(FX5CompareMachine):
+class _FieldsMisread(Fx5Compare):
     """Built on misread(fields): the bug is in how the page's field table was copied."""
 
     @staticmethod
@@ -48,7 +48,7 @@ class SelectorBitsReversed(_FieldsMisread):
         return [(offset, name, lo, hi, top - bit) for offset, name, lo, hi, bit in fields]
 
 
-class _S3Misread(FX5CompareMachine):
+class _S3Misread(Fx5Compare):
     """Executes as if (s3) held misread(s3): the bug is in how (s3) is decoded."""
 
     @staticmethod
@@ -84,7 +84,7 @@ class ReservedBitsIgnored(_S3Misread):
         "When 0 is set to the 0 to 2 bits no field differs, so the data count as equal (TM=/DT= "
         "conducts) instead of 'the operation result will be non-continuity'.",
         exercises={"selector": ["none"]})
-class EmptySelectorEqual(FX5CompareMachine):
+class EmptySelectorEqual(Fx5Compare):
     def evaluate(self, condition, operands, clock):
         if operand_value(self.mem, operands["s3"]) & ~CLOCK_BIT == 0:
             return CONDITIONS[condition](0)
@@ -95,7 +95,7 @@ class EmptySelectorEqual(FX5CompareMachine):
         "SM709 is written on every execution, off when the data are good, although 'Once SM709 "
         "turns on, the on state is held until the CPU module is powered off or reset'.",
         exercises={"error-before": ["on"]})
-class SM709NotLatched(FX5CompareMachine):
+class SM709NotLatched(Fx5Compare):
     def evaluate(self, condition, operands, clock):
         self.raised = False
         result = super().evaluate(condition, operands, clock)
@@ -112,7 +112,7 @@ class SM709NotLatched(FX5CompareMachine):
         "(s1) to (s1)+2 and (s2) to (s2)+2 are not checked against the device range, although 'If "
         "the device areas ... exceed the corresponding device range, SM709 turns on'.",
         exercises={"data": ["*.device-range"]})
-class DeviceRangeUncheckedFX5(DeviceRangeUnchecked, FX5CompareMachine):
+class DeviceRangeUncheckedFX5(DeviceRangeUnchecked, Fx5Compare):
     pass
 
 
@@ -140,7 +140,7 @@ def nonexistent(words) -> bool:
         "although 'Even if the data are not recognized as date data, SM709 does not turn on if "
         "the data are within the setting range'.",
         exercises={"data": ["nonexistent"]})
-class CalendarCheck(FX5CompareMachine):
+class CalendarCheck(Fx5Compare):
     def _out_of_range(self, words, selected_only_bits) -> bool:
         day_bit = next(bit for _o, name, *_, bit in self.fields if name == "day")
         day_checked = selected_only_bits is None or (selected_only_bits >> day_bit) & 1
@@ -151,7 +151,7 @@ class CalendarCheck(FX5CompareMachine):
         "A date that does not exist (2008/02/31) makes the result non-continuity, although the "
         "manual says it 'can be set' and 'the comparison operation is performed'.",
         exercises={"data": ["nonexistent", "*.day.above"]})
-class NonexistentRejected(FX5CompareMachine):
+class NonexistentRejected(Fx5Compare):
     def evaluate(self, condition, operands, clock):
         result = super().evaluate(condition, operands, clock)
         dates = [self.mem.read_block(operands["s1"]["device"], 3)]
@@ -164,7 +164,7 @@ class NonexistentRejected(FX5CompareMachine):
         "ORTM□/ORDT□ combine the comparison with the preceding logic in series, as ANDTM□/ANDDT□ do, "
         "although the contact is connected in parallel.",
         exercises={"form": ["OR"]})
-class OrInSeries(FX5CompareMachine):
+class OrInSeries(Fx5Compare):
     def execute(self, instruction, operands, step):
         form, condition = parse_mnemonic(instruction, self.kind)
         if form != "OR":
@@ -177,7 +177,7 @@ class OrInSeries(FX5CompareMachine):
         "ANDTM□/ANDDT□ pass their own comparison on whatever the preceding logic, as if it were "
         "always on, so a rung that is off conducts.",
         exercises={"logic": ["off"]})
-class AndIgnoresPrecedingOff(FX5CompareMachine):
+class AndIgnoresPrecedingOff(Fx5Compare):
     def execute(self, instruction, operands, step):
         form, condition = parse_mnemonic(instruction, self.kind)
         if form == "AND":
@@ -188,7 +188,7 @@ class AndIgnoresPrecedingOff(FX5CompareMachine):
 @mutant("fx5-le-as-lt", BOTH,
         "TM<=/DT<= conducts only when (s1) < (s2), as TM</DT< does, instead of '(s1)≤(s2)'.",
         exercises={"condition": ["<="]})
-class LeAsLt(FX5CompareMachine):
+class LeAsLt(Fx5Compare):
     def evaluate(self, condition, operands, clock):
         return super().evaluate("<" if condition == "<=" else condition, operands, clock)
 
@@ -197,6 +197,6 @@ class LeAsLt(FX5CompareMachine):
         "When every selected field is equal the comparison answers (s1) < (s2) instead of "
         "(s1) = (s2), so TM=/DT= never conducts and TM</DT< does.",
         exercises={"ordering": ["eq"]})
-class EqualCountsAsLess(FX5CompareMachine):
+class EqualCountsAsLess(Fx5Compare):
     def _compare(self, s1, s2, s3):
         return super()._compare(s1, s2, s3) or -1
