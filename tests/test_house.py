@@ -3,7 +3,7 @@ generator, the Python runner and reference, the table of faults, CI's scripts, t
 80 lines, decorators to last line, or says why in the comment just before it or in its docstring with
 the words "over 80 lines:". C (verifiers/c/tests/house.py), Go (house_test.go), Rust (clippy's
 too_many_lines), Java (its JUnit house test) and TypeScript (eslint's max-lines-per-function) hold
-their runners to the same bound (VOCABULARY.md, "Functions under 80 lines")."""
+their runners to the same bound (verifiers/VOCABULARY.md, "Functions under 80 lines")."""
 import ast
 import subprocess
 

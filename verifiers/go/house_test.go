@@ -10,7 +10,7 @@ import (
 	"testing"
 )
 
-// maxFunctionLines is the house's bound on a hand-written function (VOCABULARY.md, "The house"),
+// maxFunctionLines is the house's bound on a hand-written function (verifiers/VOCABULARY.md, "Functions under 80 lines"),
 // declaration and closing brace included. A function that must be longer says why in its doc
 // comment, with the words "over 80 lines:".
 const maxFunctionLines = 80
