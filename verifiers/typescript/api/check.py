@@ -5,8 +5,9 @@
 
 Builds the previous release's declarations in a git worktree in a temporary folder (removed after;
 the node_modules of this folder serve it, so nothing is installed twice), has API Extractor write the
-report of its main entry point and of this folder's build (`npm run build` first), and compares them
-declaration by declaration. A declaration line of the previous report that the new one lacks (a
+report of each of its entry points (package.json's "exports": `plcvec`, `plcvec/reference`, ...)
+and of this folder's build (`npm run build` first), and compares them entry by entry, declaration by
+declaration; an entry point the new build no longer exports has lost every declaration. A declaration line of the previous report that the new one lacks (a
 symbol removed, renamed or given another signature) is a change that may break a user: it must be
 named in CHANGES.md's Breaking (or Deprecated, for a rename that keeps the old name working)
 section of the version being checked, the symbol's name as a word (`Report.results` for a member).
@@ -36,7 +37,8 @@ from pathlib import Path
 HERE = Path(__file__).resolve().parent
 PACKAGE = HERE.parent
 REPO = PACKAGE.parents[1]
-REPORT = Path("dist/api/plcvec.api.md")
+REPORTS = Path("dist/api")
+MAIN_REPORT = "plcvec.api.md"   # the main entry point's (api/report.mjs names each entry's report)
 DECLARATION = re.compile(r"^export (?:declare )?(?:abstract )?(?:class|interface|type|function|const|let|enum|namespace) (\w+)")
 MEMBER = re.compile(r"^\s+(?:(?:readonly|static|protected|get|set|abstract|declare)\s+)*\[?([\w.]+)")
 # The constants generated from the spec (src/generated/names.ts: SUITE, TAGS, INSTRUCTIONS, ...) hold
@@ -72,14 +74,22 @@ def declarations(report: str) -> Counter:
     return out
 
 
+def reports(folder: Path) -> dict[str, Counter]:
+    """{report file name: its declarations} of every entry point api/report.mjs reported in `folder`."""
+    return {path.name: declarations(path.read_text(encoding="utf-8")) for path in sorted((folder / REPORTS).glob("*.api.md"))}
+
+
 def announced(version: str) -> str:
-    """The Breaking and Deprecated sections of `version` in CHANGES.md, and of the news fragments in
-    changes.d/ that are not folded into it yet."""
+    """The Breaking and Deprecated sections of `version` and of [Unreleased] in CHANGES.md, and of the
+    news fragments in changes.d/ that are not folded into it yet."""
     chosen = ""
     changes = REPO / "CHANGES.md"
     if changes.is_file():
         sections = re.split(r"^## ", changes.read_text(encoding="utf-8"), flags=re.M)[1:]
         chosen = next((s for s in sections if re.match(rf"\[?v?{re.escape(version)}\b", s)), sections[0] if sections else "")
+        # What is not released yet is announced for the next release, which package.json's version
+        # names only once it is made.
+        chosen += "\n" + "\n".join(s for s in sections if re.match(r"\[?unreleased\b", s, re.I) and s is not chosen)
     chosen += "\n" + "\n".join(p.read_text(encoding="utf-8") for p in sorted((REPO / "changes.d").glob("*.md")))
     kept = []
     for part in re.split(r"^### ", chosen, flags=re.M)[1:]:
@@ -103,7 +113,10 @@ def renamed_build(rename: str, scratch: Path) -> Path:
     old, new = rename.split("=", 1)
     folder = scratch / "renamed"
     folder.mkdir()
-    shutil.copy(PACKAGE / "package.json", folder)
+    # The main entry point alone: the deliberate rename is made there.
+    manifest = json.loads((PACKAGE / "package.json").read_text(encoding="utf-8"))
+    manifest["exports"] = {".": manifest["exports"]["."]}
+    (folder / "package.json").write_text(json.dumps(manifest), encoding="utf-8")
     # The package's compiler options, over the declarations alone.
     (folder / "tsconfig.json").write_text(json.dumps({"extends": str(PACKAGE / "tsconfig.json"), "files": ["dist/src/index.d.ts"]}))
     (folder / "node_modules").symlink_to(PACKAGE / "node_modules")
@@ -113,9 +126,42 @@ def renamed_build(rename: str, scratch: Path) -> Path:
     return folder
 
 
-def unannounced(before: Counter, after: Counter, text: str) -> list[str]:
-    """The symbols whose declaration lines of `before` are not all in `after`, that `text` does not name."""
-    changed = {name for name, _ in before - after if name.split(".")[0] not in IGNORED}
+EXTENDS = re.compile(r"^export (?:declare )?(?:abstract )?(?:class|interface) (\w+)(?:<.*?>)? extends ([\w., <>]+?)(?: implements .*)? \{")
+
+
+def bases(declared: Counter) -> dict[str, set[str]]:
+    """{class or interface: the names it extends}, from the declaration lines of API Extractor reports."""
+    out: dict[str, set[str]] = {}
+    for name, line in declared:
+        found = EXTENDS.match(line)
+        if found and "." not in name:
+            out[name] = {re.sub(r"<.*", "", b).strip() for b in found.group(2).split(",")}
+    return out
+
+
+def inherited(name: str, line: str, after: Counter, parents: dict[str, set[str]]) -> bool:
+    """Whether member `name` (Type.member), gone from its type, is declared alike in a type it extends:
+    a member moved up into a base (an options interface another one extends) is still there."""
+    top, _, member = name.partition(".")
+    seen, todo = set(), list(parents.get(top, ()))
+    while todo:
+        base = todo.pop()
+        if base in seen:
+            continue
+        seen.add(base)
+        if after[(f"{base}.{member}", line)]:
+            return True
+        todo += parents.get(base, ())
+    return False
+
+
+def unannounced(before: Counter, after: Counter, text: str, pool: Counter | None = None) -> list[str]:
+    """The symbols whose declaration lines of `before` are not all in `after`, that `text` does not name.
+    `pool` (default `after`): every entry point's declarations, where a moved member's base is found."""
+    pool = after if pool is None else pool
+    parents = bases(pool)
+    changed = {name for name, line in before - after if name.split(".")[0] not in IGNORED
+               and not ("." in name and inherited(name, line, pool, parents))}
     # A declaration that changed as a whole is named once, not with each of its members.
     changed = {n for n in changed if "." not in n or n.split(".")[0] not in changed}
     return sorted(n for n in changed if not re.search(rf"(?<![\w.]){re.escape(n)}(?![\w])", text))
@@ -135,14 +181,19 @@ def main() -> int:
             if args.prove:
                 folders.append(renamed_build(args.prove, scratch))
             run(["node", str(HERE / "report.mjs"), *map(str, folders)], PACKAGE)   # one start of the tool for all
-            before, *afters = [declarations((f / REPORT).read_text(encoding="utf-8")) for f in folders]
+            before, *afters = [reports(f) for f in folders]
         finally:
             subprocess.run(["git", "worktree", "remove", "--force", str(scratch / "previous")], cwd=REPO, capture_output=True)
-    missing = unannounced(before, afters[0], text)
+    if MAIN_REPORT not in before:
+        print(f"api/check.py: no report of the main entry point of {args.previous}", file=sys.stderr)
+        return 2
+    pool = sum(afters[0].values(), Counter())
+    missing = sorted({name for entry in before
+                      for name in unannounced(before[entry], afters[0].get(entry, Counter()), text, pool)})
     for name in missing:
         print(f"api/check.py: {name} changed or went since {args.previous} (API Extractor's report), "
               f"and CHANGES.md does not name it under Breaking or Deprecated", file=sys.stderr)
-    if args.prove and args.prove.split("=")[0] not in unannounced(before, afters[1], text):
+    if args.prove and args.prove.split("=")[0] not in unannounced(before[MAIN_REPORT], afters[1][MAIN_REPORT], text):
         print(f"api/check.py: renaming {args.prove} was not caught: the check cannot fail", file=sys.stderr)
         return 1
     return 1 if missing else 0
