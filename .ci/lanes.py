@@ -1,6 +1,6 @@
 """Run CI's independent lanes side by side, as many at a time as `--jobs` says.
 
-Usage: python3 .ci/lanes.py [--jobs N] [--fill M] [--timeout SECONDS] SCRIPT [SCRIPT ...]
+Usage: python3 .ci/lanes.py [--jobs N] [--fill M] [--timeout SECONDS] [--head-start FILE] SCRIPT [SCRIPT ...]
 
 Each lane is a bash script (`.ci/lang/<lang>.sh`, `.ci/python-lane.sh`) that builds and checks one
 part of the project on its own files. A lane's output goes to `build/lanes/<name>.log` while it
@@ -16,6 +16,12 @@ The longest lanes are started first (the order given), so the tail is short. Lan
 cores idle now and then (a download, a link, a test sitting out a timeout): with `--fill M`, up to M
 lanes more than `--jobs` are started while the machine has been idle by at least FILL_IDLE_CORES
 over the last FILL_WINDOW_S seconds (read from /proc/stat; elsewhere nothing is filled).
+
+With `--head-start FILE`, the first lane starts at once and the others only once FILE exists: CI
+starts the lanes, niced, while the README's first commands still run (they leave a core idle now and
+then: a pip install, the tail of a pytest run), and creates FILE when those are done. The first lane
+is one that only builds at first (Rust's compiles), so nothing with a bound on its time waits behind
+the commands it yields to.
 """
 from __future__ import annotations
 
@@ -118,12 +124,20 @@ def _may_fill(idle: IdleMeter, running: int, args) -> bool:
     return True
 
 
+def _stop(signum, frame):
+    """SIGTERM (CI ending the run early, e.g. when the README's first commands fail): the same as
+    Ctrl-C, so that the lanes' process groups are ended too."""
+    raise KeyboardInterrupt
+
+
 def main(argv: list[str]) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--jobs", type=int, default=2, help="lanes at once (default 2)")
     parser.add_argument("--fill", type=int, default=0,
                         help="lanes more than --jobs started while cores are idle (default 0)")
     parser.add_argument("--timeout", type=float, default=2400, help="seconds a lane may take (default 2400)")
+    parser.add_argument("--head-start", type=Path, metavar="FILE",
+                        help="start the first lane at once, the others once FILE exists")
     parser.add_argument("scripts", nargs="+")
     args = parser.parse_args(argv)
     missing = [s for s in args.scripts if not (ROOT / s).is_file()]
@@ -136,9 +150,16 @@ def main(argv: list[str]) -> int:
     running: list[Lane] = []
     began = time.monotonic()
     idle = IdleMeter()
+    held = args.head_start is not None   # only the first lane may start until the file exists
+    opened = began
     try:
         while waiting or running:
-            while waiting and (len(running) < args.jobs or _may_fill(idle, len(running), args)):
+            if held and args.head_start.exists():
+                held, opened = False, time.monotonic()
+                print(f"-- lanes: the others start ({opened - began:.0f} s after the first)", flush=True)
+                idle.reset()
+            while waiting and not (held and len(waiting) < len(lanes)) and (
+                    len(running) < args.jobs or _may_fill(idle, len(running), args)):
                 lane = waiting.pop(0)
                 print(f"-- lane {lane.name}: started{'' if len(running) < args.jobs else ' (cores idle)'}",
                       flush=True)
@@ -156,7 +177,8 @@ def main(argv: list[str]) -> int:
         # Ctrl-C or an error here: the lanes run in sessions of their own, so end them by hand.
         for lane in running:
             os.killpg(lane.proc.pid, signal.SIGKILL)
-    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s with {args.jobs} at a time"
+    head = f" ({time.monotonic() - opened:.0f} s once the others started)" if args.head_start else ""
+    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s{head} with {args.jobs} at a time"
           f"{f' (up to {args.jobs + args.fill} while cores were idle)' if args.fill else ''}, "
           f"{sum(lane.cpu for lane in lanes):.0f} s of CPU")
     for lane in lanes:
@@ -165,6 +187,7 @@ def main(argv: list[str]) -> int:
 
 
 if __name__ == "__main__":
+    signal.signal(signal.SIGTERM, _stop)
     try:
         sys.exit(main(sys.argv[1:]))
     except KeyboardInterrupt:

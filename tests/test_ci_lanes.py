@@ -60,6 +60,19 @@ def test_idle_cores_start_a_lane_more_and_every_status_is_reported(tmp_path, mon
     assert "three        failed (exit 3)" in out and "one          ok" in out
 
 
+def test_a_head_start_runs_the_first_lane_alone_until_the_file_exists(tmp_path, monkeypatch, capsys):
+    """--head-start FILE: the first lane starts at once, the others not before FILE exists, though
+    --jobs would allow them (the first lane itself makes the file here, a second after it started)."""
+    monkeypatch.setitem(lanes.main.__globals__, "LOGS", tmp_path / "logs")
+    gate, made, second = tmp_path / "gate", tmp_path / "made", tmp_path / "second"
+    first = _script(tmp_path, "first", f"sleep 1; date +%s.%N > {made}; touch {gate}; sleep 0.5")
+    other = _script(tmp_path, "other", f"date +%s.%N > {second}")
+    assert lanes.main(["--jobs", "2", "--head-start", str(gate), first, other]) == 0
+    assert float(second.read_text()) >= float(made.read_text()), "the second lane did not wait for the file"
+    out = capsys.readouterr().out
+    assert "-- lanes: the others start" in out and "once the others started)" in out
+
+
 def test_a_lane_past_its_bound_is_killed(tmp_path, monkeypatch, capsys):
     monkeypatch.setitem(lanes.main.__globals__, "LOGS", tmp_path / "logs")
     started = time.monotonic()
