@@ -9,6 +9,17 @@ source "$(dirname "${BASH_SOURCE[0]}")/../steps.sh"
 cd "$(dirname "$0")/../.."
 root=$PWD
 steps_begin typescript
+# node reads every certificate NODE_EXTRA_CA_CERTS names (where the machine sets it: the system's
+# bundle of authorities) as it starts, whether or not it ever makes a TLS connection: some 40 ms of
+# CPU per process, where node itself starts in 15. The lane starts hundreds of node processes (two
+# per row of the table of faults, the tests' own runs of node --test, npm's); only npm's downloads
+# make a TLS connection, so `npm ci`, the README's npm commands and `npm publish --dry-run` are given
+# the variable, and every other process starts without it.
+tls_ca=${NODE_EXTRA_CA_CERTS-}
+unset NODE_EXTRA_CA_CERTS
+with_ca() {
+    if [ -n "$tls_ca" ]; then NODE_EXTRA_CA_CERTS=$tls_ca "$@"; else "$@"; fi
+}
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # The clean copy of the package's tracked files, which `npm pack` builds and packs.
@@ -19,7 +30,7 @@ clean="$work/clean"
     # --prefer-offline: a package already in npm's cache is taken from it without asking the registry
     # whether it changed (a locked version never does); one not there is still downloaded.
     step "npm ci (the lock file: the same packages on every run)"
-    npm ci --prefer-offline --no-audit --no-fund --loglevel=error >/dev/null
+    with_ca npm ci --prefer-offline --no-audit --no-fund --loglevel=error >/dev/null
     step "eslint"
     npm run --silent lint
     step "madge: no import circle"
@@ -74,7 +85,7 @@ step "npm publish --dry-run of the clean copy; the tarball's files and source ma
 # warning (a `bin` npm would rewrite, a missing field); its own `prepack` is skipped, the build being done.
 (
     cd "$clean"
-    npm publish --dry-run --ignore-scripts >"$work/publish.log" 2>&1 || { cat "$work/publish.log"; exit 1; }
+    with_ca npm publish --dry-run --ignore-scripts >"$work/publish.log" 2>&1 || { cat "$work/publish.log"; exit 1; }
     # The one warning a dry run cannot avoid without a registry account: not logged in.
     if grep -i "warn" "$work/publish.log" | grep -v "requires you to be logged in"; then
         echo "npm publish --dry-run warned (above)" >&2
@@ -119,11 +130,11 @@ npm() {
         case "$a" in plcvec) a="$tarball" ;; vitest) a="vitest@$vitest_version" ;; esac
         args+=("$a")
     done
-    command npm "${args[@]}"
+    with_ca command npm "${args[@]}"
 }
-export -f npm
+export -f npm with_ca
 # The README's `npm install`s as the lane's `npm ci`: from npm's cache where it holds the version.
-export tarball vitest_version npm_config_audit=false npm_config_fund=false npm_config_loglevel=error npm_config_prefer_offline=true
+export tls_ca tarball vitest_version npm_config_audit=false npm_config_fund=false npm_config_loglevel=error npm_config_prefer_offline=true
 (
     cd "$outside"
     bash -euo pipefail setup.sh

@@ -23,19 +23,41 @@ function* combinations(options: readonly (readonly [string, readonly string[]])[
 }
 
 /**
- * A vector prepared once per expectation it gives: what it expects depends only on the alternatives
- * of the interpretations it names (`outcome.interpretations`), so the 34,560 combinations of HOUR's
- * alternatives share a handful of expectations per vector, while the reference runs every vector
- * under every combination.
+ * The vectors prepared once per expectation they give: what a vector expects depends only on the
+ * alternatives of the interpretations it names (`outcome.interpretations`), so the 34,560
+ * combinations of HOUR's alternatives share a handful of expectations per vector, while the
+ * reference runs every vector under every combination. The vectors that name the same
+ * interpretations form a group, whose key under a combination (those interpretations' alternatives)
+ * is made once per combination, not once per vector; each key's vectors are prepared when it first
+ * comes.
  */
-function preparedUnder(cache: Map<Vector, Map<string, Prepared>>, vector: Vector, followed: Followed): Prepared {
-  let byChoices = cache.get(vector);
-  if (byChoices === undefined) cache.set(vector, (byChoices = new Map()));
-  const touched = vector.outcome.interpretations ?? [];
-  const key = touched.length === 0 ? "" : touched.map((i) => followed.choices[i]).join("\n");
-  let prepared = byChoices.get(key);
-  if (prepared === undefined) byChoices.set(key, (prepared = prepare(vector, followed)));
-  return prepared;
+class PreparedUnder {
+  private readonly groups = new Map<string, { touched: readonly string[]; indexes: number[]; byKey: Map<string, Prepared[]> }>();
+
+  constructor(private readonly vectors: readonly Vector[]) {
+    vectors.forEach((vector, index) => {
+      const touched = vector.outcome.interpretations ?? [];
+      const name = touched.join("\n");
+      let group = this.groups.get(name);
+      if (group === undefined) this.groups.set(name, (group = { touched, indexes: [], byKey: new Map() }));
+      group.indexes.push(index);
+    });
+  }
+
+  /** Each vector prepared under `choices` (`followed()`, their resolution, asked for only when a key is new), in the vectors' order. */
+  all(choices: Readonly<Record<string, string>>, followed: () => Followed): Prepared[] {
+    const out = new Array<Prepared>(this.vectors.length);
+    for (const { touched, indexes, byKey } of this.groups.values()) {
+      const key = touched.map((i) => choices[i]).join("\n");
+      let prepared = byKey.get(key);
+      if (prepared === undefined) {
+        const f = followed();
+        byKey.set(key, (prepared = indexes.map((i) => prepare(this.vectors[i]!, f))));
+      }
+      indexes.forEach((i, j) => (out[i] = prepared[j]!));
+    }
+    return out;
+  }
 }
 
 describe("the reference under every combination of alternatives", () => {
@@ -48,15 +70,16 @@ describe("the reference under every combination of alternatives", () => {
       assert.ok(gated.passed, summaryText(gated));
       const vectors = suite.vectors.filter((v) => v.family === family);
       assert.equal(gated.verdicts.length, vectors.length);
-      const cache = new Map<Vector, Map<string, Prepared>>();
+      const cache = new PreparedUnder(vectors);
       let runs = 0;
       for (const choices of combinations(interps)) {
         const impl = reference(choices);
-        const followed = resolveChoices(suite, choices);
-        for (const vector of vectors) {
-          const verdict = judge(preparedUnder(cache, vector, followed), impl);
+        let followed: Followed | undefined;
+        const prepared = cache.all(choices, () => (followed ??= resolveChoices(suite, choices)));
+        for (let i = 0; i < vectors.length; i++) {
+          const verdict = judge(prepared[i]!, impl);
           // The message is made only for a failure: 5.5 million verdicts pass.
-          if (verdict.status !== "pass") assert.fail(`${JSON.stringify(choices)}\n${describeVerdict(verdict, vector)}`);
+          if (verdict.status !== "pass") assert.fail(`${JSON.stringify(choices)}\n${describeVerdict(verdict, vectors[i]!)}`);
         }
         runs++;
       }
