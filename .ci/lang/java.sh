@@ -64,11 +64,14 @@ fi
 
 # Ready to publish: the deployment signed with a key made for this run, staged to a folder and
 # checked as Central checks one; a project naming 0.1.0's coordinates resolves the new artifact.
+# The same Maven run compiles the hostile implementations of the table of faults (the faults
+# profile's module, never installed or deployed: the staged folder is the same) beside the reference
+# it installs: what `faults-entry --build` would do in a Maven start of its own, further down.
 step "signed staged deployment"
 export GNUPGHOME="$scratch/gnupg"
 mkdir -m 700 "$GNUPGHOME"
 quiet gpg --batch --passphrase '' --quick-gen-key 'plcvec CI throwaway <ci@plcvec.invalid>' ed25519 sign 1d
-stage() { (cd verifiers/java && mvn -B -q -Dstyle.color=never deploy -Prelease -DskipTests \
+stage() { (cd verifiers/java && mvn -B -q -Dstyle.color=never deploy -Prelease,faults -DskipTests \
     -DaltDeploymentRepository="staging::file://$scratch/stage"); }
 quiet stage
 step "central-check"
@@ -124,10 +127,10 @@ fuzz() {
 quiet fuzz
 
 # The shared table of faults through the README's entry point (the JUnit 5 factory under
-# Surefire, the rows in one run but for those that end their process); the modules are built by
-# now, so its build only compiles the hostile ones.
+# Surefire, the rows in one run but for those that end their process); built by the deployment's
+# Maven run above (the reference installed, the hostile implementations compiled), so --no-build.
 step "table of faults"
-quiet python3 verifiers/parity/run.py --lang java
+quiet python3 verifiers/parity/run.py --lang java --no-build
 
 # The same gate must reject a mutant served the same way (exit 1, not 0 and not 2).
 step "gate rejects a mutant"
