@@ -17,11 +17,11 @@ cores idle now and then (a download, a link, a test sitting out a timeout): with
 lanes more than `--jobs` are started while the machine has been idle by at least FILL_IDLE_CORES
 over the last FILL_WINDOW_S seconds (read from /proc/stat; elsewhere nothing is filled).
 
-With `--head-start FILE`, the first lane starts at once and the others only once FILE exists: CI
-starts the lanes, niced, while the README's first commands still run (they leave a core idle now and
-then: a pip install, the tail of a pytest run), and creates FILE when those are done. The first lane
-is one that only builds at first (Rust's compiles), so nothing with a bound on its time waits behind
-the commands it yields to.
+With `--head-start FILE`, the first lane starts at once, at the lowest priority, and the others only
+once FILE exists, when the first gets the usual priority back: CI starts the lanes while the README's
+first commands still run (they leave a core idle now and then: a pip install, the tail of a pytest
+run), and creates FILE when those are done. The first lane is one that only builds at first (Rust's
+compiles), so nothing with a bound on its time waits behind the commands it yields to.
 """
 from __future__ import annotations
 
@@ -39,6 +39,8 @@ LOGS = ROOT / "build" / "lanes"
 # since the last lane started (one start per window: a lane's own start-up is idle time too).
 FILL_IDLE_CORES = 0.6
 FILL_WINDOW_S = 15.0
+# The head start's lane yields the cores to whatever else runs (the lowest priority).
+HEAD_START_NICE = 19
 
 
 class IdleMeter:
@@ -110,6 +112,23 @@ class Lane:
         return True
 
 
+def _set_priority(pid: int, nice: int) -> None:
+    """The niceness of a lane's whole session. Where the kernel groups processes by session
+    (autogroup, /proc/<pid>/autogroup), a lane in a session of its own competes as one group, and
+    a process's own niceness ranks it only within that group: the group's is the one that yields
+    to the README's commands. The process group's niceness too, for kernels without autogroup.
+    Raising the priority back needs the privilege CI has (root); without it the lane stays lower,
+    which only matters while something else runs beside it."""
+    try:
+        Path(f"/proc/{pid}/autogroup").write_text(f"{nice}\n", encoding="ascii")
+    except OSError:
+        pass
+    try:
+        os.setpriority(os.PRIO_PGRP, pid, nice)
+    except OSError:
+        pass
+
+
 def _may_fill(idle: IdleMeter, running: int, args) -> bool:
     """Whether one lane more than --jobs may start now: room under --fill, and the cores idle enough
     over a whole window since the last start."""
@@ -156,6 +175,8 @@ def main(argv: list[str]) -> int:
         while waiting or running:
             if held and args.head_start.exists():
                 held, opened = False, time.monotonic()
+                for lane in running:
+                    _set_priority(lane.proc.pid, 0)
                 print(f"-- lanes: the others start ({opened - began:.0f} s after the first)", flush=True)
                 idle.reset()
             while waiting and not (held and len(waiting) < len(lanes)) and (
@@ -164,6 +185,8 @@ def main(argv: list[str]) -> int:
                 print(f"-- lane {lane.name}: started{'' if len(running) < args.jobs else ' (cores idle)'}",
                       flush=True)
                 lane.start()
+                if held:
+                    _set_priority(lane.proc.pid, HEAD_START_NICE)
                 running.append(lane)
                 idle.reset()
             time.sleep(0.5)

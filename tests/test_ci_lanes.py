@@ -1,11 +1,13 @@
 """CI's lane runner (.ci/lanes.py): lanes side by side, a lane more while the cores sit idle, every
 lane's status in the exit code, and no lane outliving its bound; the lanes' step lines (.ci/steps.sh)."""
+import os
 import re
 import runpy
 import shlex
 import subprocess
 import sys
 import time
+from pathlib import Path
 from types import SimpleNamespace
 
 from conftest import REPO
@@ -65,10 +67,19 @@ def test_a_head_start_runs_the_first_lane_alone_until_the_file_exists(tmp_path, 
     --jobs would allow them (the first lane itself makes the file here, a second after it started)."""
     monkeypatch.setitem(lanes.main.__globals__, "LOGS", tmp_path / "logs")
     gate, made, second = tmp_path / "gate", tmp_path / "made", tmp_path / "second"
-    first = _script(tmp_path, "first", f"sleep 1; date +%s.%N > {made}; touch {gate}; sleep 0.5")
+    held, freed = tmp_path / "held", tmp_path / "freed"
+    niceness = "echo $(ps -o ni= -p $$) $(cat /proc/$$/autogroup 2>/dev/null)"
+    first = _script(tmp_path, "first", f"sleep 1; {niceness} > {held}; date +%s.%N > {made}; touch {gate}; "
+                                       f"sleep 1.5; {niceness} > {freed}")
     other = _script(tmp_path, "other", f"date +%s.%N > {second}")
     assert lanes.main(["--jobs", "2", "--head-start", str(gate), first, other]) == 0
     assert float(second.read_text()) >= float(made.read_text()), "the second lane did not wait for the file"
+    # The lowest priority while held, the session's too where the kernel groups sessions; the usual
+    # one once the file exists, where the test has the privilege to raise it back (root, as in CI).
+    autogroup = Path("/proc/self/autogroup").exists()
+    assert held.read_text().split()[0] == "19" and (not autogroup or "nice 19" in held.read_text())
+    if os.geteuid() == 0:
+        assert freed.read_text().split()[0] == "0" and (not autogroup or "nice 0" in freed.read_text())
     out = capsys.readouterr().out
     assert "-- lanes: the others start" in out and "once the others started)" in out
 
