@@ -127,8 +127,9 @@ fuzz() {
 quiet fuzz
 
 # The shared table of faults through the README's entry point (the JUnit 5 factory under
-# Surefire, the rows in one run but for those that end their process); built by the deployment's
-# Maven run above (the reference installed, the hostile implementations compiled), so --no-build.
+# Surefire, the rows in one run but for those that end their process, each of which has a Surefire
+# run and test JVM of its own; all in one Maven run); built by the deployment's Maven run above
+# (the reference installed, the hostile implementations compiled), so --no-build.
 step "table of faults"
 quiet python3 verifiers/parity/run.py --lang java --no-build
 
