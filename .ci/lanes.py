@@ -12,10 +12,11 @@ is measured. Exit status: 0 when every lane passed, 1 otherwise.
 
 Why lanes: this machine has two cores, and a lane spends part of its time waiting (downloads,
 Maven's and npm's start-up, linking), so two lanes at once finish sooner than one after the other.
-The longest lanes are started first (the order given), so the tail is short. Lanes still leave
-cores idle now and then (a download, a link, a test sitting out a timeout): with `--fill M`, up to M
-lanes more than `--jobs` are started while the machine has been idle by at least FILL_IDLE_CORES
-over the last FILL_WINDOW_S seconds (read from /proc/stat; elsewhere nothing is filled).
+Lanes start in the order given (CI's puts last the lane that spreads over every core, so the tail
+is not one single-core lane alone). Lanes still leave cores idle now and then (a download, a link,
+a test sitting out a timeout): with `--fill M`, up to M lanes more than `--jobs` are started while
+the machine has been idle by at least FILL_IDLE_CORES over the last FILL_WINDOW_S seconds (read
+from /proc/stat; elsewhere nothing is filled).
 
 With `--head-start FILE`, the first lane starts at once, at the lowest priority, and the others only
 once FILE exists, when the first gets the usual priority back: CI starts the lanes while the README's
