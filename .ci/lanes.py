@@ -1,6 +1,6 @@
 """Run CI's independent lanes side by side, as many at a time as `--jobs` says.
 
-Usage: python3 .ci/lanes.py [--jobs N] [--fill M] [--timeout SECONDS] [--head-start FILE] SCRIPT [SCRIPT ...]
+Usage: python3 .ci/lanes.py [--jobs N] [--fill M] [--timeout SECONDS] SCRIPT [SCRIPT ...]
 
 Each lane is a bash script (`.ci/lang/<lang>.sh`, `.ci/python-lane.sh`) that builds and checks one
 part of the project on its own files. A lane's output goes to `build/lanes/<name>.log` while it
@@ -17,12 +17,6 @@ is not one single-core lane alone). Lanes still leave cores idle now and then (a
 a test sitting out a timeout): with `--fill M`, up to M lanes more than `--jobs` are started while
 the machine has been idle by at least FILL_IDLE_CORES over the last FILL_WINDOW_S seconds (read
 from /proc/stat; elsewhere nothing is filled).
-
-With `--head-start FILE`, the first lane starts at once, at the lowest priority, and the others only
-once FILE exists, when the first gets the usual priority back: CI starts the lanes while the README's
-first commands still run (they leave a core idle now and then: a pip install, the tail of a pytest
-run), and creates FILE when those are done. The first lane is one that only builds at first (Rust's
-compiles), so nothing with a bound on its time waits behind the commands it yields to.
 """
 from __future__ import annotations
 
@@ -40,8 +34,6 @@ LOGS = ROOT / "build" / "lanes"
 # since the last lane started (one start per window: a lane's own start-up is idle time too).
 FILL_IDLE_CORES = 0.6
 FILL_WINDOW_S = 15.0
-# The head start's lane yields the cores to whatever else runs (the lowest priority).
-HEAD_START_NICE = 19
 
 
 class IdleMeter:
@@ -113,23 +105,6 @@ class Lane:
         return True
 
 
-def _set_priority(pid: int, nice: int) -> None:
-    """The niceness of a lane's whole session. Where the kernel groups processes by session
-    (autogroup, /proc/<pid>/autogroup), a lane in a session of its own competes as one group, and
-    a process's own niceness ranks it only within that group: the group's is the one that yields
-    to the README's commands. The process group's niceness too, for kernels without autogroup.
-    Raising the priority back needs the privilege CI has (root); without it the lane stays lower,
-    which only matters while something else runs beside it."""
-    try:
-        Path(f"/proc/{pid}/autogroup").write_text(f"{nice}\n", encoding="ascii")
-    except OSError:
-        pass
-    try:
-        os.setpriority(os.PRIO_PGRP, pid, nice)
-    except OSError:
-        pass
-
-
 def _may_fill(idle: IdleMeter, running: int, args) -> bool:
     """Whether one lane more than --jobs may start now: room under --fill, and the cores idle enough
     over a whole window since the last start."""
@@ -145,8 +120,8 @@ def _may_fill(idle: IdleMeter, running: int, args) -> bool:
 
 
 def _stop(signum, frame):
-    """SIGTERM (CI ending the run early, e.g. when the README's first commands fail): the same as
-    Ctrl-C, so that the lanes' process groups are ended too."""
+    """SIGTERM (CI's run ended from outside): the same as Ctrl-C, so that the lanes' process groups,
+    sessions of their own, are ended too."""
     raise KeyboardInterrupt
 
 
@@ -156,8 +131,6 @@ def main(argv: list[str]) -> int:
     parser.add_argument("--fill", type=int, default=0,
                         help="lanes more than --jobs started while cores are idle (default 0)")
     parser.add_argument("--timeout", type=float, default=2400, help="seconds a lane may take (default 2400)")
-    parser.add_argument("--head-start", type=Path, metavar="FILE",
-                        help="start the first lane at once, the others once FILE exists")
     parser.add_argument("scripts", nargs="+")
     args = parser.parse_args(argv)
     missing = [s for s in args.scripts if not (ROOT / s).is_file()]
@@ -170,24 +143,13 @@ def main(argv: list[str]) -> int:
     running: list[Lane] = []
     began = time.monotonic()
     idle = IdleMeter()
-    held = args.head_start is not None   # only the first lane may start until the file exists
-    opened = began
     try:
         while waiting or running:
-            if held and args.head_start.exists():
-                held, opened = False, time.monotonic()
-                for lane in running:
-                    _set_priority(lane.proc.pid, 0)
-                print(f"-- lanes: the others start ({opened - began:.0f} s after the first)", flush=True)
-                idle.reset()
-            while waiting and not (held and len(waiting) < len(lanes)) and (
-                    len(running) < args.jobs or _may_fill(idle, len(running), args)):
+            while waiting and (len(running) < args.jobs or _may_fill(idle, len(running), args)):
                 lane = waiting.pop(0)
                 print(f"-- lane {lane.name}: started{'' if len(running) < args.jobs else ' (cores idle)'}",
                       flush=True)
                 lane.start()
-                if held:
-                    _set_priority(lane.proc.pid, HEAD_START_NICE)
                 running.append(lane)
                 idle.reset()
             time.sleep(0.5)
@@ -201,8 +163,7 @@ def main(argv: list[str]) -> int:
         # Ctrl-C or an error here: the lanes run in sessions of their own, so end them by hand.
         for lane in running:
             os.killpg(lane.proc.pid, signal.SIGKILL)
-    head = f" ({time.monotonic() - opened:.0f} s once the others started)" if args.head_start else ""
-    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s{head} with {args.jobs} at a time"
+    print(f"lanes: {len(lanes)} in {time.monotonic() - began:.0f} s with {args.jobs} at a time"
           f"{f' (up to {args.jobs + args.fill} while cores were idle)' if args.fill else ''}, "
           f"{sum(lane.cpu for lane in lanes):.0f} s of CPU")
     for lane in lanes:

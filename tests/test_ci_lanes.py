@@ -1,13 +1,11 @@
 """CI's lane runner (.ci/lanes.py): lanes side by side, a lane more while the cores sit idle, every
 lane's status in the exit code, and no lane outliving its bound; the lanes' step lines (.ci/steps.sh)."""
-import os
 import re
 import runpy
 import shlex
 import subprocess
 import sys
 import time
-from pathlib import Path
 from types import SimpleNamespace
 
 from conftest import REPO
@@ -62,34 +60,39 @@ def test_idle_cores_start_a_lane_more_and_every_status_is_reported(tmp_path, mon
     assert "three        failed (exit 3)" in out and "one          ok" in out
 
 
-def test_a_head_start_runs_the_first_lane_alone_until_the_file_exists(tmp_path, monkeypatch, capsys):
-    """--head-start FILE: the first lane starts at once, the others not before FILE exists, though
-    --jobs would allow them (the first lane itself makes the file here, a second after it started)."""
-    monkeypatch.setitem(lanes.main.__globals__, "LOGS", tmp_path / "logs")
-    gate, made, second = tmp_path / "gate", tmp_path / "made", tmp_path / "second"
-    held, freed = tmp_path / "held", tmp_path / "freed"
-    niceness = "echo $(ps -o ni= -p $$) $(cat /proc/$$/autogroup 2>/dev/null)"
-    first = _script(tmp_path, "first", f"sleep 1; {niceness} > {held}; date +%s.%N > {made}; touch {gate}; "
-                                       f"sleep 1.5; {niceness} > {freed}")
-    other = _script(tmp_path, "other", f"date +%s.%N > {second}")
-    assert lanes.main(["--jobs", "2", "--head-start", str(gate), first, other]) == 0
-    assert float(second.read_text()) >= float(made.read_text()), "the second lane did not wait for the file"
-    # The lowest priority while held, the session's too where the kernel groups sessions; the usual
-    # one once the file exists, where the test has the privilege to raise it back (root, as in CI).
-    autogroup = Path("/proc/self/autogroup").exists()
-    assert held.read_text().split()[0] == "19" and (not autogroup or "nice 19" in held.read_text())
-    if os.geteuid() == 0:
-        assert freed.read_text().split()[0] == "0" and (not autogroup or "nice 0" in freed.read_text())
-    out = capsys.readouterr().out
-    assert "-- lanes: the others start" in out and "once the others started)" in out
-
-
 def test_a_lane_past_its_bound_is_killed(tmp_path, monkeypatch, capsys):
     monkeypatch.setitem(lanes.main.__globals__, "LOGS", tmp_path / "logs")
     started = time.monotonic()
     assert lanes.main(["--timeout", "1", _script(tmp_path, "hangs", "sleep 60")]) == 1
     assert time.monotonic() - started < 10
     assert "killed after 1 s" in capsys.readouterr().out
+
+
+def test_sigterm_ends_every_running_lane_with_its_children(tmp_path):
+    """CI ended from outside (SIGTERM to lanes.py): each lane runs in a session of its own, so
+    nothing else would end it; lanes.py ends the lanes' process groups, their children too."""
+    pids = tmp_path / "pids"
+    lane = _script(tmp_path, "sleeps", f"sleep 60 & echo $! >> {pids}; echo $$ >> {pids}; wait")
+    proc = subprocess.Popen([sys.executable, str(REPO / ".ci" / "lanes.py"), lane], stdout=subprocess.DEVNULL)
+    deadline = time.monotonic() + 20
+    while (not pids.exists() or len(pids.read_text().split()) < 2) and time.monotonic() < deadline:
+        time.sleep(0.1)
+    proc.terminate()
+    assert proc.wait(timeout=20) == 130
+    for pid in map(int, pids.read_text().split()):
+        deadline = time.monotonic() + 10
+        while _alive(pid) and time.monotonic() < deadline:
+            time.sleep(0.1)
+        assert not _alive(pid), f"process {pid} of the lane outlived lanes.py"
+
+
+def _alive(pid):
+    """Whether PID runs (a zombie, ended but not yet reaped by init, counts as ended)."""
+    try:
+        with open(f"/proc/{pid}/stat", encoding="ascii") as stat:
+            return stat.read().rsplit(")", 1)[1].split()[0] != "Z"
+    except FileNotFoundError:
+        return False
 
 
 def test_a_step_in_a_subshell_counts_the_cpu_of_what_ran_before_it(tmp_path):
