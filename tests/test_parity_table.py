@@ -152,3 +152,59 @@ def test_readme_snippets_extract(tmp_path):
                         "--out", str(out)], capture_output=True, text=True)
     assert r.returncode == 0, r.stderr
     assert (out / "go" / "main.go").read_text() == "package main\n```\n"
+
+
+def _tree(root: Path) -> dict:
+    """{relative path: bytes, or the target of a symbolic link} of every file under root."""
+    return {str(p.relative_to(root)): (("link", str(p.readlink())) if p.is_symlink() else p.read_bytes())
+            for p in sorted(root.rglob("*")) if p.is_symlink() or p.is_file()}
+
+
+def test_a_shared_cache_makes_each_folder_once_and_every_run_gets_the_same_bytes(tmp_path, monkeypatch):
+    made = []
+    damage = parity.damage
+    monkeypatch.setattr(parity, "damage", lambda folder, kind: (made.append(kind), damage(folder, kind))[1])
+    alone = parity.Folders(tmp_path / "alone")
+    first = parity.Folders(tmp_path / "first", parity.Cache(tmp_path / "cache"))
+    second = parity.Folders(tmp_path / "second", parity.Cache(tmp_path / "cache"))
+    for kind in ("unknown-key", "cut-mid-line", "missing-file"):
+        want = _tree(alone.get(kind, "json", ON).root)
+        assert _tree(first.get(kind, "json", ON).root) == want, kind
+        assert _tree(second.get(kind, "json", ON).root) == want, kind
+    # Made alone, then once for the two runs that share the cache.
+    assert made == ["unknown-key", "unknown-key", "cut-mid-line", "cut-mid-line", "missing-file", "missing-file"]
+    # Each run has a copy of its own: what one run's runner does to its folder, the other's never sees.
+    copy = second.get("unknown-key", "json", ON)
+    copy.file.write_text("changed")
+    assert first.get("unknown-key", "json", ON).file.read_text() != "changed"
+    # A pipe is made anew in each run, never copied (a copy would block reading it).
+    assert first.get("fifo", "json", ON).file.is_fifo() and second.get("fifo", "json", ON).file.is_fifo()
+    assert made[-2:] == ["fifo", "fifo"]
+
+
+def test_a_cache_folder_another_run_is_still_making_is_waited_for_within_a_bound(tmp_path, monkeypatch):
+    import fcntl
+    cache = parity.Cache(tmp_path / "cache")
+    lock = open(cache.root / ".unknown-key-json-x.lock", "w")
+    fcntl.flock(lock, fcntl.LOCK_EX)   # the other run, still making it
+    monkeypatch.setattr(parity, "CACHE_BOUND_S", 0.3)
+    with pytest.raises(parity.TableError, match="another run has been making it"):
+        cache.copy("unknown-key-json-x", tmp_path / "dest", lambda folder: folder.mkdir())
+    lock.close()
+    cache.copy("unknown-key-json-x", tmp_path / "dest", lambda folder: folder.mkdir())
+    assert (tmp_path / "dest").is_dir()
+
+
+def test_a_cache_is_keyed_by_the_vectors_it_was_made_from(tmp_path, monkeypatch):
+    before = parity.Cache(tmp_path / "cache").root
+    manifest = tmp_path / "repo" / "vectors" / "manifest.json"
+    manifest.parent.mkdir(parents=True)
+    manifest.write_text((REPO / "vectors" / "manifest.json").read_text() + " ")
+    monkeypatch.setattr(parity, "REPO", tmp_path / "repo")
+    assert parity.Cache(tmp_path / "cache").root != before
+
+
+def test_an_unusable_cache_folder_is_a_usage_error_naming_it(tmp_path, capsys):
+    (tmp_path / "file").write_text("")
+    assert parity.main(["--lang", "python", "--cache", str(tmp_path / "file" / "cache")]) == 2
+    assert f"--cache {tmp_path / 'file' / 'cache'}:" in capsys.readouterr().err

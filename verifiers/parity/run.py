@@ -16,6 +16,8 @@ or an option is wrong.
 from __future__ import annotations
 
 import argparse
+import contextlib
+import fcntl
 import fnmatch
 import hashlib
 import json
@@ -67,6 +69,8 @@ TRACES = {
 }
 BUILD_BOUND_S = 900
 ROW_BOUND_S = 180
+# How long a run waits for another run to finish making a folder of the shared cache (--cache).
+CACHE_BOUND_S = 600
 
 
 class TableError(Exception):
@@ -335,41 +339,102 @@ def _damage_bytes(folder: Folder, kind: str) -> None:
     folder.file.write_bytes(b"\n".join(lines))
 
 
+class Cache:
+    """Damaged folders and the release bundle made once for several runs of this script over one tree
+    (CI's lanes, one language each, side by side): the first run that needs one makes it, the others
+    copy it. Making them is most of the script's own time (the JSON re-encoded for each damage, a
+    `plcvec release`); copying is a few milliseconds. The folders live under a digest of this script
+    and of the vector indexes they are made from, so a cache folder given to a changed tree is not
+    read; each is renamed into place once whole, and a run copies it, never uses it in place."""
+
+    def __init__(self, root: Path):
+        digest = hashlib.sha256(Path(__file__).read_bytes())
+        for index in (REPO / "vectors" / "manifest.json", *(REPO / "verifiers" / lang / "vectors" / "index.json"
+                                                          for lang in ("rust", "go", "typescript"))):
+            digest.update(index.read_bytes() if index.is_file() else b"-")
+        self.root = root / digest.hexdigest()[:16]
+        self.root.mkdir(parents=True, exist_ok=True)
+
+    def copy(self, name: str, dest: Path, make) -> None:
+        """dest := a copy of the cached `name`, which `make(folder)` makes first if no run has."""
+        made = self.root / name
+        with self._lock(name):
+            if not made.is_dir():
+                partial = self.root / f".{name}.partial"
+                shutil.rmtree(partial, ignore_errors=True)
+                make(partial)
+                os.rename(partial, made)
+        shutil.copytree(made, dest, symlinks=True)
+
+    @contextlib.contextmanager
+    def _lock(self, name: str):
+        fd = os.open(self.root / f".{name}.lock", os.O_CREAT | os.O_RDWR, 0o644)
+        try:
+            deadline = time.monotonic() + CACHE_BOUND_S
+            while True:
+                try:
+                    fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+                    break
+                except BlockingIOError:
+                    if time.monotonic() > deadline:
+                        raise TableError(f"{self.root / name}: another run has been making it for "
+                                         f"{CACHE_BOUND_S} s; remove {self.root} if no run is")
+                    time.sleep(0.05)
+            yield
+        finally:
+            os.close(fd)   # releases the lock
+
+
 class Folders:
     """The damaged copies, made once per (damage, form, vector), and the release bundle, made once;
-    all removed at the end."""
+    all removed at the end. With a Cache, made once for every run that shares it."""
 
-    def __init__(self, base: Path):
-        self.base, self.made = base, {}
+    def __init__(self, base: Path, cache: Cache | None = None):
+        self.base, self.made, self.cache = base, {}, cache
         self.bundle: Path | None = None
 
     def release(self, form: str) -> Path:
         """The folder of a release bundle (`plcvec release`, unpacked) that a runner of `form` reads:
         a user downloads the bundle and points the runner at it as it is."""
         if self.bundle is None:
-            out = self.base / "release"
-            proc = subprocess.run([sys.executable, "-m", "plcvec", "release", "--out", str(out)], cwd=REPO,
-                                  capture_output=True, text=True, timeout=900)
-            if proc.returncode != 0:
-                raise TableError(f"plcvec release failed: {proc.stderr.strip()}")
-            archive = next(out.glob("plcvec-vectors-*.tar.gz"))
-            # The "data" filter where the interpreter has it (3.10.12, 3.11.4 and later): on an older
-            # patch release the argument is unknown, and the archive is the one this run just wrote.
-            safe = {"filter": "data"} if hasattr(tarfile, "data_filter") else {}
-            shutil.unpack_archive(archive, out / "unpacked", **safe)
-            self.bundle = next((out / "unpacked").iterdir())
+            unpacked = self.base / "release"
+            if self.cache is None:
+                _make_release(unpacked)
+            else:
+                self.cache.copy("release", unpacked, _make_release)
+            self.bundle = next(p for p in unpacked.iterdir() if p.is_dir())
         return self.bundle / ("vectors" if form == "json" else "jsonl")
 
     def get(self, kind: str, form: str, on: str) -> Folder:
         key = (kind, form, on)
         if key not in self.made:
             root = self.base / f"{len(self.made):02d}-{kind}-{form}"
-            source = REPO / "vectors" if form == "json" else jsonl_source()
-            shutil.copytree(source, root)
-            folder = Folder(form, root, on)
-            damage(folder, kind)
-            self.made[key] = folder
+
+            def make(folder: Path) -> None:
+                shutil.copytree(REPO / "vectors" if form == "json" else jsonl_source(), folder)
+                damage(Folder(form, folder, on), kind)
+
+            # A folder holding a pipe or a device is made anew: a copy would read from it.
+            if self.cache is None or kind in NOT_A_REGULAR_FILE:
+                make(root)
+            else:
+                self.cache.copy(re.sub(r"[^\w.+-]", "_", f"{kind}-{form}-{on}"), root, make)
+            self.made[key] = Folder(form, root, on)
         return self.made[key]
+
+
+def _make_release(unpacked: Path) -> None:
+    """unpacked/<bundle>/: this tree's `plcvec release`, unpacked as a user would."""
+    with tempfile.TemporaryDirectory(prefix="plcvec-release-") as out:
+        proc = subprocess.run([sys.executable, "-m", "plcvec", "release", "--out", out], cwd=REPO,
+                              capture_output=True, text=True, timeout=900)
+        if proc.returncode != 0:
+            raise TableError(f"plcvec release failed: {proc.stderr.strip()}")
+        archive = next(Path(out).glob("plcvec-vectors-*.tar.gz"))
+        # The "data" filter where the interpreter has it (3.10.12, 3.11.4 and later): on an older
+        # patch release the argument is unknown, and the archive is the one this run just wrote.
+        safe = {"filter": "data"} if hasattr(tarfile, "data_filter") else {}
+        shutil.unpack_archive(archive, unpacked, **safe)
 
 
 # --- running a row -----------------------------------------------------------------------------
@@ -557,6 +622,10 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--bound", type=float, default=ROW_BOUND_S, help="seconds a row may take")
     parser.add_argument("-v", "--verbose", action="store_true", help="print the output of every row (that of a row that fails is always printed)")
     parser.add_argument("--keep", action="store_true", help="keep the damaged folders")
+    parser.add_argument("--cache", type=Path, default=os.environ.get("FAULTS_TABLE_CACHE") or None,
+                        metavar="DIR", help="make the damaged folders and the release bundle once for "
+                        "every run given the same DIR (runs over one tree, as CI's lanes; default: "
+                        "$FAULTS_TABLE_CACHE, else none)")
     args = parser.parse_args(argv)
     try:
         rows = load_table()
@@ -584,6 +653,10 @@ def main(argv: list[str] | None = None) -> int:
             langs = [x for x in LANGUAGES if os.access(entry(x), os.X_OK)]
             if not langs:
                 raise TableError("no language has a verifiers/<lang>/faults-entry")
+        try:
+            cache = Cache(args.cache) if args.cache else None
+        except OSError as e:
+            raise TableError(f"--cache {args.cache}: {e.strerror}")
     except TableError as e:
         print(f"run.py: {e}", file=sys.stderr)
         return 2
@@ -592,7 +665,7 @@ def main(argv: list[str] | None = None) -> int:
     outcomes: list[Outcome] = []
     base = Path(tempfile.mkdtemp(prefix="plcvec-faults-"))
     try:
-        folders = Folders(base / "vectors")
+        folders = Folders(base / "vectors", cache)
         for lang in langs:
             if not args.no_build:
                 problem = build(lang)
