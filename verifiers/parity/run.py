@@ -611,7 +611,7 @@ def excerpt(o: Outcome, keep: int = 60) -> str:
     return "\n".join([f"     | (exit status {o.status})", *("     | " + line for line in lines)])
 
 
-def main(argv: list[str] | None = None) -> int:
+def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--lang", default="", help="comma-separated languages (default: every one "
@@ -626,33 +626,45 @@ def main(argv: list[str] | None = None) -> int:
                         metavar="DIR", help="make the damaged folders and the release bundle once for "
                         "every run given the same DIR (runs over one tree, as CI's lanes; default: "
                         "$FAULTS_TABLE_CACHE, else none)")
-    args = parser.parse_args(argv)
+    return parser
+
+
+def _chosen_rows(globs: list[str]) -> list[Row]:
+    rows = load_table()
+    if not globs:
+        return rows
+    unmatched = [g for g in globs if not any(fnmatch.fnmatchcase(r.id, g) for r in rows)]
+    if unmatched:
+        raise TableError(f"--row {', '.join(unmatched)} matches no row; rows: " + ", ".join(r.id for r in rows))
+    return [r for r in rows if any(fnmatch.fnmatchcase(r.id, g) for g in globs)]
+
+
+def _chosen_langs(lang: str) -> list[str]:
+    if not lang:
+        langs = [x for x in LANGUAGES if os.access(entry(x), os.X_OK)]
+        if not langs:
+            raise TableError("no language has a verifiers/<lang>/faults-entry")
+        return langs
+    langs = [x.strip() for x in lang.split(",")]
+    bad = [x for x in langs if x not in LANGUAGES]
+    if bad or not all(langs):
+        raise TableError(f"--lang {lang}: known languages: {', '.join(LANGUAGES)}")
+    missing = [x for x in langs if not os.access(entry(x), os.X_OK)]
+    if missing:
+        raise TableError("no executable faults-entry for " + ", ".join(
+            f"{x} ({entry(x).relative_to(REPO)})" for x in missing))
+    return langs
+
+
+def main(argv: list[str] | None = None) -> int:
+    args = _parser().parse_args(argv)
     try:
-        rows = load_table()
-        if args.row:
-            chosen = [r for r in rows if any(fnmatch.fnmatchcase(r.id, g) for g in args.row)]
-            unmatched = [g for g in args.row if not any(fnmatch.fnmatchcase(r.id, g) for r in rows)]
-            if unmatched:
-                raise TableError(f"--row {', '.join(unmatched)} matches no row; rows: "
-                                 + ", ".join(r.id for r in rows))
-            rows = chosen
+        rows = _chosen_rows(args.row)
         if args.list:
             for r in rows:
                 print(f"{r.id:34} {r.verdict:6} {r.what}")
             return 0
-        if args.lang:
-            langs = [x.strip() for x in args.lang.split(",")]
-            bad = [x for x in langs if x not in LANGUAGES]
-            if bad or not all(langs):
-                raise TableError(f"--lang {args.lang}: known languages: {', '.join(LANGUAGES)}")
-            missing = [x for x in langs if not os.access(entry(x), os.X_OK)]
-            if missing:
-                raise TableError("no executable faults-entry for " + ", ".join(
-                    f"{x} ({entry(x).relative_to(REPO)})" for x in missing))
-        else:
-            langs = [x for x in LANGUAGES if os.access(entry(x), os.X_OK)]
-            if not langs:
-                raise TableError("no language has a verifiers/<lang>/faults-entry")
+        langs = _chosen_langs(args.lang)
         try:
             cache = Cache(args.cache) if args.cache else None
         except OSError as e:
