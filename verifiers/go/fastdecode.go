@@ -1,0 +1,697 @@
+package plcvec
+
+import (
+	"bytes"
+	"encoding/json"
+	"unicode/utf8"
+)
+
+// Every run loads the whole vector set before it judges, and encoding/json, which finds each
+// key's field and each value's type by reflection, was some two thirds of a load; the check of
+// repeated keys, a second pass over every line, a tenth more. fastJSONL decodes an exported family
+// file's vectors by hand instead, over exactly the shapes the schema gives a vector, in the one
+// pass that also rules out repeated keys. It is a shortcut and never a judge: it takes only text
+// that encoding/json takes too and decodes to the very same values (fastdecode_test.go decodes
+// every embedded family both ways and compares them, and damaged lines with a fuzz target), and
+// on anything else (an unknown key, a key written in another case or with an escape, a value of
+// another type, a repeated key, null, a number out of range or written with a fraction or an
+// exponent, a \u escape, text after a line's value, bytes that are not UTF-8) it declines, and
+// the file is decoded the way it always was, which finds the fault and words it.
+
+// fastJSONL decodes an exported family file's header (line 1, by encoding/json, as streamJSONL
+// reads it) and its vectors (by hand). ok is true only when every line decoded so and no object
+// of a vector line repeats a key: the caller then need not look for repeated keys in them.
+func fastJSONL(data []byte, lines [][]byte) (header *FamilyHeader, vectors []*Vector, ok bool) {
+	if !utf8.Valid(data) {
+		return nil, nil, false
+	}
+	// The header: one line a file, decoded as streamJSONL decodes it (a value of line 1 alone,
+	// nothing but blanks after it).
+	dec := json.NewDecoder(bytes.NewReader(lines[0]))
+	dec.DisallowUnknownFields()
+	header = &FamilyHeader{}
+	if dec.Decode(header) != nil || len(bytes.Trim(lines[0][dec.InputOffset():], " \t\r")) > 0 {
+		return nil, nil, false
+	}
+	d := fastDecoder{names: map[string]string{}}
+	vectors = make([]*Vector, 0, len(lines)-1)
+	for _, line := range lines[1:] {
+		d.data, d.i, d.failed = line, 0, false
+		v := &Vector{}
+		d.vector(v)
+		d.space()
+		if d.failed || d.i != len(line) {
+			return nil, nil, false
+		}
+		vectors = append(vectors, v)
+	}
+	return header, vectors, true
+}
+
+// fastDecoder reads one line's JSON. A method that meets anything it does not take sets failed
+// and returns a zero value; once failed, every method does nothing, and the line is declined.
+type fastDecoder struct {
+	data   []byte
+	i      int
+	failed bool
+	key    []byte            // the key member read, as written (never with an escape)
+	names  map[string]string // a string value read before, to give the same name one copy
+	keys   keyScanner        // for `printed`, the one value read as it is written
+}
+
+func (d *fastDecoder) fail() { d.failed = true }
+
+// space skips JSON's blanks.
+func (d *fastDecoder) space() {
+	for d.i < len(d.data) {
+		switch d.data[d.i] {
+		case ' ', '\t', '\r', '\n':
+			d.i++
+		default:
+			return
+		}
+	}
+}
+
+// peek is the next byte after blanks, or 0 at the end.
+func (d *fastDecoder) peek() byte {
+	d.space()
+	if d.failed || d.i >= len(d.data) {
+		return 0
+	}
+	return d.data[d.i]
+}
+
+// open reads the byte that opens an object or an array ('{' or '[').
+func (d *fastDecoder) open(c byte) {
+	if d.peek() != c {
+		d.fail()
+		return
+	}
+	d.i++
+}
+
+// member reads the next member of the object open at d up to its value: its key into d.key and
+// the colon. It is false at the object's end (its '}' read) or on failure. first is true before
+// the object's first member.
+func (d *fastDecoder) member(first *bool) bool {
+	c := d.peek()
+	switch {
+	case d.failed:
+		return false
+	case c == '}':
+		d.i++
+		return false
+	case !*first:
+		if c != ',' {
+			d.fail()
+			return false
+		}
+		d.i++
+	}
+	*first = false
+	if d.peek() != '"' {
+		d.fail()
+		return false
+	}
+	d.key = d.rawString()
+	if d.peek() != ':' {
+		d.fail()
+		return false
+	}
+	d.i++
+	return !d.failed
+}
+
+// element is member for an array: false at its end (its ']' read) or on failure.
+func (d *fastDecoder) element(first *bool) bool {
+	c := d.peek()
+	switch {
+	case d.failed:
+		return false
+	case c == ']':
+		d.i++
+		return false
+	case !*first:
+		if c != ',' {
+			d.fail()
+			return false
+		}
+		d.i++
+	}
+	*first = false
+	return true
+}
+
+// once marks a struct field read; a second time is a repeated key.
+func (d *fastDecoder) once(seen *uint32, field uint32) {
+	if *seen&field != 0 {
+		d.fail()
+	}
+	*seen |= field
+}
+
+// rawString reads a string with no escape and returns its bytes (in d.data). A control byte is
+// not JSON; an escape is declined, as in a key it would make another key read alike.
+func (d *fastDecoder) rawString() []byte {
+	start := d.i + 1
+	for j := start; j < len(d.data); j++ {
+		switch c := d.data[j]; {
+		case c == '"':
+			d.i = j + 1
+			return d.data[start:j]
+		case c == '\\' || c < 0x20:
+			d.fail()
+			return nil
+		}
+	}
+	d.fail()
+	return nil
+}
+
+// string reads a string value. The escapes JSON writes with one letter are decoded; \u is
+// declined (a lone surrogate is decoded by rules of encoding/json's own).
+func (d *fastDecoder) string() string {
+	if d.peek() != '"' {
+		d.fail()
+		return ""
+	}
+	start := d.i + 1
+	for j := start; j < len(d.data); j++ {
+		switch c := d.data[j]; {
+		case c == '"':
+			d.i = j + 1
+			return d.name(d.data[start:j])
+		case c == '\\':
+			return d.escapedString(start)
+		case c < 0x20:
+			d.fail()
+			return ""
+		}
+	}
+	d.fail()
+	return ""
+}
+
+// escapedString reads the string that opens before start and holds an escape.
+func (d *fastDecoder) escapedString(start int) string {
+	var out []byte
+	for j := start; j < len(d.data); j++ {
+		c := d.data[j]
+		switch {
+		case c == '"':
+			d.i = j + 1
+			return string(out)
+		case c < 0x20:
+			d.fail()
+			return ""
+		case c != '\\':
+			out = append(out, c)
+			continue
+		}
+		if j++; j >= len(d.data) {
+			break
+		}
+		switch d.data[j] {
+		case '"', '\\', '/':
+			out = append(out, d.data[j])
+		case 'b':
+			out = append(out, '\b')
+		case 'f':
+			out = append(out, '\f')
+		case 'n':
+			out = append(out, '\n')
+		case 'r':
+			out = append(out, '\r')
+		case 't':
+			out = append(out, '\t')
+		default:
+			d.fail()
+			return ""
+		}
+	}
+	d.fail()
+	return ""
+}
+
+// name is the string b as one copy for every time the line set holds it: device names, keys,
+// categories and tags repeat by the thousand.
+func (d *fastDecoder) name(b []byte) string {
+	if s, ok := d.names[string(b)]; ok {
+		return s
+	}
+	s := string(b)
+	d.names[s] = s
+	return s
+}
+
+// digits reads a JSON number that is an integer of at most max digits, with a minus sign when
+// signed, and returns it; a fraction, an exponent, more digits or a leading 0 is declined.
+func (d *fastDecoder) digits(max int, signed bool) (n int64, negative bool) {
+	d.space()
+	if signed && d.i < len(d.data) && d.data[d.i] == '-' {
+		negative = true
+		d.i++
+	}
+	start := d.i
+	for d.i < len(d.data) && d.data[d.i] >= '0' && d.data[d.i] <= '9' {
+		n = n*10 + int64(d.data[d.i]-'0')
+		d.i++
+	}
+	count := d.i - start
+	switch {
+	case count == 0 || count > max || count > 1 && d.data[start] == '0':
+		d.fail()
+	case d.i < len(d.data):
+		if c := d.data[d.i]; c == '.' || c == 'e' || c == 'E' {
+			d.fail()
+		}
+	}
+	if negative {
+		n = -n
+	}
+	return n, negative
+}
+
+// int reads an int: at most 9 digits, so that it fits the narrowest int Go has.
+func (d *fastDecoder) int() int {
+	n, _ := d.digits(9, true)
+	return int(n)
+}
+
+// int64 reads an int64: at most 18 digits.
+func (d *fastDecoder) int64() int64 {
+	n, _ := d.digits(18, true)
+	return n
+}
+
+// literal reads the word w (true or false).
+func (d *fastDecoder) literal(w string) bool {
+	if !bytes.HasPrefix(d.data[d.i:], []byte(w)) {
+		return false
+	}
+	end := d.i + len(w)
+	if end < len(d.data) && (d.data[end] >= 'a' && d.data[end] <= 'z' || d.data[end] >= '0' && d.data[end] <= '9') {
+		return false // trues, false0: a longer word, not JSON
+	}
+	d.i = end
+	return true
+}
+
+// bool reads true or false.
+func (d *fastDecoder) bool() bool {
+	switch d.peek() {
+	case 't':
+		if d.literal("true") {
+			return true
+		}
+	case 'f':
+		if d.literal("false") {
+			return false
+		}
+	}
+	d.fail()
+	return false
+}
+
+// value reads a device value as Value.UnmarshalJSON does: true, false or an integer 0..65535.
+func (d *fastDecoder) value() Value {
+	switch d.peek() {
+	case 't', 'f':
+		return Bit(d.bool())
+	}
+	n, _ := d.digits(5, false)
+	if n > 0xFFFF {
+		d.fail()
+	}
+	return Word(uint16(n))
+}
+
+// strings reads an array of strings (never nil, as encoding/json makes [] an empty slice).
+func (d *fastDecoder) strings() []string {
+	out := []string{}
+	d.open('[')
+	for first := true; d.element(&first); {
+		out = append(out, d.string())
+	}
+	return out
+}
+
+// values reads an object of device values.
+func (d *fastDecoder) values() map[string]Value {
+	out := map[string]Value{}
+	d.open('{')
+	for first := true; d.member(&first); {
+		name := d.name(d.key)
+		if _, repeated := out[name]; repeated {
+			d.fail()
+		}
+		out[name] = d.value()
+	}
+	return out
+}
+
+// ints reads an object of ints.
+func (d *fastDecoder) ints() map[string]int {
+	out := map[string]int{}
+	d.open('{')
+	for first := true; d.member(&first); {
+		name := d.name(d.key)
+		if _, repeated := out[name]; repeated {
+			d.fail()
+		}
+		out[name] = d.int()
+	}
+	return out
+}
+
+// vector reads a Vector.
+func (d *fastDecoder) vector(v *Vector) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "id":
+			d.once(&seen, 1<<0)
+			v.ID = d.string()
+		case "family":
+			d.once(&seen, 1<<1)
+			v.Family = d.string()
+		case "instruction":
+			d.once(&seen, 1<<2)
+			v.Instruction = d.string()
+		case "st":
+			d.once(&seen, 1<<3)
+			v.ST = d.string()
+		case "description":
+			d.once(&seen, 1<<4)
+			v.Description = d.string()
+		case "tags":
+			d.once(&seen, 1<<5)
+			v.Tags = d.strings()
+		case "clauses":
+			d.once(&seen, 1<<6)
+			v.Clauses = d.strings()
+		case "assumes":
+			d.once(&seen, 1<<7)
+			d.assumes(&v.Assumes)
+		case "initial":
+			d.once(&seen, 1<<8)
+			v.Initial = &Initial{}
+			d.initial(v.Initial)
+		case "steps":
+			d.once(&seen, 1<<9)
+			v.Steps = []Step{}
+			d.open('[')
+			for first := true; d.element(&first); {
+				v.Steps = append(v.Steps, Step{})
+				d.step(&v.Steps[len(v.Steps)-1])
+			}
+		case "final":
+			d.once(&seen, 1<<10)
+			v.Final = &State{}
+			d.state(v.Final)
+		case "outcome":
+			d.once(&seen, 1<<11)
+			v.Outcome = &Outcome{}
+			d.outcome(v.Outcome)
+		case "alternatives":
+			d.once(&seen, 1<<12)
+			v.Alternatives = []Alternative{}
+			d.open('[')
+			for first := true; d.element(&first); {
+				v.Alternatives = append(v.Alternatives, Alternative{})
+				d.alternative(&v.Alternatives[len(v.Alternatives)-1])
+			}
+		case "printed":
+			d.once(&seen, 1<<13)
+			v.Printed = d.raw()
+		default:
+			d.fail()
+		}
+	}
+}
+
+func (d *fastDecoder) assumes(a *Assumes) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "device_sizes":
+			d.once(&seen, 1)
+			a.DeviceSizes = d.ints()
+		default:
+			d.fail()
+		}
+	}
+}
+
+func (d *fastDecoder) initial(in *Initial) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "devices":
+			d.once(&seen, 1<<0)
+			in.Devices = d.values()
+		case "operands":
+			d.once(&seen, 1<<1)
+			in.Operands = map[string]Operand{}
+			d.open('{')
+			for first := true; d.member(&first); {
+				name := d.name(d.key)
+				if _, repeated := in.Operands[name]; repeated {
+					d.fail()
+				}
+				in.Operands[name] = d.operand()
+			}
+		case "scratch":
+			d.once(&seen, 1<<2)
+			in.Scratch = d.strings()
+		default:
+			d.fail()
+		}
+	}
+}
+
+func (d *fastDecoder) operand() (o Operand) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "device":
+			d.once(&seen, 1<<0)
+			o.Device = d.string()
+		case "constant":
+			d.once(&seen, 1<<1)
+			n := d.int()
+			o.Constant = &n
+		default:
+			d.fail()
+		}
+	}
+	return o
+}
+
+// step reads a Step as Step.UnmarshalJSON does, noting the inputs it gives.
+func (d *fastDecoder) step(s *Step) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "set":
+			d.once(&seen, 1<<0)
+			s.Set = d.values()
+		case "rlo_in":
+			d.once(&seen, 1<<1)
+			s.RLOIn, s.given = d.bool(), s.given|givesRLOIn
+		case "clock":
+			d.once(&seen, 1<<2)
+			s.Clock = d.ints()
+		case "en":
+			d.once(&seen, 1<<3)
+			s.EN, s.given = d.bool(), s.given|givesEN
+		case "input":
+			d.once(&seen, 1<<4)
+			s.Input, s.given = d.bool(), s.given|givesInput
+		case "elapsed_ms":
+			d.once(&seen, 1<<5)
+			s.ElapsedMS, s.given = d.int64(), s.given|givesElapsed
+		case "expect":
+			d.once(&seen, 1<<6)
+			s.Expect = &Expect{}
+			d.expect(s.Expect)
+		default:
+			d.fail()
+		}
+	}
+}
+
+func (d *fastDecoder) expect(e *Expect) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "result":
+			d.once(&seen, 1<<0)
+			b := d.bool()
+			e.Result = &b
+		case "devices":
+			d.once(&seen, 1<<1)
+			e.Devices = d.values()
+		default:
+			d.fail()
+		}
+	}
+}
+
+func (d *fastDecoder) state(s *State) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "devices":
+			d.once(&seen, 1)
+			s.Devices = d.values()
+		default:
+			d.fail()
+		}
+	}
+}
+
+func (d *fastDecoder) outcome(o *Outcome) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "category":
+			d.once(&seen, 1<<0)
+			o.Category = d.string()
+		case "interpretations":
+			d.once(&seen, 1<<1)
+			o.Interpretations = d.strings()
+		case "reason":
+			d.once(&seen, 1<<2)
+			o.Reason = d.string()
+		case "default":
+			d.once(&seen, 1<<3)
+			o.Default = &Outcome{}
+			d.outcome(o.Default)
+		case "errors":
+			d.once(&seen, 1<<4)
+			o.Errors = []OutcomeError{}
+			d.open('[')
+			for first := true; d.element(&first); {
+				o.Errors = append(o.Errors, d.outcomeError())
+			}
+		default:
+			d.fail()
+		}
+	}
+}
+
+func (d *fastDecoder) outcomeError() (e OutcomeError) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "step":
+			d.once(&seen, 1<<0)
+			e.Step = d.int()
+		case "code":
+			d.once(&seen, 1<<1)
+			e.Code = d.int()
+		case "device":
+			d.once(&seen, 1<<2)
+			e.Device = d.string()
+		default:
+			d.fail()
+		}
+	}
+	return e
+}
+
+func (d *fastDecoder) alternative(a *Alternative) {
+	var seen uint32
+	d.open('{')
+	for first := true; d.member(&first); {
+		switch string(d.key) {
+		case "choices":
+			d.once(&seen, 1<<0)
+			a.Choices = map[string]string{}
+			d.open('{')
+			for first := true; d.member(&first); {
+				id := d.name(d.key)
+				if _, repeated := a.Choices[id]; repeated {
+					d.fail()
+				}
+				a.Choices[id] = d.string()
+			}
+		case "expect":
+			d.once(&seen, 1<<1)
+			a.Expect = []Expect{}
+			d.open('[')
+			for first := true; d.element(&first); {
+				a.Expect = append(a.Expect, Expect{})
+				d.expect(&a.Expect[len(a.Expect)-1])
+			}
+		case "final":
+			d.once(&seen, 1<<2)
+			d.state(&a.Final)
+		case "outcome":
+			d.once(&seen, 1<<3)
+			d.outcome(&a.Outcome)
+		case "unjudged":
+			d.once(&seen, 1<<4)
+			a.Unjudged = map[string][]string{}
+			d.open('{')
+			for first := true; d.member(&first); {
+				id := d.name(d.key)
+				if _, repeated := a.Unjudged[id]; repeated {
+					d.fail()
+				}
+				a.Unjudged[id] = d.strings()
+			}
+		default:
+			d.fail()
+		}
+	}
+}
+
+// raw reads `printed`, which the runner keeps as written: an object or an array, its end found by
+// its brackets, then checked by encoding/json's own validator and for repeated keys; a copy of
+// its text, as json.RawMessage keeps it.
+func (d *fastDecoder) raw() json.RawMessage {
+	c := d.peek()
+	if c != '{' && c != '[' {
+		d.fail()
+		return nil
+	}
+	start, depth := d.i, 0
+	for ; d.i < len(d.data); d.i++ {
+		switch d.data[d.i] {
+		case '"':
+			d.i = stringEnd(d.data, d.i)
+		case '{', '[':
+			depth++
+		case '}', ']':
+			if depth--; depth == 0 {
+				d.i++
+				text := d.data[start:d.i]
+				if !json.Valid(text) || d.repeats(text) {
+					d.fail()
+					return nil
+				}
+				return append(json.RawMessage(nil), text...)
+			}
+		}
+	}
+	d.fail()
+	return nil
+}
+
+// repeats reports whether an object of the valid JSON text repeats a key.
+func (d *fastDecoder) repeats(text []byte) bool {
+	at, _ := d.keys.scan(text)
+	return at >= 0
+}
