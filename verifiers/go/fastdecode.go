@@ -56,7 +56,10 @@ type fastDecoder struct {
 	failed bool
 	key    []byte            // the key member read, as written (never with an escape)
 	names  map[string]string // a string value read before, to give the same name one copy
-	keys   keyScanner        // for `printed`, the one value read as it is written
+	// The number of devices of the last full image read (`initial`, `final`): the next is
+	// made that size, the size a vector's images mostly share, rather than grown to it.
+	image int
+	keys  keyScanner // for `printed`, the one value read as it is written
 }
 
 func (d *fastDecoder) fail() { d.failed = true }
@@ -337,9 +340,9 @@ func (d *fastDecoder) strings() []string {
 	return out
 }
 
-// values reads an object of device values.
-func (d *fastDecoder) values() map[string]Value {
-	out := map[string]Value{}
+// values reads an object of device values, into a map made for size of them.
+func (d *fastDecoder) values(size int) map[string]Value {
+	out := make(map[string]Value, size)
 	d.open('{')
 	for first := true; d.member(&first); {
 		name := d.name(d.key)
@@ -453,7 +456,8 @@ func (d *fastDecoder) initial(in *Initial) {
 		switch string(d.key) {
 		case "devices":
 			d.once(&seen, 1<<0)
-			in.Devices = d.values()
+			in.Devices = d.values(d.image)
+			d.image = len(in.Devices)
 		case "operands":
 			d.once(&seen, 1<<1)
 			in.Operands = map[string]Operand{}
@@ -501,7 +505,7 @@ func (d *fastDecoder) step(s *Step) {
 		switch string(d.key) {
 		case "set":
 			d.once(&seen, 1<<0)
-			s.Set = d.values()
+			s.Set = d.values(0)
 		case "rlo_in":
 			d.once(&seen, 1<<1)
 			s.RLOIn, s.given = d.bool(), s.given|givesRLOIn
@@ -538,7 +542,7 @@ func (d *fastDecoder) expect(e *Expect) {
 			e.Result = &b
 		case "devices":
 			d.once(&seen, 1<<1)
-			e.Devices = d.values()
+			e.Devices = d.values(0)
 		default:
 			d.fail()
 		}
@@ -552,7 +556,8 @@ func (d *fastDecoder) state(s *State) {
 		switch string(d.key) {
 		case "devices":
 			d.once(&seen, 1)
-			s.Devices = d.values()
+			s.Devices = d.values(d.image)
+			d.image = len(s.Devices)
 		default:
 			d.fail()
 		}

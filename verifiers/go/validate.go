@@ -66,24 +66,31 @@ func (v *Vector) deviceTypes() string {
 }
 
 // deviceTypeConflict reports whether a device of v is a bit in one place and a word in another.
+// Each place is held against `initial`, which names nearly every device of a vector (a map of
+// every device, built per vector, was most of the time); the others alone go into a map.
 func (v *Vector) deviceTypeConflict() bool {
-	var bits map[string]bool
+	var initial map[string]Value
+	if v.Initial != nil {
+		initial = v.Initial.Devices
+	}
+	var others map[string]bool
 	conflict := false
 	note := func(devices map[string]Value) {
-		if bits == nil {
-			bits = make(map[string]bool, len(devices))
-		}
 		for name, value := range devices {
 			bit := value.IsBit()
-			if first, ok := bits[name]; !ok {
-				bits[name] = bit
-			} else if first != bit {
-				conflict = true
+			if first, ok := initial[name]; ok {
+				conflict = conflict || first.IsBit() != bit
+				continue
 			}
+			if first, ok := others[name]; ok {
+				conflict = conflict || first != bit
+				continue
+			}
+			if others == nil {
+				others = map[string]bool{}
+			}
+			others[name] = bit
 		}
-	}
-	if v.Initial != nil {
-		note(v.Initial.Devices)
 	}
 	for i := range v.Steps {
 		note(v.Steps[i].Set)
