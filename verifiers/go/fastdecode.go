@@ -94,45 +94,14 @@ func (d *fastDecoder) open(c byte) {
 	d.i++
 }
 
-// member reads the next member of the object open at d up to its value: its key into d.key and
-// the colon. It is false at the object's end (its '}' read) or on failure. first is true before
-// the object's first member.
-func (d *fastDecoder) member(first *bool) bool {
+// next moves to the next member or element of the object or array open at d, which close
+// ends: false at its end (close read) or on failure. first is true before the first.
+func (d *fastDecoder) next(first *bool, close byte) bool {
 	c := d.peek()
 	switch {
 	case d.failed:
 		return false
-	case c == '}':
-		d.i++
-		return false
-	case !*first:
-		if c != ',' {
-			d.fail()
-			return false
-		}
-		d.i++
-	}
-	*first = false
-	if d.peek() != '"' {
-		d.fail()
-		return false
-	}
-	d.key = d.rawString()
-	if d.peek() != ':' {
-		d.fail()
-		return false
-	}
-	d.i++
-	return !d.failed
-}
-
-// element is member for an array: false at its end (its ']' read) or on failure.
-func (d *fastDecoder) element(first *bool) bool {
-	c := d.peek()
-	switch {
-	case d.failed:
-		return false
-	case c == ']':
+	case c == close:
 		d.i++
 		return false
 	case !*first:
@@ -146,13 +115,27 @@ func (d *fastDecoder) element(first *bool) bool {
 	return true
 }
 
-// once marks a struct field read; a second time is a repeated key.
-func (d *fastDecoder) once(seen *uint32, field uint32) {
-	if *seen&field != 0 {
-		d.fail()
+// member reads the next member of the object open at d up to its value: its key into d.key and
+// the colon. It is false at the object's end or on failure.
+func (d *fastDecoder) member(first *bool) bool {
+	if !d.next(first, '}') {
+		return false
 	}
-	*seen |= field
+	if d.peek() != '"' {
+		d.fail()
+		return false
+	}
+	d.key = d.rawString()
+	if d.peek() != ':' {
+		d.fail()
+		return false
+	}
+	d.i++
+	return !d.failed
 }
+
+// element is member for an array.
+func (d *fastDecoder) element(first *bool) bool { return d.next(first, ']') }
 
 // rawString reads a string with no escape and returns its bytes (in d.data). A control byte is
 // not JSON; an escape is declined, as in a key it would make another key read alike.
@@ -330,337 +313,271 @@ func (d *fastDecoder) value() Value {
 	return Word(uint16(n))
 }
 
-// strings reads an array of strings (never nil, as encoding/json makes [] an empty slice).
-func (d *fastDecoder) strings() []string {
-	out := []string{}
+// list reads an array, each element by read (never nil, as encoding/json makes [] an empty
+// slice).
+func list[T any](d *fastDecoder, read func(*fastDecoder, *T)) []T {
+	out := []T{}
 	d.open('[')
 	for first := true; d.element(&first); {
-		out = append(out, d.string())
+		out = append(out, *new(T))
+		read(d, &out[len(out)-1])
 	}
 	return out
+}
+
+// object reads an object into a map made for size members, each value by read; a key given
+// twice is declined (encoding/json would keep the last; the check of repeated keys refuses it).
+func object[T any](d *fastDecoder, size int, read func(*fastDecoder) T) map[string]T {
+	out := make(map[string]T, size)
+	d.open('{')
+	for first := true; d.member(&first); {
+		name := d.name(d.key)
+		if _, repeated := out[name]; repeated {
+			d.fail()
+		}
+		out[name] = read(d)
+	}
+	return out
+}
+
+// strings reads an array of strings.
+func (d *fastDecoder) strings() []string {
+	return list(d, func(d *fastDecoder, s *string) { *s = d.string() })
 }
 
 // values reads an object of device values, into a map made for size of them.
 func (d *fastDecoder) values(size int) map[string]Value {
-	out := make(map[string]Value, size)
-	d.open('{')
-	for first := true; d.member(&first); {
-		name := d.name(d.key)
-		if _, repeated := out[name]; repeated {
-			d.fail()
-		}
-		out[name] = d.value()
-	}
-	return out
+	return object(d, size, (*fastDecoder).value)
 }
 
-// ints reads an object of ints.
-func (d *fastDecoder) ints() map[string]int {
-	out := map[string]int{}
+// fields reads an object into a struct: field reads the value of the member d.key names and
+// returns the field's bit (one bit a field), or 0, reading nothing, for a key the struct does
+// not have. A field given twice is declined.
+func (d *fastDecoder) fields(field func() uint32) {
+	var seen uint32
 	d.open('{')
 	for first := true; d.member(&first); {
-		name := d.name(d.key)
-		if _, repeated := out[name]; repeated {
+		bit := field()
+		if bit == 0 || seen&bit != 0 {
 			d.fail()
 		}
-		out[name] = d.int()
+		seen |= bit
 	}
-	return out
 }
 
 // vector reads a Vector.
 func (d *fastDecoder) vector(v *Vector) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "id":
-			d.once(&seen, 1<<0)
 			v.ID = d.string()
+			return 1 << 0
 		case "family":
-			d.once(&seen, 1<<1)
 			v.Family = d.string()
+			return 1 << 1
 		case "instruction":
-			d.once(&seen, 1<<2)
 			v.Instruction = d.string()
+			return 1 << 2
 		case "st":
-			d.once(&seen, 1<<3)
 			v.ST = d.string()
+			return 1 << 3
 		case "description":
-			d.once(&seen, 1<<4)
 			v.Description = d.string()
+			return 1 << 4
 		case "tags":
-			d.once(&seen, 1<<5)
 			v.Tags = d.strings()
+			return 1 << 5
 		case "clauses":
-			d.once(&seen, 1<<6)
 			v.Clauses = d.strings()
+			return 1 << 6
 		case "assumes":
-			d.once(&seen, 1<<7)
-			d.assumes(&v.Assumes)
+			d.fields(func() uint32 {
+				if string(d.key) != "device_sizes" {
+					return 0
+				}
+				v.Assumes.DeviceSizes = object(d, 0, (*fastDecoder).int)
+				return 1
+			})
+			return 1 << 7
 		case "initial":
-			d.once(&seen, 1<<8)
 			v.Initial = &Initial{}
 			d.initial(v.Initial)
+			return 1 << 8
 		case "steps":
-			d.once(&seen, 1<<9)
-			v.Steps = []Step{}
-			d.open('[')
-			for first := true; d.element(&first); {
-				v.Steps = append(v.Steps, Step{})
-				d.step(&v.Steps[len(v.Steps)-1])
-			}
+			v.Steps = list(d, (*fastDecoder).step)
+			return 1 << 9
 		case "final":
-			d.once(&seen, 1<<10)
 			v.Final = &State{}
 			d.state(v.Final)
+			return 1 << 10
 		case "outcome":
-			d.once(&seen, 1<<11)
 			v.Outcome = &Outcome{}
 			d.outcome(v.Outcome)
+			return 1 << 11
 		case "alternatives":
-			d.once(&seen, 1<<12)
-			v.Alternatives = []Alternative{}
-			d.open('[')
-			for first := true; d.element(&first); {
-				v.Alternatives = append(v.Alternatives, Alternative{})
-				d.alternative(&v.Alternatives[len(v.Alternatives)-1])
-			}
+			v.Alternatives = list(d, (*fastDecoder).alternative)
+			return 1 << 12
 		case "printed":
-			d.once(&seen, 1<<13)
 			v.Printed = d.raw()
-		default:
-			d.fail()
+			return 1 << 13
 		}
-	}
-}
-
-func (d *fastDecoder) assumes(a *Assumes) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
-		switch string(d.key) {
-		case "device_sizes":
-			d.once(&seen, 1)
-			a.DeviceSizes = d.ints()
-		default:
-			d.fail()
-		}
-	}
+		return 0
+	})
 }
 
 func (d *fastDecoder) initial(in *Initial) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "devices":
-			d.once(&seen, 1<<0)
 			in.Devices = d.values(d.image)
 			d.image = len(in.Devices)
+			return 1 << 0
 		case "operands":
-			d.once(&seen, 1<<1)
-			in.Operands = map[string]Operand{}
-			d.open('{')
-			for first := true; d.member(&first); {
-				name := d.name(d.key)
-				if _, repeated := in.Operands[name]; repeated {
-					d.fail()
-				}
-				in.Operands[name] = d.operand()
-			}
+			in.Operands = object(d, 0, (*fastDecoder).operand)
+			return 1 << 1
 		case "scratch":
-			d.once(&seen, 1<<2)
 			in.Scratch = d.strings()
-		default:
-			d.fail()
+			return 1 << 2
 		}
-	}
+		return 0
+	})
 }
 
 func (d *fastDecoder) operand() (o Operand) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "device":
-			d.once(&seen, 1<<0)
 			o.Device = d.string()
+			return 1 << 0
 		case "constant":
-			d.once(&seen, 1<<1)
 			n := d.int()
 			o.Constant = &n
-		default:
-			d.fail()
+			return 1 << 1
 		}
-	}
+		return 0
+	})
 	return o
 }
 
 // step reads a Step as Step.UnmarshalJSON does, noting the inputs it gives.
 func (d *fastDecoder) step(s *Step) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "set":
-			d.once(&seen, 1<<0)
 			s.Set = d.values(0)
+			return 1 << 0
 		case "rlo_in":
-			d.once(&seen, 1<<1)
 			s.RLOIn, s.given = d.bool(), s.given|givesRLOIn
+			return 1 << 1
 		case "clock":
-			d.once(&seen, 1<<2)
-			s.Clock = d.ints()
+			s.Clock = object(d, 0, (*fastDecoder).int)
+			return 1 << 2
 		case "en":
-			d.once(&seen, 1<<3)
 			s.EN, s.given = d.bool(), s.given|givesEN
+			return 1 << 3
 		case "input":
-			d.once(&seen, 1<<4)
 			s.Input, s.given = d.bool(), s.given|givesInput
+			return 1 << 4
 		case "elapsed_ms":
-			d.once(&seen, 1<<5)
 			s.ElapsedMS, s.given = d.int64(), s.given|givesElapsed
+			return 1 << 5
 		case "expect":
-			d.once(&seen, 1<<6)
 			s.Expect = &Expect{}
 			d.expect(s.Expect)
-		default:
-			d.fail()
+			return 1 << 6
 		}
-	}
+		return 0
+	})
 }
 
 func (d *fastDecoder) expect(e *Expect) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "result":
-			d.once(&seen, 1<<0)
 			b := d.bool()
 			e.Result = &b
+			return 1 << 0
 		case "devices":
-			d.once(&seen, 1<<1)
 			e.Devices = d.values(0)
-		default:
-			d.fail()
+			return 1 << 1
 		}
-	}
+		return 0
+	})
 }
 
 func (d *fastDecoder) state(s *State) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
-		switch string(d.key) {
-		case "devices":
-			d.once(&seen, 1)
-			s.Devices = d.values(d.image)
-			d.image = len(s.Devices)
-		default:
-			d.fail()
+	d.fields(func() uint32 {
+		if string(d.key) != "devices" {
+			return 0
 		}
-	}
+		s.Devices = d.values(d.image)
+		d.image = len(s.Devices)
+		return 1
+	})
 }
 
 func (d *fastDecoder) outcome(o *Outcome) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "category":
-			d.once(&seen, 1<<0)
 			o.Category = d.string()
+			return 1 << 0
 		case "interpretations":
-			d.once(&seen, 1<<1)
 			o.Interpretations = d.strings()
+			return 1 << 1
 		case "reason":
-			d.once(&seen, 1<<2)
 			o.Reason = d.string()
+			return 1 << 2
 		case "default":
-			d.once(&seen, 1<<3)
 			o.Default = &Outcome{}
 			d.outcome(o.Default)
+			return 1 << 3
 		case "errors":
-			d.once(&seen, 1<<4)
-			o.Errors = []OutcomeError{}
-			d.open('[')
-			for first := true; d.element(&first); {
-				o.Errors = append(o.Errors, d.outcomeError())
-			}
-		default:
-			d.fail()
+			o.Errors = list(d, (*fastDecoder).outcomeError)
+			return 1 << 4
 		}
-	}
+		return 0
+	})
 }
 
-func (d *fastDecoder) outcomeError() (e OutcomeError) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+func (d *fastDecoder) outcomeError(e *OutcomeError) {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "step":
-			d.once(&seen, 1<<0)
 			e.Step = d.int()
+			return 1 << 0
 		case "code":
-			d.once(&seen, 1<<1)
 			e.Code = d.int()
+			return 1 << 1
 		case "device":
-			d.once(&seen, 1<<2)
 			e.Device = d.string()
-		default:
-			d.fail()
+			return 1 << 2
 		}
-	}
-	return e
+		return 0
+	})
 }
 
 func (d *fastDecoder) alternative(a *Alternative) {
-	var seen uint32
-	d.open('{')
-	for first := true; d.member(&first); {
+	d.fields(func() uint32 {
 		switch string(d.key) {
 		case "choices":
-			d.once(&seen, 1<<0)
-			a.Choices = map[string]string{}
-			d.open('{')
-			for first := true; d.member(&first); {
-				id := d.name(d.key)
-				if _, repeated := a.Choices[id]; repeated {
-					d.fail()
-				}
-				a.Choices[id] = d.string()
-			}
+			a.Choices = object(d, 0, (*fastDecoder).string)
+			return 1 << 0
 		case "expect":
-			d.once(&seen, 1<<1)
-			a.Expect = []Expect{}
-			d.open('[')
-			for first := true; d.element(&first); {
-				a.Expect = append(a.Expect, Expect{})
-				d.expect(&a.Expect[len(a.Expect)-1])
-			}
+			a.Expect = list(d, (*fastDecoder).expect)
+			return 1 << 1
 		case "final":
-			d.once(&seen, 1<<2)
 			d.state(&a.Final)
+			return 1 << 2
 		case "outcome":
-			d.once(&seen, 1<<3)
 			d.outcome(&a.Outcome)
+			return 1 << 3
 		case "unjudged":
-			d.once(&seen, 1<<4)
-			a.Unjudged = map[string][]string{}
-			d.open('{')
-			for first := true; d.member(&first); {
-				id := d.name(d.key)
-				if _, repeated := a.Unjudged[id]; repeated {
-					d.fail()
-				}
-				a.Unjudged[id] = d.strings()
-			}
-		default:
-			d.fail()
+			a.Unjudged = object(d, 0, (*fastDecoder).strings)
+			return 1 << 4
 		}
-	}
+		return 0
+	})
 }
 
 // raw reads `printed`, which the runner keeps as written: an object or an array, its end found by
