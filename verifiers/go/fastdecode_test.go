@@ -84,8 +84,8 @@ func TestFastDecodeOfTheEmbeddedSet(t *testing.T) {
 	}
 }
 
-// fastSample is a small golden family's header and a vector line holding every kind of member the
-// schema gives one: strings, lists, device values of both types, an operand, steps, an
+// fastSample is a header naming a family, and a golden vector line holding every kind of member
+// the schema gives one: strings, lists, device values of both types, an operand, steps, an
 // alternative with its outcome, `printed`.
 func fastSample(t testing.TB) (header, line []byte) {
 	t.Helper()
@@ -103,7 +103,10 @@ func fastSample(t testing.TB) (header, line []byte) {
 	if line == nil {
 		t.Fatal("fx5-time-add holds no vector with alternatives and `printed`")
 	}
-	return lines[0], line
+	// A header of the family's name alone: what the fast path does with a header (encoding/json
+	// decodes it) the embedded set's test covers, and the family's own, decoded for every
+	// damaged line, was most of this test's time.
+	return []byte(`{"family":"fx5-time-add"}`), line
 }
 
 // fileOf is an exported family file of a header and vector lines.
@@ -219,7 +222,7 @@ func TestFastDecodeOfDamagedLines(t *testing.T) {
 		fastAgrees(t, fileOf(header, line[:end]))
 	}
 	for i := range line {
-		for _, b := range []byte{'"', '}', ',', '1', '\\', 0xff} {
+		for _, b := range []byte{'"', '}', ',', ':', '\\', 0xff} {
 			edited := append([]byte(nil), line...)
 			edited[i] = b
 			fastAgrees(t, fileOf(header, edited))
