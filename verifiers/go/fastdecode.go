@@ -233,8 +233,9 @@ func (d *fastDecoder) name(b []byte) string {
 
 // digits reads a JSON number that is an integer of at most max digits, with a minus sign when
 // signed, and returns it; a fraction, an exponent, more digits or a leading 0 is declined.
-func (d *fastDecoder) digits(max int, signed bool) (n int64, negative bool) {
+func (d *fastDecoder) digits(max int, signed bool) (n int64) {
 	d.space()
+	negative := false
 	if signed && d.i < len(d.data) && d.data[d.i] == '-' {
 		negative = true
 		d.i++
@@ -256,19 +257,17 @@ func (d *fastDecoder) digits(max int, signed bool) (n int64, negative bool) {
 	if negative {
 		n = -n
 	}
-	return n, negative
+	return n
 }
 
 // int reads an int: at most 9 digits, so that it fits the narrowest int Go has.
 func (d *fastDecoder) int() int {
-	n, _ := d.digits(9, true)
-	return int(n)
+	return int(d.digits(9, true))
 }
 
 // int64 reads an int64: at most 18 digits.
 func (d *fastDecoder) int64() int64 {
-	n, _ := d.digits(18, true)
-	return n
+	return d.digits(18, true)
 }
 
 // literal reads the word w (true or false).
@@ -306,7 +305,7 @@ func (d *fastDecoder) value() Value {
 	case 't', 'f':
 		return Bit(d.bool())
 	}
-	n, _ := d.digits(5, false)
+	n := d.digits(5, false)
 	if n > 0xFFFF {
 		d.fail()
 	}
