@@ -58,10 +58,13 @@ quiet "$GO_DIR/apicheck" --self-test
 # report there would go unread (TestTimeout, TestSettingWarningsOncePerRun); those that start a
 # child only to read a setting or a selection (TestRunPatternSelectsID, TestEnvVectors); and those
 # that drive once more a path the race run's other tests drive (Run's second process on a
-# passing family: TestPlcvecReference; a sound load and a refused one: TestLoadRefusesDamage).
+# passing family: TestPlcvecReference; a sound load and a refused one: TestLoadRefusesDamage); and
+# those of loading's shortcuts, which decode or check both ways in the test's goroutine alone
+# (TestFastDecodeOfTheEmbeddedSet, TestFastDecodeOfDamagedLines, FuzzFastDecode's seeds,
+# TestDeviceTypeConflictFound).
 # Under the detector they were three quarters of its time. Every go test here runs with -vet=off:
 # `go vet ./...` above ran every analyzer go test would run, on the same files.
-race_blind='^(TestTimeout|TestSettingWarningsOncePerRun|TestRunPatternSelectsID|TestEnvVectors|TestEnvShard|TestRepositoryFolder|TestLoadingAFamilyAllocatesAboutItsVectors|TestLoadNamesTheVectorAtFaultInAFamilyJSON|TestUnjudgedRefusedWhenMalformed)$'
+race_blind='^(TestTimeout|TestSettingWarningsOncePerRun|TestRunPatternSelectsID|TestEnvVectors|TestEnvShard|TestRepositoryFolder|TestLoadingAFamilyAllocatesAboutItsVectors|TestLoadNamesTheVectorAtFaultInAFamilyJSON|TestUnjudgedRefusedWhenMalformed|TestFastDecodeOfTheEmbeddedSet|TestFastDecodeOfDamagedLines|FuzzFastDecode|TestDeviceTypeConflictFound)$'
 step "test -race ."
 (cd "$GO_DIR" && quiet go test -vet=off -race -short -count=1 -skip "$race_blind" .)
 step "test the race-blind tests of . without -race"

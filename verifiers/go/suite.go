@@ -279,8 +279,9 @@ func checkHeader(h *FamilyHeader, where string) error {
 }
 
 // parseJSONL reads an exported family file: line 1 the header, then one vector per line. A
-// sound file is decoded in one pass (streamJSONL); one that does not decode so is read again
-// line by line (jsonlByLine), which names the line at fault.
+// sound file is decoded by hand (fastJSONL); one that the hand-written decoder declines, in one
+// pass by encoding/json (streamJSONL); one that does not decode so is read again line by line
+// (jsonlByLine), which names the line at fault.
 func parseJSONL(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 	lines := bytes.Split(data, []byte("\n"))
 	if len(lines) > 0 && len(lines[len(lines)-1]) == 0 {
@@ -289,9 +290,13 @@ func parseJSONL(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 	if len(lines) == 0 {
 		return nil, nil, fmt.Errorf("%s: empty; not a plcvec vector file", where)
 	}
-	header, vectors, ok := streamJSONL(data, lines)
-	if !ok {
-		return jsonlByLine(lines, where)
+	// The hand-written decoder first (fastdecode.go); what it declines, encoding/json.
+	header, vectors, noRepeats := fastJSONL(data, lines)
+	if !noRepeats {
+		var ok bool
+		if header, vectors, ok = streamJSONL(data, lines); !ok {
+			return jsonlByLine(lines, where)
+		}
 	}
 	var keys keyScanner
 	if err := keys.repeatedKeyError(lines[0], where, 1, nil); err != nil {
@@ -302,8 +307,11 @@ func parseJSONL(data []byte, where string) (*FamilyHeader, []*Vector, error) {
 	}
 	for i, v := range vectors {
 		lineNo := i + 2
-		if err := keys.repeatedKeyError(lines[i+1], where, lineNo, func(int) string { return v.ID }); err != nil {
-			return nil, nil, err
+		// fastJSONL read every object of the vector lines and found no key twice.
+		if !noRepeats {
+			if err := keys.repeatedKeyError(lines[i+1], where, lineNo, func(int) string { return v.ID }); err != nil {
+				return nil, nil, err
+			}
 		}
 		if p := v.shapeProblem(header); p != "" {
 			return nil, nil, fmt.Errorf("%s:%d: vector %s: %s (is the file a plcvec vector file, unedited?)", where, lineNo, nameOr(v.ID, lineNo), p)
