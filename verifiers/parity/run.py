@@ -344,8 +344,10 @@ class Cache:
     (CI's lanes, one language each, side by side): the first run that needs one makes it, the others
     copy it. Making them is most of the script's own time (the JSON re-encoded for each damage, a
     `plcvec release`); copying is a few milliseconds. The folders live under a digest of this script
-    and of the vector indexes they are made from, so a cache folder given to a changed tree is not
-    read; each is renamed into place once whole, and a run copies it, never uses it in place."""
+    and of the vector indexes they are made from, so a cache folder given vectors that changed is not
+    read; but the release bundle also carries files no index covers (CHANGES.md, the licence), so a
+    cache is for one tree as it stands: CI gives a new folder to each run. Each folder is renamed
+    into place once whole, and a run copies it, never uses it in place."""
 
     def __init__(self, root: Path):
         digest = hashlib.sha256(Path(__file__).read_bytes())
