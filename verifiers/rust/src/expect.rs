@@ -103,9 +103,13 @@ impl Expected {
             Box::new(Unjudged { by: chosen.unjudged.clone(), slots, passed_over })
         });
         let skip = unjudged.as_ref().map_or(vector.scratch(), |u| &u.passed_over);
-        let listed = vector.devices().iter().zip(last).zip(skip).filter(|(_, &s)| !s);
-        let consistent = listed.clone().count() == chosen.final_devices.len()
-            && listed.clone().all(|((a, v), _)| chosen.final_devices.get(a.name()) == Some(v));
+        // The devices are sorted by name and unique (read from a JSON object into a map), as are
+        // `final`'s keys (the same names): the two agree when they match pair by pair, which is
+        // one comparison per device where a look-up in `final` took several (this runs once per
+        // vector and set of alternatives).
+        let listed = vector.devices().iter().zip(last).zip(skip).filter(|(_, &s)| !s).map(|((a, v), _)| (a.name(), v));
+        let finals = chosen.final_devices.iter().map(|(name, v)| (name.as_str(), v));
+        let consistent = listed.eq(finals);
         if !consistent {
             return Err(Error::new(format!(
                 "vector {}: the per-step changes do not add up to `final` (the vector file is inconsistent; regenerate it)",

@@ -97,6 +97,24 @@ fn a_device_keeps_one_type() {
 }
 
 #[test]
+fn a_final_the_steps_do_not_add_up_to_is_refused() {
+    // The first vector's first `final` is its alternative's under TADD-ERROR-ORDER=field-range-first:
+    // D100 ends at 24 there. Edited to 25, or without D100, it is refused.
+    let choices: Choices = [("TADD-ERROR-ORDER", "field-range-first")].into_iter().collect();
+    for (name, to) in
+        [("final-value", "\"final\":{\"devices\":{\"D100\":25,"), ("final-missing", "\"final\":{\"devices\":{")]
+    {
+        let suite = Suite::load(edit_tadd(name, "\"final\":{\"devices\":{\"D100\":24,", to)).unwrap();
+        let selection = Selection::all().family("fx5-time-add");
+        let mut reference = OnMemory(Reference::with_choices(choices.clone()));
+        match plcvec::run(&suite, &mut reference, &selection, None) {
+            Ok(report) => panic!("{name}: the run was not refused:\n{}", report.summary()),
+            Err(err) => assert!(err.to_string().contains("do not add up to `final`"), "{name}: {err}"),
+        }
+    }
+}
+
+#[test]
 fn the_embedded_copy_holds_every_family_and_vector() {
     let suite = Suite::embedded().unwrap();
     assert_eq!(suite.vectors().len(), TOTAL);
