@@ -7,8 +7,10 @@ part of the project on its own files. A lane's output goes to `build/lanes/<name
 runs and is printed whole when it ends, so the CI log reads lane by lane instead of interleaved.
 Every lane runs to its end even when another fails (one red run names every failing lane), and a
 lane that outlives `--timeout` is killed with its whole process group: no wait without a bound.
-The last lines are a table of each lane's status and seconds, the figure to compare when CI's time
-is measured. Exit status: 0 when every lane passed, 1 otherwise.
+The last lines are a table of each lane's status, seconds and CPU seconds, the figures to compare
+when CI's time is measured, then the steps that took the most CPU (from the step lines of
+.ci/steps.sh in the lanes' logs): on two cores CI's time is bound by CPU, so that table says where a
+saving could come from. Exit status: 0 when every lane passed, 1 otherwise.
 
 Why lanes: this machine has two cores, and a lane spends part of its time waiting (downloads,
 Maven's and npm's start-up, linking), so two lanes at once finish sooner than one after the other.
@@ -22,6 +24,7 @@ from __future__ import annotations
 
 import argparse
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -34,6 +37,11 @@ LOGS = ROOT / "build" / "lanes"
 # since the last lane started (one start per window: a lane's own start-up is idle time too).
 FILL_IDLE_CORES = 0.6
 FILL_WINDOW_S = 15.0
+# The steps listed at the end, the most CPU first.
+TOP_STEPS = 12
+# A step's line as .ci/steps.sh prints it when the step begins: the lane's seconds and CPU seconds
+# so far (the CPU is absent where there is no /proc). The step's text may hold parentheses itself.
+STEP_LINE = re.compile(r"^-- [^:\n]+: (?P<what>.*) \((?P<seconds>\d+) s, (?P<cpu>\d+(?:\.\d+)?) CPU s\)$")
 
 
 class IdleMeter:
@@ -105,6 +113,34 @@ class Lane:
         return True
 
 
+def steps_of(lane: Lane) -> list[tuple[float, float, str]]:
+    """(CPU seconds, seconds, "lane: step") for each step of an ended lane: from its line to the next
+    step's, the last to the lane's end; a lane that marks no step is one step."""
+    marks = []
+    for line in lane.log.read_text(encoding="utf-8", errors="replace").splitlines():
+        found = STEP_LINE.match(line)
+        if found:
+            marks.append((found["what"], int(found["seconds"]), float(found["cpu"])))
+    if not marks:
+        return [(lane.cpu, lane.seconds, f"{lane.name}: the whole lane (it marks no steps)")]
+    ends = [(seconds, cpu) for _, seconds, cpu in marks[1:]] + [(lane.seconds, lane.cpu)]
+    return [(max(0.0, end_cpu - cpu), max(0.0, end_s - seconds), f"{lane.name}: {what}")
+            for (what, seconds, cpu), (end_s, end_cpu) in zip(marks, ends)]
+
+
+def print_steps(lanes: list[Lane]) -> None:
+    steps = sorted((step for lane in lanes for step in steps_of(lane)), key=lambda step: -step[0])
+    if not steps:
+        return
+    print(f"lanes: the {min(TOP_STEPS, len(steps))} steps that took the most CPU, of {len(steps)} "
+          f"(a step's CPU is that of what its lane ran from its line to the next)")
+    for cpu, seconds, what in steps[:TOP_STEPS]:
+        print(f"  {cpu:7.1f} s of CPU {seconds:5.0f} s  {what}")
+    rest = steps[TOP_STEPS:]
+    if rest:
+        print(f"  {sum(cpu for cpu, _, _ in rest):7.1f} s of CPU in the other {len(rest)} steps")
+
+
 def _may_fill(idle: IdleMeter, running: int, args) -> bool:
     """Whether one lane more than --jobs may start now: room under --fill, and the cores idle enough
     over a whole window since the last start."""
@@ -168,6 +204,7 @@ def main(argv: list[str]) -> int:
           f"{sum(lane.cpu for lane in lanes):.0f} s of CPU")
     for lane in lanes:
         print(f"  {lane.name:<12} {lane.status:<24} {lane.seconds:7.0f} s {lane.cpu:7.0f} s of CPU")
+    print_steps([lane for lane in lanes if lane.status != "waiting"])
     return 0 if all(lane.status == "ok" for lane in lanes) else 1
 
 

@@ -1,4 +1,5 @@
-# Sourced by CI's lane scripts (kept out of .ci/lang, whose scripts are the lanes).
+# Sourced by CI's lane scripts (kept out of .ci/lang, whose scripts are the lanes), and by .ci/run
+# for its own CPU figures (steps_ticks).
 #
 # steps_begin LANE    starts the lane's clock
 # step TEXT           prints "-- LANE: TEXT (S s, C CPU s)" as a step begins: the seconds since

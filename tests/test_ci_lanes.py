@@ -8,6 +8,8 @@ import sys
 import time
 from types import SimpleNamespace
 
+import pytest
+
 from conftest import REPO
 
 lanes = SimpleNamespace(**runpy.run_path(str(REPO / ".ci" / "lanes.py"), run_name="ci_lanes"))
@@ -110,3 +112,30 @@ def test_a_step_in_a_subshell_counts_the_cpu_of_what_ran_before_it(tmp_path):
     assert set(cpu) == {"a", "b", "c", "d"}, out
     assert float(cpu["a"]) < 0.2 and float(cpu["b"]) < 0.2, out
     assert float(cpu["c"]) >= 0.3 and float(cpu["d"]) >= 0.3, out
+
+
+def _ended_lane(tmp_path, name, log, seconds, cpu):
+    lane = lanes.Lane(f".ci/{name}.sh")
+    lane.log = tmp_path / f"{name}.log"
+    lane.log.write_text(log)
+    lane.seconds, lane.cpu, lane.status = seconds, cpu, "ok"
+    return lane
+
+
+def test_each_step_costs_what_its_lane_ran_until_the_next_step(tmp_path, capsys):
+    # Three step lines as steps.sh prints them (a text with parentheses of its own, output between
+    # them), the lane ending at 60 s and 50.0 CPU s; and a lane with no step line.
+    log = ("-- demo: fetch (0 s, 0.2 CPU s)\nsome output (1 s, 2.0 CPU s)\n"
+           "-- demo: cargo test (one test per vector) (4 s, 3.5 CPU s)\n"
+           "-- demo: done (52 s, 47.5 CPU s)\n")
+    demo = _ended_lane(tmp_path, "demo", log, 60.0, 50.0)
+    plain = _ended_lane(tmp_path, "plain-lane", "202 passed\n", 95.0, 151.0)
+    assert lanes.steps_of(demo) == [(pytest.approx(3.3), 4, "demo: fetch"),
+                                    (pytest.approx(44.0), 48, "demo: cargo test (one test per vector)"),
+                                    (pytest.approx(2.5), 8, "demo: done")]
+    assert lanes.steps_of(plain) == [(151.0, 95.0, "plain: the whole lane (it marks no steps)")]
+    lanes.print_steps([demo, plain])
+    out = capsys.readouterr().out.splitlines()
+    assert out[0].startswith("lanes: the 4 steps that took the most CPU, of 4")
+    assert [line.split("  ")[-1] for line in out[1:]] == [
+        "plain: the whole lane (it marks no steps)", "demo: cargo test (one test per vector)", "demo: fetch", "demo: done"]
